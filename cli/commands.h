@@ -1,0 +1,16 @@
+// Each subcommand lives in its own cmd_*.cpp and registers itself on the app here.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace candela::cli {
+
+// A subcommand's action: returns the process exit code (0 ok). Input errors are thrown as
+// candela::InputError and become exit code 2 in main.cpp.
+using Action = std::function<int()>;
+
+void addPointsCommand(CLI::App& app, Action& action);
+
+}  // namespace candela::cli
