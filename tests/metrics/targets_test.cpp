@@ -1,0 +1,43 @@
+#include "metrics/targets.h"
+
+#include <gtest/gtest.h>
+
+namespace candela {
+namespace {
+
+// EN 12464-1 office writing task: Em = 500 lx, U0 >= 0.6.
+TEST(Targets, PassAndFailAsEn12464) {
+  GridStats s = computeGridStats({450.0, 550.0, 600.0, 400.0});  // Eavg 500, U0 0.8
+  GridTargets t{500.0, 0.6};
+  TargetCheck c = checkTargets(s, t);
+  EXPECT_EQ(c.average, Verdict::kPass);  // equal to the target passes ("not below")
+  EXPECT_EQ(c.uniformity, Verdict::kPass);
+  EXPECT_EQ(c.overall, Verdict::kPass);
+  EXPECT_DOUBLE_EQ(c.averageRatio, 1.0);
+  EXPECT_DOUBLE_EQ(c.uniformityRatio, 0.8 / 0.6);
+
+  s = computeGridStats({200.0, 600.0, 700.0, 500.0});  // Eavg 500, U0 0.4
+  c = checkTargets(s, t);
+  EXPECT_EQ(c.average, Verdict::kPass);
+  EXPECT_EQ(c.uniformity, Verdict::kFail);
+  EXPECT_EQ(c.overall, Verdict::kFail);
+
+  s = computeGridStats({499.0});
+  c = checkTargets(s, GridTargets{500.0, std::nullopt});
+  EXPECT_EQ(c.average, Verdict::kFail);
+  EXPECT_EQ(c.uniformity, Verdict::kNotChecked);
+  EXPECT_EQ(c.overall, Verdict::kFail);
+  // A 1 % tolerance accepts 499 lx against 500 lx.
+  EXPECT_EQ(checkTargets(s, GridTargets{500.0, std::nullopt}, 0.01).average, Verdict::kPass);
+}
+
+TEST(Targets, NothingToCheck) {
+  const TargetCheck c = checkTargets(computeGridStats({1.0}), GridTargets{});
+  EXPECT_EQ(c.overall, Verdict::kNotChecked);
+  EXPECT_STREQ(verdictName(c.overall), "n/a");
+  EXPECT_STREQ(verdictName(Verdict::kPass), "pass");
+  EXPECT_STREQ(verdictName(Verdict::kFail), "fail");
+}
+
+}  // namespace
+}  // namespace candela
