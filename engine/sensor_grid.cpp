@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -12,6 +13,12 @@ namespace {
 
 // A grid beyond this many cells is a unit mistake (spacing in mm), not a study.
 constexpr long long kMaxCells = 10'000'000;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 
 }  // namespace
 
@@ -75,7 +82,7 @@ SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
       std::abs(glm::dot(spec.uAxis, spec.vAxis)) > axisTol)
     throw InputError(loc, "grid axes must be orthogonal unit vectors");
   if (spec.spacingM && !(*spec.spacingM > 0.0))
-    throw InputError(loc, "grid spacing must be positive, got " + std::to_string(*spec.spacingM) + " m");
+    throw InputError(loc, "grid spacing must be positive, got " + num(*spec.spacingM) + " m");
   if (spec.borderM < 0.0) throw InputError(loc, "grid border must not be negative");
 
   // Outline as a polygon, whatever form it was given in.
@@ -103,7 +110,7 @@ SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
   hi -= Vec2(spec.borderM);
   const Vec2 size = hi - lo;
   if (!(size.x > 0.0) || !(size.y > 0.0))
-    throw InputError(loc, "the border of " + std::to_string(spec.borderM) + " m leaves no area for the grid");
+    throw InputError(loc, "the border of " + num(spec.borderM) + " m leaves no area for the grid");
 
   SensorGrid g;
   g.regular = true;

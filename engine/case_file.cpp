@@ -1,0 +1,636 @@
+#include "engine/case_file.h"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+std::string skyTypeName(SkyType type, int cieType) {
+  switch (type) {
+    case SkyType::kNone: return "none";
+    case SkyType::kUniform: return "uniform";
+    case SkyType::kCieOvercast: return "cie-overcast";
+    case SkyType::kCieGeneral: return "cie:" + std::to_string(cieType);
+    case SkyType::kCieClear: return "cie-clear";
+    case SkyType::kPerez: return "perez";
+    case SkyType::kAnnual: return "annual";
+  }
+  return "none";
+}
+
+const char* qualityName(Quality q) {
+  switch (q) {
+    case Quality::kDraft: return "draft";
+    case Quality::kNormal: return "normal";
+    case Quality::kHigh: return "high";
+  }
+  return "normal";
+}
+
+const char* methodName(Method m) { return m == Method::kPath ? "path" : "cache"; }
+
+namespace {
+
+const char* typeName(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+  }
+}
+
+// Where we are: the case file (for messages) and its folder (for relative paths).
+struct Context {
+  std::string file;
+  fs::path dir;
+  FileLoc at(const toml::source_region& r) const {
+    return FileLoc{file, static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+  }
+  FileLoc at(const toml::node& n) const { return at(n.source()); }
+  [[noreturn]] void fail(const toml::node& n, const std::string& msg) const { throw InputError(at(n), msg); }
+};
+
+// A TOML table whose keys are consumed one by one; finish() rejects whatever is left, so a typo
+// ("spacng") is an error at its line, never silently ignored.
+class Table {
+ public:
+  Table(const toml::table& t, const Context& ctx, std::string where) : t_(t), ctx_(ctx), where_(std::move(where)) {}
+
+  const toml::node* get(std::string_view key) {
+    used_.insert(std::string(key));
+    return t_.get(key);
+  }
+  const toml::node& require(std::string_view key) {
+    const toml::node* n = get(key);
+    if (!n) throw InputError(loc(), where_ + " needs the key '" + std::string(key) + "'");
+    return *n;
+  }
+  void finish() const {
+    for (auto&& [key, node] : t_) {
+      if (!used_.count(std::string(key.str())))
+        throw InputError(ctx_.at(key.source()), "unknown key '" + std::string(key.str()) + "' in " + where_);
+    }
+  }
+  FileLoc loc() const { return ctx_.at(t_); }
+  const std::string& where() const { return where_; }
+  const Context& ctx() const { return ctx_; }
+
+ private:
+  const toml::table& t_;
+  const Context& ctx_;
+  std::string where_;
+  std::set<std::string> used_;
+};
+
+std::string keyText(std::string_view key) { return "'" + std::string(key) + "'"; }
+
+double asNumber(const Context& c, const toml::node& n, std::string_view key) {
+  if (auto v = n.as_floating_point()) {
+    if (!std::isfinite(v->get())) c.fail(n, keyText(key) + " must be a finite number");
+    return v->get();
+  }
+  if (auto v = n.as_integer()) return static_cast<double>(v->get());
+  c.fail(n, keyText(key) + " must be a number, got " + typeName(n));
+}
+
+int64_t asInteger(const Context& c, const toml::node& n, std::string_view key) {
+  if (auto v = n.as_integer()) return v->get();
+  c.fail(n, keyText(key) + " must be an integer, got " + typeName(n));
+}
+
+std::string asString(const Context& c, const toml::node& n, std::string_view key) {
+  if (auto v = n.as_string()) return v->get();
+  c.fail(n, keyText(key) + " must be a string, got " + typeName(n));
+}
+
+bool asBool(const Context& c, const toml::node& n, std::string_view key) {
+  if (auto v = n.as_boolean()) return v->get();
+  c.fail(n, keyText(key) + " must be true or false, got " + typeName(n));
+}
+
+const toml::array& asArray(const Context& c, const toml::node& n, std::string_view key, std::size_t size,
+                           const char* what) {
+  const toml::array* a = n.as_array();
+  if (!a || (size > 0 && a->size() != size)) c.fail(n, keyText(key) + " must be " + what);
+  return *a;
+}
+
+Vec3 asVec3(const Context& c, const toml::node& n, std::string_view key) {
+  const toml::array& a = asArray(c, n, key, 3, "an array of 3 numbers [x, y, z]");
+  return Vec3(asNumber(c, a[0], key), asNumber(c, a[1], key), asNumber(c, a[2], key));
+}
+
+Vec2 asVec2(const Context& c, const toml::node& n, std::string_view key, const char* what = "an array of 2 numbers") {
+  const toml::array& a = asArray(c, n, key, 2, what);
+  return Vec2(asNumber(c, a[0], key), asNumber(c, a[1], key));
+}
+
+Vec3 asDirection(const Context& c, const toml::node& n, std::string_view key) {
+  const Vec3 v = asVec3(c, n, key);
+  if (!(glm::length(v) > 0.0)) c.fail(n, keyText(key) + " must not be the zero vector");
+  return glm::normalize(v);
+}
+
+std::vector<Vec2> asPointList(const Context& c, const toml::node& n, std::string_view key) {
+  const toml::array& a = asArray(c, n, key, 0, "an array of [x, y] points");
+  std::vector<Vec2> pts;
+  for (const toml::node& e : a) pts.push_back(asVec2(c, e, key, "an array of [x, y] points"));
+  return pts;
+}
+
+std::optional<double> optNumber(Table& t, std::string_view key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  return asNumber(t.ctx(), *n, key);
+}
+
+double numberOr(Table& t, std::string_view key, double dflt) { return optNumber(t, key).value_or(dflt); }
+
+// `value` must lie in [lo, hi]; the message names the key and the accepted range.
+void checkRange(Table& t, std::string_view key, double value, double lo, double hi, const char* unit) {
+  if (value >= lo && value <= hi) return;
+  std::ostringstream m;
+  m << keyText(key) << " must be between " << lo << " and " << hi << unit << ", got " << value;
+  throw InputError(t.ctx().at(*t.get(key)), m.str());
+}
+
+void checkMin(Table& t, std::string_view key, double value, double lo, bool strict, const char* unit) {
+  if (strict ? value > lo : value >= lo) return;
+  std::ostringstream m;
+  m << keyText(key) << " must be " << (strict ? "greater than " : "at least ") << lo << unit << ", got " << value;
+  throw InputError(t.ctx().at(*t.get(key)), m.str());
+}
+
+// A referenced file: relative to the case file's folder; it must exist.
+fs::path filePath(Table& t, std::string_view key, const char* what) {
+  const toml::node& n = t.require(key);
+  const std::string text = asString(t.ctx(), n, key);
+  if (text.empty()) t.ctx().fail(n, keyText(key) + " must not be empty");
+  fs::path p(text);
+  if (p.is_relative()) p = t.ctx().dir / p;
+  p = p.lexically_normal();
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) {
+    const std::string where = p == fs::path(text) ? "" : " (looked for " + p.string() + ")";
+    t.ctx().fail(n, std::string(what) + " '" + text + "' not found" + where);
+  }
+  return p;
+}
+
+// One [[name]] list: an array of tables (or absent).
+const toml::array* tableArray(const Context& c, const toml::table& root, std::string_view key) {
+  const toml::node* n = root.get(key);
+  if (!n) return nullptr;
+  const toml::array* a = n->as_array();
+  if (!a || !a->is_array_of_tables())
+    c.fail(*n, "'" + std::string(key) + "' must be a list of tables, written [[" + std::string(key) + "]]");
+  return a;
+}
+
+const toml::table* singleTable(const Context& c, const toml::table& root, std::string_view key) {
+  const toml::node* n = root.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) c.fail(*n, "'" + std::string(key) + "' must be a table, written [" + std::string(key) + "]");
+  return n->as_table();
+}
+
+void readCase(const Context& c, const toml::table& t, CaseFile& out) {
+  Table tab(t, c, "[case]");
+  if (auto n = tab.get("name")) out.name = asString(c, *n, "name");
+  if (auto n = tab.get("description")) out.description = asString(c, *n, "description");
+  tab.finish();
+}
+
+void readScene(const Context& c, const toml::table& t, CaseFile& out) {
+  Table tab(t, c, "[[scene]]");
+  ScenePath s;
+  s.loc = c.at(tab.require("file"));
+  s.file = filePath(tab, "file", "scene file");
+  tab.finish();
+  out.scenes.push_back(std::move(s));
+}
+
+void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& out) {
+  Table tab(t, c, "[[luminaire]]");
+  LuminairePlacement p;
+  p.entry = entry;
+  p.loc = tab.loc();
+  p.file = filePath(tab, "file", "luminaire file");
+  p.name = "luminaire" + std::to_string(entry + 1);
+  if (auto n = tab.get("name")) p.name = asString(c, *n, "name");
+  p.positionM = asVec3(c, tab.require("position"), "position");
+  if (auto n = tab.get("aim")) p.aim = asDirection(c, *n, "aim");
+  p.spinDeg = numberOr(tab, "spin", 0.0);
+  p.multiplier = numberOr(tab, "multiplier", 1.0);
+  checkMin(tab, "multiplier", p.multiplier, 0.0, false, "");
+  p.maintenanceFactor = numberOr(tab, "maintenance_factor", 1.0);
+  if (tab.get("maintenance_factor")) {
+    if (!(p.maintenanceFactor > 0.0 && p.maintenanceFactor <= 1.0))
+      c.fail(*tab.get("maintenance_factor"), "'maintenance_factor' must be in (0, 1], got " +
+                                                 std::to_string(p.maintenanceFactor));
+  }
+
+  int rows = 1, columns = 1;
+  Vec2 spacing(0.0);
+  if (const toml::node* an = tab.get("array")) {
+    const toml::table* at = an->as_table();
+    if (!at) c.fail(*an, "'array' must be a table {rows = .., columns = .., spacing = [dx, dy]}");
+    Table arr(*at, c, "the luminaire 'array'");
+    const toml::node& rn = arr.require("rows");
+    const toml::node& cn = arr.require("columns");
+    const int64_t r = asInteger(c, rn, "rows"), k = asInteger(c, cn, "columns");
+    if (r < 1 || r > 1000) c.fail(rn, "'rows' must be between 1 and 1000, got " + std::to_string(r));
+    if (k < 1 || k > 1000) c.fail(cn, "'columns' must be between 1 and 1000, got " + std::to_string(k));
+    const toml::node& sn = arr.require("spacing");
+    spacing = asVec2(c, sn, "spacing", "[dx, dy] in m");
+    if (!(spacing.x > 0.0) || !(spacing.y > 0.0)) c.fail(sn, "luminaire array 'spacing' must be positive (m)");
+    arr.finish();
+    rows = static_cast<int>(r);
+    columns = static_cast<int>(k);
+  }
+  tab.finish();
+  // Columns run along +X and rows along +Y from `position`, the first fitting.
+  const bool isArray = rows > 1 || columns > 1;
+  for (int r = 0; r < rows; ++r) {
+    for (int k = 0; k < columns; ++k) {
+      LuminairePlacement q = p;
+      q.row = r;
+      q.column = k;
+      q.positionM = p.positionM + Vec3(k * spacing.x, r * spacing.y, 0.0);
+      if (isArray) q.name = p.name + "[" + std::to_string(r + 1) + "," + std::to_string(k + 1) + "]";
+      out.luminaires.push_back(std::move(q));
+    }
+  }
+}
+
+// A number in degrees or a text such as "37d52'N", kept as written for photometry to parse.
+void readAngle(Table& tab, std::string_view key, double limit, std::optional<double>& deg, std::string& text,
+               FileLoc& loc) {
+  const toml::node* n = tab.get(key);
+  if (!n) return;
+  loc = tab.ctx().at(*n);
+  if (n->is_string()) {
+    text = n->as_string()->get();
+    if (text.empty()) tab.ctx().fail(*n, keyText(key) + " must not be empty");
+    return;
+  }
+  deg = asNumber(tab.ctx(), *n, key);
+  checkRange(tab, key, *deg, -limit, limit, " deg");
+}
+
+void readSite(const Context& c, const toml::table& t, SiteSpec& s) {
+  Table tab(t, c, "[site]");
+  s.present = true;
+  s.loc = tab.loc();
+  readAngle(tab, "latitude", 90.0, s.latitudeDeg, s.latitudeText, s.latitudeLoc);
+  readAngle(tab, "longitude", 180.0, s.longitudeDeg, s.longitudeText, s.longitudeLoc);
+  s.elevationM = numberOr(tab, "elevation", 0.0);
+  checkRange(tab, "elevation", s.elevationM, -500.0, 9000.0, " m");
+  s.timezoneHours = optNumber(tab, "timezone");
+  if (s.timezoneHours) checkRange(tab, "timezone", *s.timezoneHours, -12.0, 14.0, " h");
+  s.northDeg = numberOr(tab, "north", 0.0);
+  checkRange(tab, "north", s.northDeg, -360.0, 360.0, " deg");
+  if (auto n = tab.get("grid")) s.grid = asString(c, *n, "grid");
+  tab.finish();
+}
+
+// "YYYY-MM-DDTHH:MM[:SS]" (a space may replace the T); a TOML local date-time is accepted too.
+std::string readTime(const Context& c, const toml::node& n) {
+  if (auto dt = n.as_date_time()) {
+    const toml::date_time& v = dt->get();
+    if (v.offset) c.fail(n, "'time' is local standard time at the site; write it without a UTC offset");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02d", v.date.year, v.date.month, v.date.day,
+                  v.time.hour, v.time.minute, v.time.second);
+    return buf;
+  }
+  const std::string s = asString(c, n, "time");
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0, sec = 0, used = 0;
+  char sep = 0;
+  const int fields = std::sscanf(s.c_str(), "%4d-%2d-%2d%c%2d:%2d%n", &y, &mo, &d, &sep, &h, &mi, &used);
+  bool ok = fields >= 6 && (sep == 'T' || sep == ' ');
+  if (ok && static_cast<std::size_t>(used) < s.size()) {
+    int more = 0;
+    ok = std::sscanf(s.c_str() + used, ":%2d%n", &sec, &more) == 1 && static_cast<std::size_t>(used + more) == s.size();
+  }
+  ok = ok && mo >= 1 && mo <= 12 && d >= 1 && d <= 31 && h >= 0 && h <= 24 && mi >= 0 && mi <= 59 && sec >= 0 &&
+       sec <= 60;
+  if (!ok) c.fail(n, "'time' must read YYYY-MM-DDTHH:MM (local standard time), got '" + s + "'");
+  return s;
+}
+
+void readSky(const Context& c, const toml::table& t, SkySpec& s) {
+  Table tab(t, c, "[sky]");
+  s.present = true;
+  s.loc = tab.loc();
+  const toml::node& tn = tab.require("type");
+  const std::string type = asString(c, tn, "type");
+  if (type == "none") s.type = SkyType::kNone;
+  else if (type == "uniform") s.type = SkyType::kUniform;
+  else if (type == "cie-overcast") s.type = SkyType::kCieOvercast;
+  else if (type == "cie-clear") s.type = SkyType::kCieClear;
+  else if (type == "perez") s.type = SkyType::kPerez;
+  else if (type == "annual") s.type = SkyType::kAnnual;
+  else if (type.rfind("cie:", 0) == 0) {
+    int n = 0, used = 0;
+    if (std::sscanf(type.c_str() + 4, "%d%n", &n, &used) != 1 || static_cast<std::size_t>(4 + used) != type.size() ||
+        n < 1 || n > 15)
+      c.fail(tn, "CIE general sky type must be cie:1 .. cie:15, got '" + type + "'");
+    s.type = SkyType::kCieGeneral;
+    s.cieType = n;
+  } else {
+    c.fail(tn, "unknown sky type '" + type +
+                   "' (expected uniform, cie-overcast, cie:1..cie:15, cie-clear, perez, annual or none)");
+  }
+  if (auto n = tab.get("time")) {
+    s.time = readTime(c, *n);
+    s.timeLoc = c.at(*n);
+  }
+  auto nonNegative = [&](const char* key, std::optional<double>& v) {
+    v = optNumber(tab, key);
+    if (v) checkMin(tab, key, *v, 0.0, false, "");
+  };
+  nonNegative("diffuse_horizontal_illuminance", s.diffuseHorizontalIlluminanceLux);
+  nonNegative("direct_normal_illuminance", s.directNormalIlluminanceLux);
+  nonNegative("direct_normal_irradiance", s.directNormalIrradianceWm2);
+  nonNegative("diffuse_horizontal_irradiance", s.diffuseHorizontalIrradianceWm2);
+  s.groundReflectance = numberOr(tab, "ground_reflectance", 0.2);
+  checkRange(tab, "ground_reflectance", s.groundReflectance, 0.0, 1.0, "");
+  if (auto n = tab.get("sun")) s.sun = asBool(c, *n, "sun");
+  if (tab.get("weather")) s.weather = filePath(tab, "weather", "weather file");
+  s.sunAltitudeDeg = optNumber(tab, "sun_altitude");
+  if (s.sunAltitudeDeg) checkRange(tab, "sun_altitude", *s.sunAltitudeDeg, -90.0, 90.0, " deg");
+  s.sunAzimuthDeg = optNumber(tab, "sun_azimuth");
+  if (s.sunAzimuthDeg) checkRange(tab, "sun_azimuth", *s.sunAzimuthDeg, -360.0, 360.0, " deg");
+  if (s.sunAltitudeDeg.has_value() != s.sunAzimuthDeg.has_value())
+    throw InputError(s.loc, "give both 'sun_altitude' and 'sun_azimuth', or neither");
+  if (s.type == SkyType::kAnnual && s.weather.empty())
+    throw InputError(s.loc, "an annual sky needs a 'weather' file (EPW)");
+  tab.finish();
+}
+
+void readGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[grid]]");
+  GridSpec g;
+  g.loc = tab.loc();
+  g.name = "grid" + std::to_string(index + 1);
+  if (auto n = tab.get("name")) {
+    g.name = asString(c, *n, "name");
+    if (g.name.empty()) c.fail(*n, "'name' must not be empty");
+  }
+  if (!names.insert(g.name).second) {
+    const toml::node* n = tab.get("name");
+    throw InputError(n ? c.at(*n) : g.loc, "two grids are named '" + g.name + "'");
+  }
+  std::string kind = "plane";
+  const toml::node* kn = tab.get("kind");
+  if (kn) kind = asString(c, *kn, "kind");
+  if (kind == "points") {
+    g.kind = GridKind::kPoints;
+    g.pointsFile = filePath(tab, "file", "sensor points file");
+    for (const char* key : {"corners", "outline", "height", "spacing", "border", "normal", "origin", "axes"})
+      if (const toml::node* n = tab.get(key)) c.fail(*n, keyText(key) + " applies to kind = \"plane\" grids only");
+  } else if (kind == "plane") {
+    g.kind = GridKind::kPlane;
+    if (const toml::node* n = tab.get("file")) c.fail(*n, "'file' applies to kind = \"points\" grids only");
+    PlaneGridSpec& p = g.plane;
+    const toml::node* cn = tab.get("corners");
+    const toml::node* on = tab.get("outline");
+    if (cn && on) c.fail(*on, "give either 'corners' or 'outline', not both");
+    if (!cn && !on) throw InputError(g.loc, "a plane grid needs 'corners' = [[x0, y0], [x1, y1]] or an 'outline'");
+    if (cn) {
+      p.isRectangle = true;
+      p.outline = asPointList(c, *cn, "corners");
+      if (p.outline.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+      const Vec2 d = p.outline[1] - p.outline[0];
+      if (!(std::abs(d.x * d.y) > 0.0)) c.fail(*cn, "'corners' span a zero area");
+    } else {
+      p.isRectangle = false;
+      p.outline = asPointList(c, *on, "outline");
+      if (p.outline.size() < 3) c.fail(*on, "'outline' needs at least 3 points");
+      if (!(std::abs(polygonArea(p.outline)) > 0.0)) c.fail(*on, "'outline' encloses a zero area");
+    }
+    const toml::node* hn = tab.get("height");
+    const toml::node* orn = tab.get("origin");
+    const toml::node* axn = tab.get("axes");
+    if (orn || axn) {
+      // A plane in any orientation: origin + u·axes[0] + v·axes[1].
+      if (hn) c.fail(*hn, "'height' applies to horizontal grids; a grid with 'origin' and 'axes' is placed by them");
+      if (!orn || !axn) throw InputError(g.loc, "a grid with 'origin' also needs 'axes' = [[ux, uy, uz], [vx, vy, vz]], and vice versa");
+      p.origin = asVec3(c, *orn, "origin");
+      const toml::array& ax = asArray(c, *axn, "axes", 2, "two directions [[ux, uy, uz], [vx, vy, vz]]");
+      p.uAxis = asDirection(c, ax[0], "axes");
+      p.vAxis = asDirection(c, ax[1], "axes");
+      if (std::abs(glm::dot(p.uAxis, p.vAxis)) > 1e-6) c.fail(*axn, "the two 'axes' must be perpendicular");
+    } else {
+      if (!hn) throw InputError(g.loc, "a plane grid needs 'height' (m) of the horizontal plane");
+      p.origin = Vec3(0.0, 0.0, asNumber(c, *hn, "height"));
+    }
+    if (const toml::node* sn = tab.get("spacing")) {
+      if (sn->is_string()) {
+        if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
+      } else {
+        p.spacingM = asNumber(c, *sn, "spacing");
+        checkMin(tab, "spacing", *p.spacingM, 0.0, true, " m");
+      }
+    }
+    p.borderM = numberOr(tab, "border", 0.0);
+    checkMin(tab, "border", p.borderM, 0.0, false, " m");
+    if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
+  } else {
+    c.fail(*kn, "unknown grid kind '" + kind + "' (expected plane or points)");
+  }
+  g.targetAverageLux = optNumber(tab, "target_average");
+  if (g.targetAverageLux) checkMin(tab, "target_average", *g.targetAverageLux, 0.0, false, " lx");
+  g.targetUniformity = optNumber(tab, "target_uniformity");
+  if (g.targetUniformity) checkRange(tab, "target_uniformity", *g.targetUniformity, 0.0, 1.0, "");
+  if (auto n = tab.get("daylight_factor")) g.daylightFactor = asBool(c, *n, "daylight_factor");
+  tab.finish();
+  // Border and spacing problems (the border eats the area, a million-point grid) show here,
+  // at the grid's line, rather than in the middle of a run.
+  if (g.kind == GridKind::kPlane) makePlaneGrid(g.plane, g.loc);
+  out.grids.push_back(std::move(g));
+}
+
+void readView(const Context& c, const toml::table& t, int index, CaseFile& out) {
+  Table tab(t, c, "[[view]]");
+  ViewSpec v;
+  v.loc = tab.loc();
+  v.name = "view" + std::to_string(index + 1);
+  if (auto n = tab.get("name")) v.name = asString(c, *n, "name");
+  if (const toml::node* n = tab.get("type")) {
+    const std::string type = asString(c, *n, "type");
+    if (type == "perspective") v.type = ViewType::kPerspective;
+    else if (type == "fisheye") v.type = ViewType::kFisheye;
+    else c.fail(*n, "unknown view type '" + type + "' (expected perspective or fisheye)");
+  }
+  v.positionM = asVec3(c, tab.require("position"), "position");
+  v.direction = asDirection(c, tab.require("direction"), "direction");
+  if (const toml::node* n = tab.get("up")) v.up = asDirection(c, *n, "up");
+  if (glm::length(glm::cross(v.direction, v.up)) < 1e-6)
+    throw InputError(tab.get("up") ? c.at(*tab.get("up")) : v.loc, "view 'up' must not be parallel to 'direction'");
+  v.fovDeg = v.type == ViewType::kFisheye ? Vec2(180.0, 180.0) : Vec2(60.0, 45.0);
+  if (const toml::node* n = tab.get("fov")) {
+    v.fovDeg = asVec2(c, *n, "fov", "[horizontal, vertical] in degrees");
+    const double maxDeg = v.type == ViewType::kFisheye ? 360.0 : 179.0;
+    if (!(v.fovDeg.x > 0.0 && v.fovDeg.y > 0.0 && v.fovDeg.x <= maxDeg && v.fovDeg.y <= maxDeg))
+      c.fail(*n, "'fov' angles must be in (0, " + std::to_string(static_cast<int>(maxDeg)) + "] degrees");
+  }
+  if (const toml::node* n = tab.get("resolution")) {
+    const toml::array& a = asArray(c, *n, "resolution", 2, "[width, height] in pixels");
+    const int64_t w = asInteger(c, a[0], "resolution"), h = asInteger(c, a[1], "resolution");
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+      c.fail(*n, "'resolution' must be between 1 and 16384 pixels, got [" + std::to_string(w) + ", " +
+                     std::to_string(h) + "]");
+    v.resolution = glm::ivec2(static_cast<int>(w), static_cast<int>(h));
+  }
+  tab.finish();
+  out.views.push_back(std::move(v));
+}
+
+void readSettings(const Context& c, const toml::table& t, Settings& s) {
+  Table tab(t, c, "[settings]");
+  if (const toml::node* n = tab.get("quality")) {
+    const std::string q = asString(c, *n, "quality");
+    if (q == "draft") s.quality = Quality::kDraft;
+    else if (q == "normal") s.quality = Quality::kNormal;
+    else if (q == "high") s.quality = Quality::kHigh;
+    else c.fail(*n, "unknown quality '" + q + "' (expected draft, normal or high)");
+  }
+  if (const toml::node* n = tab.get("seed")) {
+    const int64_t v = asInteger(c, *n, "seed");
+    if (v < 0) c.fail(*n, "'seed' must not be negative");
+    s.seed = static_cast<uint64_t>(v);
+  }
+  auto count = [&](const char* key, int64_t lo, int64_t hi) -> std::optional<int> {
+    const toml::node* n = tab.get(key);
+    if (!n) return std::nullopt;
+    const int64_t v = asInteger(c, *n, key);
+    if (v < lo || v > hi)
+      c.fail(*n, keyText(key) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+                     std::to_string(v));
+    return static_cast<int>(v);
+  };
+  s.bounces = count("bounces", 0, 100);
+  s.samples = count("samples", 1, 1'000'000);
+  s.threads = count("threads", 0, 4096).value_or(0);
+  if (const toml::node* n = tab.get("method")) {
+    const std::string m = asString(c, *n, "method");
+    if (m == "cache") s.method = Method::kCache;
+    else if (m == "path") s.method = Method::kPath;
+    else c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
+  }
+  tab.finish();
+}
+
+void readOutput(const Context& c, const toml::table& t, OutputSpec& o) {
+  Table tab(t, c, "[output]");
+  if (const toml::node* n = tab.get("dir")) {
+    const std::string d = asString(c, *n, "dir");
+    if (d.empty()) c.fail(*n, "'dir' must not be empty");
+    o.dir = fs::path(d);
+    if (o.dir.is_relative()) o.dir = c.dir / o.dir;
+    o.dir = o.dir.lexically_normal();
+  }
+  tab.finish();
+}
+
+}  // namespace
+
+CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
+  Context c{path.string(), path.parent_path()};
+  toml::table root;
+  try {
+    root = toml::parse(text, path.string());
+  } catch (const toml::parse_error& e) {
+    throw InputError(c.at(e.source()), "TOML syntax error: " + std::string(e.description()));
+  }
+
+  CaseFile out;
+  out.path = path;
+  out.name = path.stem().string();
+  out.output.dir = (c.dir / "out").lexically_normal();
+
+  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "site", "sky",
+                                                  "grid", "view", "settings", "output"};
+  for (auto&& [key, node] : root) {
+    if (!kTopLevel.count(std::string(key.str())))
+      throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
+                                               "' (expected case, scene, luminaire, site, sky, grid, view, settings or output)");
+  }
+  if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
+  if (auto a = tableArray(c, root, "scene"))
+    for (const toml::node& n : *a) readScene(c, *n.as_table(), out);
+  if (auto a = tableArray(c, root, "luminaire")) {
+    int entry = 0;
+    for (const toml::node& n : *a) readLuminaire(c, *n.as_table(), entry++, out);
+  }
+  if (auto t = singleTable(c, root, "site")) readSite(c, *t, out.site);
+  if (auto t = singleTable(c, root, "sky")) readSky(c, *t, out.sky);
+  if (auto a = tableArray(c, root, "grid")) {
+    std::set<std::string> names;
+    int index = 0;
+    for (const toml::node& n : *a) readGrid(c, *n.as_table(), index++, names, out);
+  }
+  if (auto a = tableArray(c, root, "view")) {
+    int index = 0;
+    for (const toml::node& n : *a) readView(c, *n.as_table(), index++, out);
+  }
+  if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
+  if (auto t = singleTable(c, root, "output")) readOutput(c, *t, out.output);
+  return out;
+}
+
+CaseFile readCaseFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open case file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseCaseFile(text.str(), path);
+}
+
+void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double toleranceM) {
+  if (sceneBounds.empty()) return;
+  const Vec3 lo = sceneBounds.lo - Vec3(toleranceM), hi = sceneBounds.hi + Vec3(toleranceM);
+  auto inside = [&](const Vec3& p) {
+    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
+  };
+  auto fail = [&](const Vec3& p) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "grid '%s' reaches outside the scene: point (%.3f, %.3f, %.3f) m is not within the scene's "
+                  "bounds (%.3f, %.3f, %.3f)..(%.3f, %.3f, %.3f) m",
+                  grid.name.c_str(), p.x, p.y, p.z, sceneBounds.lo.x, sceneBounds.lo.y, sceneBounds.lo.z,
+                  sceneBounds.hi.x, sceneBounds.hi.y, sceneBounds.hi.z);
+    throw InputError(grid.loc, buf);
+  };
+  if (grid.kind == GridKind::kPoints) {
+    for (const SensorPoint& s : readPointsFile(grid.pointsFile).points)
+      if (!inside(s.position)) fail(s.position);
+    return;
+  }
+  const PlaneGridSpec& p = grid.plane;
+  std::vector<Vec2> outline = p.outline;
+  if (p.isRectangle && outline.size() == 2)
+    outline = {outline[0], Vec2(outline[1].x, outline[0].y), outline[1], Vec2(outline[0].x, outline[1].y)};
+  for (const Vec2& uv : outline) {
+    const Vec3 w = p.origin + uv.x * p.uAxis + uv.y * p.vAxis;
+    if (!inside(w)) fail(w);
+  }
+}
+
+}  // namespace candela

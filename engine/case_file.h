@@ -1,0 +1,146 @@
+// The TOML case file (docs/case-format.md is the full reference): plain structs out, every path
+// resolved relative to the case file, every bad key an InputError naming the file and line.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/base/error.h"
+#include "engine/base/math.h"
+#include "engine/sensor_grid.h"
+
+namespace candela {
+
+struct ScenePath {
+  std::filesystem::path file;  // Radiance scene, absolute or relative to the working directory
+  FileLoc loc;                 // the `file` key
+};
+
+// One luminaire placed in the scene; `[[luminaire]]` entries with an `array` expand into one
+// placement per fitting.
+struct LuminairePlacement {
+  std::filesystem::path file;           // IES LM-63 or EULUMDAT
+  std::string name;                     // `name` or "luminaire<N>"; arrays append "[row,col]"
+  Vec3 positionM{0.0};                  // photometric centre, m
+  Vec3 aim{0.0, 0.0, -1.0};             // unit direction of the photometric nadir
+  double spinDeg = 0.0;                 // rotation about the aim; 0: C0 plane towards +X
+  double multiplier = 1.0;              // scales intensities
+  double maintenanceFactor = 1.0;       // MF in (0, 1]; the engine multiplies it in too
+  int entry = 0;                        // index of the [[luminaire]] entry (0-based)
+  int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
+  FileLoc loc;                          // the [[luminaire]] entry
+};
+
+struct SiteSpec {
+  bool present = false;
+  // Latitude/longitude as written: a number in degrees (north/east positive) or a text such
+  // as "37d52'N" that photometry's site helper parses. At most one of each pair is set.
+  std::optional<double> latitudeDeg, longitudeDeg;
+  std::string latitudeText, longitudeText;
+  FileLoc latitudeLoc, longitudeLoc;
+  double elevationM = 0.0;
+  std::optional<double> timezoneHours;  // hours from UTC, standard time (east positive)
+  double northDeg = 0.0;                // true north, degrees clockwise from model +Y
+  std::string grid;                     // free text: the survey grid / CRS of the model (report only)
+  FileLoc loc;
+};
+
+enum class SkyType { kNone, kUniform, kCieOvercast, kCieGeneral, kCieClear, kPerez, kAnnual };
+
+// "none", "uniform", "cie-overcast", "cie:N", "cie-clear", "perez", "annual".
+std::string skyTypeName(SkyType type, int cieType = 0);
+
+struct SkySpec {
+  bool present = false;
+  SkyType type = SkyType::kNone;
+  int cieType = 0;                      // 1..15 for "cie:N" (CIE S 011/E:2003 general sky)
+  std::string time;                     // local standard time "YYYY-MM-DDTHH:MM[:SS]", as written
+  FileLoc timeLoc;
+  std::optional<double> diffuseHorizontalIlluminanceLux;
+  std::optional<double> directNormalIlluminanceLux;
+  std::optional<double> directNormalIrradianceWm2;
+  std::optional<double> diffuseHorizontalIrradianceWm2;
+  double groundReflectance = 0.2;
+  bool sun = true;                      // include the solar disc (where the sky type has one)
+  std::filesystem::path weather;        // EPW file, empty if none
+  std::optional<double> sunAltitudeDeg; // overrides the solar position computed from time/site
+  std::optional<double> sunAzimuthDeg;  // degrees clockwise from north
+  FileLoc loc;
+};
+
+enum class GridKind { kPlane, kPoints };
+
+struct GridSpec {
+  std::string name;
+  GridKind kind = GridKind::kPlane;
+  PlaneGridSpec plane;                  // kind = plane: geometry, spacing, border, normal
+  std::filesystem::path pointsFile;     // kind = points
+  std::optional<double> targetAverageLux;
+  std::optional<double> targetUniformity;  // U0 = Emin/Eavg
+  bool daylightFactor = false;          // report the grid as a daylight factor in %
+  FileLoc loc;                          // the [[grid]] entry
+};
+
+enum class ViewType { kPerspective, kFisheye };
+
+struct ViewSpec {
+  std::string name;
+  ViewType type = ViewType::kPerspective;
+  Vec3 positionM{0.0};
+  Vec3 direction{0.0, 1.0, 0.0};        // unit
+  Vec3 up{0.0, 0.0, 1.0};               // unit
+  Vec2 fovDeg{60.0, 45.0};              // horizontal, vertical full angles
+  glm::ivec2 resolution{800, 600};      // pixels, width × height
+  FileLoc loc;
+};
+
+enum class Quality { kDraft, kNormal, kHigh };
+enum class Method { kCache, kPath };
+
+const char* qualityName(Quality q);
+const char* methodName(Method m);
+
+// Unset optionals take the quality preset's value (chosen by the engine).
+struct Settings {
+  Quality quality = Quality::kNormal;
+  uint64_t seed = 1;
+  std::optional<int> bounces;
+  std::optional<int> samples;
+  std::optional<Method> method;
+  int threads = 0;                      // 0 = all cores
+};
+
+struct OutputSpec {
+  std::filesystem::path dir;            // default: "out" beside the case file
+};
+
+struct CaseFile {
+  std::filesystem::path path;           // the case file itself
+  std::string name;                     // [case] name, default: the file's stem
+  std::string description;
+  std::vector<ScenePath> scenes;
+  std::vector<LuminairePlacement> luminaires;
+  SiteSpec site;
+  SkySpec sky;
+  std::vector<GridSpec> grids;
+  std::vector<ViewSpec> views;
+  Settings settings;
+  OutputSpec output;
+};
+
+// Reads and checks a case file. Throws InputError("case.toml:LINE: ...") for TOML syntax
+// errors, unknown keys, wrong types, impossible values and missing referenced files.
+CaseFile readCaseFile(const std::filesystem::path& path);
+
+// Same from text; `path` names the file in errors and anchors relative paths.
+CaseFile parseCaseFile(std::string_view text, const std::filesystem::path& path);
+
+// Throws InputError at the grid's line when a point of the grid (the outline's corners for plane
+// grids, every point of a points file) lies outside the scene's bounding box grown by
+// `toleranceM`. An empty box (no geometry) accepts every grid.
+void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double toleranceM = 1e-3);
+
+}  // namespace candela

@@ -1,0 +1,195 @@
+#include "engine/case_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path casesDir() { return fs::path(CANDELA_TEST_DATA) / "cases"; }
+
+TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
+  const fs::path path = casesDir() / "full" / "case.toml";
+  const CaseFile c = readCaseFile(path);
+  const fs::path dir = path.parent_path();
+  EXPECT_EQ(c.name, "Test office");
+  EXPECT_EQ(c.description, "All keys, for the reader's tests");
+
+  ASSERT_EQ(c.scenes.size(), 1u);
+  EXPECT_EQ(c.scenes[0].file, (dir / "geometry/room.rad").lexically_normal());
+  EXPECT_EQ(c.scenes[0].loc.line, 7);
+
+  // 2 × 3 array + one single fitting. Columns run along +X by 1.5 m, rows along +Y by 2 m.
+  ASSERT_EQ(c.luminaires.size(), 7u);
+  const LuminairePlacement& last = c.luminaires[5];
+  EXPECT_EQ(last.row, 1);
+  EXPECT_EQ(last.column, 2);
+  EXPECT_EQ(last.positionM, Vec3(1.5 + 2 * 1.5, 1.0 + 2.0, 2.8));
+  EXPECT_EQ(last.name, "DL[2,3]");
+  EXPECT_DOUBLE_EQ(last.spinDeg, 90.0);
+  EXPECT_DOUBLE_EQ(last.multiplier, 2.0);
+  EXPECT_DOUBLE_EQ(last.maintenanceFactor, 0.8);
+  EXPECT_EQ(last.aim, Vec3(0, 0, -1));  // default
+  EXPECT_EQ(last.loc.line, 9);
+  const LuminairePlacement& single = c.luminaires[6];
+  EXPECT_EQ(single.entry, 1);
+  EXPECT_EQ(single.name, "luminaire2");
+  EXPECT_EQ(single.aim, Vec3(0, 0, -1));  // normalised from [0, 0, -2]
+  EXPECT_EQ(single.file, (dir / "luminaires/downlight.ies").lexically_normal());
+
+  EXPECT_TRUE(c.site.present);
+  EXPECT_EQ(c.site.latitudeText, "37d52'N");  // kept as written
+  EXPECT_FALSE(c.site.latitudeDeg.has_value());
+  EXPECT_DOUBLE_EQ(c.site.longitudeDeg.value(), -122.27);
+  EXPECT_DOUBLE_EQ(c.site.elevationM, 52.0);
+  EXPECT_DOUBLE_EQ(c.site.timezoneHours.value(), -8.0);
+  EXPECT_DOUBLE_EQ(c.site.northDeg, 10.0);
+  EXPECT_EQ(c.site.grid, "local");
+
+  EXPECT_EQ(c.sky.type, SkyType::kCieGeneral);
+  EXPECT_EQ(c.sky.cieType, 12);
+  EXPECT_EQ(skyTypeName(c.sky.type, c.sky.cieType), "cie:12");
+  EXPECT_EQ(c.sky.time, "2026-03-21T12:00:00");  // a TOML date-time, written out
+  EXPECT_DOUBLE_EQ(c.sky.diffuseHorizontalIlluminanceLux.value(), 10000.0);
+  EXPECT_DOUBLE_EQ(c.sky.groundReflectance, 0.25);
+  EXPECT_FALSE(c.sky.sun);
+  EXPECT_EQ(c.sky.weather, (dir / "weather/site.epw").lexically_normal());
+  EXPECT_DOUBLE_EQ(c.sky.sunAltitudeDeg.value(), 45.0);
+  EXPECT_DOUBLE_EQ(c.sky.sunAzimuthDeg.value(), 180.0);
+
+  ASSERT_EQ(c.grids.size(), 4u);
+  const GridSpec& wp = c.grids[0];
+  EXPECT_EQ(wp.name, "workplane");
+  EXPECT_EQ(wp.kind, GridKind::kPlane);
+  EXPECT_TRUE(wp.plane.isRectangle);
+  EXPECT_DOUBLE_EQ(wp.plane.origin.z, 0.8);
+  EXPECT_DOUBLE_EQ(wp.plane.spacingM.value(), 0.5);
+  EXPECT_DOUBLE_EQ(wp.plane.borderM, 0.5);
+  EXPECT_DOUBLE_EQ(wp.targetAverageLux.value(), 500.0);
+  EXPECT_DOUBLE_EQ(wp.targetUniformity.value(), 0.6);
+  EXPECT_EQ(makePlaneGrid(wp.plane).size(), 60u);  // (5 m / 0.5) × (3 m / 0.5)
+  EXPECT_FALSE(c.grids[1].plane.isRectangle);
+  EXPECT_FALSE(c.grids[1].plane.spacingM.has_value());  // "auto"
+  EXPECT_TRUE(c.grids[1].daylightFactor);
+  const GridSpec& wall = c.grids[2];
+  EXPECT_EQ(wall.plane.origin, Vec3(6, 0, 0));
+  EXPECT_EQ(wall.plane.vAxis, Vec3(0, 0, 1));
+  EXPECT_EQ(wall.plane.normal.value(), Vec3(-1, 0, 0));
+  EXPECT_EQ(makePlaneGrid(wall.plane).size(), 12u);
+  EXPECT_EQ(c.grids[3].kind, GridKind::kPoints);
+  EXPECT_EQ(c.grids[3].pointsFile, (casesDir() / "points/desk.pts").lexically_normal());
+
+  ASSERT_EQ(c.views.size(), 2u);
+  EXPECT_EQ(c.views[0].name, "entrance");
+  EXPECT_NEAR(c.views[0].direction.x, std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(c.views[0].resolution, glm::ivec2(320, 240));
+  EXPECT_EQ(c.views[0].fovDeg, Vec2(70, 50));
+  EXPECT_EQ(c.views[1].name, "view2");
+  EXPECT_EQ(c.views[1].type, ViewType::kFisheye);
+  EXPECT_EQ(c.views[1].fovDeg, Vec2(180, 180));
+
+  EXPECT_EQ(c.settings.quality, Quality::kHigh);
+  EXPECT_EQ(c.settings.seed, 42u);
+  EXPECT_EQ(c.settings.bounces.value(), 3);
+  EXPECT_EQ(c.settings.samples.value(), 256);
+  EXPECT_EQ(c.settings.method.value(), Method::kPath);
+  EXPECT_EQ(c.settings.threads, 2);
+  EXPECT_EQ(c.output.dir, (dir / "results").lexically_normal());
+}
+
+TEST(CaseFile, DefaultsOfAMinimalCase) {
+  const CaseFile c = readCaseFile(casesDir() / "minimal.toml");
+  EXPECT_EQ(c.name, "minimal");
+  EXPECT_FALSE(c.site.present);
+  EXPECT_FALSE(c.sky.present);
+  EXPECT_EQ(c.sky.type, SkyType::kNone);
+  ASSERT_EQ(c.grids.size(), 1u);
+  EXPECT_EQ(c.grids[0].name, "grid1");
+  EXPECT_FALSE(c.grids[0].plane.spacingM.has_value());
+  // Auto on 5 m × 4 m: p = 0.6 m → 9 × 7 cells.
+  EXPECT_EQ(makePlaneGrid(c.grids[0].plane).size(), 63u);
+  EXPECT_EQ(c.settings.quality, Quality::kNormal);
+  EXPECT_EQ(c.settings.seed, 1u);
+  EXPECT_FALSE(c.settings.bounces.has_value());
+  EXPECT_EQ(c.output.dir, (casesDir() / "out").lexically_normal());
+}
+
+struct ErrorCase {
+  const char* file;
+  int line;
+  const char* words;  // a piece of the message
+};
+
+class CaseFileError : public testing::TestWithParam<ErrorCase> {};
+
+TEST_P(CaseFileError, NamesFileAndLine) {
+  const ErrorCase& e = GetParam();
+  const fs::path path = casesDir() / "errors" / e.file;
+  try {
+    readCaseFile(path);
+    FAIL() << e.file << " was accepted";
+  } catch (const InputError& err) {
+    EXPECT_EQ(err.loc().file, path.string());
+    EXPECT_EQ(err.loc().line, e.line) << err.what();
+    EXPECT_NE(std::string(err.what()).find(e.words), std::string::npos) << err.what();
+    EXPECT_NE(std::string(err.what()).find(std::string(e.file) + ":" + std::to_string(e.line) + ": "),
+              std::string::npos)
+        << err.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fixtures, CaseFileError,
+    testing::Values(ErrorCase{"syntax_error.toml", 5, "TOML syntax error"},
+                    ErrorCase{"unknown_top_key.toml", 4, "unknown key 'grids'"},
+                    ErrorCase{"unknown_grid_key.toml", 8, "unknown key 'spacng' in [[grid]]"},
+                    ErrorCase{"unknown_array_key.toml", 4, "unknown key 'gap'"},
+                    ErrorCase{"wrong_type.toml", 4, "'height' must be a number, got a string"},
+                    ErrorCase{"missing_scene.toml", 6, "scene file 'geometry/nowhere.rad' not found"},
+                    ErrorCase{"missing_luminaire.toml", 3, "luminaire file 'no_such.ies' not found"},
+                    ErrorCase{"missing_weather.toml", 3, "weather file 'no_such.epw' not found"},
+                    ErrorCase{"missing_points.toml", 5, "sensor points file 'no_such.pts' not found"},
+                    ErrorCase{"negative_spacing.toml", 4, "'spacing' must be greater than 0"},
+                    ErrorCase{"zero_area.toml", 3, "zero area"},
+                    ErrorCase{"bad_resolution.toml", 4, "'resolution' must be between 1 and 16384"},
+                    ErrorCase{"unknown_sky.toml", 5, "unknown sky type 'cloudy'"},
+                    ErrorCase{"unknown_quality.toml", 3, "unknown quality 'ultra'"},
+                    ErrorCase{"duplicate_grid.toml", 6, "two grids are named 'a'"},
+                    ErrorCase{"missing_position.toml", 2, "needs the key 'position'"},
+                    ErrorCase{"bad_time.toml", 3, "'time' must read YYYY-MM-DDTHH:MM"},
+                    ErrorCase{"border_eats_grid.toml", 3, "leaves no area"},
+                    ErrorCase{"bad_latitude.toml", 2, "'latitude' must be between -90 and 90"},
+                    ErrorCase{"bad_uniformity.toml", 4, "'target_uniformity' must be between 0 and 1"}),
+    [](const testing::TestParamInfo<ErrorCase>& info) {
+      std::string n = info.param.file;
+      return n.substr(0, n.find('.'));
+    });
+
+TEST(CaseFile, GridOutsideTheSceneNamesTheGridLine) {
+  const fs::path path = casesDir() / "errors" / "grid_outside.toml";
+  const CaseFile c = readCaseFile(path);  // valid on its own
+  Box room;
+  room.extend(Vec3(0, 0, 0));
+  room.extend(Vec3(6, 4, 3));
+  try {
+    checkGridInside(c.grids[0], room);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 5) << e.what();
+    EXPECT_NE(std::string(e.what()).find("outside the scene"), std::string::npos);
+  }
+  // The full case's grids, the vertical wall grid and the points grid included, fit the room.
+  const CaseFile full = readCaseFile(casesDir() / "full" / "case.toml");
+  for (const GridSpec& g : full.grids) EXPECT_NO_THROW(checkGridInside(g, room)) << g.name;
+  EXPECT_NO_THROW(checkGridInside(c.grids[0], Box{}));  // no geometry: nothing to check
+}
+
+TEST(CaseFile, MissingCaseFile) {
+  EXPECT_THROW(readCaseFile(casesDir() / "no_such_case.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace candela
