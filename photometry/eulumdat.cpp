@@ -1,0 +1,241 @@
+// EULUMDAT reader. Line layout (Stockmar 1990; the field list as commonly published):
+//  1 company   2 Ityp   3 Isym   4 Mc   5 Dc   6 Ng   7 Dg   8 report   9 luminaire name
+// 10 luminaire number  11 file name  12 date/user  13-15 luminaire length/width/height (mm)
+// 16-17 luminous area length/width (mm; width 0 = circular)  18-21 luminous heights in the
+// C0/C90/C180/C270 planes (mm)  22 DFF (%)  23 LORL (%)  24 conversion factor  25 tilt (deg)
+// 26 n lamp sets, then n lines each of: 26a lamp count, 26b type, 26c total flux (lm),
+// 26d colour, 26e colour rendering, 26f watts incl. ballast  27 ten direct ratios
+// 28 Mc C angles  29 Ng gamma angles  30 intensities (cd/klm) of planes Mc1..Mc2, Ng each.
+#include "photometry/eulumdat.h"
+
+#include "engine/base/error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace candela {
+
+namespace {
+
+class LdtLines {
+ public:
+  LdtLines(std::string file, std::string_view text) : file_(std::move(file)) {
+    size_t start = 0;
+    while (start <= text.size()) {
+      size_t end = text.find('\n', start);
+      if (end == std::string_view::npos) end = text.size();
+      std::string line(text.substr(start, end - start));
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      lines_.push_back(std::move(line));
+      if (end == text.size()) break;
+      start = end + 1;
+    }
+    while (!lines_.empty() && lines_.back().find_first_not_of(" \t\x1a") == std::string::npos)
+      lines_.pop_back();
+  }
+
+  std::string text(const std::string& what) {
+    if (pos_ >= lines_.size())
+      throw InputError(FileLoc{file_, int(lines_.size()), 0},
+                       "file ends before " + what + " (line " + std::to_string(pos_ + 1) + ", truncated data)");
+    std::string s = lines_[pos_++];
+    const size_t a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return {};
+    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+  }
+  double number(const std::string& what) {
+    std::string s = text(what);
+    // A decimal comma is common in files written with a European locale.
+    if (s.find('.') == std::string::npos) std::replace(s.begin(), s.end(), ',', '.');
+    std::string_view v = s;
+    if (!v.empty() && v.front() == '+') v.remove_prefix(1);
+    double x = 0.0;
+    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    if (v.empty() || ec != std::errc() || p != v.data() + v.size() || !std::isfinite(x))
+      throw InputError(loc(), "bad number '" + s + "' for " + what);
+    return x;
+  }
+  int integer(const std::string& what) {
+    const double v = number(what);
+    if (v != std::floor(v) || std::fabs(v) > 1e9)
+      throw InputError(loc(), what + " must be a whole number, got " + lines_[pos_ - 1]);
+    return int(v);
+  }
+  FileLoc loc() const { return FileLoc{file_, int(pos_), 0}; }
+  bool done() const { return pos_ >= lines_.size(); }
+
+ private:
+  std::string file_;
+  std::vector<std::string> lines_;
+  size_t pos_ = 0;
+};
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+PhotometricWeb readEulumdat(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parseEulumdat(ss.str(), path.string());
+}
+
+PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName) {
+  LdtLines in(fileName, text);
+  PhotometricInfo info;
+  info.fileName = fileName;
+  info.format = "EULUMDAT";
+  info.numLamps = 0;
+
+  info.keywords["MANUFAC"] = in.text("company identification (line 1)");
+  const int ityp = in.integer("type indicator Ityp");
+  if (ityp < 0 || ityp > 3)
+    throw InputError(in.loc(), "type indicator Ityp must be 0-3, got " + std::to_string(ityp));
+  const int isym = in.integer("symmetry indicator Isym");
+  if (isym < 0 || isym > 4)
+    throw InputError(in.loc(), "symmetry indicator Isym must be 0-4, got " + std::to_string(isym));
+  const int mc = in.integer("number of C planes Mc");
+  if (mc < 1) throw InputError(in.loc(), "number of C planes Mc must be at least 1, got " + std::to_string(mc));
+  if ((isym == 2 && mc % 2 != 0) || ((isym == 3 || isym == 4) && mc % 4 != 0))
+    throw InputError(in.loc(), "Mc = " + std::to_string(mc) + " does not fit symmetry " + std::to_string(isym) +
+                                   (isym == 2 ? " (needs an even number)" : " (needs a multiple of 4)"));
+  in.number("C plane spacing Dc");
+  const int ng = in.integer("number of gamma angles Ng");
+  if (ng < 2) throw InputError(in.loc(), "number of gamma angles Ng must be at least 2, got " + std::to_string(ng));
+  in.number("gamma spacing Dg");
+  info.keywords["TEST"] = in.text("measurement report number");
+  info.keywords["LUMINAIRE"] = in.text("luminaire name");
+  info.keywords["LUMCAT"] = in.text("luminaire number");
+  info.keywords["FILENAME"] = in.text("file name");
+  info.keywords["DATE"] = in.text("date/user");
+  const double mm = 1e-3;
+  info.luminaireLengthM = in.number("luminaire length") * mm;
+  info.luminaireWidthM = in.number("luminaire width") * mm;
+  info.luminaireHeightM = in.number("luminaire height") * mm;
+  const double la = in.number("luminous area length") * mm;
+  const double lb = in.number("luminous area width") * mm;
+  double lh = 0.0;
+  for (const char* plane : {"C0", "C90", "C180", "C270"})
+    lh = std::max(lh, in.number(std::string("luminous area height in the ") + plane + " plane") * mm);
+  if (la < 0 || lb < 0) throw InputError(in.loc(), "luminous area dimensions must not be negative");
+  // EULUMDAT length is taken along C90-C270 and width along C0-C180, as LM-63's length/width.
+  info.openingLengthM = la;
+  info.openingWidthM = lb;
+  info.openingHeightM = lh;
+  if (la == 0.0 && lb == 0.0) {
+    info.openingShape = OpeningShape::Point;
+  } else if (lb == 0.0) {  // width 0: circular, diameter = length
+    info.openingWidthM = la;
+    info.openingShape = lh > 0.0 ? OpeningShape::VerticalCylinder : OpeningShape::Circular;
+  } else {
+    info.openingShape = lh > 0.0 ? OpeningShape::RectangularWithSides : OpeningShape::Rectangular;
+  }
+  info.declaredDownwardFluxPercent = in.number("downward flux fraction DFF");
+  info.declaredLorPercent = in.number("light output ratio LORL");
+  info.conversionFactor = in.number("conversion factor for intensities");
+  if (!(info.conversionFactor > 0.0))
+    throw InputError(in.loc(), "conversion factor must be positive, got " + fmt(info.conversionFactor));
+  info.keywords["TILT"] = fmt(in.number("tilt during measurement"));
+  const int nsets = in.integer("number of lamp sets");
+  if (nsets < 1) throw InputError(in.loc(), "number of lamp sets must be at least 1, got " + std::to_string(nsets));
+  info.lampSets.resize(size_t(nsets));
+  for (auto& s : info.lampSets) s.count = in.integer("number of lamps");
+  for (auto& s : info.lampSets) s.type = in.text("lamp type");
+  int fluxLine = 0;
+  for (auto& s : info.lampSets) {
+    s.totalFluxLm = in.number("total lamp flux");
+    if (&s == &info.lampSets.front()) fluxLine = in.loc().line;
+  }
+  for (auto& s : info.lampSets) s.colour = in.text("colour appearance");
+  for (auto& s : info.lampSets) s.colourRendering = in.text("colour rendering");
+  for (auto& s : info.lampSets) s.wattsW = in.number("wattage including ballast");
+  for (int k = 0; k < 10; ++k) in.number("direct ratio");
+
+  std::vector<double> c(static_cast<size_t>(mc));
+  for (int k = 0; k < mc; ++k) {
+    c[size_t(k)] = in.number("C angle");
+    if (c[size_t(k)] < 0.0 || c[size_t(k)] >= 360.0)
+      throw InputError(in.loc(), "C angle must lie in 0..360 (360 excluded), got " + fmt(c[size_t(k)]));
+    if (k > 0 && !(c[size_t(k)] > c[size_t(k) - 1]))
+      throw InputError(in.loc(), "C angles must increase: " + fmt(c[size_t(k)]) + " follows " + fmt(c[size_t(k) - 1]));
+  }
+  const int cEndLine = in.loc().line;
+  std::vector<double> g(static_cast<size_t>(ng));
+  for (int k = 0; k < ng; ++k) {
+    g[size_t(k)] = in.number("gamma angle");
+    if (g[size_t(k)] < 0.0 || g[size_t(k)] > 180.0)
+      throw InputError(in.loc(), "gamma angle must lie in 0-180, got " + fmt(g[size_t(k)]));
+    if (k > 0 && !(g[size_t(k)] > g[size_t(k) - 1]))
+      throw InputError(in.loc(), "gamma angles must increase: " + fmt(g[size_t(k)]) + " follows " + fmt(g[size_t(k) - 1]));
+  }
+
+  // Stored planes Mc1..Mc2 (1-based, wrapping past Mc for Isym 3) and the checks that they
+  // are the planes the symmetry needs.
+  std::vector<double> planes;
+  PlaneSymmetry sym = PlaneSymmetry::None;
+  const auto need = [&](size_t k, double deg) {
+    if (std::fabs(c[k] - deg) > 1e-6)
+      throw InputError(FileLoc{fileName, cEndLine - mc + 1 + int(k), 0},
+                       "symmetry " + std::to_string(isym) + " needs C plane " + std::to_string(k + 1) +
+                           " at " + fmt(deg) + " deg, got " + fmt(c[k]));
+  };
+  need(0, 0.0);
+  switch (isym) {
+    case 0: planes = c; break;
+    case 1: planes = {0.0}; sym = PlaneSymmetry::Rotational; break;
+    case 2:
+      need(size_t(mc / 2), 180.0);
+      planes.assign(c.begin(), c.begin() + mc / 2 + 1);
+      sym = PlaneSymmetry::MirrorC0C180;
+      break;
+    case 3:
+      need(size_t(3 * mc / 4), 270.0);
+      need(size_t(mc / 4), 90.0);
+      for (int k = 3 * mc / 4; k < mc; ++k) planes.push_back(c[size_t(k)] - 360.0);  // C270..C345 as -90..-15
+      for (int k = 0; k <= mc / 4; ++k) planes.push_back(c[size_t(k)]);
+      sym = PlaneSymmetry::MirrorC90C270;
+      break;
+    case 4:
+      need(size_t(mc / 4), 90.0);
+      planes.assign(c.begin(), c.begin() + mc / 4 + 1);
+      sym = PlaneSymmetry::Quadrant;
+      break;
+  }
+
+  // cd/klm -> cd with the flux of lamp set 1 (its "total luminous flux of lamps", already the
+  // sum over its lamps). A negative lamp count marks absolute photometry: the flux field then
+  // holds the luminaire flux and the lamp lumens are unknown.
+  const LampSet& set1 = info.lampSets.front();
+  if (!(set1.totalFluxLm > 0.0))
+    throw InputError(FileLoc{fileName, fluxLine, 0},
+                     "total lamp flux of lamp set 1 must be positive, got " + fmt(set1.totalFluxLm));
+  info.numLamps = std::abs(set1.count);
+  info.lampLumens = set1.count < 0 ? -1.0 : set1.totalFluxLm;
+  info.lumensPerLamp = set1.count > 0 ? set1.totalFluxLm / set1.count : -1.0;
+  info.inputWatts = set1.wattsW;
+  const double scale = set1.totalFluxLm / 1000.0 * info.conversionFactor;
+
+  std::vector<double> cd;
+  cd.reserve(planes.size() * size_t(ng));
+  for (size_t i = 0; i < planes.size() * size_t(ng); ++i) {
+    const double v = in.number("luminous intensity (cd/klm)");
+    if (v < 0.0) throw InputError(in.loc(), "negative luminous intensity " + fmt(v));
+    cd.push_back(v * scale);
+  }
+  if (!in.done()) {
+    in.text("end of file");
+    throw InputError(in.loc(), "unexpected line after the intensity table (check Mc, Ng and Isym)");
+  }
+  return PhotometricWeb(std::move(info), PhotometricType::C, sym, std::move(planes), std::move(g), std::move(cd));
+}
+
+}  // namespace candela
