@@ -17,7 +17,7 @@ inline constexpr double kWeightG = 0.670;
 inline constexpr double kWeightB = 0.065;
 
 // Photopic value of an RGB triple (same unit as the input).
-inline double photopic(const Rgb& c) { return kWeightR * c.r + kWeightG * c.g + kWeightB * c.b; }
+inline double photopic(const Rgb& c) { return kWeightR * c.x + kWeightG * c.y + kWeightB * c.z; }
 
 // Luminance in cd/m² of a Radiance radiance triple in W/sr/m².
 inline double luminanceFromRadiance(const Rgb& radiance) { return kLumensPerWatt * photopic(radiance); }

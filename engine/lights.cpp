@@ -1,0 +1,233 @@
+#include "engine/lights.h"
+
+#include "engine/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace candela {
+
+namespace {
+
+// Clips a polygon to the half-space (y − p)·n ≥ 0 (Sutherland–Hodgman, one plane).
+std::vector<Vec3> clipToHorizon(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
+  std::vector<Vec3> out;
+  out.reserve(poly.size() + 2);
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec3& a = poly[i];
+    const Vec3& b = poly[(i + 1) % poly.size()];
+    const double da = glm::dot(a - p, n), db = glm::dot(b - p, n);
+    if (da >= 0.0) out.push_back(a);
+    if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (da / (da - db)) * (b - a));
+  }
+  return out;
+}
+
+// Cosine-weighted solid angle of a circular cap of half-angle α whose axis makes angle θ with the
+// normal, when the cap is wholly above the horizon: π sin²α cos θ.
+bool capProjectedSolidAngle(const Vec3& axis, double sinAlpha, const Vec3& n, double& out) {
+  const double cosTheta = glm::dot(axis, n);
+  if (cosTheta < sinAlpha) return false;  // part of the cap below the horizon
+  out = kPi * sinAlpha * sinAlpha * cosTheta;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::array<Vec3, 3>> triangulatePolygon(const std::vector<Vec3>& poly, const Vec3& normal) {
+  std::vector<std::array<Vec3, 3>> tris;
+  std::vector<size_t> idx(poly.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  auto isConvex = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return glm::dot(glm::cross(b - a, c - b), normal) > 0.0;
+  };
+  auto inTriangle = [&](const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    return glm::dot(glm::cross(b - a, p - a), normal) >= 0.0 && glm::dot(glm::cross(c - b, p - b), normal) >= 0.0 &&
+           glm::dot(glm::cross(a - c, p - c), normal) >= 0.0;
+  };
+  size_t guard = 0;
+  while (idx.size() > 3 && guard++ < 10 * poly.size() * poly.size()) {
+    bool clipped = false;
+    for (size_t i = 0; i < idx.size(); ++i) {
+      const size_t ip = idx[(i + idx.size() - 1) % idx.size()], ic = idx[i], in = idx[(i + 1) % idx.size()];
+      const Vec3 &a = poly[ip], &b = poly[ic], &c = poly[in];
+      if (!isConvex(a, b, c)) continue;
+      bool ear = true;
+      for (size_t k : idx)
+        if (k != ip && k != ic && k != in && inTriangle(poly[k], a, b, c)) { ear = false; break; }
+      if (!ear) continue;
+      tris.push_back({a, b, c});
+      idx.erase(idx.begin() + static_cast<long>(i));
+      clipped = true;
+      break;
+    }
+    if (!clipped) break;  // numerically degenerate remainder: fan it
+  }
+  for (size_t i = 1; i + 1 < idx.size(); ++i) tris.push_back({poly[idx[0]], poly[idx[i]], poly[idx[i + 1]]});
+  return tris;
+}
+
+std::vector<Light> collectLights(const Scene& scene) {
+  std::vector<Light> lights;
+  for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& s = scene.shapes[i];
+    const Material& m = scene.materials[s.material];
+    if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
+    Light l;
+    l.kind = Light::Kind::Area;
+    l.shape = i;
+    l.radiance = m.color;
+    l.areaM2 = shapeArea(s, scene.vertices);
+    if (s.type == ShapeType::Triangle || s.type == ShapeType::Polygon) {
+      if (s.type == ShapeType::Triangle) {
+        l.outline = {s.a, s.a + s.b, s.a + s.c};
+      } else {
+        l.outline.assign(scene.vertices.points.begin() + s.firstVertex,
+                         scene.vertices.points.begin() + s.firstVertex + s.vertexCount);
+      }
+      l.triangles = triangulatePolygon(l.outline, s.n);
+      double acc = 0.0;
+      for (const auto& t : l.triangles) {
+        acc += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        l.cumulativeArea.push_back(acc);
+      }
+    }
+    lights.push_back(std::move(l));
+  }
+  for (uint32_t i = 0; i < scene.distant.size(); ++i) {
+    const Material& m = scene.materials[scene.distant[i].material];
+    if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
+    Light l;
+    l.kind = Light::Kind::Distant;
+    l.distant = i;
+    l.radiance = m.color;
+    lights.push_back(std::move(l));
+  }
+  return lights;
+}
+
+bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out) {
+  if (light.kind == Light::Kind::Distant) {
+    const DistantSource& d = scene.distant[light.distant];
+    const Frame f = Frame::fromNormal(d.direction);
+    out.dir = f.toWorld(sampleUniformCone(u1, u2, d.cosHalfAngle));
+    out.distance = std::numeric_limits<double>::infinity();
+    out.weight = light.radiance * d.solidAngleSr;
+    return true;
+  }
+  const Shape& s = scene.shapes[light.shape];
+  Vec3 y, ny;
+  switch (s.type) {
+    case ShapeType::Triangle:
+    case ShapeType::Polygon: {
+      // Pick a triangle by area, reusing u1 rescaled within its interval (keeps stratification).
+      const double target = u1 * light.areaM2;
+      size_t k = std::lower_bound(light.cumulativeArea.begin(), light.cumulativeArea.end(), target) -
+                 light.cumulativeArea.begin();
+      k = std::min(k, light.triangles.size() - 1);
+      const double lo = k == 0 ? 0.0 : light.cumulativeArea[k - 1];
+      const double span = light.cumulativeArea[k] - lo;
+      const double v1 = span > 0.0 ? std::clamp((target - lo) / span, 0.0, 1.0) : 0.5;
+      const auto& t = light.triangles[k];
+      y = sampleTriangle(t[0], t[1], t[2], v1, u2);
+      ny = s.n;
+      break;
+    }
+    case ShapeType::Sphere: {
+      // Uniform over the cone of directions the sphere subtends (pdf 1/Ω): weight L·Ω.
+      const Vec3 toC = s.a - p;
+      const double d2 = glm::dot(toC, toC);
+      const double r2 = s.r0 * s.r0;
+      if (d2 <= r2 || s.inward) return false;
+      const double dist = std::sqrt(d2);
+      const double cosMax = std::sqrt(std::max(0.0, 1.0 - r2 / d2));
+      const Vec3 dir = Frame::fromNormal(toC / dist).toWorld(sampleUniformCone(u1, u2, cosMax));
+      // Distance to the near side of the sphere along dir.
+      const double b = glm::dot(dir, toC);
+      const double disc = std::max(0.0, b * b - (d2 - r2));
+      out.dir = dir;
+      out.distance = b - std::sqrt(disc);
+      out.weight = light.radiance * (kTwoPi * (1.0 - cosMax));
+      return true;
+    }
+    case ShapeType::Ring: {
+      const Frame f = Frame::fromNormal(s.n);
+      const Vec2 q = sampleAnnulus(s.r0, s.r1, u1, u2);
+      y = s.a + q.x * f.t + q.y * f.b;
+      ny = s.n;
+      break;
+    }
+    case ShapeType::Cone: {
+      // Uniform in area: the slant position z has density ∝ r(z); invert the quadratic CDF.
+      const double r0 = s.r0, r1 = s.r1;
+      double frac;
+      if (std::abs(r1 - r0) < 1e-12 * (r0 + r1)) {
+        frac = u1;
+      } else {
+        frac = (std::sqrt(r0 * r0 + u1 * (r1 * r1 - r0 * r0)) - r0) / (r1 - r0);
+      }
+      const double r = r0 + frac * (r1 - r0);
+      const Frame f = Frame::fromNormal(s.n);
+      const double phi = kTwoPi * u2;
+      y = s.a + frac * s.d * s.n + r * (std::cos(phi) * f.t + std::sin(phi) * f.b);
+      ny = shapeNormal(s, y);
+      break;
+    }
+  }
+  const Vec3 e = y - p;
+  const double dist2 = glm::dot(e, e);
+  if (dist2 <= 0.0) return false;
+  const double dist = std::sqrt(dist2);
+  out.dir = e / dist;
+  out.distance = dist;
+  const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
+  if (cosL <= 0.0) return false;
+  out.weight = light.radiance * (cosL * light.areaM2 / dist2);
+  return true;
+}
+
+double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
+  double sum = 0.0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec3 a = poly[i] - p;
+    const Vec3 b = poly[(i + 1) % poly.size()] - p;
+    const Vec3 c = glm::cross(a, b);
+    const double cl = glm::length(c);
+    if (cl <= 0.0) continue;
+    const double theta = std::atan2(cl, glm::dot(a, b));
+    sum += theta * glm::dot(n, c) / cl;
+  }
+  return 0.5 * std::abs(sum);
+}
+
+bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out) {
+  if (light.kind == Light::Kind::Distant) {
+    const DistantSource& d = scene.distant[light.distant];
+    double psa;
+    if (!capProjectedSolidAngle(d.direction, std::sin(d.halfAngleRad), n, psa)) return false;
+    out = light.radiance * psa;
+    return true;
+  }
+  const Shape& s = scene.shapes[light.shape];
+  if (s.type == ShapeType::Sphere) {
+    const Vec3 toC = s.a - p;
+    const double d = glm::length(toC);
+    if (d <= s.r0 || s.inward) return false;
+    double psa;
+    if (!capProjectedSolidAngle(toC / d, s.r0 / d, n, psa)) return false;
+    out = light.radiance * psa;
+    return true;
+  }
+  if (light.outline.empty()) return false;
+  // One-sided source: nothing reaches a receiver behind its plane.
+  if (glm::dot(p - light.outline[0], s.n) <= 0.0) {
+    out = Rgb(0.0);
+    return true;
+  }
+  const std::vector<Vec3> clipped = clipToHorizon(light.outline, p, n);
+  out = clipped.size() < 3 ? Rgb(0.0) : light.radiance * polygonProjectedSolidAngle(clipped, p, n);
+  return true;
+}
+
+}  // namespace candela

@@ -1,0 +1,54 @@
+// Light sources sampled explicitly: `light`/`illum` surfaces (area sources) and `light`
+// distant sources (e.g. the sun). `glow` is not sampled; hemisphere rays find it.
+#pragma once
+
+#include "engine/scene.h"
+
+#include <array>
+#include <vector>
+
+namespace candela {
+
+struct Light {
+  enum class Kind { Area, Distant };
+  Kind kind = Kind::Area;
+  uint32_t shape = 0;    // Area: index into Scene::shapes
+  uint32_t distant = 0;  // Distant: index into Scene::distant
+  Rgb radiance{0.0};     // W/sr/m²
+  // Polygon sources: triangulation (for uniform area sampling) with cumulative areas.
+  std::vector<std::array<Vec3, 3>> triangles;
+  std::vector<double> cumulativeArea;
+  std::vector<Vec3> outline;  // polygon vertices, for Lambert's formula
+  double areaM2 = 0.0;
+};
+
+// The explicitly sampled lights of a scene.
+std::vector<Light> collectLights(const Scene& scene);
+
+// One sample of a light seen from point p: unit direction to the light, distance (infinity for
+// distant sources) and the unoccluded contribution w such that irradiance = E[w · cos θ · V].
+struct LightSample {
+  Vec3 dir{0.0};
+  double distance = 0.0;
+  Rgb weight{0.0};
+};
+
+// Draws a sample of `light` from p for the stratified pair (u1, u2); false when the sample
+// cannot contribute (behind a one-sided source, p inside a spherical source).
+bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out);
+
+// Exact unoccluded irradiance (W/m²) from `light` at p on a surface with normal n, where a closed
+// form exists: Lambert's polygon formula on the source clipped to the receiver's horizon; the
+// cap formula π L sin²α cos θ for spherical and distant sources whose cap is wholly above the
+// horizon. Returns false where no closed form applies.
+bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out);
+
+// Lambert's formula (Lambert 1760; e.g. Arvo 1994, "The irradiance Jacobian"): the cosine-weighted
+// solid angle Σ θ_k (n · Γ_k)/2 of a polygon seen from p, for a polygon wholly above the receiver's
+// plane. Multiply by π⁻¹·π L = L to get irradiance of a uniform source of radiance L.
+double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n);
+
+// Triangulates a simple (possibly concave) planar polygon by ear clipping.
+std::vector<std::array<Vec3, 3>> triangulatePolygon(const std::vector<Vec3>& poly, const Vec3& normal);
+
+}  // namespace candela

@@ -1,0 +1,65 @@
+// The paper's octree (Ward & Rubinstein 1988; Glassner 1984): a cube around the scene, subdivided
+// by AddSurface whenever a leaf would hold more than N surfaces and is larger than the minimum
+// cube size; rays walk the voxels front to back and stop at the first voxel holding a hit.
+#pragma once
+
+#include "engine/scene.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace candela {
+
+struct OctreeOptions {
+  int maxSetSize = 6;         // N: surfaces a leaf may hold before it is split (Radiance oconv -n)
+  double minCubeSizeM = 0.0;  // no split below this edge length; 0: root size / 4096
+};
+
+struct OctreeStats {
+  size_t nodes = 0, leaves = 0, items = 0, memoryBytes = 0;
+  int depth = 0;
+};
+
+inline constexpr uint32_t kNoShape = std::numeric_limits<uint32_t>::max();
+
+class Octree {
+ public:
+  Octree() = default;
+  Octree(const Scene& scene, OctreeOptions options = {});
+
+  struct Hit {
+    double t = 0.0;
+    uint32_t shape = kNoShape;
+  };
+
+  // Nearest hit along o + t·dir (dir unit length) with t in (tMin, tMax), ignoring shapes skipA/skipB.
+  bool intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax, Hit& hit,
+                 uint32_t skipA = kNoShape, uint32_t skipB = kNoShape) const;
+  // Any hit in (tMin, tMax) ignoring shapes skipA and skipB (shadow rays).
+  bool occluded(const Vec3& o, const Vec3& dir, double tMin, double tMax, uint32_t skipA = kNoShape,
+                uint32_t skipB = kNoShape) const;
+
+  OctreeStats stats() const;
+  const Box& cube() const { return cube_; }
+
+ private:
+  struct Node {
+    uint32_t first = 0;  // leaf: first index into items_; internal: first of 8 children
+    uint32_t count = 0;  // leaf: number of items; kInternal for an internal node
+  };
+  static constexpr uint32_t kInternal = std::numeric_limits<uint32_t>::max();
+
+  struct RayState;
+  template <bool kAnyHit>
+  bool traverse(RayState& r, uint32_t node, const Vec3& centre, double half, double ta, double tb) const;
+  template <bool kAnyHit>
+  bool run(RayState& r) const;
+
+  const Scene* scene_ = nullptr;
+  Box cube_;
+  std::vector<Node> nodes_;
+  std::vector<uint32_t> items_;
+};
+
+}  // namespace candela

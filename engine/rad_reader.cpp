@@ -1,0 +1,325 @@
+#include "engine/rad_reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+namespace candela {
+
+namespace {
+
+constexpr const char* kSupported =
+    "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source; "
+    "plastic, metal, trans, mirror, glass, light, illum, glow";
+
+struct Token {
+  std::string_view text;
+  int line;
+};
+
+class Tokenizer {
+ public:
+  Tokenizer(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+
+  bool next(Token& tok) {
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c == '\n') {
+        ++line_;
+        ++pos_;
+        atLineStart_ = true;
+      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+        ++pos_;
+      } else if (c == '#') {
+        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      } else if (c == '!' && atLineStart_) {
+        throw InputError(FileLoc{file_, line_, 0},
+                         "inline commands ('!') are refused: scene files never run programs");
+      } else {
+        const size_t start = pos_;
+        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+        tok = Token{text_.substr(start, pos_ - start), line_};
+        atLineStart_ = false;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  int line() const { return line_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string_view text_;
+  std::string file_;
+  size_t pos_ = 0;
+  int line_ = 1;
+  bool atLineStart_ = true;
+};
+
+struct Primitive {
+  std::string modifier, type, name;
+  int line = 0;
+  std::vector<std::string> strings;
+  std::vector<double> reals;
+};
+
+class Reader {
+ public:
+  Reader(std::string_view text, const std::string& file, Scene& scene) : tok_(text, file), scene_(scene) {
+    for (size_t i = 0; i < scene.materials.size(); ++i) materials_[scene.materials[i].name] = static_cast<int>(i);
+  }
+
+  void run() {
+    Token first;
+    while (tok_.next(first)) {
+      Primitive p;
+      p.line = first.line;
+      p.modifier = std::string(first.text);
+      p.type = std::string(need("a primitive type after '" + p.modifier + "'").text);
+      p.name = std::string(need("an identifier for " + p.type).text);
+      const int ns = count("string");
+      for (int i = 0; i < ns; ++i) p.strings.emplace_back(need("a string argument").text);
+      const int ni = count("integer");
+      for (int i = 0; i < ni; ++i) need("an integer argument");
+      if (ni != 0) fail(p.line, p.type + " '" + p.name + "' takes no integer arguments, got " + std::to_string(ni));
+      const int nr = count("real");
+      for (int i = 0; i < nr; ++i) {
+        const Token t = need("a real argument");
+        p.reals.push_back(number(t));
+      }
+      add(p);
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(int line, const std::string& msg) { throw InputError(FileLoc{tok_.file(), line, 0}, msg); }
+
+  Token need(const std::string& what) {
+    Token t;
+    if (!tok_.next(t)) fail(tok_.line(), "unexpected end of file: expected " + what);
+    return t;
+  }
+
+  double number(const Token& t) {
+    double v = 0.0;
+    const char* b = t.text.data();
+    const char* e = b + t.text.size();
+    if (*b == '+') ++b;
+    const auto r = std::from_chars(b, e, v);
+    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v))
+      fail(t.line, "'" + std::string(t.text) + "' is not a number");
+    return v;
+  }
+
+  int count(const char* kind) {
+    const Token t = need(std::string("the number of ") + kind + " arguments");
+    int v = 0;
+    const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
+    if (r.ec != std::errc() || r.ptr != t.text.data() + t.text.size() || v < 0)
+      fail(t.line, "'" + std::string(t.text) + "' is not a valid count of " + kind + " arguments");
+    return v;
+  }
+
+  void expectReals(const Primitive& p, size_t n) {
+    if (p.reals.size() != n)
+      fail(p.line, p.type + " '" + p.name + "' needs " + std::to_string(n) + " real arguments, got " +
+                       std::to_string(p.reals.size()));
+  }
+  void expectStrings(const Primitive& p, size_t maxN) {
+    if (p.strings.size() > maxN)
+      fail(p.line, p.type + " '" + p.name + "' takes at most " + std::to_string(maxN) + " string arguments, got " +
+                       std::to_string(p.strings.size()));
+  }
+
+  Vec3 vec(const Primitive& p, size_t i) const { return Vec3(p.reals[i], p.reals[i + 1], p.reals[i + 2]); }
+
+  int modifierOf(const Primitive& p) {
+    if (p.modifier == "void") return -1;
+    const auto it = materials_.find(p.modifier);
+    if (it == materials_.end())
+      fail(p.line, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
+    return it->second;
+  }
+
+  void addMaterial(const Primitive& p, MaterialType type) {
+    if (p.modifier != "void" && materials_.find(p.modifier) == materials_.end())
+      fail(p.line, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
+    Material m;
+    m.type = type;
+    m.name = p.name;
+    m.loc = FileLoc{tok_.file(), p.line, 0};
+    switch (type) {
+      case MaterialType::Plastic:
+      case MaterialType::Metal:
+        expectStrings(p, 0);
+        expectReals(p, 5);
+        m.color = vec(p, 0);
+        m.specularity = p.reals[3];
+        m.roughness = p.reals[4];
+        break;
+      case MaterialType::Trans:
+        expectStrings(p, 0);
+        expectReals(p, 7);
+        m.color = vec(p, 0);
+        m.specularity = p.reals[3];
+        m.roughness = p.reals[4];
+        m.transmissivity = p.reals[5];
+        m.transmittedSpecular = p.reals[6];
+        break;
+      case MaterialType::Mirror:
+      case MaterialType::Illum:
+      case MaterialType::Light:
+        expectStrings(p, type == MaterialType::Light ? 0 : 1);
+        expectReals(p, 3);
+        m.color = vec(p, 0);
+        if (!p.strings.empty() && p.strings[0] != "void") {
+          const auto it = materials_.find(p.strings[0]);
+          if (it == materials_.end())
+            fail(p.line, "alternate material '" + p.strings[0] + "' of " + p.type + " '" + p.name +
+                             "' is not defined before use");
+          m.alternate = it->second;
+        }
+        break;
+      case MaterialType::Glass:
+        expectStrings(p, 0);
+        if (p.reals.size() != 3 && p.reals.size() != 4)
+          fail(p.line, "glass '" + p.name + "' needs 3 or 4 real arguments, got " + std::to_string(p.reals.size()));
+        m.color = vec(p, 0);
+        if (p.reals.size() == 4) m.refractiveIndex = p.reals[3];
+        break;
+      case MaterialType::Glow:
+        expectStrings(p, 0);
+        expectReals(p, 4);
+        m.color = vec(p, 0);
+        m.glowRadiusM = p.reals[3];
+        break;
+      case MaterialType::Void:
+        break;
+    }
+    for (int c = 0; c < 3; ++c)
+      if (m.color[c] < 0.0) fail(p.line, p.type + " '" + p.name + "' has a negative colour component");
+    materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+  }
+
+  void addPolygon(const Primitive& p, uint32_t mat, Scene& target) {
+    expectStrings(p, 0);
+    if (p.reals.size() % 3 != 0)
+      fail(p.line, "polygon '" + p.name + "' needs a multiple of 3 real arguments, got " +
+                       std::to_string(p.reals.size()));
+    const size_t nv = p.reals.size() / 3;
+    if (nv < 3) fail(p.line, "polygon '" + p.name + "' needs at least 3 vertices, got " + std::to_string(nv));
+    std::vector<Vec3> pts;
+    for (size_t i = 0; i < nv; ++i) pts.push_back(vec(p, 3 * i));
+    Box b;
+    for (const Vec3& v : pts) b.extend(v);
+    const double diameter = glm::length(b.size());
+    const Vec3 nn = newellNormal(pts);
+    const double area = 0.5 * glm::length(nn);
+    if (!(diameter > 0.0) || area <= kDegenerateTolerance * diameter * diameter)
+      fail(p.line, "polygon '" + p.name + "' is degenerate (zero area)");
+    const Vec3 n = nn / (2.0 * area);
+    Vec3 centroid(0.0);
+    for (const Vec3& v : pts) centroid += v;
+    centroid /= static_cast<double>(nv);
+    for (size_t i = 0; i < nv; ++i) {
+      const double off = std::abs(glm::dot(n, pts[i] - centroid));
+      if (off > kPlanarTolerance * diameter) {
+        std::ostringstream msg;
+        msg << "polygon '" << p.name << "' is not planar: vertex " << (i + 1) << " is " << off
+            << " m from its plane (tolerance 0.1 % of its size, " << kPlanarTolerance * diameter << " m)";
+        fail(p.line, msg.str());
+      }
+    }
+    target.addPolygon(pts, mat, p.name);
+  }
+
+  void checkRadius(const Primitive& p, double r) {
+    if (r < 0.0) fail(p.line, p.type + " '" + p.name + "' has a negative radius");
+  }
+
+  void add(const Primitive& p) {
+    const std::string& t = p.type;
+    if (t == "plastic") return addMaterial(p, MaterialType::Plastic);
+    if (t == "metal") return addMaterial(p, MaterialType::Metal);
+    if (t == "trans") return addMaterial(p, MaterialType::Trans);
+    if (t == "mirror") return addMaterial(p, MaterialType::Mirror);
+    if (t == "glass") return addMaterial(p, MaterialType::Glass);
+    if (t == "light") return addMaterial(p, MaterialType::Light);
+    if (t == "illum") return addMaterial(p, MaterialType::Illum);
+    if (t == "glow") return addMaterial(p, MaterialType::Glow);
+    const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
+                           t == "cup" || t == "cylinder" || t == "tube" || t == "source";
+    if (!isSurface) fail(p.line, "primitive type '" + t + "' is not supported (" + kSupported + ")");
+    const int mod = modifierOf(p);
+    if (t == "source") {
+      expectStrings(p, 0);
+      expectReals(p, 4);
+      const Vec3 dir = vec(p, 0);
+      if (glm::length(dir) == 0.0) fail(p.line, "source '" + p.name + "' has a zero direction");
+      if (!(p.reals[3] > 0.0 && p.reals[3] <= 360.0))
+        fail(p.line, "source '" + p.name + "' needs an angle in (0, 360] degrees");
+      if (mod < 0) return;  // void: invisible, as in Radiance
+      const MaterialType mt = scene_.materials[mod].type;
+      if (mt != MaterialType::Light && mt != MaterialType::Glow && mt != MaterialType::Illum)
+        fail(p.line, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
+      scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
+      return;
+    }
+    // Geometry is checked even when its modifier is void (void surfaces are invisible in Radiance).
+    const uint32_t mat = mod < 0 ? 0 : static_cast<uint32_t>(mod);
+    Scene probe;  // void surfaces are validated into a scratch scene and dropped
+    Scene& target = mod < 0 ? probe : scene_;
+    if (t == "polygon") {
+      addPolygon(p, mat, target);
+    } else if (t == "sphere" || t == "bubble") {
+      expectStrings(p, 0);
+      expectReals(p, 4);
+      checkRadius(p, p.reals[3]);
+      if (p.reals[3] == 0.0) fail(p.line, t + " '" + p.name + "' has a zero radius");
+      target.addSphere(vec(p, 0), p.reals[3], mat, t == "bubble", p.name);
+    } else if (t == "ring") {
+      expectStrings(p, 0);
+      expectReals(p, 8);
+      checkRadius(p, p.reals[6]);
+      checkRadius(p, p.reals[7]);
+      if (!(p.reals[7] > p.reals[6]))
+        fail(p.line, "ring '" + p.name + "' needs an outer radius larger than its inner radius");
+      if (glm::length(vec(p, 3)) == 0.0) fail(p.line, "ring '" + p.name + "' has a zero normal");
+      target.addRing(vec(p, 0), vec(p, 3), p.reals[6], p.reals[7], mat, p.name);
+    } else {
+      const bool isCone = t == "cone" || t == "cup";
+      expectStrings(p, 0);
+      expectReals(p, isCone ? 8 : 7);
+      const double ra = p.reals[6];
+      const double rb = isCone ? p.reals[7] : p.reals[6];
+      checkRadius(p, ra);
+      checkRadius(p, rb);
+      if (ra == 0.0 && rb == 0.0) fail(p.line, t + " '" + p.name + "' has zero radii");
+      if (glm::length(vec(p, 3) - vec(p, 0)) == 0.0) fail(p.line, t + " '" + p.name + "' has zero length");
+      target.addCone(vec(p, 0), vec(p, 3), ra, rb, mat, t == "cup" || t == "tube", p.name);
+    }
+  }
+
+  Tokenizer tok_;
+  Scene& scene_;
+  std::unordered_map<std::string, int> materials_;
+};
+
+}  // namespace
+
+void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene) {
+  Reader(text, fileName, scene).run();
+}
+
+void readRadianceFile(const std::filesystem::path& path, Scene& scene) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open scene file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  readRadianceText(ss.str(), path.string(), scene);
+}
+
+}  // namespace candela

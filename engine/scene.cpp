@@ -1,0 +1,160 @@
+#include "engine/scene.h"
+
+#include <cmath>
+
+namespace candela {
+
+const char* materialTypeName(MaterialType t) {
+  switch (t) {
+    case MaterialType::Void: return "void";
+    case MaterialType::Plastic: return "plastic";
+    case MaterialType::Metal: return "metal";
+    case MaterialType::Trans: return "trans";
+    case MaterialType::Mirror: return "mirror";
+    case MaterialType::Glass: return "glass";
+    case MaterialType::Light: return "light";
+    case MaterialType::Illum: return "illum";
+    case MaterialType::Glow: return "glow";
+  }
+  return "?";
+}
+
+void deriveMaterial(Material& m) {
+  // Radiance reference manual ("Materials"): plastic's diffuse part is colour·(1 − spec) and its
+  // specular part uncoloured spec; metal's specular part takes the colour; trans splits the
+  // non-specular light into reflected (1 − trans), diffusely transmitted trans·(1 − tspec) and
+  // specularly transmitted trans·tspec.
+  const double s = m.specularity;
+  switch (m.type) {
+    case MaterialType::Plastic:
+      m.diffuseReflectance = m.color * (1.0 - s);
+      m.specularReflectance = Rgb(s);
+      break;
+    case MaterialType::Metal:
+      m.diffuseReflectance = m.color * (1.0 - s);
+      m.specularReflectance = m.color * s;
+      break;
+    case MaterialType::Trans: {
+      const Rgb nonSpec = m.color * (1.0 - s);
+      m.diffuseReflectance = nonSpec * (1.0 - m.transmissivity);
+      m.diffuseTransmittance = nonSpec * m.transmissivity * (1.0 - m.transmittedSpecular);
+      m.specularTransmittance = nonSpec * m.transmissivity * m.transmittedSpecular;
+      m.specularReflectance = Rgb(s);
+      break;
+    }
+    case MaterialType::Mirror:
+      m.specularReflectance = m.color;
+      break;
+    default:
+      break;
+  }
+}
+
+Vec3 newellNormal(const std::vector<Vec3>& pts) {
+  Vec3 n(0.0);
+  for (size_t i = 0; i < pts.size(); ++i) n += glm::cross(pts[i], pts[(i + 1) % pts.size()]);
+  return n;
+}
+
+Box Scene::bounds() const {
+  Box b;
+  for (const Shape& s : shapes) b.extend(shapeBounds(s, vertices));
+  return b;
+}
+
+uint32_t Scene::addMaterial(Material m) {
+  deriveMaterial(m);
+  materials.push_back(std::move(m));
+  return static_cast<uint32_t>(materials.size() - 1);
+}
+
+uint32_t Scene::addPolygon(const std::vector<Vec3>& pts, uint32_t material, const std::string& name) {
+  Shape s;
+  s.material = material;
+  s.n = glm::normalize(newellNormal(pts));
+  if (pts.size() == 3) {
+    s.type = ShapeType::Triangle;
+    s.a = pts[0];
+    s.b = pts[1] - pts[0];
+    s.c = pts[2] - pts[0];
+  } else {
+    s.type = ShapeType::Polygon;
+    // Plane offset from the centroid: the best plane for slightly non-planar input.
+    Vec3 centroid(0.0);
+    for (const Vec3& p : pts) centroid += p;
+    centroid /= static_cast<double>(pts.size());
+    s.a = pts[0];
+    s.d = glm::dot(s.n, centroid);
+  }
+  // Project onto the plane that drops the normal's dominant axis.
+  const Vec3 an = glm::abs(s.n);
+  const int drop = (an.x >= an.y && an.x >= an.z) ? 0 : (an.y >= an.z ? 1 : 2);
+  s.axisU = static_cast<uint8_t>((drop + 1) % 3);
+  s.axisV = static_cast<uint8_t>((drop + 2) % 3);
+  s.firstVertex = static_cast<uint32_t>(vertices.points.size());
+  s.vertexCount = static_cast<uint32_t>(pts.size());
+  for (const Vec3& p : pts) {
+    vertices.points.push_back(p);
+    vertices.projected.emplace_back(p[s.axisU], p[s.axisV]);
+  }
+  shapes.push_back(s);
+  shapeNames.push_back(name);
+  return static_cast<uint32_t>(shapes.size() - 1);
+}
+
+uint32_t Scene::addSphere(const Vec3& centre, double radiusM, uint32_t material, bool inward,
+                          const std::string& name) {
+  Shape s;
+  s.type = ShapeType::Sphere;
+  s.material = material;
+  s.inward = inward;
+  s.a = centre;
+  s.r0 = radiusM;
+  shapes.push_back(s);
+  shapeNames.push_back(name);
+  return static_cast<uint32_t>(shapes.size() - 1);
+}
+
+uint32_t Scene::addRing(const Vec3& centre, const Vec3& normal, double innerM, double outerM, uint32_t material,
+                        const std::string& name) {
+  Shape s;
+  s.type = ShapeType::Ring;
+  s.material = material;
+  s.a = centre;
+  s.n = glm::normalize(normal);
+  s.r0 = innerM;
+  s.r1 = outerM;
+  shapes.push_back(s);
+  shapeNames.push_back(name);
+  return static_cast<uint32_t>(shapes.size() - 1);
+}
+
+uint32_t Scene::addCone(const Vec3& a, const Vec3& b, double ra, double rb, uint32_t material, bool inward,
+                        const std::string& name) {
+  Shape s;
+  s.type = ShapeType::Cone;
+  s.material = material;
+  s.inward = inward;
+  s.a = a;
+  s.b = b;
+  s.d = glm::length(b - a);
+  s.n = (b - a) / s.d;
+  s.r0 = ra;
+  s.r1 = rb;
+  shapes.push_back(s);
+  shapeNames.push_back(name);
+  return static_cast<uint32_t>(shapes.size() - 1);
+}
+
+void Scene::addDistant(const Vec3& dir, double fullAngleDeg, uint32_t material, const std::string& name) {
+  DistantSource d;
+  d.direction = glm::normalize(dir);
+  d.halfAngleRad = degToRad(0.5 * fullAngleDeg);
+  d.cosHalfAngle = std::cos(d.halfAngleRad);
+  d.solidAngleSr = kTwoPi * (1.0 - d.cosHalfAngle);
+  d.material = material;
+  d.name = name;
+  distant.push_back(d);
+}
+
+}  // namespace candela

@@ -1,0 +1,81 @@
+// A scene: materials, surfaces (in the octree) and distant sources (at infinity).
+#pragma once
+
+#include "engine/base/error.h"
+#include "engine/base/units.h"
+#include "engine/shapes.h"
+
+#include <string>
+#include <vector>
+
+namespace candela {
+
+enum class MaterialType { Void, Plastic, Metal, Trans, Mirror, Glass, Light, Illum, Glow };
+
+const char* materialTypeName(MaterialType t);
+
+// A material as read from the scene, with the derived reflectances the integrators use.
+// Colours are Radiance RGB; emission is a radiance in W/sr/m² (179 lm/W).
+struct Material {
+  MaterialType type = MaterialType::Void;
+  std::string name;
+  FileLoc loc;
+  Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour or light/glow/illum radiance
+  double specularity = 0.0;   // plastic, metal, trans (fraction)
+  double roughness = 0.0;     // plastic, metal, trans (rms slope)
+  double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
+  double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
+  double refractiveIndex = 1.52;     // glass
+  double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
+  int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
+  // Derived (Radiance's definitions of plastic, metal and trans):
+  Rgb diffuseReflectance{0.0};
+  Rgb diffuseTransmittance{0.0};
+  Rgb specularTransmittance{0.0};
+  Rgb specularReflectance{0.0};
+
+  bool isEmitter() const {
+    return type == MaterialType::Light || type == MaterialType::Illum || type == MaterialType::Glow;
+  }
+  // Light sources sampled explicitly (light, illum); glow is found by hemisphere sampling.
+  bool isSampledSource() const { return type == MaterialType::Light || type == MaterialType::Illum; }
+};
+
+// A source at infinity: Radiance's `source` primitive (a cone of directions).
+struct DistantSource {
+  Vec3 direction{0.0, 0.0, 1.0};  // unit, towards the source
+  double halfAngleRad = 0.0;
+  double cosHalfAngle = 1.0;
+  double solidAngleSr = 0.0;      // 2π(1 − cos half-angle)
+  uint32_t material = 0;
+  std::string name;
+};
+
+struct Scene {
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  std::vector<std::string> shapeNames;
+  std::vector<DistantSource> distant;
+  VertexStore vertices;
+
+  Box bounds() const;
+  // Adds a material and returns its index.
+  uint32_t addMaterial(Material m);
+  // Adds a polygon (≥ 3 vertices, planar; checked by the reader) or triangle; returns its index.
+  uint32_t addPolygon(const std::vector<Vec3>& pts, uint32_t material, const std::string& name = {});
+  uint32_t addSphere(const Vec3& centre, double radiusM, uint32_t material, bool inward = false,
+                     const std::string& name = {});
+  uint32_t addRing(const Vec3& centre, const Vec3& normal, double innerM, double outerM, uint32_t material,
+                   const std::string& name = {});
+  uint32_t addCone(const Vec3& a, const Vec3& b, double ra, double rb, uint32_t material, bool inward = false,
+                   const std::string& name = {});
+  void addDistant(const Vec3& dir, double fullAngleDeg, uint32_t material, const std::string& name = {});
+};
+
+// Fills a material's derived reflectances from its type and parameters.
+void deriveMaterial(Material& m);
+
+// Newell's normal of a polygon (not normalised; its length is twice the area).
+Vec3 newellNormal(const std::vector<Vec3>& pts);
+
+}  // namespace candela

@@ -1,0 +1,78 @@
+// The ray tracer: octree, light sources and the Monte Carlo irradiance estimator at sensor points
+// (direct light from sampled sources + stratified cosine-weighted hemisphere, the paper's eq. 3,
+// with path-traced interreflection up to a bounce limit).
+#pragma once
+
+#include "engine/base/rng.h"
+#include "engine/lights.h"
+#include "engine/octree.h"
+#include "engine/scene.h"
+
+#include <cstdint>
+#include <string>
+
+namespace candela {
+
+// Sample counts and limits of one run. Passed explicitly; no global options.
+struct TraceSettings {
+  int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
+  int lightSamples = 64;         // stratified samples per sampled light source per sensor point
+  int maxBounces = 32;           // diffuse reflections followed (0: direct light and glow only)
+  uint64_t seed = 1;
+};
+
+enum class Quality { Draft, Normal, High };
+
+// Parses "draft", "normal" or "high"; throws std::invalid_argument otherwise.
+Quality parseQuality(const std::string& s);
+// The sample counts a preset stands for (see docs/engine.md for why).
+TraceSettings settingsForQuality(Quality q);
+
+// Irradiance estimate at a point: RGB irradiance in W/m² and the variance of its photopic value
+// (from the estimator's own sample variance; stratification makes it an upper bound).
+struct IrradianceEstimate {
+  Rgb irradiance{0.0};
+  double variancePhotopic = 0.0;
+  double illuminanceLux() const { return illuminanceFromIrradiance(irradiance); }
+  double standardErrorLux() const;
+};
+
+class Tracer {
+ public:
+  Tracer(const Scene& scene, OctreeOptions octree = {});
+
+  // Irradiance on the side of unit normal n at point p. `pointIndex` selects the random stream,
+  // so the result depends only on (seed, pointIndex), never on threads.
+  IrradianceEstimate irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s) const;
+
+  // Fraction of light (RGB) that passes from o along unit dir over distance tMax: 0 behind an
+  // opaque surface, glass and trans transmit their specular part. Shapes skipA/skipB are ignored.
+  Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const;
+
+  // Radiance arriving at o from direction -dir, i.e. along a ray leaving o in direction dir.
+  // Sampled sources are counted only when countSources is true (after specular reflection or for
+  // camera rays); diffuse paths get them by explicit source sampling instead.
+  Rgb radiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
+               const TraceSettings& s) const;
+
+  const Scene& scene() const { return scene_; }
+  const Octree& octree() const { return octree_; }
+  const std::vector<Light>& lights() const { return lights_; }
+
+  // Offset of a ray origin from the surface it leaves, in metres (see docs/engine.md).
+  static double originOffset(const Vec3& p);
+
+ private:
+  // Direct irradiance at p (normal n) from every sampled source with k stratified samples each;
+  // adds the variance of its photopic value to *variance when given.
+  Rgb directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const;
+  // Radiance of the sky/distant sources seen along an escaping ray.
+  Rgb distantRadiance(const Vec3& dir, bool countSources) const;
+
+  const Scene& scene_;
+  Octree octree_;
+  std::vector<Light> lights_;
+  bool hasTransmitters_ = false;
+};
+
+}  // namespace candela
