@@ -1,0 +1,100 @@
+#include "photometry/eulumdat.h"
+
+#include "engine/base/error.h"
+#include "photometry/ies_lm63.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace candela {
+namespace {
+
+const std::string kLdt = std::string(CANDELA_TEST_DATA) + "/ldt/";
+const std::string kIes = std::string(CANDELA_TEST_DATA) + "/ies/";
+
+// The .ldt fixtures hold I / (flux / 1000) / CF with 6 decimals (flux 2000 lm), so the
+// rebuilt candelas agree with the IES fixtures of the same formula to ~1e-5 cd.
+void expectSameWeb(const PhotometricWeb& a, const PhotometricWeb& b) {
+  for (double c = -10.0; c < 370.0; c += 7.3)
+    for (double g = 0.0; g <= 180.0; g += 3.3)
+      ASSERT_NEAR(a.intensityCd(c, g), b.intensityCd(c, g), 2e-5) << "C " << c << " gamma " << g;
+  EXPECT_NEAR(a.totalLumens(), b.totalLumens(), 1e-6 * b.totalLumens());
+}
+
+TEST(Eulumdat, HeaderAndScaling) {
+  const PhotometricWeb web = readEulumdat(kLdt + "lambert_isym1.ldt");
+  EXPECT_EQ(web.format(), "EULUMDAT");
+  EXPECT_NEAR(web.intensityCd(0.0, 0.0), 1000.0, 1e-5);  // 500 cd/klm x 2000 lm
+  EXPECT_DOUBLE_EQ(web.lampLumens(), 2000.0);
+  EXPECT_DOUBLE_EQ(web.inputWatts(), 30.0);
+  EXPECT_NEAR(web.totalLumens(), kPi * 1000.0, 0.005 * kPi * 1000.0);
+  EXPECT_NEAR(web.lightOutputRatio(), web.totalLumens() / 2000.0, 1e-12);
+  EXPECT_NEAR(web.openingWidthM(), 0.6, 1e-12);
+  EXPECT_NEAR(web.openingLengthM(), 0.6, 1e-12);
+  EXPECT_EQ(web.openingShape(), OpeningShape::Rectangular);
+  EXPECT_NEAR(web.info().luminaireLengthM, 0.62, 1e-12);
+  EXPECT_DOUBLE_EQ(web.info().declaredLorPercent, 78.5);
+  EXPECT_DOUBLE_EQ(web.info().declaredDownwardFluxPercent, 100.0);
+  EXPECT_EQ(web.keywords().at("LUMINAIRE"), "analytic lambert_isym1.ldt");
+  ASSERT_EQ(web.info().lampSets.size(), 1u);
+  EXPECT_EQ(web.info().lampSets[0].colour, "4000 K");
+}
+
+TEST(Eulumdat, NegativeLampCountIsAbsolutePhotometry) {
+  const PhotometricWeb web = readEulumdat(kLdt + "lambert_absolute.ldt");
+  EXPECT_TRUE(web.isAbsolute());
+  EXPECT_TRUE(std::isnan(web.lightOutputRatio()));
+  EXPECT_NEAR(web.intensityCd(0.0, 0.0), 1000.0, 1e-3);  // 318.309... cd/klm x 3141.6 lm
+}
+
+TEST(Eulumdat, AgreesWithIesOfTheSameDistribution) {
+  expectSameWeb(readEulumdat(kLdt + "asym_isym0.ldt"), readIes(kIes + "asym_c.ies"));
+  expectSameWeb(readEulumdat(kLdt + "lambert_isym1.ldt"), readIes(kIes + "lambert_full.ies"));
+}
+
+TEST(Eulumdat, SymmetryIndicatorsMatchFullFiles) {
+  expectSameWeb(readEulumdat(kLdt + "half_isym2.ldt"), readIes(kIes + "half_full.ies"));
+  expectSameWeb(readEulumdat(kLdt + "h9027_isym3.ldt"), readIes(kIes + "h9027_full.ies"));
+  expectSameWeb(readEulumdat(kLdt + "quad_isym4.ldt"), readIes(kIes + "quad_full.ies"));  // CF 2
+}
+
+struct BadFile {
+  const char* name;
+  int line;
+  const char* text;
+};
+
+class LdtErrors : public testing::TestWithParam<BadFile> {};
+
+TEST_P(LdtErrors, NamesFileAndLine) {
+  const BadFile& b = GetParam();
+  try {
+    readEulumdat(kLdt + b.name);
+    FAIL() << b.name << " was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, b.line) << e.what();
+    const std::string what = e.what();
+    EXPECT_NE(what.find(std::string(b.name) + ":" + std::to_string(b.line) + ": "), std::string::npos) << what;
+    EXPECT_NE(what.find(b.text), std::string::npos) << what;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fixtures, LdtErrors,
+    testing::Values(BadFile{"bad_truncated.ldt", 130, "truncated"},
+                    BadFile{"bad_isym.ldt", 3, "symmetry indicator"},
+                    BadFile{"bad_number.ldt", 13, "bad number '6x0'"},
+                    BadFile{"bad_c_angles.ldt", 45, "C angles must increase"},
+                    BadFile{"bad_negative.ldt", 111, "negative luminous intensity"},
+                    BadFile{"bad_extra.ldt", 141, "unexpected line"},
+                    BadFile{"bad_flux.ldt", 29, "lamp flux"},
+                    BadFile{"bad_mc.ldt", 4, "multiple of 4"}),
+    [](const testing::TestParamInfo<BadFile>& info) {
+      std::string n = info.param.name;
+      return n.substr(0, n.find('.'));
+    });
+
+}  // namespace
+}  // namespace candela
