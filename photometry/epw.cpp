@@ -1,0 +1,131 @@
+#include "photometry/epw.h"
+
+#include "photometry/site.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace candela {
+
+namespace {
+
+constexpr int kHeaderLines = 8;
+constexpr int kRecordFields = 35;
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = line.find(',', start);
+    out.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const size_t b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+
+double number(const std::string& raw, const FileLoc& loc, const char* what) {
+  const std::string s = trim(raw);
+  double v = 0.0;
+  const char* first = s.data();
+  if (!s.empty() && s[0] == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v))
+    throw InputError(loc, std::string("bad number '") + s + "' for " + what);
+  return v;
+}
+
+int integer(const std::string& raw, const FileLoc& loc, const char* what, int lo, int hi) {
+  const double v = number(raw, loc, what);
+  if (v != std::floor(v) || v < lo || v > hi)
+    throw InputError(loc, std::string(what) + " " + trim(raw) + " is outside " + std::to_string(lo) + ".." +
+                              std::to_string(hi));
+  return int(v);
+}
+
+double orMissing(double v, double missingAtOrAbove) {
+  return v >= missingAtOrAbove ? std::numeric_limits<double>::quiet_NaN() : v;
+}
+
+}  // namespace
+
+EpwFile parseEpw(std::istream& in, const std::string& fileName) {
+  EpwFile f;
+  std::string line;
+  int lineNo = 0;
+  for (int h = 0; h < kHeaderLines; ++h) {
+    if (!std::getline(in, line)) throw InputError(FileLoc{fileName, lineNo, 0}, "EPW header ends early (8 lines expected)");
+    ++lineNo;
+    const FileLoc loc{fileName, lineNo, 0};
+    if (h == 0) {
+      const auto fields = splitCsv(line);
+      if (fields.empty() || trim(fields[0]) != "LOCATION")
+        throw InputError(loc, "EPW must start with a LOCATION line");
+      if (fields.size() < 10) throw InputError(loc, "LOCATION needs 10 fields, got " + std::to_string(fields.size()));
+      EpwLocation& l = f.location;
+      l.city = trim(fields[1]);
+      l.region = trim(fields[2]);
+      l.country = trim(fields[3]);
+      l.source = trim(fields[4]);
+      l.wmo = trim(fields[5]);
+      l.latitudeDeg = number(fields[6], loc, "latitude");
+      l.longitudeDeg = number(fields[7], loc, "longitude");
+      l.timezoneHours = number(fields[8], loc, "time zone");
+      l.elevationM = number(fields[9], loc, "elevation");
+      if (std::abs(l.latitudeDeg) > 90.0) throw InputError(loc, "latitude outside [-90, 90]");
+      if (std::abs(l.longitudeDeg) > 180.0) throw InputError(loc, "longitude outside [-180, 180]");
+      if (std::abs(l.timezoneHours) > 18.0) throw InputError(loc, "time zone outside [-18, 18] h");
+    }
+  }
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (trim(line).empty()) continue;
+    const FileLoc loc{fileName, lineNo, 0};
+    const auto v = splitCsv(line);
+    if (v.size() < size_t(kRecordFields))
+      throw InputError(loc, "EPW record has " + std::to_string(v.size()) + " fields, expected " +
+                                std::to_string(kRecordFields));
+    EpwRecord r;
+    r.line = lineNo;
+    r.year = integer(v[0], loc, "year", -9999, 9999);
+    r.month = integer(v[1], loc, "month", 1, 12);
+    r.day = integer(v[2], loc, "day", 1, 31);
+    if (r.day > daysInMonth(2000, r.month))  // typical years mix source years: allow Feb 29
+      throw InputError(loc, "day " + std::to_string(r.day) + " does not exist in month " + std::to_string(r.month));
+    r.hour = integer(v[3], loc, "hour", 1, 24);
+    r.minute = integer(v[4], loc, "minute", 0, 60);
+    // Field indices from the EPW data dictionary (0-based): 6 dry bulb, 7 dew point,
+    // 13 global horizontal, 14 direct normal, 15 diffuse horizontal radiation,
+    // 16 global horizontal, 17 direct normal, 18 diffuse horizontal illuminance.
+    r.dryBulbC = orMissing(number(v[6], loc, "dry bulb temperature"), 99.9);
+    r.dewPointC = orMissing(number(v[7], loc, "dew point temperature"), 99.9);
+    r.globalHorizontalWhm2 = orMissing(number(v[13], loc, "global horizontal radiation"), 9999.0);
+    r.directNormalWhm2 = orMissing(number(v[14], loc, "direct normal radiation"), 9999.0);
+    r.diffuseHorizontalWhm2 = orMissing(number(v[15], loc, "diffuse horizontal radiation"), 9999.0);
+    r.globalHorizontalLux = orMissing(number(v[16], loc, "global horizontal illuminance"), 999900.0);
+    r.directNormalLux = orMissing(number(v[17], loc, "direct normal illuminance"), 999900.0);
+    r.diffuseHorizontalLux = orMissing(number(v[18], loc, "diffuse horizontal illuminance"), 999900.0);
+    for (double x : {r.globalHorizontalWhm2, r.directNormalWhm2, r.diffuseHorizontalWhm2})
+      if (x < 0.0) throw InputError(loc, "negative irradiation");
+    f.records.push_back(r);
+  }
+  if (f.records.empty()) throw InputError(FileLoc{fileName, lineNo, 0}, "EPW file has no hourly records");
+  return f;
+}
+
+EpwFile readEpw(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(FileLoc{path, 0, 0}, "cannot open EPW file");
+  return parseEpw(in, path);
+}
+
+}  // namespace candela

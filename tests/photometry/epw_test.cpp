@@ -1,0 +1,88 @@
+#include "photometry/epw.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace candela {
+namespace {
+
+const std::string kDir = std::string(CANDELA_TEST_DATA) + "/epw/";
+
+TEST(Epw, ReadsSyntheticThreeDays) {
+  const EpwFile f = readEpw(kDir + "synthetic_3day.epw");
+  EXPECT_EQ(f.location.city, "Golden SYNTHETIC");
+  EXPECT_DOUBLE_EQ(f.location.latitudeDeg, 39.74);
+  EXPECT_DOUBLE_EQ(f.location.longitudeDeg, -105.18);
+  EXPECT_DOUBLE_EQ(f.location.timezoneHours, -7.0);
+  EXPECT_DOUBLE_EQ(f.location.elevationM, 1829.0);
+  ASSERT_EQ(f.records.size(), 72u);
+  EXPECT_FALSE(f.isFullYear());
+  const EpwRecord& noon = f.records[12];  // 2026-01-01, hour ending 13:00
+  EXPECT_EQ(noon.month, 1);
+  EXPECT_EQ(noon.day, 1);
+  EXPECT_EQ(noon.hour, 13);
+  EXPECT_EQ(noon.line, 21);
+  EXPECT_GT(noon.directNormalWhm2, 0.0);
+  // The synthetic generator writes illuminance = 100 lm/W x direct normal (rounded).
+  EXPECT_NEAR(noon.directNormalLux, 100.0 * noon.directNormalWhm2, 100.0);
+  EXPECT_EQ(f.records[0].globalHorizontalWhm2, 0.0);  // 00:00-01:00 is night
+}
+
+TEST(Epw, ReadsSyntheticFullYear) {
+  const EpwFile f = readEpw(kDir + "synthetic_golden_2026.epw");
+  EXPECT_EQ(f.records.size(), 8760u);
+  EXPECT_TRUE(f.isFullYear());
+  EXPECT_EQ(f.records.back().month, 12);
+  EXPECT_EQ(f.records.back().day, 31);
+  EXPECT_EQ(f.records.back().hour, 24);
+  EXPECT_EQ(f.records.back().line, 8768);
+}
+
+TEST(Epw, MissingValuesBecomeNaN) {
+  std::istringstream in(
+      "LOCATION,X,,,,,10,20,1,5\nA\nB\nC\nD\nE\nF\nG\n"
+      "2026,1,1,12,60,flags,99.9,5,50,82000,0,0,300,9999,9999,9999,999999,999999,999999,0,"
+      "0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n");
+  const EpwFile f = parseEpw(in, "mem.epw");
+  ASSERT_EQ(f.records.size(), 1u);
+  EXPECT_TRUE(std::isnan(f.records[0].dryBulbC));
+  EXPECT_TRUE(std::isnan(f.records[0].directNormalWhm2));
+  EXPECT_TRUE(std::isnan(f.records[0].diffuseHorizontalLux));
+}
+
+struct ErrorCase {
+  const char* file;
+  int line;
+  const char* text;
+};
+
+class EpwErrors : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(EpwErrors, ReportFileAndLine) {
+  const ErrorCase c = GetParam();
+  try {
+    readEpw(kDir + c.file);
+    FAIL() << c.file;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, c.line) << e.what();
+    const std::string prefix = std::string(c.file) + ":" + std::to_string(c.line) + ": ";
+    EXPECT_NE(std::string(e.what()).find(prefix), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.text), std::string::npos) << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Fixtures, EpwErrors,
+    ::testing::Values(ErrorCase{"bad_field_count.epw", 11, "has 20 fields, expected 35"},
+                      ErrorCase{"bad_number.epw", 10, "bad number 'abc' for direct normal radiation"},
+                      ErrorCase{"bad_hour.epw", 12, "hour 25 is outside 1..24"},
+                      ErrorCase{"bad_location.epw", 1, "bad number 'north' for latitude"}));
+
+TEST(Epw, MissingFile) {
+  EXPECT_THROW(readEpw(kDir + "no_such.epw"), InputError);
+}
+
+}  // namespace
+}  // namespace candela
