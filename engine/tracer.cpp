@@ -169,16 +169,17 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
 
 Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
                      const TraceSettings& s) const {
+  return pathRadiance(origin, direction, skip, countSources, rng, s, 0, 1);
+}
+
+Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
+                         const TraceSettings& s, int diffuse, int split) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
-  int diffuse = 0;
-  const int maxVertices = 64 + s.maxBounces;
-  for (int vertex = 0; vertex < maxVertices; ++vertex) {
+  // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
+  for (int vertex = 0; vertex < 64; ++vertex) {
     Octree::Hit h;
-    if (!octree_.intersect(o, d, 0.0, kInf, h, skip)) {
-      result += beta * distantRadiance(d, countSources);
-      break;
-    }
+    if (!octree_.intersect(o, d, 0.0, kInf, h, skip)) return result + beta * distantRadiance(d, countSources);
     const Vec3 x = o + h.t * d;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
@@ -195,74 +196,79 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
       }
       m = &scene_.materials[m->alternate];
     }
-    if (m->type == MaterialType::Light || m->type == MaterialType::Illum) {
-      if (countSources && front) result += beta * m->color;
-      break;
-    }
-    if (m->type == MaterialType::Glow) {
-      if (front) result += beta * m->color;
-      break;
-    }
-    if (m->type == MaterialType::Void) break;
-    if (m->type == MaterialType::Mirror) {
-      beta *= m->color;
-      d = d - 2.0 * glm::dot(d, ng) * ng;
-      o = x + off * nf;
-      skip = flatSkip;
-      countSources = true;
-      continue;
-    }
-    if (m->type == MaterialType::Glass) {
-      Rgb tr, rf;
-      thinGlass(*m, glm::dot(d, ng), tr, rf);
-      const double pt = photopic(tr), pr = photopic(rf);
-      if (pt + pr <= 0.0) break;
-      if (rng.uniform() * (pt + pr) < pt) {
-        beta *= tr * ((pt + pr) / pt);
-        o = x - off * nf;
-      } else {
-        beta *= rf * ((pt + pr) / pr);
+    switch (m->type) {
+      case MaterialType::Light:
+      case MaterialType::Illum:
+        return (countSources && front) ? result + beta * m->color : result;
+      case MaterialType::Glow:
+        return front ? result + beta * m->color : result;
+      case MaterialType::Void:
+        return result;
+      case MaterialType::Mirror:
+        beta *= m->color;
         d = d - 2.0 * glm::dot(d, ng) * ng;
         o = x + off * nf;
+        skip = flatSkip;
+        countSources = true;
+        continue;
+      case MaterialType::Glass: {
+        Rgb tr, rf;
+        thinGlass(*m, glm::dot(d, ng), tr, rf);
+        const double pt = photopic(tr), pr = photopic(rf);
+        if (pt + pr <= 0.0) return result;
+        if (rng.uniform() * (pt + pr) < pt) {
+          beta *= tr * ((pt + pr) / pt);
+          o = x - off * nf;
+        } else {
+          beta *= rf * ((pt + pr) / pr);
+          d = d - 2.0 * glm::dot(d, ng) * ng;
+          o = x + off * nf;
+        }
+        skip = flatSkip;
+        countSources = true;
+        continue;
       }
-      skip = flatSkip;
-      countSources = true;
-      continue;
+      default:
+        break;
     }
-    // plastic, metal, trans: the diffuse parts (specular lobes: see docs/engine.md).
-    if (diffuse + 1 > s.maxBounces) break;
-    const Rgb rho = m->diffuseReflectance, tauD = m->diffuseTransmittance, tauS = m->specularTransmittance;
-    const Vec3 xf = x + off * nf, xb = x - off * nf;
-    if (photopic(rho) > 0.0) result += beta * rho * kInvPi * directIrradiance(xf, nf, 1, flatSkip, rng, nullptr);
-    if (photopic(tauD) > 0.0) result += beta * tauD * kInvPi * directIrradiance(xb, -nf, 1, flatSkip, rng, nullptr);
-    // Continue with one event chosen with probability equal to its photopic albedo (Russian
-    // roulette by albedo: unbiased, paths end with probability 1 − albedo).
-    const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
-    const double norm = std::max(1.0, pRho + pTd + pTs);
-    const double u = rng.uniform() * norm;
-    const double u1 = rng.uniform(), u2 = rng.uniform();
-    if (u < pRho) {
-      beta *= rho / pRho * norm;
-      d = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u1, u2));
-      o = xf;
-      ++diffuse;
-      countSources = false;
-    } else if (u < pRho + pTd) {
-      beta *= tauD / pTd * norm;
-      d = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u1, u2));
-      o = xb;
-      ++diffuse;
-      countSources = false;
-    } else if (u < pRho + pTd + pTs) {
-      beta *= tauS / pTs * norm;
-      o = xb;
-      countSources = true;
-    } else {
-      break;
-    }
-    skip = flatSkip;
+    // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
+    if (diffuse + 1 > s.maxBounces) return result;
+    return result + beta * diffuseVertex(x, nf, off, flatSkip, *m, rng, s, diffuse, split);
   }
   return result;
+}
+
+Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
+                          const TraceSettings& s, int diffuse, int split) const {
+  const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
+  const Vec3 xf = x + off * nf, xb = x - off * nf;
+  const int k = std::max(1, split);
+  Rgb out(0.0);
+  // Light reflected (and diffusely transmitted) from the sampled sources.
+  if (photopic(rho) > 0.0) out += rho * kInvPi * directIrradiance(xf, nf, k, flatSkip, rng, nullptr);
+  if (photopic(tauD) > 0.0) out += tauD * kInvPi * directIrradiance(xb, -nf, k, flatSkip, rng, nullptr);
+  // Indirect light: k continuations (stratified when k > 1), each one event chosen with
+  // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
+  // with probability 1 − albedo).
+  const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
+  const double norm = std::max(1.0, pRho + pTd + pTs);
+  if (pRho + pTd + pTs <= 0.0) return out;
+  const Strata2D strata(k, 1.0 / kPi);
+  Rgb acc(0.0);
+  for (int j = 0; j < k; ++j) {
+    const Vec2 u12 = strata.sample(j, rng);
+    const double u = rng.uniform() * norm;
+    if (u < pRho) {
+      const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      acc += rho * (norm / pRho) * pathRadiance(xf, dir, flatSkip, false, rng, s, diffuse + 1, 1);
+    } else if (u < pRho + pTd) {
+      const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      acc += tauD * (norm / pTd) * pathRadiance(xb, dir, flatSkip, false, rng, s, diffuse + 1, 1);
+    } else if (u < pRho + pTd + pTs) {
+      acc += tauS * (norm / pTs) * pathRadiance(xb, -nf, flatSkip, true, rng, s, diffuse, 1);
+    }
+  }
+  return out + acc / static_cast<double>(k);
 }
 
 IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex,
@@ -271,27 +277,69 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   IrradianceEstimate est;
   double var = 0.0;
   est.irradiance = directIrradiance(p, n, std::max(1, s.lightSamples), kNoShape, rng, &var);
+
   // Hemisphere: the paper's eq. 3, E ≈ (π / MN) Σ L(θ_j, φ_k) with θ_j = asin√((j + X)/M) and
-  // φ_k = 2π(k + Y)/N, N ≈ πM.
-  const int count = std::max(1, s.hemisphereSamples);
-  const Strata2D strata(count, 1.0 / kPi);
+  // φ_k = 2π(k + Y)/N, N ≈ πM: one sample per stratum.
+  const int mTheta = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
+  const int nPhi = std::max(1, s.hemisphereSamples / mTheta);
+  const int cells = mTheta * nPhi;
   const Frame frame = Frame::fromNormal(n);
+  thread_local std::vector<Rgb> value;
+  thread_local std::vector<double> y, diff;
+  thread_local std::vector<int> order;
+  value.assign(cells, Rgb(0.0));
+  y.assign(cells, 0.0);
+  auto sampleCell = [&](int cell, double su, double sv, int sub) {
+    // Jittered sample of sub-stratum (su, sv) of `sub`×`sub` inside the cell.
+    const int j = cell / nPhi, k = cell % nPhi;
+    const double u1 = (j + (su + rng.uniform()) / sub) / mTheta;
+    const double u2 = (k + (sv + rng.uniform()) / sub) / nPhi;
+    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit);
+  };
+  for (int c = 0; c < cells; ++c) {
+    value[c] = sampleCell(c, 0, 0, 1);
+    y[c] = photopic(value[c]);
+  }
+  // Adaptive super-sampling (after Radiance's ambient super-samples, -as): strata whose
+  // neighbours disagree most (range of the four neighbours' values; φ wraps around) get sub×sub
+  // more samples. The choice for a stratum never looks at its own sample, so every sample in it
+  // stays an unbiased estimate of its mean (choosing by its own value, as -as does, biases the
+  // strata left alone towards their neighbours).
+  const int sub = 2;
+  const int refine = std::min(cells, static_cast<int>(s.adaptiveFraction * cells) / (sub * sub));
+  if (refine > 0) {
+    diff.assign(cells, 0.0);
+    for (int c = 0; c < cells; ++c) {
+      const int j = c / nPhi, k = c % nPhi;
+      double lo = std::min(y[j * nPhi + (k + 1) % nPhi], y[j * nPhi + (k + nPhi - 1) % nPhi]);
+      double hi = std::max(y[j * nPhi + (k + 1) % nPhi], y[j * nPhi + (k + nPhi - 1) % nPhi]);
+      if (j > 0) lo = std::min(lo, y[c - nPhi]), hi = std::max(hi, y[c - nPhi]);
+      if (j + 1 < mTheta) lo = std::min(lo, y[c + nPhi]), hi = std::max(hi, y[c + nPhi]);
+      diff[c] = hi - lo;
+    }
+    order.resize(cells);
+    for (int c = 0; c < cells; ++c) order[c] = c;
+    std::partial_sort(order.begin(), order.begin() + refine, order.end(), [&](int a, int b) {
+      return diff[a] > diff[b] || (diff[a] == diff[b] && a < b);
+    });
+    for (int r = 0; r < refine; ++r) {
+      const int c = order[r];
+      if (diff[c] <= 0.0) break;
+      Rgb acc = value[c];
+      for (int q = 0; q < sub * sub; ++q) acc += sampleCell(c, q / sub, q % sub, sub);
+      value[c] = acc / static_cast<double>(1 + sub * sub);
+      y[c] = photopic(value[c]);
+    }
+  }
   Rgb sum(0.0);
-  double sumY = 0.0, sumY2 = 0.0;
-  for (int i = 0; i < count; ++i) {
-    const Vec2 u = strata.sample(i, rng);
-    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u.x, u.y));
-    const Rgb l = radiance(p, dir, kNoShape, false, rng, s);
-    sum += l;
-    const double y = photopic(l);
-    sumY += y;
-    sumY2 += y * y;
-  }
-  est.irradiance += kPi * sum / static_cast<double>(count);
-  if (count > 1) {
-    const double mean = sumY / count;
-    var += kPi * kPi * std::max(0.0, sumY2 / count - mean * mean) / (count - 1);
-  }
+  for (int c = 0; c < cells; ++c) sum += value[c];
+  est.irradiance += kPi * sum / static_cast<double>(cells);
+  // Variance by collapsing neighbouring strata in pairs (Cochran, "Sampling Techniques", 5A.12):
+  // Σ (y_a − y_b)² / 4 over pairs, scaled to the mean; an overestimate for smooth integrands.
+  double collapsed = 0.0;
+  for (int c = 0; c + 1 < cells; c += 2) collapsed += 0.25 * (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
+  var += kPi * kPi * 4.0 * collapsed / (static_cast<double>(cells) * cells);
   est.variancePhotopic = var;
   return est;
 }

@@ -18,6 +18,8 @@ struct TraceSettings {
   int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
   int lightSamples = 64;         // stratified samples per sampled light source per sensor point
   int maxBounces = 32;           // diffuse reflections followed (0: direct light and glow only)
+  int firstBounceSplit = 16;     // continuations at the first diffuse vertex of each sensor ray
+  double adaptiveFraction = 0.5; // extra hemisphere samples spent on the most varying strata
   uint64_t seed = 1;
 };
 
@@ -66,6 +68,13 @@ class Tracer {
   // Direct irradiance at p (normal n) from every sampled source with k stratified samples each;
   // adds the variance of its photopic value to *variance when given.
   Rgb directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const;
+  // Path-traced radiance; `diffuse` counts diffuse reflections so far; the first diffuse vertex
+  // takes `split` stratified continuations.
+  Rgb pathRadiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
+                   const TraceSettings& s, int diffuse, int split) const;
+  // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
+  Rgb diffuseVertex(const Vec3& x, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
+                    const TraceSettings& s, int diffuse, int split) const;
   // Radiance of the sky/distant sources seen along an escaping ray.
   Rgb distantRadiance(const Vec3& dir, bool countSources) const;
 

@@ -1,0 +1,67 @@
+#include "validation/analytic.h"
+
+#include <cmath>
+
+namespace candela::analytic {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+double sphereSource(double radiance, double radiusM, double distanceM, double cosTheta) {
+  return kPi * radiance * radiusM * radiusM * cosTheta / (distanceM * distanceM);
+}
+
+double rectangleCorner(double radiance, double aM, double bM, double hM) {
+  const double A = aM / hM, B = bM / hM;
+  const double sa = std::sqrt(1.0 + A * A), sb = std::sqrt(1.0 + B * B);
+  const double f = (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2.0 * kPi);
+  return kPi * radiance * f;
+}
+
+double rectangleAbove(double radiance, double x0, double y0, double x1, double y1, double hM, double x, double y) {
+  // Signed corner rectangles from the receiver's foot point to each corner.
+  auto corner = [&](double cx, double cy) {
+    const double a = cx - x, b = cy - y;
+    const double s = (a < 0 ? -1.0 : 1.0) * (b < 0 ? -1.0 : 1.0);
+    return s * rectangleCorner(radiance, std::abs(a), std::abs(b), hM);
+  };
+  return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
+}
+
+double coaxialDisk(double radiance, double radiusM, double hM) {
+  return kPi * radiance * radiusM * radiusM / (radiusM * radiusM + hM * hM);
+}
+
+double uniformSky(double radiance) { return kPi * radiance; }
+
+double sphereOnPlane(double rho, double skyRadiance, double radiusM, double xM, double hM, int n) {
+  const double ox = xM, oz = hM - radiusM;  // receiver relative to the sphere's centre (0, 0, R)
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double u = (i + 0.5) / n;  // sin²θ
+    const double s = std::sqrt(u), c = std::sqrt(1.0 - u);
+    for (int j = 0; j < 2 * n; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5) / (2 * n);
+      const double dx = s * std::cos(phi), dy = s * std::sin(phi), dz = c;
+      // Ray–sphere: |o + t d|² = R² with o = (ox, 0, oz).
+      const double b = ox * dx + oz * dz;
+      const double cc = ox * ox + oz * oz - radiusM * radiusM;
+      const double disc = b * b - cc;
+      double l = skyRadiance;
+      if (disc > 0.0) {
+        const double t = -b - std::sqrt(disc);
+        if (t > 0.0) {
+          const double nz = (oz + t * dz) / radiusM;
+          l = rho * skyRadiance * 0.5 * (1.0 + nz);
+        }
+      }
+      sum += l;
+    }
+  }
+  return kPi * sum / (2.0 * n * n);
+}
+
+double integratingSphere(double directIrradiance, double rho) { return directIrradiance / (1.0 - rho); }
+
+}  // namespace candela::analytic
