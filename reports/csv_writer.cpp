@@ -1,0 +1,93 @@
+#include "reports/csv_writer.h"
+
+#include <stdexcept>
+
+#include "engine/base/atomic_file.h"
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  return q + "\"";
+}
+
+std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
+                    const std::vector<ExtraColumn>& extraColumns) {
+  if (lux.size() != points.size())
+    throw std::invalid_argument("gridCsv: " + std::to_string(points.size()) + " points but " +
+                                std::to_string(lux.size()) + " illuminances");
+  std::string out = "x,y,z,dx,dy,dz,illuminance_lux";
+  for (const ExtraColumn& c : extraColumns) {
+    if (c.values.size() != points.size())
+      throw std::invalid_argument("gridCsv: column '" + c.name + "' has " + std::to_string(c.values.size()) +
+                                  " values for " + std::to_string(points.size()) + " points");
+    out += "," + csvField(c.name);
+  }
+  out += "\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ReportPoint& p = points[i];
+    for (double v : {p.position.x, p.position.y, p.position.z, p.normal.x, p.normal.y, p.normal.z})
+      out += formatNumber(v, 10) + ",";
+    out += formatNumber(lux[i], 8);
+    for (const ExtraColumn& c : extraColumns) out += "," + formatNumber(c.values[i], 8);
+    out += "\n";
+  }
+  return out;
+}
+
+fs::path writeGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
+                      const std::vector<double>& lux, const std::vector<ExtraColumn>& extraColumns) {
+  const std::string text = gridCsv(points, lux, extraColumns);
+  fs::create_directories(dir);
+  const fs::path path = dir / (safeFileName(gridName) + ".csv");
+  writeFileAtomic(path, text);
+  return path;
+}
+
+std::string summaryCsv(const SummaryData& data) {
+  std::string settings;
+  for (const auto& [k, v] : data.run.settings) settings += (settings.empty() ? "" : ";") + k + "=" + v;
+  std::string out =
+      "case,grid,unit,points,average,minimum,maximum,u0,ud,target_average,target_uniformity,"
+      "verdict_average,verdict_uniformity,verdict,seed,version,run_time_s,settings\n";
+  for (const GridReport& g : data.grids) {
+    const GridStats& s = g.stats;
+    std::vector<std::string> f = {csvField(data.run.caseName),
+                                  csvField(g.name),
+                                  csvField(g.unit),
+                                  std::to_string(s.count),
+                                  formatNumber(s.averageLux),
+                                  formatNumber(s.minimumLux),
+                                  formatNumber(s.maximumLux),
+                                  formatNumber(s.u0),
+                                  formatNumber(s.ud),
+                                  g.targets.averageLux ? formatNumber(*g.targets.averageLux) : "",
+                                  g.targets.uniformity ? formatNumber(*g.targets.uniformity) : "",
+                                  verdictName(g.check.average),
+                                  verdictName(g.check.uniformity),
+                                  verdictName(g.check.overall),
+                                  std::to_string(data.run.seed),
+                                  csvField(data.run.version),
+                                  formatNumber(data.run.runTimeS, 6),
+                                  csvField(settings)};
+    for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
+    out += "\n";
+  }
+  return out;
+}
+
+fs::path writeSummaryCsv(const fs::path& dir, const SummaryData& data) {
+  fs::create_directories(dir);
+  const fs::path path = dir / "summary.csv";
+  writeFileAtomic(path, summaryCsv(data));
+  return path;
+}
+
+}  // namespace candela

@@ -1,0 +1,166 @@
+#include "reports/html_report.h"
+
+#include <sstream>
+
+#include "engine/base/atomic_file.h"
+#include "reports/falsecolor.h"
+#include "reports/plan_svg.h"
+
+namespace candela {
+
+namespace {
+
+constexpr const char* kCss = R"css(
+:root { --ink:#1d2327; --muted:#5f6b73; --line:#d9dee2; --band:#f5f7f8; --accent:#2c5f7c;
+        --pass:#1e7b34; --pass-bg:#e3f4e6; --fail:#b3261e; --fail-bg:#fbe5e3; }
+* { box-sizing: border-box; }
+body { margin:0; background:#eef1f3; color:var(--ink);
+       font:14px/1.45 "Helvetica Neue", Helvetica, Arial, sans-serif; }
+.page { max-width:1100px; margin:24px auto; background:#fff; box-shadow:0 1px 4px rgba(0,0,0,.12); }
+header { padding:28px 36px 22px; border-bottom:4px solid var(--accent); }
+header .kicker { text-transform:uppercase; letter-spacing:.12em; font-size:11px; color:var(--accent); font-weight:700; }
+header h1 { margin:4px 0 6px; font-size:28px; font-weight:600; }
+header p.desc { margin:0 0 12px; color:var(--muted); }
+dl.meta { display:flex; flex-wrap:wrap; gap:6px 28px; margin:0; font-size:12px; }
+dl.meta div { display:flex; gap:6px; } dl.meta dt { color:var(--muted); } dl.meta dd { margin:0; font-weight:600; }
+section { padding:22px 36px; border-bottom:1px solid var(--line); }
+h2 { font-size:18px; margin:0 0 4px; font-weight:600; }
+h2 .n { color:var(--accent); margin-right:8px; }
+p.sub { margin:0 0 14px; color:var(--muted); font-size:13px; }
+table { border-collapse:collapse; width:100%; font-size:13px; }
+th, td { padding:6px 10px; border-bottom:1px solid var(--line); text-align:left; }
+th { background:var(--band); font-weight:600; color:#3a444a; font-size:12px; }
+td.num, th.num { text-align:right; font-variant-numeric:tabular-nums; }
+.badge { display:inline-block; min-width:52px; text-align:center; padding:2px 8px; border-radius:10px;
+         font-size:11px; font-weight:700; letter-spacing:.05em; text-transform:uppercase; }
+.badge.pass { color:var(--pass); background:var(--pass-bg); border:1px solid #a8d5b1; }
+.badge.fail { color:var(--fail); background:var(--fail-bg); border:1px solid #eeb1ab; }
+.badge.na { color:var(--muted); background:var(--band); border:1px solid var(--line); }
+.grid-body { display:flex; flex-wrap:wrap; gap:24px; align-items:flex-start; }
+.grid-body figure { margin:0; flex:0 0 auto; }
+.grid-body figcaption { font-size:11px; color:var(--muted); margin-top:4px; max-width:560px; }
+.grid-body .metrics { flex:1 1 280px; min-width:280px; }
+.kv td:first-child { color:var(--muted); width:45%; }
+footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
+@media print { body { background:#fff; } .page { box-shadow:none; margin:0; max-width:none; }
+               section.grid { break-inside:avoid; } }
+)css";
+
+std::string badge(Verdict v) {
+  const char* cls = v == Verdict::kPass ? "pass" : v == Verdict::kFail ? "fail" : "na";
+  return std::string("<span class=\"badge ") + cls + "\">" + verdictName(v) + "</span>";
+}
+
+// Decimals that suit a value in lux (or %) in a table: 0 above 100, 1 above 10, else 2.
+std::string valueText(double v) {
+  const double a = std::abs(v);
+  return formatFixed(v, a >= 100.0 ? 0 : a >= 10.0 ? 1 : 2);
+}
+
+std::string unitText(const std::string& unit) { return unit == "%" ? "%" : " " + xmlEscape(unit); }
+
+}  // namespace
+
+std::string htmlReport(const ReportData& data) {
+  const RunInfo& run = data.run;
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>" << xmlEscape(run.caseName) << " — lighting report</title>\n<style>" << kCss << "</style>\n</head>\n"
+    << "<body>\n<div class=\"page\">\n<header>\n<div class=\"kicker\">Lighting calculation report</div>\n"
+    << "<h1>" << xmlEscape(run.caseName) << "</h1>\n";
+  if (!run.description.empty()) h << "<p class=\"desc\">" << xmlEscape(run.description) << "</p>\n";
+  h << "<dl class=\"meta\">";
+  auto meta = [&](const char* k, const std::string& v) {
+    if (!v.empty()) h << "<div><dt>" << k << "</dt><dd>" << xmlEscape(v) << "</dd></div>";
+  };
+  meta("Case file", run.caseFile);
+  meta("Calculated", run.startedAt);
+  meta("Grids", std::to_string(data.grids.size()));
+  meta("Software", "candela " + run.version);
+  h << "</dl>\n</header>\n";
+
+  // Summary of every grid.
+  h << "<section class=\"summary\">\n<h2>Summary</h2>\n<p class=\"sub\">Calculated values on each calculation "
+       "grid against its design targets (EN 12464-1: maintained illuminance Ē<sub>m</sub> and uniformity "
+       "U<sub>0</sub> = E<sub>min</sub>/Ē must not fall below the requirement).</p>\n"
+    << "<table>\n<thead><tr><th>Grid</th><th class=\"num\">Points</th><th class=\"num\">Ē</th>"
+       "<th class=\"num\">E<sub>min</sub></th><th class=\"num\">E<sub>max</sub></th><th class=\"num\">U<sub>0</sub></th>"
+       "<th class=\"num\">Target Ē<sub>m</sub></th><th class=\"num\">Target U<sub>0</sub></th><th>Result</th></tr></thead>\n<tbody>\n";
+  for (std::size_t i = 0; i < data.grids.size(); ++i) {
+    const GridReport& g = data.grids[i];
+    const std::string u = unitText(g.unit);
+    h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << xmlEscape(g.name) << "</a></td><td class=\"num\">"
+      << g.stats.count << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
+      << valueText(g.stats.minimumLux) << u << "</td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
+      << "</td><td class=\"num\">" << formatFixed(g.stats.u0, 2) << "</td><td class=\"num\">"
+      << (g.targets.averageLux ? valueText(*g.targets.averageLux) + u : "—") << "</td><td class=\"num\">"
+      << (g.targets.uniformity ? formatFixed(*g.targets.uniformity, 2) : "—") << "</td><td>"
+      << badge(g.check.overall) << "</td></tr>\n";
+  }
+  h << "</tbody>\n</table>\n</section>\n";
+
+  // One section per grid: plan and metrics.
+  for (std::size_t i = 0; i < data.grids.size(); ++i) {
+    const GridReport& g = data.grids[i];
+    const std::string u = unitText(g.unit);
+    h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
+      << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << xmlEscape(g.quantity) << " in " << xmlEscape(g.unit);
+    if (!g.description.empty()) h << " · " << xmlEscape(g.description);
+    h << "</p>\n<div class=\"grid-body\">\n";
+    if (!g.values.empty()) {
+      PlanOptions opt;
+      opt.northDeg = data.northDeg;
+      opt.idPrefix = "plan" + std::to_string(i + 1);
+      const ColorScale scale = niceScale(0.0, g.stats.maximumLux);
+      h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
+        << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
+        << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
+    }
+    h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Quantity</th><th class=\"num\">Calculated</th>"
+         "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
+    h << "<tr><td>Average Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
+      << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
+      << badge(g.check.average) << "</td></tr>\n";
+    h << "<tr><td>Uniformity U<sub>0</sub> = E<sub>min</sub>/Ē</td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
+      << "</td><td class=\"num\">" << (g.targets.uniformity ? "≥ " + formatFixed(*g.targets.uniformity, 2) : "—")
+      << "</td><td>" << badge(g.check.uniformity) << "</td></tr>\n";
+    h << "<tr><td>Minimum E<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
+      << "</td><td class=\"num\">—</td><td></td></tr>\n";
+    h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
+      << "</td><td class=\"num\">—</td><td></td></tr>\n";
+    h << "<tr><td>Diversity U<sub>d</sub> = E<sub>min</sub>/E<sub>max</sub></td><td class=\"num\">"
+      << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
+    h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";
+    if (g.layout.regular)
+      h << "<tr><td>Grid spacing</td><td class=\"num\">" << formatFixed(g.layout.spacingM.x, 3) << " × "
+        << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
+    h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
+    h << "</tbody>\n</table>\n</div>\n</div>\n</section>\n";
+  }
+
+  // Calculation settings and timing.
+  h << "<section class=\"settings\">\n<h2>Calculation</h2>\n<p class=\"sub\">Settings of this run; with the same "
+       "seed and settings candela reproduces these numbers exactly, on any number of threads.</p>\n"
+    << "<table class=\"kv\">\n<tbody>\n";
+  auto row = [&](const std::string& k, const std::string& v) {
+    h << "<tr><td>" << xmlEscape(k) << "</td><td>" << xmlEscape(v) << "</td></tr>\n";
+  };
+  for (const auto& [k, v] : run.settings) row(k, v);
+  row("seed", std::to_string(run.seed));
+  row("run time", formatFixed(run.runTimeS, run.runTimeS < 10 ? 2 : 1) + " s");
+  row("software", "candela " + run.version);
+  h << "</tbody>\n</table>\n</section>\n";
+  h << "<footer>Generated by candela " << xmlEscape(run.version)
+    << ". Values are calculated at the points listed in each grid's CSV file. This report is self-contained "
+       "and can be archived as a single file.</footer>\n"
+    << "</div>\n</body>\n</html>\n";
+  return h.str();
+}
+
+void writeHtmlReport(const std::filesystem::path& path, const ReportData& data) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  writeFileAtomic(path, htmlReport(data));
+}
+
+}  // namespace candela

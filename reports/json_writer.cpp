@@ -1,0 +1,69 @@
+#include "reports/json_writer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <optional>
+
+#include "engine/base/atomic_file.h"
+#include "reports/csv_writer.h"
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json optionalNumber(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+
+// JSON has no NaN/Inf; write null instead of invalid JSON.
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+std::string summaryJson(const SummaryData& data) {
+  using nlohmann::json;
+  json j;
+  j["case"] = {{"name", data.run.caseName}, {"description", data.run.description}, {"file", data.run.caseFile}};
+  j["version"] = data.run.version;
+  j["started_at"] = data.run.startedAt;
+  j["seed"] = data.run.seed;
+  j["run_time_s"] = number(data.run.runTimeS);
+  json settings = json::object();
+  for (const auto& [k, v] : data.run.settings) settings[k] = v;
+  j["settings"] = settings;
+  json grids = json::array();
+  for (const GridReport& g : data.grids) {
+    grids.push_back({{"name", g.name},
+                     {"description", g.description},
+                     {"quantity", g.quantity},
+                     {"unit", g.unit},
+                     {"points", g.stats.count},
+                     {"average", number(g.stats.averageLux)},
+                     {"minimum", number(g.stats.minimumLux)},
+                     {"maximum", number(g.stats.maximumLux)},
+                     {"u0", number(g.stats.u0)},
+                     {"ud", number(g.stats.ud)},
+                     {"target_average", optionalNumber(g.targets.averageLux)},
+                     {"target_uniformity", optionalNumber(g.targets.uniformity)},
+                     {"verdict_average", verdictName(g.check.average)},
+                     {"verdict_uniformity", verdictName(g.check.uniformity)},
+                     {"verdict", verdictName(g.check.overall)}});
+  }
+  j["grids"] = grids;
+  return j.dump(2) + "\n";
+}
+
+fs::path writeSummaryJson(const fs::path& dir, const SummaryData& data) {
+  fs::create_directories(dir);
+  const fs::path path = dir / "summary.json";
+  writeFileAtomic(path, summaryJson(data));
+  return path;
+}
+
+void writeSummary(const fs::path& dir, const SummaryData& data) {
+  writeSummaryCsv(dir, data);
+  writeSummaryJson(dir, data);
+}
+
+}  // namespace candela

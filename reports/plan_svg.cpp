@@ -1,0 +1,335 @@
+#include "reports/plan_svg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "engine/base/atomic_file.h"
+
+namespace candela {
+
+std::string xmlEscape(const std::string& text) {
+  std::string s;
+  for (char c : text) {
+    switch (c) {
+      case '&': s += "&amp;"; break;
+      case '<': s += "&lt;"; break;
+      case '>': s += "&gt;"; break;
+      case '"': s += "&quot;"; break;
+      case '\'': s += "&#39;"; break;
+      default: s += c;
+    }
+  }
+  return s;
+}
+
+namespace {
+
+// An edge of the node lattice: horizontal (node (i,j) to (i+1,j)) or vertical ((i,j) to (i,j+1)).
+using EdgeKey = std::tuple<int, int, int>;  // (vertical?, i, j)
+
+struct Segment {
+  EdgeKey a, b;
+};
+
+std::string px(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+// A 1-2-5 × 10^n length close to `target`, for scale bars.
+double niceLength(double target) {
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double best = decade;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * decade <= target) best = m * decade;
+  return best;
+}
+
+}  // namespace
+
+std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level) {
+  std::vector<ContourLine> lines;
+  if (!layout.regular || layout.columns < 2 || layout.rows < 2) return lines;
+  const int nx = layout.columns, ny = layout.rows;
+  std::vector<double> field(static_cast<std::size_t>(nx) * ny, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < layout.cells.size() && k < values.size(); ++k) {
+    const glm::ivec2 c = layout.cells[k];
+    if (c.x >= 0 && c.y >= 0 && c.x < nx && c.y < ny) field[static_cast<std::size_t>(c.y) * nx + c.x] = values[k];
+  }
+  auto value = [&](int i, int j) { return field[static_cast<std::size_t>(j) * nx + i]; };
+  auto node = [&](int i, int j) { return layout.originM + (Vec2(i, j) + 0.5) * layout.spacingM; };
+  auto crossing = [&](const EdgeKey& e) {
+    const auto [vertical, i, j] = e;
+    const int i2 = vertical ? i : i + 1, j2 = vertical ? j + 1 : j;
+    const double a = value(i, j), b = value(i2, j2);
+    const double t = std::clamp((level - a) / (b - a), 0.0, 1.0);
+    return node(i, j) + t * (node(i2, j2) - node(i, j));
+  };
+
+  std::vector<Segment> segments;
+  for (int j = 0; j + 1 < ny; ++j) {
+    for (int i = 0; i + 1 < nx; ++i) {
+      // Corners counter-clockwise from bottom-left; edge k joins corner k and k+1.
+      const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
+      if (std::isnan(v[0]) || std::isnan(v[1]) || std::isnan(v[2]) || std::isnan(v[3])) continue;
+      const EdgeKey edge[4] = {{0, i, j}, {1, i + 1, j}, {0, i, j + 1}, {1, i, j}};
+      bool above[4];
+      int count = 0;
+      for (int k = 0; k < 4; ++k) count += (above[k] = v[k] >= level);
+      if (count == 0 || count == 4) continue;
+      if (count == 2 && above[0] == above[2]) {
+        // Saddle: the corners on the other side of the centre's value are cut off one by one.
+        const bool centreAbove = 0.25 * (v[0] + v[1] + v[2] + v[3]) >= level;
+        for (int k = 0; k < 4; ++k)
+          if (above[k] != centreAbove) segments.push_back({edge[(k + 3) % 4], edge[k]});
+        continue;
+      }
+      std::vector<EdgeKey> crossed;
+      for (int k = 0; k < 4; ++k)
+        if (above[k] != above[(k + 1) % 4]) crossed.push_back(edge[k]);
+      segments.push_back({crossed[0], crossed[1]});
+    }
+  }
+
+  // Join segments sharing an edge crossing into polylines.
+  std::map<EdgeKey, std::vector<std::size_t>> byEdge;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    byEdge[segments[s].a].push_back(s);
+    byEdge[segments[s].b].push_back(s);
+  }
+  std::vector<bool> used(segments.size(), false);
+  auto other = [&](std::size_t s, const EdgeKey& e) { return segments[s].a == e ? segments[s].b : segments[s].a; };
+  auto nextSegment = [&](const EdgeKey& e) -> std::ptrdiff_t {
+    for (std::size_t s : byEdge[e])
+      if (!used[s]) return static_cast<std::ptrdiff_t>(s);
+    return -1;
+  };
+  for (std::size_t start = 0; start < segments.size(); ++start) {
+    if (used[start]) continue;
+    used[start] = true;
+    std::vector<EdgeKey> chain = {segments[start].a, segments[start].b};
+    for (std::ptrdiff_t s; (s = nextSegment(chain.back())) >= 0;) {  // forwards
+      used[static_cast<std::size_t>(s)] = true;
+      chain.push_back(other(static_cast<std::size_t>(s), chain.back()));
+    }
+    std::vector<EdgeKey> head;
+    for (EdgeKey e = chain.front(); true;) {  // backwards
+      const std::ptrdiff_t s = nextSegment(e);
+      if (s < 0) break;
+      used[static_cast<std::size_t>(s)] = true;
+      e = other(static_cast<std::size_t>(s), e);
+      head.push_back(e);
+    }
+    ContourLine line;
+    line.level = level;
+    for (auto it = head.rbegin(); it != head.rend(); ++it) line.points.push_back(crossing(*it));
+    for (const EdgeKey& e : chain) line.points.push_back(crossing(e));
+    line.closed = chain.size() > 2 && chain.front() == chain.back();
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
+  const PlanLayout& L = grid.layout;
+  // Extent of the drawing in plan coordinates: the outline, lattice and points.
+  Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  auto extend = [&](const Vec2& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  };
+  for (const Vec2& p : L.outline) extend(p);
+  for (const Vec2& p : L.planPositions) extend(p);
+  if (L.regular) {
+    extend(L.originM);
+    extend(L.originM + Vec2(L.columns, L.rows) * L.spacingM);
+  }
+  if (!(hi.x >= lo.x)) {
+    lo = Vec2(0.0);
+    hi = Vec2(1.0);
+  }
+  if (hi.x - lo.x < 1e-6) { lo.x -= 0.5; hi.x += 0.5; }
+  if (hi.y - lo.y < 1e-6) { lo.y -= 0.5; hi.y += 0.5; }
+  const Vec2 ext = hi - lo;
+  const double k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);  // px per m
+  const double planW = ext.x * k, planH = ext.y * k;
+  const double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70;
+  const double width = left + planW + legendGap + legendBar + legendLabels;
+  const double height = top + planH + 64;
+  auto X = [&](double u) { return left + (u - lo.x) * k; };
+  auto Y = [&](double v) { return top + (hi.y - v) * k; };
+  const std::string id = opt.idPrefix;
+  const std::string font = "font-family=\"Helvetica Neue,Helvetica,Arial,sans-serif\"";
+
+  std::ostringstream s;
+  s << "<svg " << (opt.standalone ? "xmlns=\"http://www.w3.org/2000/svg\" " : "") << "class=\"plan\" width=\"" << px(width) << "\" height=\""
+    << px(height) << "\" viewBox=\"0 0 " << px(width) << " " << px(height) << "\" role=\"img\" aria-label=\""
+    << xmlEscape(grid.quantity + " plan of " + grid.name) << "\" " << font << ">\n";
+  // Gradient for the legend, sampled from the same colour map.
+  s << "<defs><linearGradient id=\"" << id << "-scale\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
+  for (int i = 0; i <= 16; ++i) s << "<stop offset=\"" << px(i / 16.0) << "\" stop-color=\"" << hexColor(viridis(i / 16.0)) << "\"/>";
+  s << "</linearGradient><clipPath id=\"" << id << "-clip\"><rect x=\"" << px(left) << "\" y=\"" << px(top)
+    << "\" width=\"" << px(planW) << "\" height=\"" << px(planH) << "\"/></clipPath></defs>\n";
+  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(planW) << "\" height=\"" << px(planH)
+    << "\" fill=\"#f4f4f2\"/>\n";
+
+  // Cells (regular) or dots (points files).
+  s << "<g shape-rendering=\"crispEdges\">\n";
+  const double cellPx = L.regular ? std::min(L.spacingM.x, L.spacingM.y) * k : 0.0;
+  for (std::size_t i = 0; i < grid.values.size(); ++i) {
+    const Rgb8 c = falseColor(grid.values[i], scale);
+    if (L.regular && i < L.cells.size()) {
+      const Vec2 a = L.originM + Vec2(L.cells[i]) * L.spacingM;
+      // Half a pixel of overlap hides hairline seams between neighbours.
+      s << "<rect x=\"" << px(X(a.x)) << "\" y=\"" << px(Y(a.y + L.spacingM.y)) << "\" width=\""
+        << px(L.spacingM.x * k + 0.5) << "\" height=\"" << px(L.spacingM.y * k + 0.5) << "\" fill=\"" << hexColor(c)
+        << "\"/>\n";
+    }
+  }
+  s << "</g>\n";
+  if (!L.regular) {
+    for (std::size_t i = 0; i < grid.values.size() && i < L.planPositions.size(); ++i) {
+      const Vec2 p = L.planPositions[i];
+      s << "<circle cx=\"" << px(X(p.x)) << "\" cy=\"" << px(Y(p.y)) << "\" r=\"6\" fill=\""
+        << hexColor(falseColor(grid.values[i], scale)) << "\" stroke=\"#333\" stroke-width=\"0.8\"/>\n";
+    }
+  }
+  if (L.outline.size() >= 3) {
+    s << "<polygon points=\"";
+    for (const Vec2& p : L.outline) s << px(X(p.x)) << "," << px(Y(p.y)) << " ";
+    s << "\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.5\"/>\n";
+  }
+
+  // Cell values, when the cells are large enough to hold them.
+  if (opt.cellValues && L.regular && cellPx >= 30.0) {
+    s << "<g font-size=\"" << px(std::min(11.0, cellPx / 3.2)) << "\" text-anchor=\"middle\" dominant-baseline=\"central\">\n";
+    for (std::size_t i = 0; i < grid.values.size() && i < L.cells.size(); ++i) {
+      const Vec2 c = L.originM + (Vec2(L.cells[i]) + 0.5) * L.spacingM;
+      s << "<text x=\"" << px(X(c.x)) << "\" y=\"" << px(Y(c.y)) << "\" fill=\""
+        << hexColor(contrastingText(falseColor(grid.values[i], scale))) << "\" fill-opacity=\"0.75\">"
+        << formatNumber(grid.values[i], 3) << "</text>\n";
+    }
+    s << "</g>\n";
+  }
+
+  // Isolines with labels at the middle of each long enough line.
+  if (opt.contours && L.regular) {
+    std::vector<double> levels = opt.contourLevels;
+    if (levels.empty()) {
+      for (double t : scaleTicks(scale, 6))
+        if (t > grid.stats.minimumLux && t < grid.stats.maximumLux) levels.push_back(t);
+    }
+    s << "<g clip-path=\"url(#" << id << "-clip)\">\n";
+    std::ostringstream labels;
+    for (double level : levels) {
+      for (const ContourLine& line : isolines(L, grid.values, level)) {
+        if (line.points.size() < 2) continue;
+        s << "<polyline points=\"";
+        double length = 0.0;
+        for (std::size_t i = 0; i < line.points.size(); ++i) {
+          s << px(X(line.points[i].x)) << "," << px(Y(line.points[i].y)) << " ";
+          if (i) length += glm::length(line.points[i] - line.points[i - 1]) * k;
+        }
+        s << "\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\"1.1\" stroke-linejoin=\"round\"/>\n";
+        if (length < 60.0) continue;
+        // Label at half the length, along the line, never upside down.
+        double walked = 0.0;
+        for (std::size_t i = 1; i < line.points.size(); ++i) {
+          const double d = glm::length(line.points[i] - line.points[i - 1]) * k;
+          if (walked + d >= 0.5 * length) {
+            const Vec2 a = line.points[i - 1], b = line.points[i];
+            const double f = d > 0 ? (0.5 * length - walked) / d : 0.0;
+            const Vec2 m = a + f * (b - a);
+            double angle = radToDeg(std::atan2(-(b.y - a.y), b.x - a.x));
+            if (angle > 90.0) angle -= 180.0;
+            if (angle < -90.0) angle += 180.0;
+            labels << "<text x=\"" << px(X(m.x)) << "\" y=\"" << px(Y(m.y)) << "\" transform=\"rotate(" << px(angle)
+                   << " " << px(X(m.x)) << " " << px(Y(m.y))
+                   << ")\" text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
+                      "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
+                   << formatNumber(level, 4) << "</text>\n";
+            break;
+          }
+          walked += d;
+        }
+      }
+    }
+    s << labels.str() << "</g>\n";
+  }
+  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(planW) << "\" height=\"" << px(planH)
+    << "\" fill=\"none\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
+
+  // Axis ticks in metres along the bottom and left edges.
+  {
+    const double step = niceLength(std::max(ext.x, ext.y) / 6.0);
+    s << "<g font-size=\"10\" fill=\"#555\">\n";
+    for (double u = std::ceil(lo.x / step - 1e-9) * step; u <= hi.x + 1e-9; u += step) {
+      s << "<line x1=\"" << px(X(u)) << "\" y1=\"" << px(top + planH) << "\" x2=\"" << px(X(u)) << "\" y2=\""
+        << px(top + planH + 4) << "\" stroke=\"#777\"/><text x=\"" << px(X(u)) << "\" y=\"" << px(top + planH + 15)
+        << "\" text-anchor=\"middle\">" << formatNumber(u, 4) << "</text>\n";
+    }
+    for (double v = std::ceil(lo.y / step - 1e-9) * step; v <= hi.y + 1e-9; v += step) {
+      s << "<line x1=\"" << px(left - 4) << "\" y1=\"" << px(Y(v)) << "\" x2=\"" << px(left) << "\" y2=\"" << px(Y(v))
+        << "\" stroke=\"#777\"/><text x=\"" << px(left - 7) << "\" y=\"" << px(Y(v))
+        << "\" text-anchor=\"end\" dominant-baseline=\"central\">" << formatNumber(v, 4) << "</text>\n";
+    }
+    s << "</g>\n";
+  }
+
+  // Scale bar under the plan, bottom left.
+  {
+    const double len = niceLength(ext.x / 4.0);
+    const double x0 = left, y0 = top + planH + 36, w = len * k;
+    s << "<g font-size=\"10\" fill=\"#333\"><rect x=\"" << px(x0) << "\" y=\"" << px(y0) << "\" width=\"" << px(w / 2)
+      << "\" height=\"5\" fill=\"#333\"/><rect x=\"" << px(x0 + w / 2) << "\" y=\"" << px(y0) << "\" width=\""
+      << px(w / 2) << "\" height=\"5\" fill=\"#fff\" stroke=\"#333\" stroke-width=\"0.8\"/><text x=\""
+      << px(x0 + w + 6) << "\" y=\"" << px(y0 + 5) << "\">" << formatNumber(len, 3) << " m</text></g>\n";
+  }
+
+  // North arrow, top right above the plan, rotated to true north.
+  {
+    const double cx = left + planW - 12, cy = 15;
+    s << "<g transform=\"translate(" << px(cx) << " " << px(cy) << ") rotate(" << px(opt.northDeg)
+      << ")\"><circle r=\"12\" fill=\"#fff\" stroke=\"#666\" stroke-width=\"0.8\"/>"
+         "<path d=\"M0,-10 L5,6 L0,3 L-5,6 Z\" fill=\"#222\"/></g>"
+      << "<text x=\"" << px(cx - 18) << "\" y=\"" << px(cy + 4) << "\" font-size=\"11\" font-weight=\"700\" "
+      << "text-anchor=\"end\" fill=\"#222\">N</text>\n";
+  }
+
+  // Legend: colour bar with ticks in the grid's unit.
+  {
+    const double lx = left + planW + legendGap, ly = top, lh = planH;
+    s << "<text x=\"" << px(lx) << "\" y=\"" << px(ly - 10) << "\" font-size=\"11\" font-weight=\"600\" fill=\"#333\">"
+      << xmlEscape(grid.unit) << "</text>\n";
+    s << "<rect x=\"" << px(lx) << "\" y=\"" << px(ly) << "\" width=\"" << px(legendBar) << "\" height=\"" << px(lh)
+      << "\" fill=\"url(#" << id << "-scale)\" stroke=\"#666\" stroke-width=\"0.6\"/>\n";
+    s << "<g font-size=\"10\" fill=\"#333\">\n";
+    for (double t : scaleTicks(scale, 8)) {
+      const double y = ly + lh * (1.0 - scalePosition(t, scale));
+      s << "<line x1=\"" << px(lx + legendBar) << "\" y1=\"" << px(y) << "\" x2=\"" << px(lx + legendBar + 4)
+        << "\" y2=\"" << px(y) << "\" stroke=\"#555\"/><text x=\"" << px(lx + legendBar + 7) << "\" y=\"" << px(y)
+        << "\" dominant-baseline=\"central\">" << formatNumber(t, 4) << "</text>\n";
+    }
+    s << "</g>\n";
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+void writePlanSvg(const std::filesystem::path& path, const GridReport& grid, const ColorScale& scale,
+                  const PlanOptions& options) {
+  PlanOptions standalone = options;
+  standalone.standalone = true;
+  writeFileAtomic(path, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + planSvg(grid, scale, standalone));
+}
+
+}  // namespace candela

@@ -1,0 +1,48 @@
+// False-colour plan of a grid as SVG: cells coloured by value, labelled isolux contours
+// (marching squares), legend, scale bar and north arrow. Self-contained, for inlining in HTML.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "reports/falsecolor.h"
+#include "reports/report_data.h"
+
+namespace candela {
+
+struct PlanOptions {
+  double maxPlanWidthPx = 560.0;      // the plan is scaled to fit these, aspect kept
+  double maxPlanHeightPx = 420.0;
+  std::vector<double> contourLevels;  // empty: the legend's ticks inside (min, max)
+  bool contours = true;
+  bool cellValues = true;             // print each value in its cell when cells are >= 30 px
+  double northDeg = 0.0;              // true north, degrees clockwise from plan +Y
+  std::string idPrefix = "plan";      // makes element ids unique when several plans share a page
+  bool standalone = false;            // add the SVG namespace (files); HTML5 inline SVG needs none
+};
+
+// One isoline: the polyline where the interpolated field equals `level` (plan coordinates, m).
+struct ContourLine {
+  double level = 0.0;
+  std::vector<Vec2> points;
+  bool closed = false;
+};
+
+// Marching squares (Lorensen & Cline's cube cases in 2-D) over the lattice of cell centres of a
+// regular layout, linear interpolation along cell edges, saddles resolved by the mean of the
+// four corners. Squares with a missing corner (cells outside a polygon) are skipped.
+std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level);
+
+// The whole plan, `<svg ...>...</svg>`. The colour scale is the caller's so that plans and
+// images of one report share it.
+std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& options = {});
+
+// Writes a standalone SVG file (with XML declaration), atomically.
+void writePlanSvg(const std::filesystem::path& path, const GridReport& grid, const ColorScale& scale,
+                  const PlanOptions& options = {});
+
+// Escapes & < > " ' for XML/HTML text and attributes.
+std::string xmlEscape(const std::string& text);
+
+}  // namespace candela

@@ -1,0 +1,43 @@
+// PNG output (libpng, 8-bit RGB) and false-colour images with a legend drawn in.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "reports/falsecolor.h"
+
+namespace candela {
+
+// 8-bit sRGB image, rows top to bottom, 3 bytes per pixel.
+struct Image8 {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;
+  Image8() = default;
+  Image8(int w, int h, Rgb8 fill = {255, 255, 255});
+  void set(int x, int y, Rgb8 c);  // ignores pixels outside the image
+  Rgb8 at(int x, int y) const;
+  void fillRect(int x, int y, int w, int h, Rgb8 c);
+};
+
+// Draws `text` with candela's 5×7 pixel font (digits, ". - + e % / space" and the letters of
+// "lx cd/m k": enough for legend numbers and units), each font pixel `scale`×`scale` image
+// pixels, top-left corner at (x, y). Unknown characters draw as a hollow box.
+void drawText(Image8& image, int x, int y, const std::string& text, Rgb8 color, int scale = 1);
+
+// Width in pixels of `text` drawn at `scale` (6 font pixels per character, no trailing gap).
+int textWidth(const std::string& text, int scale = 1);
+
+// A false-colour picture of `values` (row-major, `width` × `height`, top row first) with a
+// legend to the right: colour bar, tick values and the unit.
+Image8 falseColorImage(const std::vector<double>& values, int width, int height, const ColorScale& scale,
+                       const std::string& unit);
+
+// PNG bytes of the image (8-bit RGB, no interlace).
+std::vector<uint8_t> encodePng(const Image8& image);
+
+// Writes the image as a PNG, atomically. Throws std::runtime_error on failure.
+void writePng(const std::filesystem::path& path, const Image8& image);
+
+}  // namespace candela

@@ -1,0 +1,35 @@
+#include "reports/report_data.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace candela {
+
+std::string formatNumber(double v, int significant) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v == 0.0 ? 0.0 : v);  // no "-0"
+  return buf;
+}
+
+std::string formatFixed(double v, int decimals) {
+  if (!std::isfinite(v)) return formatNumber(v);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // "-0.0" → "0.0"
+  return s;
+}
+
+std::string safeFileName(const std::string& name) {
+  std::string s;
+  for (char ch : name) {
+    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '-' ||
+                    ch == '_';
+    s += ok ? ch : '_';
+  }
+  return s.empty() ? "grid" : s;
+}
+
+}  // namespace candela

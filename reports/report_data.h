@@ -1,0 +1,83 @@
+// Plain data the report writers take: no engine types, so reports/ depends on base and metrics
+// only. cli/cmd_run.cpp fills these from the case file and the computed grids.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/base/math.h"
+#include "metrics/grid_stats.h"
+#include "metrics/targets.h"
+
+namespace candela {
+
+// A sensor as written to the grid CSV: position in m, unit normal.
+struct ReportPoint {
+  Vec3 position{0.0};
+  Vec3 normal{0.0, 0.0, 1.0};
+};
+
+// An extra CSV column after illuminance_lux, e.g. {"error_lux", ...} or {"daylight_factor_pct", ...}.
+struct ExtraColumn {
+  std::string name;
+  std::vector<double> values;  // one per point
+};
+
+// Where the points of a grid lie in its plane, for plans. A regular grid is a lattice of
+// `columns` × `rows` cells of `spacingM`, cell (0, 0) starting at `originM`; each point sits at
+// the centre of cells[i]. Irregular grids (points files) are drawn as dots at planPositions.
+struct PlanLayout {
+  bool regular = false;
+  int columns = 0, rows = 0;
+  Vec2 originM{0.0};
+  Vec2 spacingM{0.0};
+  std::vector<glm::ivec2> cells;     // per point (regular grids)
+  std::vector<Vec2> planPositions;   // per point, plan coordinates in m
+  std::vector<Vec2> outline;         // calculation area outline (m), optional
+};
+
+// One grid's results and verdicts.
+struct GridReport {
+  std::string name;
+  std::string description;           // e.g. "horizontal, 0.80 m above floor"
+  std::string quantity = "Illuminance";
+  std::string unit = "lx";           // "lx", or "%" for daylight factor grids
+  std::vector<double> values;        // per point, in `unit`
+  GridStats stats;                   // in `unit`
+  GridTargets targets;
+  TargetCheck check;
+  PlanLayout layout;
+};
+
+// The run as a whole.
+struct RunInfo {
+  std::string caseName;
+  std::string description;
+  std::string caseFile;
+  std::string version;               // candela version
+  std::string startedAt;             // ISO 8601 local time of the run
+  uint64_t seed = 0;
+  double runTimeS = 0.0;             // wall-clock time of the computation, s
+  // Settings as shown to the reader, in order: {"quality", "normal"}, {"bounces", "2"}, ...
+  std::vector<std::pair<std::string, std::string>> settings;
+};
+
+struct ReportData {
+  RunInfo run;
+  std::vector<GridReport> grids;
+  double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
+};
+using SummaryData = ReportData;
+
+// Shortest text that reads back to `v` within `significant` digits ("%.*g"); "nan"/"inf" kept.
+std::string formatNumber(double v, int significant = 8);
+
+// Fixed decimals for tables: formatFixed(523.456, 1) = "523.5".
+std::string formatFixed(double v, int decimals);
+
+// A grid name made safe as a file name: [A-Za-z0-9_-] kept, anything else becomes '_'.
+std::string safeFileName(const std::string& name);
+
+}  // namespace candela

@@ -1,0 +1,152 @@
+#include "reports/csv_writer.h"
+#include "reports/json_writer.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "sample_report.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& name) {
+  const fs::path d = fs::path(testing::TempDir()) / ("candela_reports_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Minimal CSV reader for the tests: RFC 4180 quotes, no embedded line breaks.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (quoted) {
+        if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
+        else if (c == '"') quoted = false;
+        else fields.back() += c;
+      } else if (c == '"') quoted = true;
+      else if (c == ',') fields.emplace_back();
+      else fields.back() += c;
+    }
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+TEST(GridCsv, RoundTripsPointsValuesAndExtraColumns) {
+  std::vector<ReportPoint> pts;
+  const GridReport g = testing_sample::sampleGrid("Work plane", 0.5, 0.5, 5.5, 3.5, 0.5, &pts);
+  std::vector<double> df(g.values.size());
+  for (std::size_t i = 0; i < df.size(); ++i) df[i] = g.values[i] / 100.0;  // any distinct column
+  const fs::path dir = freshDir("grid");
+  const fs::path path = writeGridCsv(dir, "Work plane", pts, g.values, {{"daylight_factor_pct", df}});
+  EXPECT_EQ(path, dir / "Work_plane.csv");
+  const auto rows = parseCsv(slurp(path));
+  ASSERT_EQ(rows.size(), pts.size() + 1);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz", "illuminance_lux",
+                                               "daylight_factor_pct"}));
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& r = rows[i + 1];
+    ASSERT_EQ(r.size(), 8u);
+    EXPECT_DOUBLE_EQ(std::stod(r[0]), pts[i].position.x);  // 10 significant digits: exact here
+    EXPECT_DOUBLE_EQ(std::stod(r[2]), 0.8);
+    EXPECT_DOUBLE_EQ(std::stod(r[5]), 1.0);
+    EXPECT_NEAR(std::stod(r[6]), g.values[i], 1e-7 * g.values[i]);  // 8 significant digits
+    EXPECT_NEAR(std::stod(r[7]), df[i], 1e-7 * df[i]);
+  }
+  EXPECT_THROW(gridCsv(pts, {1.0}), std::invalid_argument);
+  EXPECT_THROW(gridCsv(pts, g.values, {{"bad", {1.0}}}), std::invalid_argument);
+  // No temporary file is left behind by the atomic write.
+  for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename().string()[0] != '.', true);
+}
+
+// The summary's metrics must equal the statistics recomputed here from the values with plain
+// loops (independent of metrics/grid_stats).
+TEST(Summary, CsvAndJsonCarryTheMetrics) {
+  const ReportData data = testing_sample::sampleReport();
+  const fs::path dir = freshDir("summary");
+  writeSummary(dir, data);
+
+  const auto rows = parseCsv(slurp(dir / "summary.csv"));
+  ASSERT_EQ(rows.size(), data.grids.size() + 1);
+  const auto& header = rows[0];
+  auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir / "summary.json"));
+  EXPECT_EQ(j["case"]["name"], data.run.caseName);
+  EXPECT_EQ(j["seed"], 7);
+  EXPECT_EQ(j["settings"]["bounces"], "2");
+  EXPECT_DOUBLE_EQ(j["run_time_s"].get<double>(), 3.25);
+  ASSERT_EQ(j["grids"].size(), data.grids.size());
+
+  for (std::size_t g = 0; g < data.grids.size(); ++g) {
+    const std::vector<double>& v = data.grids[g].values;
+    double sum = 0.0, lo = v[0], hi = v[0];
+    for (double e : v) {
+      sum += e;
+      lo = std::min(lo, e);
+      hi = std::max(hi, e);
+    }
+    const double avg = sum / v.size();
+    const auto& r = rows[g + 1];
+    EXPECT_EQ(r[col("case")], data.run.caseName);
+    EXPECT_EQ(r[col("grid")], data.grids[g].name);  // "Desk <A&B>" survives quoting rules
+    EXPECT_EQ(std::stoul(r[col("points")]), v.size());
+    EXPECT_NEAR(std::stod(r[col("average")]), avg, 1e-7 * avg);  // 8 significant digits
+    EXPECT_NEAR(std::stod(r[col("minimum")]), lo, 1e-7 * lo);
+    EXPECT_NEAR(std::stod(r[col("maximum")]), hi, 1e-7 * hi);
+    EXPECT_NEAR(std::stod(r[col("u0")]), lo / avg, 1e-7);
+    EXPECT_NEAR(std::stod(r[col("ud")]), lo / hi, 1e-7);
+    EXPECT_EQ(r[col("seed")], "7");
+    EXPECT_EQ(r[col("settings")], "quality=normal;method=cache;bounces=2;samples=512;threads=all (8)");
+
+    const nlohmann::json& jg = j["grids"][g];
+    EXPECT_EQ(jg["name"], data.grids[g].name);
+    EXPECT_EQ(jg["points"], v.size());
+    EXPECT_NEAR(jg["average"].get<double>(), avg, 1e-9 * avg);  // JSON keeps full precision
+    EXPECT_NEAR(jg["minimum"].get<double>(), lo, 1e-9 * lo);
+    EXPECT_NEAR(jg["u0"].get<double>(), lo / avg, 1e-12);
+    // Verdicts as a designer would check them by hand.
+    const GridTargets& t = data.grids[g].targets;
+    const bool avgOk = !t.averageLux || avg >= *t.averageLux;
+    const bool u0Ok = !t.uniformity || lo / avg >= *t.uniformity;
+    EXPECT_EQ(jg["verdict"], (avgOk && u0Ok) ? "pass" : "fail");
+    EXPECT_EQ(r[col("verdict")], (avgOk && u0Ok) ? "pass" : "fail");
+    if (!t.uniformity) {
+      EXPECT_TRUE(jg["target_uniformity"].is_null());
+      EXPECT_EQ(r[col("target_uniformity")], "");
+      EXPECT_EQ(jg["verdict_uniformity"], "n/a");
+    }
+  }
+  // The sample is built so that both verdicts occur.
+  EXPECT_EQ(j["grids"][0]["verdict"], "pass");
+  EXPECT_EQ(j["grids"][1]["verdict"], "fail");
+}
+
+TEST(Summary, CsvFieldQuoting) {
+  EXPECT_EQ(csvField("plain"), "plain");
+  EXPECT_EQ(csvField("a,b"), "\"a,b\"");
+  EXPECT_EQ(csvField("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+}  // namespace
+}  // namespace candela

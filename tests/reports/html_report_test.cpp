@@ -1,0 +1,84 @@
+#include "reports/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "reports/plan_svg.h"
+#include "sample_report.h"
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string reportText() {
+  const fs::path path = fs::path(testing::TempDir()) / "candela_report_test" / "report.html";
+  writeHtmlReport(path, testing_sample::sampleReport());
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Opens offline: nothing is fetched from anywhere — no URLs, no src= attributes, no
+// stylesheets or scripts by reference, no url() except to in-document ids.
+TEST(HtmlReport, IsSelfContained) {
+  const std::string html = reportText();
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_EQ(html.find("http://"), std::string::npos);
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+  EXPECT_EQ(html.find("src="), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("@import"), std::string::npos);
+  const std::regex externalUrl(R"(url\((?!#))");
+  EXPECT_FALSE(std::regex_search(html, externalUrl));
+  const std::regex externalHref(R"(href="(?!#))");
+  EXPECT_FALSE(std::regex_search(html, externalHref));
+  EXPECT_NE(html.find("<style>"), std::string::npos);
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+}
+
+TEST(HtmlReport, HasEachGridsPlanAndTable) {
+  const ReportData data = testing_sample::sampleReport();
+  const std::string html = reportText();
+  EXPECT_NE(html.find("Open office, level 2"), std::string::npos);
+  for (std::size_t i = 0; i < data.grids.size(); ++i) {
+    const std::string id = "id=\"grid-" + std::to_string(i + 1) + "\"";
+    const std::size_t at = html.find(id);
+    ASSERT_NE(at, std::string::npos) << id;
+    const std::size_t end = html.find("</section>", at);
+    const std::string section = html.substr(at, end - at);
+    EXPECT_NE(section.find(xmlEscape(data.grids[i].name)), std::string::npos);
+    EXPECT_NE(section.find("<svg "), std::string::npos);
+    EXPECT_NE(section.find("<table>"), std::string::npos);
+    EXPECT_NE(section.find("Uniformity U<sub>0</sub>"), std::string::npos);
+    // The average shown is the grid's, rounded as printed (0 decimals above 100 lx).
+    EXPECT_NE(section.find(formatFixed(data.grids[i].stats.averageLux, 0) + " lx"), std::string::npos)
+        << data.grids[i].stats.averageLux;
+    const std::string verdict = std::string("badge ") + verdictName(data.grids[i].check.overall);
+    EXPECT_NE(section.find(verdict), std::string::npos);
+  }
+  EXPECT_NE(html.find("Desk &lt;A&amp;B&gt;"), std::string::npos);  // names are escaped
+  EXPECT_EQ(html.find("Desk <A&B>"), std::string::npos);
+  EXPECT_NE(html.find("badge pass"), std::string::npos);
+  EXPECT_NE(html.find("badge fail"), std::string::npos);
+  EXPECT_NE(html.find("3.25 s"), std::string::npos);  // run time
+}
+
+// scripts/screenshot_report.sh sets CANDELA_SAMPLE_REPORT to get the sample report for the
+// manual visual check (docs/reports.md); without it this test only writes to a temp folder.
+TEST(HtmlReport, WritesSampleForScreenshot) {
+  const char* target = std::getenv("CANDELA_SAMPLE_REPORT");
+  const fs::path path = target ? fs::path(target) : fs::path(testing::TempDir()) / "candela_sample_report.html";
+  writeHtmlReport(path, testing_sample::sampleReport());
+  EXPECT_TRUE(fs::exists(path));
+}
+
+}  // namespace
+}  // namespace candela
