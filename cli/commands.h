@@ -12,5 +12,6 @@ namespace candela::cli {
 using Action = std::function<int()>;
 
 void addPointsCommand(CLI::App& app, Action& action);
+void addSunCommand(CLI::App& app, Action& action);
 
 }  // namespace candela::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   candela::cli::Action action;
   candela::cli::addPointsCommand(app, action);
+  candela::cli::addSunCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
