@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   candela::cli::Action action;
   candela::cli::addPointsCommand(app, action);
   candela::cli::addSunCommand(app, action);
+  candela::cli::addLuminaireCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -68,7 +68,7 @@ std::string polarPlotSvg(const std::vector<PolarCurve>& curves, const PolarPlotO
        "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   if (!options.title.empty())
-    s += "<text x=\"" + num(cx) + "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\" font-weight=\"bold\">" +
+    s += "<text x=\"" + num(cx) + "\" y=\"20\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">" +
          escape(options.title) + "</text>\n";
   s += "<g transform=\"translate(" + num(cx) + "," + num(cy) + ")\">\n";
   // Radial lines every 30 deg, labelled from nadir (bottom) to zenith (top) on both sides.

@@ -1,0 +1,15 @@
+# candela luminaire: summary on stdout, polar plot SVG (written into the build tree here).
+set(LUM_SVG ${CMAKE_CURRENT_BINARY_DIR}/luminaire_polar.svg)
+candela_cli_test(luminaire.ies 0 "Luminous flux:" luminaire ies/lambert_full.ies --svg ${LUM_SVG})
+candela_cli_test(luminaire.ldt 0 "Format:               EULUMDAT" luminaire ldt/asym_isym0.ldt --svg ${LUM_SVG})
+candela_cli_test(luminaire.no_svg 0 "Beam angle (50%):" luminaire ies/typeb.ies --no-svg)
+candela_cli_test(luminaire.case_panel_ies 0 "LED panel 600 x 600 mm" luminaire
+                 ${PROJECT_SOURCE_DIR}/cases/luminaires/led_panel_600.ies --svg ${LUM_SVG})
+candela_cli_test(luminaire.case_panel_ldt 0 "LED panel 600 x 600 mm" luminaire
+                 ${PROJECT_SOURCE_DIR}/cases/luminaires/led_panel_600.ldt --svg ${LUM_SVG})
+candela_cli_test(luminaire.case_downlight 0 "IES LM-63-2019" luminaire
+                 ${PROJECT_SOURCE_DIR}/cases/luminaires/downlight_150.ies --svg ${LUM_SVG})
+candela_cli_test(luminaire.bad_ies 2 "bad_negative.ies:11:" luminaire ies/bad_negative.ies --svg ${LUM_SVG})
+candela_cli_test(luminaire.bad_ldt 2 "bad_isym.ldt:3:" luminaire ldt/bad_isym.ldt --svg ${LUM_SVG})
+candela_cli_test(luminaire.missing 2 "cannot open file" luminaire ies/no_such.ies --svg ${LUM_SVG})
+candela_cli_test(luminaire.unknown_type 2 "expected .ies or .ldt" luminaire ies/tilt_table.tlt --svg ${LUM_SVG})
