@@ -239,9 +239,11 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
 
   Tokens t(fileName, lines, li + 1);
   info.tilt.appliedAngleDeg = options.tiltAngleDeg;
-  if (tiltValue == "NONE" || tiltValue.empty()) {
+  std::string tiltUpper = tiltValue;
+  std::transform(tiltUpper.begin(), tiltUpper.end(), tiltUpper.begin(), upperChar);
+  if (tiltUpper == "NONE" || tiltUpper.empty()) {
     info.tilt.source = "NONE";
-  } else if (tiltValue == "INCLUDE") {
+  } else if (tiltUpper == "INCLUDE") {
     info.tilt.source = "INCLUDE";
     readTiltBlock(t, info.tilt);
   } else {
