@@ -76,6 +76,31 @@ ColorScale niceScale(double minValue, double maxValue, bool logarithmic) {
   return s;
 }
 
+namespace {
+
+// The 1-2-2.5-5 × 10^n step that cuts `span` into at most `count` parts.
+double tickStep(double span, int count) {
+  const double decade = std::pow(10.0, std::floor(std::log10(span / std::max(count, 1))));
+  double step = decade;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    step = m * decade;
+    if (span / step <= count * (1.0 + 1e-9)) break;
+  }
+  return step;
+}
+
+}  // namespace
+
+ColorScale niceRange(double minValue, double maxValue) {
+  ColorScale s;
+  if (!(maxValue > minValue)) return niceScale(0.0, std::max(maxValue, 0.0));
+  const double step = tickStep(maxValue - minValue, 5);
+  s.minValue = std::floor(minValue / step + 1e-9) * step;
+  s.maxValue = std::ceil(maxValue / step - 1e-9) * step;
+  if (s.minValue < 0.0 && minValue >= 0.0) s.minValue = 0.0;
+  return s;
+}
+
 std::vector<double> scaleTicks(const ColorScale& s, int approxCount) {
   std::vector<double> ticks;
   if (s.logarithmic) {
@@ -91,12 +116,7 @@ std::vector<double> scaleTicks(const ColorScale& s, int approxCount) {
   }
   const double span = s.maxValue - s.minValue;
   if (!(span > 0.0)) return {s.minValue};
-  const double decade = std::pow(10.0, std::floor(std::log10(span / std::max(approxCount, 1))));
-  double step = decade;
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
-    step = m * decade;
-    if (span / step <= approxCount) break;
-  }
+  const double step = tickStep(span, approxCount);
   for (double v = std::ceil(s.minValue / step - 1e-9) * step; v <= s.maxValue + step * 1e-9; v += step)
     ticks.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
   return ticks;

@@ -33,6 +33,11 @@ Rgb8 falseColor(double value, const ColorScale& scale);
 // or whole decades for log scales; what a designer expects on a legend.
 ColorScale niceScale(double minValue, double maxValue, bool logarithmic = false);
 
+// A linear scale from a round number at or below `minValue` to one at or above `maxValue`, on the
+// step of scaleTicks(…, 6): uses the whole colour range for the values a plan shows (as AGi32's
+// and DIALux's automatic ranges do), with legend ends a reader can quote.
+ColorScale niceRange(double minValue, double maxValue);
+
 // Legend tick values: multiples of a 1-2-5 step covering the scale (about `approxCount`), or
 // 1-2-5 per decade on log scales.
 std::vector<double> scaleTicks(const ColorScale& scale, int approxCount = 6);

@@ -1,5 +1,7 @@
 #include "reports/html_report.h"
 
+#include <cctype>
+#include <cmath>
 #include <sstream>
 
 #include "engine/base/atomic_file.h"
@@ -39,8 +41,11 @@ td.num, th.num { text-align:right; font-variant-numeric:tabular-nums; }
 .grid-body { display:flex; flex-wrap:wrap; gap:24px; align-items:flex-start; }
 .grid-body figure { margin:0; flex:0 0 auto; }
 .grid-body figcaption { font-size:11px; color:var(--muted); margin-top:4px; max-width:560px; }
-.grid-body .metrics { flex:1 1 280px; min-width:280px; }
-.kv td:first-child { color:var(--muted); width:45%; }
+.grid-body .metrics { flex:1 1 340px; min-width:340px; }
+.metrics td.num { white-space:nowrap; }
+.metrics td .f { display:block; color:var(--muted); font-size:11px; }
+table.kv { max-width:560px; }
+.kv td:first-child { color:var(--muted); width:40%; }
 footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
 @media print { body { background:#fff; } .page { box-shadow:none; margin:0; max-width:none; }
                section.grid { break-inside:avoid; } }
@@ -112,24 +117,26 @@ std::string htmlReport(const ReportData& data) {
       PlanOptions opt;
       opt.northDeg = data.northDeg;
       opt.idPrefix = "plan" + std::to_string(i + 1);
-      const ColorScale scale = niceScale(0.0, g.stats.maximumLux);
+      const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
       h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
         << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
         << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
     }
     h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Quantity</th><th class=\"num\">Calculated</th>"
          "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
-    h << "<tr><td>Average Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
+    std::string quantity = g.quantity;
+    for (char& ch : quantity) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    h << "<tr><td>Average " << xmlEscape(quantity) << " Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
       << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
       << badge(g.check.average) << "</td></tr>\n";
-    h << "<tr><td>Uniformity U<sub>0</sub> = E<sub>min</sub>/Ē</td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
+    h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">E<sub>min</sub> / Ē</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
       << "</td><td class=\"num\">" << (g.targets.uniformity ? "≥ " + formatFixed(*g.targets.uniformity, 2) : "—")
       << "</td><td>" << badge(g.check.uniformity) << "</td></tr>\n";
     h << "<tr><td>Minimum E<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
       << "</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
       << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><td>Diversity U<sub>d</sub> = E<sub>min</sub>/E<sub>max</sub></td><td class=\"num\">"
+    h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">E<sub>min</sub> / E<sub>max</sub></span></td><td class=\"num\">"
       << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";
     if (g.layout.regular)

@@ -210,7 +210,7 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
   }
 
   // Cell values, when the cells are large enough to hold them.
-  if (opt.cellValues && L.regular && cellPx >= 30.0) {
+  if (opt.cellValues && L.regular && cellPx >= 30.0 && grid.values.size() <= 200) {
     s << "<g font-size=\"" << px(std::min(11.0, cellPx / 3.2)) << "\" text-anchor=\"middle\" dominant-baseline=\"central\">\n";
     for (std::size_t i = 0; i < grid.values.size() && i < L.cells.size(); ++i) {
       const Vec2 c = L.originM + (Vec2(L.cells[i]) + 0.5) * L.spacingM;
@@ -225,8 +225,14 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
   if (opt.contours && L.regular) {
     std::vector<double> levels = opt.contourLevels;
     if (levels.empty()) {
-      for (double t : scaleTicks(scale, 6))
-        if (t > grid.stats.minimumLux && t < grid.stats.maximumLux) levels.push_back(t);
+      // Isolux lines at the legend's ticks and halfway between them.
+      const std::vector<double> ticks = scaleTicks(scale, 6);
+      for (std::size_t i = 0; i < ticks.size(); ++i) {
+        for (double t : {ticks[i], i + 1 < ticks.size() ? 0.5 * (ticks[i] + ticks[i + 1]) : ticks[i]})
+          if (t > grid.stats.minimumLux && t < grid.stats.maximumLux &&
+              (levels.empty() || t > levels.back()))
+            levels.push_back(t);
+      }
     }
     s << "<g clip-path=\"url(#" << id << "-clip)\">\n";
     std::ostringstream labels;
@@ -313,7 +319,7 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
     s << "<rect x=\"" << px(lx) << "\" y=\"" << px(ly) << "\" width=\"" << px(legendBar) << "\" height=\"" << px(lh)
       << "\" fill=\"url(#" << id << "-scale)\" stroke=\"#666\" stroke-width=\"0.6\"/>\n";
     s << "<g font-size=\"10\" fill=\"#333\">\n";
-    for (double t : scaleTicks(scale, 8)) {
+    for (double t : scaleTicks(scale, 6)) {
       const double y = ly + lh * (1.0 - scalePosition(t, scale));
       s << "<line x1=\"" << px(lx + legendBar) << "\" y1=\"" << px(y) << "\" x2=\"" << px(lx + legendBar + 4)
         << "\" y2=\"" << px(y) << "\" stroke=\"#555\"/><text x=\"" << px(lx + legendBar + 7) << "\" y=\"" << px(y)

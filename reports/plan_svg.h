@@ -12,11 +12,11 @@
 namespace candela {
 
 struct PlanOptions {
-  double maxPlanWidthPx = 560.0;      // the plan is scaled to fit these, aspect kept
-  double maxPlanHeightPx = 420.0;
-  std::vector<double> contourLevels;  // empty: the legend's ticks inside (min, max)
+  double maxPlanWidthPx = 480.0;      // the plan is scaled to fit these, aspect kept
+  double maxPlanHeightPx = 380.0;
+  std::vector<double> contourLevels;  // empty: legend ticks and midpoints inside (min, max)
   bool contours = true;
-  bool cellValues = true;             // print each value in its cell when cells are >= 30 px
+  bool cellValues = true;             // print values in cells when cells are >= 30 px, <= 200 cells
   double northDeg = 0.0;              // true north, degrees clockwise from plan +Y
   std::string idPrefix = "plan";      // makes element ids unique when several plans share a page
   bool standalone = false;            // add the SVG namespace (files); HTML5 inline SVG needs none

@@ -63,6 +63,17 @@ TEST(FalseColor, NiceScalesAndTicks) {
   for (std::size_t i = 0; i < lt.size(); ++i) EXPECT_NEAR(lt[i], expected[i], 1e-9);
 }
 
+// 421..653 lx: step 50 (span 232 / 5 parts → 50), so 400..700.
+TEST(FalseColor, NiceRangeAroundTheValues) {
+  const ColorScale s = niceRange(420.77, 652.98);
+  EXPECT_DOUBLE_EQ(s.minValue, 400.0);
+  EXPECT_DOUBLE_EQ(s.maxValue, 700.0);
+  EXPECT_FALSE(s.logarithmic);
+  const ColorScale flat = niceRange(500.0, 500.0);  // a uniform grid still gets a scale
+  EXPECT_DOUBLE_EQ(flat.minValue, 0.0);
+  EXPECT_DOUBLE_EQ(flat.maxValue, 500.0);
+}
+
 TEST(FalseColor, HexAndContrast) {
   EXPECT_EQ(hexColor(Rgb8{255, 16, 0}), "#ff1000");
   EXPECT_EQ(contrastingText(viridis(0.0)), (Rgb8{255, 255, 255}));  // white on dark violet
