@@ -28,7 +28,7 @@ struct LuminairePlacement {
   Vec3 aim{0.0, 0.0, -1.0};             // unit direction of the photometric nadir
   double spinDeg = 0.0;                 // rotation about the aim; 0: C0 plane towards +X
   double multiplier = 1.0;              // scales intensities
-  double maintenanceFactor = 1.0;       // MF in (0, 1]; the engine multiplies it in too
+  double maintenanceFactor = 1.0;       // MF in (0, 1]; intensities scale by multiplier × MF
   int entry = 0;                        // index of the [[luminaire]] entry (0-based)
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
