@@ -93,97 +93,176 @@ Octree::Octree(const Scene& scene, OctreeOptions options) : scene_(&scene) {
   }
   nodes_.shrink_to_fit();
   items_.shrink_to_fit();
+  // Renumber primitives in depth-first order of their first leaf.
+  shapeToLocal_.assign(scene.shapes.size(), kNoShape);
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const uint32_t ni = stack.back();
+    stack.pop_back();
+    const Node& nd = nodes_[ni];
+    if (nd.count == kInternal) {
+      for (int c = 7; c >= 0; --c) stack.push_back(nd.first + c);
+      continue;
+    }
+    for (uint32_t k = 0; k < nd.count; ++k) {
+      const uint32_t sh = items_[nd.first + k];
+      if (shapeToLocal_[sh] == kNoShape) {
+        shapeToLocal_[sh] = static_cast<uint32_t>(localToShape_.size());
+        localToShape_.push_back(sh);
+      }
+    }
+  }
+  for (uint32_t& it : items_) it = shapeToLocal_[it];
+  triangles_.resize(localToShape_.size());
+  isTriangle_.resize(localToShape_.size());
+  for (size_t i = 0; i < localToShape_.size(); ++i) {
+    const Shape& sh = scene.shapes[localToShape_[i]];
+    isTriangle_[i] = sh.type == ShapeType::Triangle;
+    if (isTriangle_[i]) triangles_[i] = Triangle{sh.a, sh.b, sh.c};
+  }
 }
 
 struct Octree::RayState {
-  Vec3 o, d, inv;
+  Vec3 o, d;
   double tMin, best;
   uint32_t hit = kNoShape;
   uint32_t skipA, skipB;
+  // Mailbox: the last shapes tested along this ray; a shape spanning several voxels is tested
+  // once (Amanatides & Woo 1987). A fixed array: no allocation per ray.
+  // Direct-mapped on the primitive number: one compare per test.
+  static constexpr int kMail = 16;
+  uint32_t mail[kMail] = {kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape,
+                          kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape, kNoShape};
+  int mirror = 0;
+  bool seen(uint32_t s) {
+    uint32_t& slot = mail[s & (kMail - 1)];
+    if (slot == s) return true;
+    slot = s;
+    return false;
+  }
 };
 
+namespace {
+
+using Octree_Triangle = Octree::Triangle;
+
+// Möller & Trumbore (1997), as intersectShape does (same arithmetic, so the same t), on the
+// compact copy.
+inline bool hitTriangle(const Octree_Triangle& tri, const Vec3& o, const Vec3& d, double tMin, double tMax, double& t) {
+  const Vec3 p = glm::cross(d, tri.e2);
+  const double det = glm::dot(tri.e1, p);
+  if (det == 0.0) return false;
+  const double inv = 1.0 / det;
+  const Vec3 tv = o - tri.v0;
+  const double u = glm::dot(tv, p) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  const Vec3 q = glm::cross(tv, tri.e1);
+  const double v = glm::dot(d, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  const double tt = glm::dot(tri.e2, q) * inv;
+  if (tt <= tMin || tt >= tMax) return false;
+  t = tt;
+  return true;
+}
+
+}  // namespace
+
+// Revelles, Ureña & Lastra (2000), "An efficient parametric algorithm for octree traversal":
+// with the ray mirrored so that every direction component is positive, a node is given by the
+// slab distances (t0, t1) per axis; children's slabs are halves of these (additions only) and
+// the next child follows from which mid-plane the ray leaves through first. Child bits here:
+// x = 1, y = 2, z = 4; `r.mirror` maps a mirrored child to its stored index.
 template <bool kAnyHit>
-bool Octree::traverse(RayState& r, uint32_t ni, const Vec3& centre, double half, double ta, double tb) const {
+bool Octree::traverse(RayState& r, uint32_t ni, const Vec3& t0, const Vec3& t1) const {
+  const double tEnter = std::max({t0.x, t0.y, t0.z});
+  const double tExit = std::min({t1.x, t1.y, t1.z});
+  if (tExit < r.tMin || tEnter > r.best || tEnter > tExit) return false;
   const Node node = nodes_[ni];
   if (node.count != kInternal) {
     const Shape* shapes = scene_->shapes.data();
     const VertexStore& vs = scene_->vertices;
     for (uint32_t k = 0; k < node.count; ++k) {
-      const uint32_t s = items_[node.first + k];
-      if (s == r.skipA || s == r.skipB) continue;
+      const uint32_t s = items_[node.first + k];  // local number
+      if (s == r.skipA || s == r.skipB || r.seen(s)) continue;
       double t;
-      if (intersectShape(shapes[s], vs, r.o, r.d, r.tMin, r.best, t)) {
+      const bool h = isTriangle_[s]
+                         ? hitTriangle(triangles_[s], r.o, r.d, r.tMin, r.best, t)
+                         : intersectShape(shapes[localToShape_[s]], vs, r.o, r.d, r.tMin, r.best, t);
+      if (h) {
         if (kAnyHit) return true;
         r.best = t;
         r.hit = s;
       }
     }
     // A hit inside this voxel is the nearest; one beyond it may yet be beaten by a later voxel.
-    return !kAnyHit && r.hit != kNoShape && r.best <= tb;
+    return !kAnyHit && r.hit != kNoShape && r.best <= tExit;
   }
-  // Parametric distances to the three mid-planes (Revelles, Ureña & Lastra 2000).
-  double tm[3];
-  int child = 0;
-  for (int a = 0; a < 3; ++a) {
-    if (r.d[a] != 0.0) {
-      tm[a] = (centre[a] - r.o[a]) * r.inv[a];
-      const bool crossed = tm[a] <= ta;
-      if (crossed == (r.d[a] > 0.0)) child |= 1 << a;
+  const Vec3 tm = 0.5 * (t0 + t1);
+  // First child: the entry face is the slab entered last.
+  int c = 0;
+  if (t0.x >= t0.y && t0.x >= t0.z) {
+    if (tm.y < t0.x) c |= 2;
+    if (tm.z < t0.x) c |= 4;
+  } else if (t0.y >= t0.z) {
+    if (tm.x < t0.y) c |= 1;
+    if (tm.z < t0.y) c |= 4;
+  } else {
+    if (tm.x < t0.z) c |= 1;
+    if (tm.y < t0.z) c |= 2;
+  }
+  while (c < 8) {
+    const Vec3 c0((c & 1) ? tm.x : t0.x, (c & 2) ? tm.y : t0.y, (c & 4) ? tm.z : t0.z);
+    const Vec3 c1((c & 1) ? t1.x : tm.x, (c & 2) ? t1.y : tm.y, (c & 4) ? t1.z : tm.z);
+    if (traverse<kAnyHit>(r, node.first + (c ^ r.mirror), c0, c1)) return true;
+    // Next child: cross the nearest of the child's exit planes that is still inside this node.
+    const double ex = (c & 1) ? 1e300 : c1.x, ey = (c & 2) ? 1e300 : c1.y, ez = (c & 4) ? 1e300 : c1.z;
+    if (ex <= ey && ex <= ez) {
+      c = (c & 1) ? 8 : c | 1;
+    } else if (ey <= ez) {
+      c = (c & 2) ? 8 : c | 2;
     } else {
-      tm[a] = std::numeric_limits<double>::infinity();
-      if (r.o[a] >= centre[a]) child |= 1 << a;
+      c = (c & 4) ? 8 : c | 4;
     }
+    if (c < 8 && !kAnyHit && r.hit != kNoShape && r.best <= std::max({(c & 1) ? tm.x : t0.x, (c & 2) ? tm.y : t0.y,
+                                                                        (c & 4) ? tm.z : t0.z}))
+      return r.best <= tExit;
   }
-  const double q = 0.5 * half;
-  double t = ta;
-  for (;;) {
-    double tNext = tb;
-    for (int a = 0; a < 3; ++a)
-      if (tm[a] > t && tm[a] < tNext) tNext = tm[a];
-    const Vec3 cc(centre.x + ((child & 1) ? q : -q), centre.y + ((child & 2) ? q : -q),
-                  centre.z + ((child & 4) ? q : -q));
-    if (traverse<kAnyHit>(r, node.first + child, cc, q, t, tNext)) return true;
-    if (!kAnyHit && r.best <= tNext) return r.hit != kNoShape && r.best <= tb;
-    if (tNext >= tb) return false;
-    for (int a = 0; a < 3; ++a)
-      if (tm[a] == tNext) child ^= 1 << a;
-    t = tNext;
-  }
+  return false;
 }
 
 template <bool kAnyHit>
 bool Octree::run(RayState& r) const {
   if (nodes_.empty()) return false;
-  double ta = r.tMin, tb = r.best;
+  // Mirror the ray into the positive octant of directions about the cube's centre.
+  const Vec3 centre = cube_.center();
+  Vec3 om = r.o, dm = r.d;
+  r.mirror = 0;
   for (int a = 0; a < 3; ++a) {
-    r.inv[a] = 1.0 / r.d[a];
-    if (r.d[a] == 0.0) {
-      if (r.o[a] < cube_.lo[a] || r.o[a] > cube_.hi[a]) return false;
-      continue;
+    if (dm[a] < 0.0) {
+      om[a] = 2.0 * centre[a] - om[a];
+      dm[a] = -dm[a];
+      r.mirror |= 1 << a;
     }
-    double t0 = (cube_.lo[a] - r.o[a]) * r.inv[a];
-    double t1 = (cube_.hi[a] - r.o[a]) * r.inv[a];
-    if (t0 > t1) std::swap(t0, t1);
-    ta = std::max(ta, t0);
-    tb = std::min(tb, t1);
+    if (dm[a] < 1e-300) dm[a] = 1e-300;  // parallel to a slab: effectively infinite distances
   }
-  if (ta > tb) return false;
-  const double half = 0.5 * (cube_.hi.x - cube_.lo.x);
-  return traverse<kAnyHit>(r, 0, cube_.center(), half, ta, tb) || (!kAnyHit && r.hit != kNoShape);
+  const Vec3 inv = 1.0 / dm;
+  const Vec3 t0 = (cube_.lo - om) * inv;
+  const Vec3 t1 = (cube_.hi - om) * inv;
+  return traverse<kAnyHit>(r, 0, t0, t1) || (!kAnyHit && r.hit != kNoShape);
 }
 
 bool Octree::intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax, Hit& hit, uint32_t skipA,
                        uint32_t skipB) const {
-  RayState r{o, dir, Vec3(0.0), tMin, tMax, kNoShape, skipA, skipB};
+  RayState r{o, dir, tMin, tMax, kNoShape, local(skipA), local(skipB)};
   if (!run<false>(r) || r.hit == kNoShape) return false;
   hit.t = r.best;
-  hit.shape = r.hit;
+  hit.shape = localToShape_[r.hit];
   return true;
 }
 
 bool Octree::occluded(const Vec3& o, const Vec3& dir, double tMin, double tMax, uint32_t skipA,
                       uint32_t skipB) const {
-  RayState r{o, dir, Vec3(0.0), tMin, tMax, kNoShape, skipA, skipB};
+  RayState r{o, dir, tMin, tMax, kNoShape, local(skipA), local(skipB)};
   return run<true>(r);
 }
 
@@ -192,7 +271,9 @@ OctreeStats Octree::stats() const {
   s.nodes = nodes_.size();
   s.items = items_.size();
   for (const Node& n : nodes_) s.leaves += (n.count != kInternal);
-  s.memoryBytes = nodes_.size() * sizeof(Node) + items_.size() * sizeof(uint32_t);
+  s.memoryBytes = nodes_.size() * sizeof(Node) + items_.size() * sizeof(uint32_t) +
+                  triangles_.size() * sizeof(Triangle) + isTriangle_.size() +
+                  (localToShape_.size() + shapeToLocal_.size()) * sizeof(uint32_t);
   // Depth by walking down.
   std::function<int(uint32_t)> depth = [&](uint32_t i) -> int {
     if (nodes_[i].count != kInternal) return 0;

@@ -52,12 +52,28 @@ class Octree {
 
   struct RayState;
   template <bool kAnyHit>
-  bool traverse(RayState& r, uint32_t node, const Vec3& centre, double half, double ta, double tb) const;
+  bool traverse(RayState& r, uint32_t node, const Vec3& t0, const Vec3& t1) const;
   template <bool kAnyHit>
   bool run(RayState& r) const;
+  uint32_t local(uint32_t shape) const {
+    return shape < shapeToLocal_.size() ? shapeToLocal_[shape] : kNoShape;
+  }
+
+  // Primitives are renumbered in depth-first leaf order (items_ holds these local numbers), so
+  // that the triangles a ray meets in neighbouring voxels lie close together in memory. Triangles
+  // are repeated compactly (v0, e1, e2); other shapes go through intersectShape.
+ public:
+  struct Triangle {
+    Vec3 v0, e1, e2;
+  };
+
+ private:
+  std::vector<uint32_t> localToShape_, shapeToLocal_;
 
   const Scene* scene_ = nullptr;
   Box cube_;
+  std::vector<Triangle> triangles_;
+  std::vector<uint8_t> isTriangle_;
   std::vector<Node> nodes_;
   std::vector<uint32_t> items_;
 };
