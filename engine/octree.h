@@ -3,6 +3,7 @@
 // cube size; rays walk the voxels front to back and stop at the first voxel holding a hit.
 #pragma once
 
+#include "engine/accelerator.h"
 #include "engine/scene.h"
 
 #include <cstdint>
@@ -21,24 +22,19 @@ struct OctreeStats {
   int depth = 0;
 };
 
-inline constexpr uint32_t kNoShape = std::numeric_limits<uint32_t>::max();
-
-class Octree {
+class Octree : public RayAccelerator {
  public:
   Octree() = default;
   Octree(const Scene& scene, OctreeOptions options = {});
 
-  struct Hit {
-    double t = 0.0;
-    uint32_t shape = kNoShape;
-  };
+  using Hit = RayHit;
 
   // Nearest hit along o + t·dir (dir unit length) with t in (tMin, tMax), ignoring shapes skipA/skipB.
   bool intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax, Hit& hit,
-                 uint32_t skipA = kNoShape, uint32_t skipB = kNoShape) const;
+                 uint32_t skipA = kNoShape, uint32_t skipB = kNoShape) const override;
   // Any hit in (tMin, tMax) ignoring shapes skipA and skipB (shadow rays).
   bool occluded(const Vec3& o, const Vec3& dir, double tMin, double tMax, uint32_t skipA = kNoShape,
-                uint32_t skipB = kNoShape) const;
+                uint32_t skipB = kNoShape) const override;
 
   OctreeStats stats() const;
   const Box& cube() const { return cube_; }

@@ -82,8 +82,10 @@ double Tracer::originOffset(const Vec3& p) {
   return 1e-7 * m;
 }
 
-Tracer::Tracer(const Scene& scene, OctreeOptions octree)
-    : scene_(scene), octree_(scene, octree), lights_(collectLights(scene)) {
+Tracer::Tracer(const Scene& scene, OctreeOptions octree) : Tracer(scene, std::make_unique<Octree>(scene, octree)) {}
+
+Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
+    : scene_(scene), accel_(std::move(accelerator)), lights_(collectLights(scene)) {
   for (const Material& m : scene.materials)
     if (m.type == MaterialType::Glass || m.type == MaterialType::Illum ||
         (m.type == MaterialType::Trans && photopic(m.specularTransmittance) > 0.0))
@@ -91,13 +93,13 @@ Tracer::Tracer(const Scene& scene, OctreeOptions octree)
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
-  if (!hasTransmitters_) return octree_.occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
+  if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
   Rgb t(1.0);
   double tMin = 0.0;
   for (int i = 0; i < 64; ++i) {
-    Octree::Hit h;
-    if (!octree_.intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
+    RayHit h;
+    if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
     const Shape& s = scene_.shapes[h.shape];
     const Material& m = scene_.materials[s.material];
     const Vec3 x = o + h.t * dir;
@@ -178,8 +180,8 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
   Vec3 o = origin, d = direction;
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
-    Octree::Hit h;
-    if (!octree_.intersect(o, d, 0.0, kInf, h, skip)) return result + beta * distantRadiance(d, countSources);
+    RayHit h;
+    if (!accel_->intersect(o, d, 0.0, kInf, h, skip)) return result + beta * distantRadiance(d, countSources);
     const Vec3 x = o + h.t * d;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];

@@ -9,6 +9,7 @@
 #include "engine/scene.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace candela {
@@ -41,7 +42,10 @@ struct IrradianceEstimate {
 
 class Tracer {
  public:
-  Tracer(const Scene& scene, OctreeOptions octree = {});
+  // Traces with the paper's octree built with `octree` options.
+  explicit Tracer(const Scene& scene, OctreeOptions octree = {});
+  // Traces with a given accelerator built over the same scene.
+  Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator);
 
   // Irradiance on the side of unit normal n at point p. `pointIndex` selects the random stream,
   // so the result depends only on (seed, pointIndex), never on threads.
@@ -58,7 +62,7 @@ class Tracer {
                const TraceSettings& s) const;
 
   const Scene& scene() const { return scene_; }
-  const Octree& octree() const { return octree_; }
+  const RayAccelerator& accelerator() const { return *accel_; }
   const std::vector<Light>& lights() const { return lights_; }
 
   // Offset of a ray origin from the surface it leaves, in metres (see docs/engine.md).
@@ -79,7 +83,7 @@ class Tracer {
   Rgb distantRadiance(const Vec3& dir, bool countSources) const;
 
   const Scene& scene_;
-  Octree octree_;
+  std::unique_ptr<RayAccelerator> accel_;
   std::vector<Light> lights_;
   bool hasTransmitters_ = false;
 };
