@@ -1,0 +1,243 @@
+// The Radiance scene reader: a scene using every supported primitive and material, and one
+// fixture per error the reader reports, each checking the line named in the message.
+#include "engine/rad_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path radDir() { return fs::path(CANDELA_TEST_DATA) / "rad"; }
+
+const Material& material(const Scene& sc, const std::string& name) {
+  for (const Material& m : sc.materials)
+    if (m.name == name) return m;
+  ADD_FAILURE() << "no material " << name;
+  static const Material none;
+  return none;
+}
+
+uint32_t shapeIndex(const Scene& sc, const std::string& name) {
+  for (uint32_t i = 0; i < sc.shapeNames.size(); ++i)
+    if (sc.shapeNames[i] == name) return i;
+  ADD_FAILURE() << "no shape " << name;
+  return 0;
+}
+
+void expectRgb(const Rgb& got, const Rgb& want) {
+  EXPECT_NEAR(got.x, want.x, 1e-15);
+  EXPECT_NEAR(got.y, want.y, 1e-15);
+  EXPECT_NEAR(got.z, want.z, 1e-15);
+}
+
+TEST(RadReader, ReadsEveryPrimitiveAndMaterial) {
+  Scene sc;
+  readRadianceFile(radDir() / "good.rad", sc);
+  ASSERT_EQ(sc.materials.size(), 10u);
+  // Radiance reference manual, "Materials": plastic's diffuse reflectance is colour·(1 − spec),
+  // its specular part uncoloured spec.
+  const Material& wall = material(sc, "wall");
+  EXPECT_EQ(wall.type, MaterialType::Plastic);
+  EXPECT_EQ(wall.loc.line, 4);
+  EXPECT_DOUBLE_EQ(wall.roughness, 0.02);
+  expectRgb(wall.diffuseReflectance, Rgb(0.5, 0.6, 0.7) * 0.95);
+  expectRgb(wall.specularReflectance, Rgb(0.05));
+  // Metal: the specular part takes the colour.
+  const Material& metal = material(sc, "brushed");
+  EXPECT_EQ(metal.type, MaterialType::Metal);
+  expectRgb(metal.diffuseReflectance, Rgb(0.8, 0.7, 0.6) * 0.1);
+  expectRgb(metal.specularReflectance, Rgb(0.8, 0.7, 0.6) * 0.9);
+  // Trans (colour c, spec s, transmissivity t, transmitted specular ts): reflected diffuse
+  // c(1−s)(1−t), transmitted diffuse c(1−s)t(1−ts), transmitted specular c(1−s)t·ts.
+  const Material& tr = material(sc, "frosted");
+  EXPECT_EQ(tr.type, MaterialType::Trans);
+  expectRgb(tr.diffuseReflectance, Rgb(0.6 * 0.96 * 0.5));
+  expectRgb(tr.diffuseTransmittance, Rgb(0.6 * 0.96 * 0.5 * 0.2));
+  expectRgb(tr.specularTransmittance, Rgb(0.6 * 0.96 * 0.5 * 0.8));
+  expectRgb(tr.specularReflectance, Rgb(0.04));
+  const Material& mirror = material(sc, "silver");
+  EXPECT_EQ(mirror.type, MaterialType::Mirror);
+  expectRgb(mirror.specularReflectance, Rgb(0.9));
+  expectRgb(mirror.diffuseReflectance, Rgb(0.0));
+  EXPECT_EQ(material(sc, "pane").type, MaterialType::Glass);
+  EXPECT_DOUBLE_EQ(material(sc, "pane").refractiveIndex, 1.52);  // Radiance's default
+  EXPECT_DOUBLE_EQ(material(sc, "crystal").refractiveIndex, 1.6);
+  expectRgb(material(sc, "crystal").color, Rgb(0.9));
+  const Material& lamp = material(sc, "lamp");
+  EXPECT_EQ(lamp.type, MaterialType::Light);
+  expectRgb(lamp.color, Rgb(100.0));
+  EXPECT_TRUE(lamp.isSampledSource());
+  const Material& window = material(sc, "window");
+  EXPECT_EQ(window.type, MaterialType::Illum);
+  ASSERT_GE(window.alternate, 0);
+  EXPECT_EQ(sc.materials[static_cast<size_t>(window.alternate)].name, "wall");
+  const Material& sky = material(sc, "sky");
+  EXPECT_EQ(sky.type, MaterialType::Glow);
+  EXPECT_TRUE(sky.isEmitter());
+  EXPECT_FALSE(sky.isSampledSource());
+  expectRgb(material(sc, "sun").color, Rgb(6e6));
+
+  // Surfaces (the void ones are dropped).
+  ASSERT_EQ(sc.shapes.size(), 11u);
+  const Shape& floor = sc.shapes[shapeIndex(sc, "floor")];
+  EXPECT_EQ(floor.type, ShapeType::Polygon);
+  EXPECT_EQ(floor.vertexCount, 4u);
+  EXPECT_EQ(floor.n, Vec3(0, 0, 1));
+  EXPECT_EQ(sc.materials[floor.material].name, "wall");
+  EXPECT_EQ(sc.vertices.points[floor.firstVertex + 2], Vec3(4, 3, 0));
+  EXPECT_EQ(sc.shapes[shapeIndex(sc, "tri")].type, ShapeType::Triangle);
+  const Shape& ball = sc.shapes[shapeIndex(sc, "ball")];
+  EXPECT_EQ(ball.type, ShapeType::Sphere);
+  EXPECT_FALSE(ball.inward);
+  EXPECT_EQ(ball.a, Vec3(1, 1, 0.5));
+  EXPECT_DOUBLE_EQ(ball.r0, 0.25);  // written "+2.5e-1"
+  EXPECT_EQ(sc.materials[ball.material].name, "brushed");
+  EXPECT_TRUE(sc.shapes[shapeIndex(sc, "inside")].inward);  // bubble
+  const Shape& disk = sc.shapes[shapeIndex(sc, "disk")];
+  EXPECT_EQ(disk.type, ShapeType::Ring);
+  EXPECT_EQ(disk.n, Vec3(0, 0, -1));
+  EXPECT_DOUBLE_EQ(disk.r0, 0.1);
+  EXPECT_DOUBLE_EQ(disk.r1, 0.3);
+  const Shape& cone = sc.shapes[shapeIndex(sc, "funnel")];
+  EXPECT_EQ(cone.type, ShapeType::Cone);
+  EXPECT_FALSE(cone.inward);
+  EXPECT_DOUBLE_EQ(cone.r0, 0.5);
+  EXPECT_DOUBLE_EQ(cone.r1, 0.2);
+  EXPECT_DOUBLE_EQ(cone.d, 1.0);
+  EXPECT_TRUE(sc.shapes[shapeIndex(sc, "funnel_in")].inward);  // cup
+  const Shape& pipe = sc.shapes[shapeIndex(sc, "pipe")];
+  EXPECT_EQ(pipe.type, ShapeType::Cone);
+  EXPECT_DOUBLE_EQ(pipe.r0, 0.1);
+  EXPECT_DOUBLE_EQ(pipe.r1, 0.1);
+  EXPECT_DOUBLE_EQ(pipe.d, 2.0);
+  EXPECT_FALSE(pipe.inward);
+  EXPECT_TRUE(sc.shapes[shapeIndex(sc, "pipe_in")].inward);  // tube
+  EXPECT_EQ(sc.materials[sc.shapes[shapeIndex(sc, "pane_surface")].material].name, "window");
+  EXPECT_EQ(sc.materials[sc.shapes[shapeIndex(sc, "screen")].material].name, "frosted");
+
+  // Distant sources (the void one is dropped).
+  ASSERT_EQ(sc.distant.size(), 2u);
+  const DistantSource& sun = sc.distant[0];
+  EXPECT_EQ(sun.name, "solar");
+  EXPECT_NEAR(sun.direction.y, -std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(sun.direction.z, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(sun.halfAngleRad, degToRad(0.533 / 2), 1e-15);
+  EXPECT_NEAR(sun.solidAngleSr, kTwoPi * (1 - std::cos(degToRad(0.2665))), 1e-15);
+  EXPECT_EQ(sc.distant[1].name, "skydome");
+  EXPECT_NEAR(sc.distant[1].solidAngleSr, 4 * kPi, 1e-12);
+  EXPECT_EQ(sc.materials[sc.distant[1].material].name, "sky");
+}
+
+// Files are read in order into one scene: a later file uses an earlier file's modifiers.
+TEST(RadReader, LaterTextUsesEarlierModifiers) {
+  Scene sc;
+  readRadianceText("void plastic red 0 0 5 0.8 0.1 0.1 0 0\n", "materials.rad", sc);
+  readRadianceText("# geometry\nred sphere s 0 0 4 0 0 0 1\n", "geometry.rad", sc);
+  ASSERT_EQ(sc.shapes.size(), 1u);
+  EXPECT_EQ(sc.materials[sc.shapes[0].material].name, "red");
+  // ...and a modifier defined later in the same text is an error at the using line.
+  Scene sc2;
+  try {
+    readRadianceText("\n\nblue sphere s 0 0 4 0 0 0 1\nvoid plastic blue 0 0 5 0 0 1 0 0\n", "order.rad", sc2);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 3);
+    EXPECT_NE(std::string(e.what()).find("order.rad:3:"), std::string::npos) << e.what();
+  }
+}
+
+// Runs the reader on fixture `file` and checks that it throws with `line` and `text` in the
+// message, which reads "<path>:<line>: ...".
+void expectError(const std::string& file, int line, const std::string& text) {
+  Scene sc;
+  const fs::path path = radDir() / file;
+  ASSERT_TRUE(fs::exists(path)) << path;
+  try {
+    readRadianceFile(path, sc);
+    ADD_FAILURE() << file << ": no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.loc().line, line) << what;
+    EXPECT_EQ(what.rfind(path.string() + ":" + std::to_string(line) + ": ", 0), 0u) << what;
+    EXPECT_NE(what.find(text), std::string::npos) << "'" << what << "' lacks '" << text << "'";
+  }
+}
+
+TEST(RadReader, UnknownModifier) {
+  expectError("unknown_modifier.rad", 3, "modifier 'nosuch' of polygon 'p' is not defined before use");
+}
+
+TEST(RadReader, WrongArgumentCount) {
+  expectError("sphere_three_reals.rad", 7, "sphere 'ball' needs 4 real arguments, got 3");
+}
+
+TEST(RadReader, PolygonWithTwoVertices) {
+  expectError("polygon_two_vertices.rad", 6, "polygon 'sliver' needs at least 3 vertices, got 2");
+}
+
+TEST(RadReader, DegeneratePolygon) {
+  expectError("degenerate_polygon.rad", 7, "polygon 'line' is degenerate");
+}
+
+TEST(RadReader, NonPlanarPolygon) {
+  expectError("nonplanar_polygon.rad", 7, "polygon 'warped' is not planar: vertex");
+}
+
+TEST(RadReader, NegativeRadius) {
+  expectError("negative_radius.rad", 6, "ring 'disk' has a negative radius");
+}
+
+TEST(RadReader, NumberThatDoesNotParse) {
+  expectError("bad_number.rad", 6, "'0.5x' is not a number");
+}
+
+// The primitive starts on line 7; the bad number ("O", a letter) is on line 13.
+TEST(RadReader, BadNumberOnLaterLineOfMultiLinePrimitive) {
+  expectError("bad_number_multiline.rad", 13, "'O' is not a number");
+}
+
+TEST(RadReader, InlineCommandIsRefused) {
+  expectError("inline_command.rad", 6, "inline commands ('!') are refused");
+}
+
+TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
+  expectError("unsupported_type.rad", 6, "primitive type 'brightfunc' is not supported");
+  expectError("unsupported_type.rad", 6, "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source");
+}
+
+// The sphere starting on line 6 declares 4 reals but the file (9 lines, the last one ending in a
+// newline) ends after 3: the error names the last line of the file, where the text ran out.
+TEST(RadReader, UnexpectedEndOfFile) {
+  expectError("unexpected_eof.rad", 9, "unexpected end of file: expected a real argument");
+}
+
+TEST(RadReader, MissingFileNamesTheFile) {
+  Scene sc;
+  const fs::path path = radDir() / "no_such_scene.rad";
+  try {
+    readRadianceFile(path, sc);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_scene.rad"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos) << e.what();
+  }
+}
+
+// Errors in text without a file still carry the name given and the line.
+TEST(RadReader, TextErrorsCarryTheGivenName) {
+  Scene sc;
+  try {
+    readRadianceText("void plastic g 0 0 5 .5 .5 .5 0 0\n\n\n\ng cone c 0 0 8 0 0 0 0 0 1 -1 0.5\n", "inline.rad", sc);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "inline.rad:5: cone 'c' has a negative radius");
+  }
+}
+
+}  // namespace
+}  // namespace candela
