@@ -25,14 +25,6 @@ std::string skyTypeName(SkyType type, int cieType) {
   return "none";
 }
 
-const char* qualityName(Quality q) {
-  switch (q) {
-    case Quality::kDraft: return "draft";
-    case Quality::kNormal: return "normal";
-    case Quality::kHigh: return "high";
-  }
-  return "normal";
-}
 
 const char* methodName(Method m) { return m == Method::kPath ? "path" : "cache"; }
 

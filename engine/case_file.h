@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/base/error.h"
+#include "engine/quality.h"
 #include "engine/base/math.h"
 #include "engine/sensor_grid.h"
 
@@ -97,10 +98,8 @@ struct ViewSpec {
   FileLoc loc;
 };
 
-enum class Quality { kDraft, kNormal, kHigh };
 enum class Method { kCache, kPath };
 
-const char* qualityName(Quality q);
 const char* methodName(Method m);
 
 // Unset optionals take the quality preset's value (chosen by the engine).

@@ -42,27 +42,36 @@ void thinGlass(const Material& m, double cosI, Rgb& trans, Rgb& refl) {
 
 }  // namespace
 
+const char* qualityName(Quality q) {
+  switch (q) {
+    case Quality::kDraft: return "draft";
+    case Quality::kNormal: return "normal";
+    case Quality::kHigh: return "high";
+  }
+  return "?";
+}
+
 Quality parseQuality(const std::string& s) {
-  if (s == "draft") return Quality::Draft;
-  if (s == "normal") return Quality::Normal;
-  if (s == "high") return Quality::High;
+  if (s == "draft") return Quality::kDraft;
+  if (s == "normal") return Quality::kNormal;
+  if (s == "high") return Quality::kHigh;
   throw std::invalid_argument("quality must be draft, normal or high, not '" + s + "'");
 }
 
 TraceSettings settingsForQuality(Quality q) {
   TraceSettings s;
   switch (q) {
-    case Quality::Draft:
+    case Quality::kDraft:
       s.hemisphereSamples = 256;
       s.lightSamples = 16;
       s.maxBounces = 8;
       break;
-    case Quality::Normal:
+    case Quality::kNormal:
       s.hemisphereSamples = 2048;
       s.lightSamples = 64;
       s.maxBounces = 32;
       break;
-    case Quality::High:
+    case Quality::kHigh:
       s.hemisphereSamples = 8192;
       s.lightSamples = 256;
       s.maxBounces = 64;

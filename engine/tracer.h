@@ -6,6 +6,7 @@
 #include "engine/base/rng.h"
 #include "engine/lights.h"
 #include "engine/octree.h"
+#include "engine/quality.h"
 #include "engine/scene.h"
 
 #include <cstdint>
@@ -24,10 +25,6 @@ struct TraceSettings {
   uint64_t seed = 1;
 };
 
-enum class Quality { Draft, Normal, High };
-
-// Parses "draft", "normal" or "high"; throws std::invalid_argument otherwise.
-Quality parseQuality(const std::string& s);
 // The sample counts a preset stands for (see docs/engine.md for why).
 TraceSettings settingsForQuality(Quality q);
 
