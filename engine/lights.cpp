@@ -95,6 +95,12 @@ std::vector<Light> collectLights(const Scene& scene) {
     }
     lights.push_back(std::move(l));
   }
+  for (uint32_t i = 0; i < scene.luminaires.size(); ++i) {
+    Light l;
+    l.kind = Light::Kind::Luminaire;
+    l.luminaire = i;
+    lights.push_back(std::move(l));
+  }
   for (uint32_t i = 0; i < scene.distant.size(); ++i) {
     const Material& m = scene.materials[scene.distant[i].material];
     if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
@@ -107,7 +113,38 @@ std::vector<Light> collectLights(const Scene& scene) {
   return lights;
 }
 
+namespace {
+
+// A luminaire seen from p: far away a point at its photometric centre; near it (within
+// kNearFieldFactor × its size) a uniformly sampled point y of its opening, which carries
+// I(p − y)/A per unit area — so E = E_y[I(ω_y) cos ι / r²], the point-source law averaged over
+// the opening. For a flat Lambertian opening this is exactly the area source of luminance I/A·cosθ.
+bool sampleLuminaire(const LuminaireSource& lum, const Vec3& p, double u1, double u2, LightSample& out) {
+  Vec3 y = lum.position;
+  const double size = lum.sizeM();
+  if (size > 0.0 && glm::length(p - lum.position) < kNearFieldFactor * size) {
+    if (lum.circular) {
+      const Vec2 q = sampleAnnulus(0.0, 0.5 * lum.widthM, u1, u2);
+      y += q.x * lum.axisX + q.y * lum.axisY;
+    } else {
+      y += (u1 - 0.5) * lum.widthM * lum.axisX + (u2 - 0.5) * lum.lengthM * lum.axisY;
+    }
+  }
+  const Vec3 e = p - y;
+  const double d2 = glm::dot(e, e);
+  if (d2 <= 0.0) return false;
+  const double d = std::sqrt(d2);
+  out.dir = -e / d;
+  out.distance = d;
+  // Candela to Radiance's radiometric units: lux / 179 on a white (1, 1, 1) source.
+  out.weight = Rgb(lum.intensityCd(e / d) / (kLumensPerWatt * d2));
+  return true;
+}
+
+}  // namespace
+
 bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out) {
+  if (light.kind == Light::Kind::Luminaire) return sampleLuminaire(scene.luminaires[light.luminaire], p, u1, u2, out);
   if (light.kind == Light::Kind::Distant) {
     const DistantSource& d = scene.distant[light.distant];
     const Frame f = Frame::fromNormal(d.direction);
@@ -202,6 +239,16 @@ double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, 
 }
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out) {
+  if (light.kind == Light::Kind::Luminaire) {
+    // Far field: the point-source law is exact for the estimator above (one point).
+    const LuminaireSource& lum = scene.luminaires[light.luminaire];
+    const Vec3 e = p - lum.position;
+    const double d = glm::length(e);
+    if (d <= 0.0 || (lum.sizeM() > 0.0 && d < kNearFieldFactor * lum.sizeM())) return false;
+    const double cosI = -glm::dot(n, e) / d;
+    out = Rgb(cosI > 0.0 ? lum.intensityCd(e / d) * cosI / (kLumensPerWatt * d * d) : 0.0);
+    return true;
+  }
   if (light.kind == Light::Kind::Distant) {
     const DistantSource& d = scene.distant[light.distant];
     double psa;

@@ -1,5 +1,6 @@
-// Light sources sampled explicitly: `light`/`illum` surfaces (area sources) and `light`
-// distant sources (e.g. the sun). `glow` is not sampled; hemisphere rays find it.
+// Light sources sampled explicitly: `light`/`illum` surfaces (area sources), `light` distant
+// sources (e.g. the sun) and photometric luminaires. `glow` is not sampled; hemisphere rays
+// find it.
 #pragma once
 
 #include "engine/scene.h"
@@ -10,10 +11,11 @@
 namespace candela {
 
 struct Light {
-  enum class Kind { Area, Distant };
+  enum class Kind { Area, Distant, Luminaire };
   Kind kind = Kind::Area;
   uint32_t shape = 0;    // Area: index into Scene::shapes
   uint32_t distant = 0;  // Distant: index into Scene::distant
+  uint32_t luminaire = 0;  // Luminaire: index into Scene::luminaires
   Rgb radiance{0.0};     // W/sr/m²
   // Polygon sources: triangulation (for uniform area sampling) with cumulative areas.
   std::vector<std::array<Vec3, 3>> triangles;

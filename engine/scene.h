@@ -3,6 +3,7 @@
 
 #include "engine/base/error.h"
 #include "engine/base/units.h"
+#include "engine/luminaire_source.h"
 #include "engine/shapes.h"
 
 #include <string>
@@ -56,6 +57,7 @@ struct Scene {
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   std::vector<DistantSource> distant;
+  std::vector<LuminaireSource> luminaires;  // photometric light sources (no geometry of their own)
   VertexStore vertices;
 
   Box bounds() const;

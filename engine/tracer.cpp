@@ -151,7 +151,10 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
     Rgb sum(0.0);
     double sumY = 0.0, sumY2 = 0.0;
     const uint32_t lightShape = light.kind == Light::Kind::Area ? light.shape : kNoShape;
-    for (int i = 0; i < k; ++i) {
+    // A far-field luminaire is one point: one shadow ray says all there is.
+    const bool point = light.kind == Light::Kind::Luminaire && haveExact;
+    const int kk = point ? 1 : k;
+    for (int i = 0; i < kk; ++i) {
       const Vec2 u = strata.sample(i, rng);
       LightSample ls;
       Rgb g(0.0);
@@ -169,10 +172,10 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       sumY += y;
       sumY2 += y * y;
     }
-    total += (haveExact ? exact : Rgb(0.0)) + sum / static_cast<double>(k);
-    if (variance && k > 1) {
-      const double mean = sumY / k;
-      *variance += std::max(0.0, sumY2 / k - mean * mean) / (k - 1);
+    total += (haveExact ? exact : Rgb(0.0)) + sum / static_cast<double>(kk);
+    if (variance && kk > 1) {
+      const double mean = sumY / kk;
+      *variance += std::max(0.0, sumY2 / kk - mean * mean) / (kk - 1);
     }
   }
   return total;

@@ -1,0 +1,38 @@
+#include "engine/luminaire_source.h"
+
+#include <cmath>
+
+namespace candela {
+
+void orientLuminaire(LuminaireSource& l, const Vec3& aim, double spinDeg) {
+  const Vec3 z = -glm::normalize(aim);
+  // C0 reference: world +X projected onto the luminaire's plane (world +Y if aiming along X).
+  Vec3 ref = std::abs(z.x) < 0.999 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  Vec3 x0 = glm::normalize(ref - glm::dot(ref, z) * z);
+  Vec3 y0 = glm::cross(z, x0);
+  const double s = degToRad(spinDeg);
+  l.axisZ = z;
+  l.axisX = std::cos(s) * x0 + std::sin(s) * y0;
+  l.axisY = glm::cross(z, l.axisX);
+}
+
+void setOpeningFromWeb(LuminaireSource& l) {
+  const double w = std::abs(l.web->openingWidthM()), len = std::abs(l.web->openingLengthM());
+  switch (l.web->openingShape()) {
+    case OpeningShape::Point:
+      l.widthM = l.lengthM = 0.0;
+      break;
+    case OpeningShape::Circular:
+    case OpeningShape::Sphere:
+    case OpeningShape::VerticalCylinder:
+      l.widthM = l.lengthM = w;
+      l.circular = true;
+      break;
+    default:
+      l.widthM = w;
+      l.lengthM = len > 0.0 ? len : w;
+      break;
+  }
+}
+
+}  // namespace candela

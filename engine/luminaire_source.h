@@ -1,0 +1,47 @@
+// A luminaire placed in a scene: its candlepower distribution, position and orientation.
+// The tracer samples it as a light source (see lights.cpp): far from the fitting as a point,
+// E = I(θ, φ) cos ι / d²; within kNearFieldFactor × its size, over its luminous opening, each
+// point of the opening carrying I/A so that the opening as a whole reproduces I.
+#pragma once
+
+#include "engine/base/math.h"
+#include "photometry/photometric_web.h"
+
+#include <memory>
+#include <string>
+
+namespace candela {
+
+// Closer than this multiple of the opening's largest dimension, the opening is sampled as an
+// area source (the usual photometric "five times the size" rule for the inverse-square law).
+inline constexpr double kNearFieldFactor = 5.0;
+
+struct LuminaireSource {
+  std::shared_ptr<const PhotometricWeb> web;
+  std::string name;
+  Vec3 position{0.0};    // photometric centre, m
+  // Luminaire axes in world coordinates: x = C0 plane, y = C90 plane, z = up (= −nadir).
+  Vec3 axisX{1.0, 0.0, 0.0}, axisY{0.0, 1.0, 0.0}, axisZ{0.0, 0.0, 1.0};
+  double scale = 1.0;    // multiplier × maintenance factor
+  // Luminous opening (m) in the luminaire's x/y plane: a rectangle widthM × lengthM, a disc of
+  // diameter widthM (circular), or a point (both zero).
+  double widthM = 0.0, lengthM = 0.0;
+  bool circular = false;
+
+  // Intensity in cd towards the world direction `dir` (from the luminaire), scaled.
+  double intensityCd(const Vec3& dir) const {
+    return scale * web->intensityCd(Vec3(glm::dot(dir, axisX), glm::dot(dir, axisY), glm::dot(dir, axisZ)));
+  }
+  double sizeM() const { return std::max(widthM, lengthM); }
+};
+
+// Orients a luminaire: `aim` is the direction of the photometric nadir (world), `spinDeg` turns
+// it about its own up axis (−aim) counter-clockwise seen from above a downlight, so that with
+// aim [0,0,−1] and spin 0 the C0 plane points to +X and C90 to +Y; with spin 90, C0 → +Y.
+void orientLuminaire(LuminaireSource& l, const Vec3& aim, double spinDeg);
+
+// Sets the opening from the photometric file's luminous opening: flat rectangles and discs as
+// given; other shapes by their plan (width × length) footprint; a point when both are zero.
+void setOpeningFromWeb(LuminaireSource& l);
+
+}  // namespace candela
