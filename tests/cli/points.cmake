@@ -1,0 +1,26 @@
+# candela points: illuminance CSV at Radiance-style sensor points (fixtures in tests/data/points).
+# room.rad is one 2 m × 2 m light panel (radiance 100) 3 m up, facing down, and nothing else, so
+# every value is exact: the panel is wholly visible and the control variate leaves no noise.
+# run_cli.sh searches the output with grep -F, one line at a time: expected strings hold no
+# newline; a value is anchored by the comma of the error_lux column that follows it.
+set(PTS points --points points/desk.pts --quality draft)
+
+candela_cli_test(points.header 0 "x,y,z,dx,dy,dz,illuminance_lux" ${PTS} points/room.rad)
+# Under the panel's centre, 2.25 m below it: four 1 m × 1 m corner rectangles (Howell B-3),
+# E = 179·π·100·4·F(1/2.25, 1/2.25) = 11218.4965 lux; its standard error is 0.
+candela_cli_test(points.value 0 "1,1,0.75,0,0,1,11218.5,0" ${PTS} points/room.rad --error)
+candela_cli_test(points.error_column 0 "x,y,z,dx,dy,dz,illuminance_lux,error_lux" ${PTS} points/room.rad --error)
+# The direction "0 0 2" is normalised; the blank line and the comment are skipped.
+candela_cli_test(points.normalised 0 "0.5,1.5,0.75,0,0,1," ${PTS} points/room.rad)
+# No scene: nothing to see.
+candela_cli_test(points.no_scene 0 "1,1,0.75,0,0,1,0,0" ${PTS} --error)
+# Points from stdin (run_cli.sh feeds STDIN_FILE).
+candela_cli_test(points.stdin 0 "1,1,0.75,0,0,1,11218.5,0" points points/room.rad --quality draft --error)
+set_tests_properties(cli.points.stdin PROPERTIES ENVIRONMENT "STDIN_FILE=${DATA}/points/desk.pts")
+
+# Bad input: exit 2, one line on stderr naming the file and line, nothing on stdout.
+candela_cli_test(points.bad_line 2 "points/bad_line.pts:3: a sensor point needs 6 numbers"
+                 points points/room.rad --points points/bad_line.pts)
+candela_cli_test(points.bad_scene 2 "bad.rad:4: polygon 'panel' needs at least 3 vertices, got 2" ${PTS} points/bad.rad)
+candela_cli_test(points.missing_scene 2 "points/no_such.rad" ${PTS} points/no_such.rad)
+candela_cli_test(points.missing_points 2 "points/no_such.pts" points points/room.rad --points points/no_such.pts)
