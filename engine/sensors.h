@@ -4,6 +4,8 @@
 #include "engine/sensor_grid.h"
 #include "engine/tracer.h"
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace candela {
@@ -12,5 +14,12 @@ namespace candela {
 // (0 = all cores).
 std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                                   const TraceSettings& settings, int threads);
+
+// Same results, and after each point calls progress(done), done = points finished so far
+// (1..n, in no particular order). It is called concurrently from the worker threads, so it must
+// be thread-safe and cheap (e.g. a throttled progress bar); an empty function is allowed.
+std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                                  const TraceSettings& settings, int threads,
+                                                  const std::function<void(size_t done)>& progress);
 
 }  // namespace candela
