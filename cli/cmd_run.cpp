@@ -1,0 +1,297 @@
+// candela run CASE.toml [--out DIR]: the main job. Reads and checks everything first (case,
+// scene files, luminaires, grids), traces every grid's points with one tracer, computes the
+// metrics and target verdicts, and only then writes <grid>.csv, summary.csv, summary.json and
+// report.html, each file atomically. A run that fails on bad input writes nothing.
+#include "cli/commands.h"
+#include "cli/progress.h"
+
+#include "engine/base/atomic_file.h"
+#include "engine/base/error.h"
+#include "engine/case_file.h"
+#include "engine/case_scene.h"
+#include "engine/sensor_grid.h"
+#include "engine/sensors.h"
+#include "metrics/grid_stats.h"
+#include "metrics/targets.h"
+#include "reports/csv_writer.h"
+#include "reports/html_report.h"
+#include "reports/json_writer.h"
+#include "reports/report_data.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+namespace candela::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOptions {
+  std::string caseFile;
+  std::string outDir;    // empty: the case's [output] dir
+  std::string quality;   // empty: the case's
+  int bounces = -1;      // < 0: the case's, else the quality preset's
+  int samples = -1;
+  int64_t seed = -1;
+  int threads = -1;
+  bool quiet = false;
+};
+
+// A grid of the case with its points, ready to trace.
+struct PreparedGrid {
+  const GridSpec* spec = nullptr;
+  SensorGrid grid;
+  std::string fileStem;  // <fileStem>.csv
+};
+
+std::string fixed(double v, int decimals) { return formatFixed(v, decimals); }
+
+std::string vecText(const Vec3& v) {
+  return "(" + formatNumber(v.x, 4) + ", " + formatNumber(v.y, 4) + ", " + formatNumber(v.z, 4) + ")";
+}
+
+bool isHorizontalUp(const PlaneGridSpec& p) {
+  const Vec3 n = p.normal ? *p.normal : glm::cross(p.uAxis, p.vAxis);
+  return p.uAxis == Vec3(1, 0, 0) && p.vAxis == Vec3(0, 1, 0) && glm::length(n - Vec3(0, 0, 1)) < 1e-9;
+}
+
+// One line a reader of the report understands: orientation, height, spacing, border.
+std::string gridDescription(const PreparedGrid& g) {
+  const GridSpec& s = *g.spec;
+  if (s.kind == GridKind::kPoints) return "sensor points from " + s.pointsFile.filename().string();
+  const PlaneGridSpec& p = s.plane;
+  std::string d = isHorizontalUp(p) ? "horizontal, " + fixed(p.origin.z, 2) + " m above floor level"
+                                    : "plane through " + vecText(p.origin) + " m, sensors facing " +
+                                          vecText(g.grid.points.front().normal);
+  d += ", spacing " + fixed(g.grid.spacingM.x, 2) + " × " + fixed(g.grid.spacingM.y, 2) + " m";
+  if (p.borderM > 0.0) d += ", border " + fixed(p.borderM, 2) + " m";
+  return d;
+}
+
+PlanLayout planLayout(const PreparedGrid& g) {
+  PlanLayout l;
+  if (g.grid.regular) {
+    l.regular = true;
+    l.columns = g.grid.columns;
+    l.rows = g.grid.rows;
+    l.originM = g.grid.latticeOriginUv;
+    l.spacingM = g.grid.spacingM;
+    l.cells = g.grid.cell;
+    l.planPositions = g.grid.uv;
+    const PlaneGridSpec& p = g.spec->plane;
+    l.outline = p.outline;
+    if (p.isRectangle && p.outline.size() == 2) {
+      const Vec2 a = p.outline[0], b = p.outline[1];
+      l.outline = {a, Vec2(b.x, a.y), b, Vec2(a.x, b.y)};
+    }
+  } else {
+    // Points files: drawn as dots at their plan (x, y) positions.
+    for (const SensorPoint& s : g.grid.points) l.planPositions.emplace_back(s.position.x, s.position.y);
+  }
+  return l;
+}
+
+std::string localTimeNow() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
+  return buf;
+}
+
+// summary.json as the reports writer makes it, plus what only the run knows per grid: the
+// actual spacing (m) and the number of lattice columns and rows.
+std::string summaryJsonWithSpacing(const ReportData& data, const std::vector<PreparedGrid>& grids) {
+  nlohmann::json j = nlohmann::json::parse(summaryJson(data));
+  for (std::size_t i = 0; i < grids.size(); ++i) {
+    nlohmann::json& g = j["grids"][i];
+    const SensorGrid& s = grids[i].grid;
+    g["file"] = grids[i].fileStem + ".csv";
+    if (s.regular) {
+      g["spacing_m"] = {s.spacingM.x, s.spacingM.y};
+      g["columns"] = s.columns;
+      g["rows"] = s.rows;
+    } else {
+      g["spacing_m"] = nullptr;
+    }
+  }
+  return j.dump(2) + "\n";
+}
+
+int runCase(const RunOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string startedAt = localTimeNow();
+
+  // 1. Everything that can be wrong with the input is found here, before any tracing.
+  const CaseFile c = readCaseFile(o.caseFile);
+  if (c.sky.present && c.sky.type != SkyType::kNone)
+    throw InputError(c.sky.loc, "[sky] type = \"" + skyTypeName(c.sky.type, c.sky.cieType) +
+                                    "\": daylight is not supported by `candela run` yet (use type = \"none\" or "
+                                    "remove [sky])");
+  if (c.grids.empty()) throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
+
+  const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);
+  if (fs::exists(outDir) && !fs::is_directory(outDir))
+    throw InputError(FileLoc{outDir.string(), 0, 0}, "output path exists and is not a folder");
+
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  const Box bounds = scene->bounds();
+
+  std::vector<PreparedGrid> grids;
+  std::map<std::string, std::string> stems;  // file stem -> grid name, to refuse collisions
+  std::size_t totalPoints = 0;
+  for (const GridSpec& spec : c.grids) {
+    checkGridInside(spec, bounds);
+    PreparedGrid g;
+    g.spec = &spec;
+    g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(spec.plane, spec.loc) : readPointsFile(spec.pointsFile);
+    g.fileStem = safeFileName(spec.name);
+    if (g.fileStem == "summary")
+      throw InputError(spec.loc, "grid name '" + spec.name + "' would overwrite summary.csv; choose another name");
+    if (const auto [it, fresh] = stems.emplace(g.fileStem, spec.name); !fresh)
+      throw InputError(spec.loc, "grids '" + it->second + "' and '" + spec.name + "' would both write " +
+                                     g.fileStem + ".csv; choose distinct names");
+    totalPoints += g.grid.size();
+    grids.push_back(std::move(g));
+  }
+
+  // 2. Settings: the case's, then the command line's.
+  Quality quality = c.settings.quality;
+  if (!o.quality.empty()) quality = parseQuality(o.quality);
+  TraceSettings settings = settingsForQuality(quality);
+  if (c.settings.bounces) settings.maxBounces = *c.settings.bounces;
+  if (c.settings.samples) settings.hemisphereSamples = *c.settings.samples;
+  if (o.bounces >= 0) settings.maxBounces = o.bounces;
+  if (o.samples > 0) settings.hemisphereSamples = o.samples;
+  settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
+  const int threads = o.threads >= 0 ? o.threads : c.settings.threads;
+  const unsigned usedThreads = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
+
+  // Notes, after validation so that a bad case prints its one error line only.
+  if (!o.quiet) {
+    if (!c.views.empty())
+      std::cerr << "candela run: note: " << c.views.size()
+                << " [[view]] entr" << (c.views.size() == 1 ? "y is" : "ies are") << " not rendered yet\n";
+    if (c.settings.method == Method::kCache)
+      std::cerr << "candela run: note: method = \"cache\" is not available yet; the path tracer is used\n";
+  }
+
+  // 3. Trace all grids as one list (grids in case order): point k of the run uses random
+  // stream k, so the numbers depend on the seed only, never on threads.
+  std::vector<SensorPoint> all;
+  all.reserve(totalPoints);
+  for (const PreparedGrid& g : grids) all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
+  const Tracer tracer(*scene);
+  std::vector<IrradianceEstimate> est;
+  {
+    ProgressBar bar("tracing", all.size(), ProgressBar::wanted(o.quiet));
+    est = computeIrradiance(tracer, all, settings, threads, [&bar](std::size_t done) { bar.update(done); });
+    bar.finish();
+  }
+
+  // 4. Metrics and verdicts.
+  ReportData data;
+  data.run.caseName = c.name;
+  data.run.description = c.description;
+  data.run.caseFile = c.path.string();
+  data.run.version = CANDELA_VERSION;
+  data.run.startedAt = startedAt;
+  data.run.seed = settings.seed;
+  data.northDeg = c.site.northDeg;
+  data.run.settings = {
+      {"quality", qualityName(quality)},
+      {"method", "path (Monte Carlo path tracing)"},
+      {"diffuse bounces", std::to_string(settings.maxBounces)},
+      {"hemisphere samples per point", std::to_string(settings.hemisphereSamples)},
+      {"light samples per source", std::to_string(settings.lightSamples)},
+      {"first-bounce split", std::to_string(settings.firstBounceSplit)},
+      {"threads", threads > 0 ? std::to_string(threads) : "all (" + std::to_string(usedThreads) + ")"},
+      {"luminaires", std::to_string(c.luminaires.size())},
+      {"calculation points", std::to_string(totalPoints)},
+  };
+  if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()) + " not rendered (not supported yet)");
+
+  std::vector<std::vector<ReportPoint>> csvPoints(grids.size());
+  std::vector<std::vector<double>> errors(grids.size());
+  std::size_t k = 0;
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    const PreparedGrid& g = grids[gi];
+    GridReport r;
+    r.name = g.spec->name;
+    r.description = gridDescription(g);
+    for (const SensorPoint& s : g.grid.points) {
+      csvPoints[gi].push_back({s.position, s.normal});
+      r.values.push_back(est[k].illuminanceLux());
+      errors[gi].push_back(est[k].standardErrorLux());
+      ++k;
+    }
+    r.stats = computeGridStats(r.values);
+    r.targets = {g.spec->targetAverageLux, g.spec->targetUniformity};
+    r.check = checkTargets(r.stats, r.targets);
+    r.layout = planLayout(g);
+    data.grids.push_back(std::move(r));
+  }
+  data.run.runTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // 5. Write. Each file goes through a temporary and a rename.
+  try {
+    fs::create_directories(outDir);
+    for (std::size_t gi = 0; gi < grids.size(); ++gi)
+      writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], data.grids[gi].values, {{"error_lux", errors[gi]}});
+    writeSummaryCsv(outDir, data);
+    writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
+    writeHtmlReport(outDir / "report.html", data);
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+  }
+
+  if (!o.quiet) {
+    std::ostringstream s;
+    for (const GridReport& r : data.grids) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "%-20s %6zu points  Eavg %7.1f lx  Emin %7.1f lx  U0 %.2f  %s\n", r.name.c_str(),
+                    r.stats.count, r.stats.averageLux, r.stats.minimumLux, r.stats.u0, verdictName(r.check.overall));
+      s << buf;
+    }
+    s << "run time " << fixed(data.run.runTimeS, 1) << " s; results in " << outDir.string() << "\n";
+    std::cout << s.str() << std::flush;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app, Action& action) {
+  auto opts = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "calculate a case: grids, metrics, CSV/JSON summaries and an HTML report");
+  cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
+  cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
+  cmd->add_option("--quality", opts->quality, "draft | normal | high (default: the case's, else normal)")
+      ->check(CLI::IsMember({"draft", "normal", "high"}));
+  cmd->add_option("--bounces", opts->bounces, "diffuse interreflections followed (default: case, else quality)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--samples", opts->samples, "hemisphere samples per point (default: case, else quality)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", opts->seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", opts->threads, "threads, 0 = all cores (default: the case's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors only)");
+  cmd->callback([opts, &action] { action = [opts] { return runCase(*opts); }; });
+}
+
+}  // namespace candela::cli
