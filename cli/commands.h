@@ -14,5 +14,6 @@ using Action = std::function<int()>;
 void addPointsCommand(CLI::App& app, Action& action);
 void addSunCommand(CLI::App& app, Action& action);
 void addLuminaireCommand(CLI::App& app, Action& action);
+void addRunCommand(CLI::App& app, Action& action);
 
 }  // namespace candela::cli

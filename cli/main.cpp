@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   candela::cli::addPointsCommand(app, action);
   candela::cli::addSunCommand(app, action);
   candela::cli::addLuminaireCommand(app, action);
+  candela::cli::addRunCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
