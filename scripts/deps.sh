@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(g++ cmake make pkg-config libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   libopenexr-dev libgeographiclib-dev libtomlplusplus-dev libpng-dev libeigen3-dev
-  libgtest-dev libbenchmark-dev)
+  libgtest-dev libbenchmark-dev libembree-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,72 @@
+// Ray queries through Intel Embree 3 (a float BVH with SIMD traversal) behind the RayAccelerator
+// interface, with the same answers as the octree: the nearest shape's t is recomputed in double
+// with intersectShape, so the tracer sees the exact value it would get from the octree.
+// Triangles are Embree triangles (float, relative to the scene's bounding-box centre); polygons,
+// spheres, rings and cones are Embree user geometry whose callbacks call intersectShape.
+// Speed against the octree: docs/performance.md.
+#pragma once
+
+#include "engine/accelerator.h"
+#include "engine/scene.h"
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+struct RTCDeviceTy;
+struct RTCSceneTy;
+
+namespace candela {
+
+struct EmbreeOptions {
+  bool robust = true;       // RTC_SCENE_FLAG_ROBUST: watertight triangle test, conservative traversal
+  bool highQuality = true;  // RTC_BUILD_QUALITY_HIGH (spatial splits) instead of MEDIUM
+  bool compact = false;     // RTC_SCENE_FLAG_COMPACT: less memory, slower
+};
+
+struct EmbreeStats {
+  size_t triangles = 0;    // shapes given to Embree as triangles
+  size_t userShapes = 0;   // shapes given as user geometry (intersectShape in the callbacks)
+  size_t memoryBytes = 0;  // Embree's own allocations (BVH) plus this class's buffers and tables
+};
+
+class EmbreeAccelerator : public RayAccelerator {
+ public:
+  // Builds the BVH over every shape of `scene`, which must outlive the accelerator.
+  explicit EmbreeAccelerator(const Scene& scene, EmbreeOptions options = {});
+  ~EmbreeAccelerator() override;
+  EmbreeAccelerator(const EmbreeAccelerator&) = delete;
+  EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
+
+  // Nearest hit along o + t·dir (dir unit length) with t in (tMin, tMax), ignoring shapes
+  // skipA/skipB; t is intersectShape's double value for the shape found. Thread-safe.
+  bool intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax, RayHit& hit,
+                 uint32_t skipA = kNoShape, uint32_t skipB = kNoShape) const override;
+  // Any hit in (tMin, tMax) ignoring shapes skipA and skipB, confirmed by intersectShape.
+  bool occluded(const Vec3& o, const Vec3& dir, double tMin, double tMax, uint32_t skipA = kNoShape,
+                uint32_t skipB = kNoShape) const override;
+
+  EmbreeStats stats() const;
+
+ private:
+  struct Query;
+  friend struct EmbreeCallbacks;
+
+  // Runs rtcIntersect1; `exact` makes every triangle candidate pass intersectShape first.
+  bool nearest(Query& q, bool exact, RayHit& hit) const;
+  uint32_t toShape(unsigned geomID, unsigned primID) const {
+    return geomID == triangleGeom_ ? triangleShapes_[primID] : userShapes_[primID];
+  }
+
+  const Scene& scene_;
+  Vec3 centre_{0.0};  // Embree coordinates are relative to this point (float precision)
+  RTCDeviceTy* device_ = nullptr;
+  RTCSceneTy* rtcScene_ = nullptr;
+  unsigned triangleGeom_ = ~0u, userGeom_ = ~0u;
+  std::vector<uint32_t> triangleShapes_, userShapes_;  // Embree primID → Scene shape index
+  std::vector<float> vertices_;                        // 3 float3 per triangle, relative to centre_
+  std::vector<uint32_t> indices_;
+  std::atomic<int64_t> embreeBytes_{0};  // from Embree's memory monitor
+};
+
+}  // namespace candela
