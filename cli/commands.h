@@ -15,5 +15,6 @@ void addPointsCommand(CLI::App& app, Action& action);
 void addSunCommand(CLI::App& app, Action& action);
 void addLuminaireCommand(CLI::App& app, Action& action);
 void addRunCommand(CLI::App& app, Action& action);
+void addValidateCommand(CLI::App& app, Action& action);
 
 }  // namespace candela::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   candela::cli::addSunCommand(app, action);
   candela::cli::addLuminaireCommand(app, action);
   candela::cli::addRunCommand(app, action);
+  candela::cli::addValidateCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -238,7 +238,40 @@ double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, 
   return 0.5 * std::abs(sum);
 }
 
-bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out) {
+void diskVectorIrradiance(double radiusM, double hM, double rhoM, double& alongAxis, double& towardsAxis) {
+  const double r2 = radiusM * radiusM, h2 = hM * hM, p2 = rhoM * rhoM;
+  const double a = h2 + p2 + r2;
+  const double root = std::sqrt(std::max(0.0, a * a - 4.0 * r2 * p2));
+  alongAxis = 0.5 * kPi * (1.0 - (h2 + p2 - r2) / root);
+  towardsAxis = rhoM > 1e-12 * radiusM ? 0.5 * kPi * hM / rhoM * (a / root - 1.0) : 0.0;
+}
+
+bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3, 3>>& tris,
+                          const std::vector<double>& cumulative, const Vec3& p, double u1, double u2,
+                          LightSample& out) {
+  if (tris.empty()) return false;
+  const double area = cumulative.back();
+  const double target = u1 * area;
+  size_t k = std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin();
+  k = std::min(k, tris.size() - 1);
+  const double lo = k == 0 ? 0.0 : cumulative[k - 1];
+  const double span = cumulative[k] - lo;
+  const double v1 = span > 0.0 ? std::clamp((target - lo) / span, 0.0, 1.0) : 0.5;
+  const Vec3 y = sampleTriangle(tris[k][0], tris[k][1], tris[k][2], v1, u2);
+  const Vec3 e = y - p;
+  const double dist2 = glm::dot(e, e);
+  if (dist2 <= 0.0) return false;
+  const double dist = std::sqrt(dist2);
+  out.dir = e / dist;
+  out.distance = dist;
+  const Vec3 ny = glm::normalize(glm::cross(tris[k][1] - tris[k][0], tris[k][2] - tris[k][0]));
+  const double cosL = std::abs(glm::dot(ny, out.dir));
+  out.weight = light.radiance * (cosL * area / dist2);
+  return true;
+}
+
+bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
+                          std::vector<Vec3>* clipped) {
   if (light.kind == Light::Kind::Luminaire) {
     // Far field: the point-source law is exact for the estimator above (one point).
     const LuminaireSource& lum = scene.luminaires[light.luminaire];
@@ -266,14 +299,38 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     out = light.radiance * psa;
     return true;
   }
+  if (s.type == ShapeType::Ring) {
+    const Vec3 rel = p - s.a;
+    const double h = glm::dot(rel, s.n);
+    if (h <= 0.0) {  // behind the one-sided source
+      out = Rgb(0.0);
+      return true;
+    }
+    // Wholly above the receiver's horizon: (centre − p)·n ≥ R √(1 − (n·m)²).
+    const double nm = glm::dot(n, s.n);
+    if (glm::dot(s.a - p, n) < s.r1 * std::sqrt(std::max(0.0, 1.0 - nm * nm))) return false;
+    const Vec3 radial = rel - h * s.n;
+    const double rho = glm::length(radial);
+    const Vec3 eRho = rho > 0.0 ? radial / rho : Vec3(0.0);
+    auto disk = [&](double radius) {
+      double along, towards;
+      diskVectorIrradiance(radius, h, rho, along, towards);
+      return glm::dot(n, -s.n * along - eRho * towards);
+    };
+    out = light.radiance * std::max(0.0, disk(s.r1) - (s.r0 > 0.0 ? disk(s.r0) : 0.0));
+    return true;
+  }
   if (light.outline.empty()) return false;
   // One-sided source: nothing reaches a receiver behind its plane.
   if (glm::dot(p - light.outline[0], s.n) <= 0.0) {
     out = Rgb(0.0);
+    if (clipped) clipped->clear();
     return true;
   }
-  const std::vector<Vec3> clipped = clipToHorizon(light.outline, p, n);
-  out = clipped.size() < 3 ? Rgb(0.0) : light.radiance * polygonProjectedSolidAngle(clipped, p, n);
+  std::vector<Vec3> local;
+  std::vector<Vec3>& c = clipped ? *clipped : local;
+  c = clipToHorizon(light.outline, p, n);
+  out = c.size() < 3 ? Rgb(0.0) : light.radiance * polygonProjectedSolidAngle(c, p, n);
   return true;
 }
 

@@ -40,10 +40,26 @@ struct LightSample {
 bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out);
 
 // Exact unoccluded irradiance (W/m²) from `light` at p on a surface with normal n, where a closed
-// form exists: Lambert's polygon formula on the source clipped to the receiver's horizon; the
-// cap formula π L sin²α cos θ for spherical and distant sources whose cap is wholly above the
-// horizon. Returns false where no closed form applies.
-bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out);
+// form exists: Lambert's polygon formula on the source clipped to the receiver's horizon (the
+// clipped outline is returned in *clipped, to be sampled with sampleClippedPolygon); the
+// vector irradiance of a disk or annulus wholly above the horizon; the cap formula
+// π L sin²α cos θ for spherical and distant sources wholly above the horizon; a far-field
+// luminaire's I cos ι / d². Returns false where no closed form applies.
+bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
+                          std::vector<Vec3>* clipped = nullptr);
+
+// Uniform sample of a polygon source restricted to `tris` (its part above a receiver's horizon,
+// triangulated, with cumulative areas `cumulative`).
+bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3, 3>>& tris,
+                          const std::vector<double>& cumulative, const Vec3& p, double u1, double u2,
+                          LightSample& out);
+
+// Vector irradiance of a uniform Lambertian disk of radius R (W/m² per unit radiance) at a point
+// h in front of its plane and ρ off its axis: the component along the axis towards the disk,
+// π/2 (1 − (h² + ρ² − R²)/√((h² + ρ² + R²)² − 4R²ρ²)), and the one towards the axis,
+// π h/(2ρ) ((h² + ρ² + R²)/√((h² + ρ² + R²)² − 4R²ρ²) − 1) (e.g. Moon 1936, "The Scientific
+// Basis of Illuminating Engineering", ch. 9; the first is Howell's configuration factor B-12).
+void diskVectorIrradiance(double radiusM, double hM, double rhoM, double& alongAxis, double& towardsAxis);
 
 // Lambert's formula (Lambert 1760; e.g. Arvo 1994, "The irradiance Jacobian"): the cosine-weighted
 // solid angle Σ θ_k (n · Γ_k)/2 of a polygon seen from p, for a polygon wholly above the receiver's

@@ -41,6 +41,7 @@ class Tokenizer {
         const size_t start = pos_;
         while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
         tok = Token{text_.substr(start, pos_ - start), line_};
+        lastTokenLine_ = line_;
         atLineStart_ = false;
         return true;
       }
@@ -48,7 +49,8 @@ class Tokenizer {
     return false;
   }
 
-  int line() const { return line_; }
+  // Line of the last token read (where an unexpected end of file is reported).
+  int lastTokenLine() const { return lastTokenLine_; }
   const std::string& file() const { return file_; }
 
  private:
@@ -57,6 +59,7 @@ class Tokenizer {
   size_t pos_ = 0;
   int line_ = 1;
   bool atLineStart_ = true;
+  int lastTokenLine_ = 1;
 };
 
 struct Primitive {
@@ -99,7 +102,7 @@ class Reader {
 
   Token need(const std::string& what) {
     Token t;
-    if (!tok_.next(t)) fail(tok_.line(), "unexpected end of file: expected " + what);
+    if (!tok_.next(t)) fail(tok_.lastTokenLine(), "unexpected end of file: expected " + what);
     return t;
   }
 

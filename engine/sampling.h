@@ -38,8 +38,9 @@ inline Vec2 sampleAnnulus(double r0, double r1, double u1, double u2) {
   return Vec2(r * std::cos(phi), r * std::sin(phi));
 }
 
-// Jittered strata of the unit square: n samples as an nx × ny grid with nx·ny = n and nx ≈ π·ny
-// for hemispheres (the paper's M × N with N ≈ πM) or square otherwise.
+// Jittered strata of the unit square: n samples as an nx × ny grid with nx·ny ≈ n and
+// ny ≈ nx / aspect; hemispheres pass aspect = 1/π so that the φ strata (ny) number about π times
+// the θ strata (nx), the paper's M × N with N ≈ πM.
 class Strata2D {
  public:
   Strata2D(int n, double aspect = 1.0) {

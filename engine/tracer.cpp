@@ -3,6 +3,7 @@
 #include "engine/sampling.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -142,14 +143,32 @@ Rgb Tracer::distantRadiance(const Vec3& dir, bool countSources) const {
 Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const {
   Rgb total(0.0);
   const Strata2D strata(k);
+  // Per-thread scratch for horizon-clipped polygon sources (no allocation once warm).
+  thread_local std::vector<Vec3> clipped;
+  thread_local std::vector<std::array<Vec3, 3>> tris;
+  thread_local std::vector<double> cumulative;
   for (const Light& light : lights_) {
-    Rgb exact;
-    const bool haveExact = unoccludedIrradiance(light, scene_, p, n, exact);
+    Rgb exact(0.0);
+    const bool haveExact = unoccludedIrradiance(light, scene_, p, n, exact, &clipped);
     if (haveExact && photopic(exact) <= 0.0) continue;  // the source cannot reach this side
-    // Control variate: E = E_exact + mean(w cos (V − 1)), unbiased, and exact wherever the source
-    // is wholly visible; without a closed form: E = mean(w cos V).
-    Rgb sum(0.0);
-    double sumY = 0.0, sumY2 = 0.0;
+    // Polygon sources are sampled over their part above the receiver's horizon, so that every
+    // sample tells about visibility.
+    const bool clippedPolygon = haveExact && light.kind == Light::Kind::Area && !light.outline.empty();
+    if (clippedPolygon) {
+      tris = triangulatePolygon(clipped, scene_.shapes[light.shape].n);
+      cumulative.clear();
+      double acc = 0.0;
+      for (const auto& t : tris) {
+        acc += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        cumulative.push_back(acc);
+      }
+    }
+    // With a closed form for the unoccluded irradiance E_u, the samples only estimate the visible
+    // fraction: E = E_u · Σ f V / Σ f, f = w cos ι. This ratio estimator is exact when the source
+    // is wholly visible, exactly 0 when wholly hidden (no light leaks), and its bias falls as 1/k.
+    // Without a closed form: E = mean(f V).
+    Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
+    double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
     const uint32_t lightShape = light.kind == Light::Kind::Area ? light.shape : kNoShape;
     // A far-field luminaire is one point: one shadow ray says all there is.
     const bool point = light.kind == Light::Kind::Luminaire && haveExact;
@@ -157,25 +176,42 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
     for (int i = 0; i < kk; ++i) {
       const Vec2 u = strata.sample(i, rng);
       LightSample ls;
-      Rgb g(0.0);
-      if (sampleLight(light, scene_, p, u.x, u.y, ls)) {
-        const double c = glm::dot(n, ls.dir);
-        if (c > 0.0) {
-          const Rgb f = ls.weight * c;
-          const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
-          const Rgb v = transmittance(p, ls.dir, tMax, skip, lightShape);
-          g = haveExact ? f * (v - Rgb(1.0)) : f * v;
-        }
-      }
-      sum += g;
-      const double y = photopic(g);
-      sumY += y;
-      sumY2 += y * y;
+      const bool ok = clippedPolygon ? sampleClippedPolygon(light, tris, cumulative, p, u.x, u.y, ls)
+                                     : sampleLight(light, scene_, p, u.x, u.y, ls);
+      if (!ok) continue;
+      const double cosI = glm::dot(n, ls.dir);
+      if (cosI <= 0.0) continue;
+      const Rgb f = ls.weight * cosI;
+      const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
+      const Rgb v = transmittance(p, ls.dir, tMax, skip, lightShape);
+      const double c = haveExact ? 1.0 : 0.0;
+      sumFvc += f * v * c;
+      sumFc += f * c;
+      sumRest += f * v * (1.0 - c);
+      const double fy = photopic(f) * c, vy = photopic(f * v) / std::max(photopic(f), 1e-300);
+      yF2 += fy * fy;
+      yF2V += fy * fy * vy;
+      yF2V2 += fy * fy * vy * vy;
+      yFc += fy;
+      const double ry = photopic(f * v) * (1.0 - c);
+      yRest += ry;
+      yRest2 += ry * ry;
     }
-    total += (haveExact ? exact : Rgb(0.0)) + sum / static_cast<double>(kk);
+    Rgb e = sumRest / static_cast<double>(kk);
+    if (haveExact) {
+      // No informative sample (numerically degenerate): claim nothing rather than leak light.
+      for (int ch = 0; ch < 3; ++ch) e[ch] += sumFc[ch] > 0.0 ? exact[ch] * sumFvc[ch] / sumFc[ch] : 0.0;
+    }
+    total += e;
     if (variance && kk > 1) {
-      const double mean = sumY / kk;
-      *variance += std::max(0.0, sumY2 / kk - mean * mean) / (kk - 1);
+      // Delta-method variance of the ratio, E_u² Σ f²(V − R)² / (Σ f)², plus the plain part's.
+      if (yFc > 0.0) {
+        const double ratio = (yF2V > 0.0 || yF2 > 0.0) ? photopic(sumFvc) / yFc : 0.0;
+        const double resid = std::max(0.0, yF2V2 - 2.0 * ratio * yF2V + ratio * ratio * yF2);
+        *variance += photopic(exact) * photopic(exact) * resid / (yFc * yFc);
+      }
+      const double mean = yRest / kk;
+      *variance += std::max(0.0, yRest2 / kk - mean * mean) / (kk - 1);
     }
   }
   return total;

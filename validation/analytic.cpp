@@ -43,7 +43,7 @@ double sphereOnPlane(double rho, double skyRadiance, double radiusM, double xM, 
     const double s = std::sqrt(u), c = std::sqrt(1.0 - u);
     for (int j = 0; j < 2 * n; ++j) {
       const double phi = 2.0 * kPi * (j + 0.5) / (2 * n);
-      const double dx = s * std::cos(phi), dy = s * std::sin(phi), dz = c;
+      const double dx = s * std::cos(phi), dz = c;  // y does not enter: the receiver is at y = 0
       // Ray–sphere: |o + t d|² = R² with o = (ox, 0, oz).
       const double b = ox * dx + oz * dz;
       const double cc = ox * ox + oz * oz - radiusM * radiusM;

@@ -1,0 +1,39 @@
+#include "validation/case_registry.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace candela::validation {
+
+std::vector<Case> engineCases();
+
+double CaseResult::maxRelativeError() const {
+  double m = 0.0;
+  for (const PointResult& p : points) m = std::max(m, std::abs(p.relativeError()));
+  return m;
+}
+
+double CaseResult::rmsRelativeError() const {
+  if (points.empty()) return 0.0;
+  double s = 0.0;
+  for (const PointResult& p : points) s += p.relativeError() * p.relativeError();
+  return std::sqrt(s / points.size());
+}
+
+std::vector<Case> allCases() { return engineCases(); }
+
+std::vector<CaseResult> runCases(bool quickOnly, const RunConfig& config) {
+  std::vector<CaseResult> out;
+  for (const Case& c : allCases()) {
+    if (quickOnly && !c.quick) continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    CaseResult r = c.run(config);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.name = c.name;
+    r.group = c.group;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace candela::validation
