@@ -43,6 +43,9 @@ class Tracer {
   explicit Tracer(const Scene& scene, OctreeOptions octree = {});
   // Traces with a given accelerator built over the same scene.
   Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator);
+  // The tracer keeps a reference to the scene: a temporary would dangle.
+  explicit Tracer(Scene&&, OctreeOptions = {}) = delete;
+  Tracer(Scene&&, std::unique_ptr<RayAccelerator>) = delete;
 
   // Irradiance on the side of unit normal n at point p. `pointIndex` selects the random stream,
   // so the result depends only on (seed, pointIndex), never on threads.
