@@ -1,11 +1,13 @@
-// Rays per second through the octree on generated scenes of 10³ … 10⁶ small random triangles
+// Rays per second through the octree (and Embree, engine/embree_accelerator.h) on generated scenes of 10³ … 10⁶ small random triangles
 // filling a 10 m cube (issue "Engine core"; results in docs/performance.md).
 // Run: build/bench/octree_bench [--benchmark_filter=...]
 #include "engine/base/rng.h"
+#include "engine/embree_accelerator.h"
 #include "engine/octree.h"
 #include "engine/sampling.h"
 
 #include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
 
 #include <chrono>
 #include <map>
@@ -22,6 +24,9 @@ struct Fixture {
   std::unique_ptr<Octree> octree;
   std::vector<std::pair<Vec3, Vec3>> rays;
   double buildSeconds = 0.0;
+  // Embree over the same scene, per (robust, high quality) option pair, built on first use.
+  std::map<std::pair<bool, bool>, std::unique_ptr<EmbreeAccelerator>> embree;
+  std::map<std::pair<bool, bool>, double> embreeBuildSeconds;
 };
 
 Fixture& fixture(int count, int setSize) {
@@ -89,9 +94,114 @@ void BM_ShadowAnyHit(benchmark::State& state) {
   counters(state, f, hits);
 }
 
+// The same scenes and rays through EmbreeAccelerator (Embree's build runs on all cores, TBB).
+EmbreeAccelerator& embree(Fixture& f, bool robust, bool highQuality) {
+  auto& e = f.embree[{robust, highQuality}];
+  if (!e) {
+    const auto t0 = std::chrono::steady_clock::now();
+    e = std::make_unique<EmbreeAccelerator>(f.scene, EmbreeOptions{robust, highQuality, false});
+    f.embreeBuildSeconds[{robust, highQuality}] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return *e;
+}
+
+void embreeCounters(benchmark::State& state, Fixture& f, bool robust, bool highQuality, int64_t hits) {
+  state.SetItemsProcessed(state.iterations());
+  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["bytes_per_surface"] =
+      static_cast<double>(embree(f, robust, highQuality).stats().memoryBytes) / f.scene.shapes.size();
+  state.counters["hit_fraction"] = static_cast<double>(hits) / state.iterations();
+  state.counters["build_s"] = f.embreeBuildSeconds[{robust, highQuality}];
+}
+
+// Arguments: triangles, robust (0/1), high build quality (0/1).
+void BM_NearestHitEmbree(benchmark::State& state) {
+  Fixture& f = fixture(static_cast<int>(state.range(0)), 6);
+  const bool robust = state.range(1) != 0, high = state.range(2) != 0;
+  const EmbreeAccelerator& acc = embree(f, robust, high);
+  size_t i = 0;
+  int64_t hits = 0;
+  for (auto _ : state) {
+    const auto& r = f.rays[i++ & (f.rays.size() - 1)];
+    RayHit h;
+    hits += acc.intersect(r.first, r.second, 0.0, 1e30, h);
+    benchmark::DoNotOptimize(h);
+  }
+  embreeCounters(state, f, robust, high, hits);
+}
+
+void BM_ShadowAnyHitEmbree(benchmark::State& state) {
+  Fixture& f = fixture(static_cast<int>(state.range(0)), 6);
+  const bool robust = state.range(1) != 0, high = state.range(2) != 0;
+  const EmbreeAccelerator& acc = embree(f, robust, high);
+  size_t i = 0;
+  int64_t hits = 0;
+  for (auto _ : state) {
+    const auto& r = f.rays[i++ & (f.rays.size() - 1)];
+    const bool occ = acc.occluded(r.first, r.second, 0.0, 2.0);
+    hits += occ;
+    benchmark::DoNotOptimize(occ);
+  }
+  embreeCounters(state, f, robust, high, hits);
+}
+
+// Embree alone on the same triangles (robust, high quality): float t, no double re-test, no
+// mapping back to shapes. The floor under BM_NearestHitEmbree; the difference is mostly the
+// cache miss of reading the hit shape for its double t (docs/performance.md).
+void BM_NearestHitEmbreeFloatOnly(benchmark::State& state) {
+  Fixture& f = fixture(static_cast<int>(state.range(0)), 6);
+  RTCDevice device = rtcNewDevice(nullptr);
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const size_t n = f.scene.shapes.size();
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3 * n));
+  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, n));
+  const Vec3 centre = f.scene.bounds().center();
+  for (size_t i = 0; i < n; ++i) {
+    const Shape& sh = f.scene.shapes[i];
+    const Vec3 p[3] = {sh.a - centre, sh.a + sh.b - centre, sh.a + sh.c - centre};
+    for (size_t k = 0; k < 3; ++k) {
+      for (int j = 0; j < 3; ++j) v[9 * i + 3 * k + j] = static_cast<float>(p[k][j]);
+      idx[3 * i + k] = static_cast<unsigned>(3 * i + k);
+    }
+  }
+  rtcCommitGeometry(g);
+  rtcAttachGeometry(scene, g);
+  rtcReleaseGeometry(g);
+  rtcCommitScene(scene);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  size_t i = 0;
+  int64_t hits = 0;
+  for (auto _ : state) {
+    const auto& r = f.rays[i++ & (f.rays.size() - 1)];
+    const Vec3 o = r.first - centre;
+    RTCRayHit rh;
+    rh.ray.org_x = static_cast<float>(o.x), rh.ray.org_y = static_cast<float>(o.y), rh.ray.org_z = static_cast<float>(o.z);
+    rh.ray.dir_x = static_cast<float>(r.second.x), rh.ray.dir_y = static_cast<float>(r.second.y);
+    rh.ray.dir_z = static_cast<float>(r.second.z);
+    rh.ray.tnear = 0.0f, rh.ray.tfar = 1e30f, rh.ray.time = 0.0f, rh.ray.mask = ~0u, rh.ray.id = 0, rh.ray.flags = 0;
+    rh.hit.geomID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+    hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    benchmark::DoNotOptimize(rh);
+  }
+  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["hit_fraction"] = static_cast<double>(hits) / state.iterations();
+  rtcReleaseScene(scene);
+  rtcReleaseDevice(device);
+}
+
 BENCHMARK(BM_NearestHit)->ArgsProduct({{1000, 10000, 100000, 1000000}, {6}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ShadowAnyHit)->ArgsProduct({{1000, 10000, 100000, 1000000}, {6}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NearestHit)->ArgsProduct({{100000}, {2, 4, 10, 16}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_NearestHitEmbree)->ArgsProduct({{1000, 10000, 100000, 1000000}, {1}, {1}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ShadowAnyHitEmbree)->ArgsProduct({{1000, 10000, 100000, 1000000}, {1}, {1}})->Unit(benchmark::kMicrosecond);
+// The options: robust traversal and build quality (the defaults are chosen from these).
+BENCHMARK(BM_NearestHitEmbree)->ArgsProduct({{100000}, {0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_NearestHitEmbreeFloatOnly)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace candela

@@ -330,8 +330,7 @@ TEST(EmbreeAccelerator, MatchesBruteForceOnTessellatedFloor) {
     }
     rays.push_back(r);
   }
-  const EmbreeAccelerator acc(sc);
-  compareWithBruteForce(sc, acc, rays, "tessellated floor", 0.3);
+  compareWithBruteForce(sc, EmbreeAccelerator(sc), rays, "tessellated floor", 0.3);
 }
 
 // Closed forms on a single sphere: t, tMin/tMax, skips, empty scene.
