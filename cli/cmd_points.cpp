@@ -5,6 +5,8 @@
 #include "engine/base/error.h"
 #include "engine/case_file.h"
 #include "engine/case_scene.h"
+#include "engine/daylight.h"
+#include "photometry/site.h"
 #include "engine/rad_reader.h"
 #include "engine/sensor_grid.h"
 #include "engine/sensors.h"
@@ -31,7 +33,35 @@ struct PointsOptions {
   int threads = -1;
   std::string method = "path";
   bool error = false;
+  // Daylight (issue "Daylight"): used when --sky is given; else the case's [sky] applies.
+  std::string sky;
+  std::optional<double> sunAltitude, sunAzimuth, timezone, elevation, north;
+  std::string lat, lon, time;
+  bool noSun = false;
+  std::optional<double> dhiLux, dniLux, dniWm2, dhiWm2, groundReflectance;
 };
+
+DaylightSpec daylightFromOptions(const PointsOptions& o, DaylightSpec d) {
+  const FileLoc cli{"command line", 0, 0};
+  d.skyType = o.sky;
+  d.skyLoc = cli;
+  d.timeLoc = cli;
+  if (o.sunAltitude) d.sunAltitudeDeg = o.sunAltitude;
+  if (o.sunAzimuth) d.sunAzimuthDeg = o.sunAzimuth;
+  if (!o.lat.empty()) d.latitudeDeg = parseLatitudeDeg(o.lat, cli);
+  if (!o.lon.empty()) d.longitudeDeg = parseLongitudeDeg(o.lon, cli);
+  if (!o.time.empty()) d.time = o.time;
+  if (o.timezone) d.timezoneHours = *o.timezone;
+  if (o.elevation) d.elevationM = *o.elevation;
+  if (o.north) d.northDeg = *o.north;
+  if (o.noSun) d.sun = false;
+  if (o.dhiLux) d.diffuseHorizontalLux = o.dhiLux;
+  if (o.dniLux) d.directNormalLux = o.dniLux;
+  if (o.dniWm2) d.directNormalWm2 = o.dniWm2;
+  if (o.dhiWm2) d.diffuseHorizontalWm2 = o.dhiWm2;
+  if (o.groundReflectance) d.groundReflectance = *o.groundReflectance;
+  return d;
+}
 
 int runPoints(const PointsOptions& o) {
   // The case's scene, luminaires and settings first; options given on the command line win.
@@ -40,9 +70,11 @@ int runPoints(const PointsOptions& o) {
   int threads = 0;
   uint64_t seed = 1;
   std::optional<int> bounces, samples;
+  DaylightSpec daylight;
   if (!o.caseFile.empty()) {
     const CaseFile c = readCaseFile(o.caseFile);
-    scene = loadCaseScene(c);
+    scene = loadCaseScene(c, o.sky.empty());
+    if (!o.sky.empty()) daylight = daylightFromCase(c);
     quality = c.settings.quality;
     seed = c.settings.seed;
     threads = c.settings.threads;
@@ -52,6 +84,7 @@ int runPoints(const PointsOptions& o) {
     scene = std::make_unique<Scene>();
   }
   for (const std::string& f : o.scenes) readRadianceFile(f, *scene);
+  if (!o.sky.empty()) addDaylight(*scene, daylightFromOptions(o, daylight));
   if (!o.quality.empty()) quality = parseQuality(o.quality);
   if (o.bounces >= 0) bounces = o.bounces;
   if (o.samples > 0) samples = o.samples;
@@ -113,6 +146,29 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
   cmd->add_option("--method", opts->method, "path (unbiased path tracer)")->check(CLI::IsMember({"path"}));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
+  // Daylight.
+  cmd->add_option("--sky", opts->sky, "uniform | cie-overcast | cie-clear | cie:1..15 | perez | none")
+      ->group("Daylight");
+  cmd->add_option("--sun-altitude", opts->sunAltitude, "sun altitude, deg")->group("Daylight");
+  cmd->add_option("--sun-azimuth", opts->sunAzimuth, "sun azimuth, deg clockwise from north")->group("Daylight");
+  cmd->add_option("--lat", opts->lat, "site latitude, deg north (or DMS: 37d52'N)")->group("Daylight");
+  cmd->add_option("--lon", opts->lon, "site longitude, deg east (or DMS: 122d16'W)")->group("Daylight");
+  cmd->add_option("--time", opts->time, "local standard time, ISO 8601 (sun from the NREL SPA)")->group("Daylight");
+  cmd->add_option("--timezone", opts->timezone, "hours from UTC of local standard time")->group("Daylight");
+  cmd->add_option("--elevation", opts->elevation, "site elevation, m")->group("Daylight");
+  cmd->add_option("--north", opts->north, "true north, deg clockwise from model +Y")->group("Daylight");
+  cmd->add_flag("--no-sun", opts->noSun, "sky only, no sun")->group("Daylight");
+  cmd->add_option("--diffuse-horizontal-illuminance", opts->dhiLux,
+                  "the sky's illuminance on an open horizontal plane, lux (default 10000)")
+      ->check(CLI::NonNegativeNumber)->group("Daylight");
+  cmd->add_option("--direct-normal-illuminance", opts->dniLux, "the sun's direct normal illuminance, lux")
+      ->check(CLI::NonNegativeNumber)->group("Daylight");
+  cmd->add_option("--direct-normal-irradiance", opts->dniWm2, "direct normal irradiance, W/m2 (perez)")
+      ->check(CLI::NonNegativeNumber)->group("Daylight");
+  cmd->add_option("--diffuse-horizontal-irradiance", opts->dhiWm2, "diffuse horizontal irradiance, W/m2 (perez)")
+      ->check(CLI::NonNegativeNumber)->group("Daylight");
+  cmd->add_option("--ground-reflectance", opts->groundReflectance, "ground reflectance (default 0.2)")
+      ->check(CLI::Range(0.0, 1.0))->group("Daylight");
   cmd->callback([opts, &action] { action = [opts] { return runPoints(*opts); }; });
 }
 

@@ -1,7 +1,12 @@
 #include "engine/case_scene.h"
 
 #include "engine/rad_reader.h"
+#include "photometry/epw.h"
+#include "photometry/site.h"
 
+#include <cmath>
+
+#include <algorithm>
 #include <map>
 
 namespace candela {
@@ -17,7 +22,7 @@ LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const 
   return l;
 }
 
-std::unique_ptr<Scene> loadCaseScene(const CaseFile& c) {
+std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
   for (const ScenePath& s : c.scenes) readRadianceFile(s.file, *scene);
   std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
@@ -26,7 +31,58 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c) {
     if (!web) web = std::make_shared<const PhotometricWeb>(readPhotometricFile(p.file));
     scene->luminaires.push_back(placeLuminaire(web, p));
   }
+  if (withDaylight) addDaylight(*scene, daylightFromCase(c));
   return scene;
+}
+
+DaylightSpec daylightFromCase(const CaseFile& c) {
+  DaylightSpec d;
+  if (!c.sky.present || c.sky.type == SkyType::kNone) return d;
+  if (c.sky.type == SkyType::kAnnual)
+    throw InputError(c.sky.loc, "sky type 'annual' (climate-based annual metrics) is not supported yet");
+  d.skyType = skyTypeName(c.sky.type, c.sky.cieType);
+  d.skyLoc = c.sky.loc;
+  d.time = c.sky.time;
+  d.timeLoc = c.sky.timeLoc;
+  d.sun = c.sky.sun;
+  d.sunAltitudeDeg = c.sky.sunAltitudeDeg;
+  d.sunAzimuthDeg = c.sky.sunAzimuthDeg;
+  d.diffuseHorizontalLux = c.sky.diffuseHorizontalIlluminanceLux;
+  d.directNormalLux = c.sky.directNormalIlluminanceLux;
+  d.directNormalWm2 = c.sky.directNormalIrradianceWm2;
+  d.diffuseHorizontalWm2 = c.sky.diffuseHorizontalIrradianceWm2;
+  d.groundReflectance = c.sky.groundReflectance;
+  if (c.site.present) {
+    const double lat = c.site.latitudeDeg ? *c.site.latitudeDeg
+                                          : parseLatitudeDeg(c.site.latitudeText, c.site.latitudeLoc);
+    const double lon = c.site.longitudeDeg ? *c.site.longitudeDeg
+                                           : parseLongitudeDeg(c.site.longitudeText, c.site.longitudeLoc);
+    const Site site = makeSite(lat, lon, c.site.elevationM, c.site.timezoneHours.value_or(0.0), c.site.northDeg,
+                               c.site.grid == "utm" ? "utm" : "", c.site.loc);
+    d.latitudeDeg = lat;
+    d.longitudeDeg = lon;
+    d.elevationM = site.elevationM;
+    d.timezoneHours = site.timezoneHours;
+    d.northDeg = site.trueNorthDeg();
+  }
+  if (!c.sky.weather.empty()) {
+    if (d.time.empty()) throw InputError(c.sky.loc, "a weather file needs a time to pick the hour");
+    const EpwFile epw = readEpw(c.sky.weather.string());
+    const LocalTime t = parseLocalTime(d.time, d.timeLoc);
+    // EPW hours are hour-ending: hour h covers (h − 1, h].
+    const int hour = std::clamp(static_cast<int>(std::ceil(t.hourOfDay())), 1, 24);
+    const EpwRecord* rec = nullptr;
+    for (const EpwRecord& r : epw.records)
+      if (r.month == t.month && r.day == t.day && r.hour == hour) rec = &r;
+    if (!rec) throw InputError(d.timeLoc, "the weather file has no hour " + std::to_string(hour) + " on " + d.time);
+    if (!d.directNormalWm2) d.directNormalWm2 = rec->directNormalWhm2;
+    if (!d.diffuseHorizontalWm2) d.diffuseHorizontalWm2 = rec->diffuseHorizontalWhm2;
+    if (d.skyType != "perez") {
+      if (!d.diffuseHorizontalLux) d.diffuseHorizontalLux = rec->diffuseHorizontalLux;
+      if (!d.directNormalLux) d.directNormalLux = rec->directNormalLux;
+    }
+  }
+  return d;
 }
 
 }  // namespace candela

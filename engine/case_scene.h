@@ -3,16 +3,22 @@
 #pragma once
 
 #include "engine/case_file.h"
+#include "engine/daylight.h"
 #include "engine/scene.h"
 
 #include <memory>
 
 namespace candela {
 
-// Reads every [[scene]] file and places every [[luminaire]] (arrays already expanded by the
-// case reader). Photometric files shared by several placements are read once. Throws
-// InputError naming the bad file and line.
-std::unique_ptr<Scene> loadCaseScene(const CaseFile& c);
+// Reads every [[scene]] file, places every [[luminaire]] (arrays already expanded by the case
+// reader; photometric files shared by several placements are read once) and adds the daylight of
+// [site] and [sky]. Throws InputError naming the bad file and line.
+std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight = true);
+
+// The daylight a case's [site] and [sky] describe (sky type "none" without a [sky]). With
+// `weather`, the direct normal and diffuse horizontal irradiance (and illuminance) of the EPW
+// hour containing `time` are used (hour-ending records: 12:30 is in hour 13).
+DaylightSpec daylightFromCase(const CaseFile& c);
 
 // Places one luminaire from its photometric web.
 LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminairePlacement& p);

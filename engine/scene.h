@@ -5,7 +5,10 @@
 #include "engine/base/units.h"
 #include "engine/luminaire_source.h"
 #include "engine/shapes.h"
+#include "photometry/sky_model.h"
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,12 +55,27 @@ struct DistantSource {
   std::string name;
 };
 
+// The daylight environment seen by escaping rays: a sky model (luminance in cd/m², true frame)
+// rotated by the site's north, and the ground below the horizon. Filled by addDaylight().
+struct SkyDome {
+  std::shared_ptr<const SkyModel> model;
+  double northDeg = 0.0;                  // true north, clockwise from model +Y
+  double groundLuminanceCdM2 = 0.0;       // ρg · E_h,outside / π
+  double horizontalSkyLux = 0.0;          // sky only, open horizontal plane
+  double horizontalSunLux = 0.0;          // sun only, open horizontal plane
+  Vec3 sunDirModel{0.0, 0.0, 1.0};
+  double sunAltitudeDeg = 90.0, sunAzimuthDeg = 0.0;
+  // Outside horizontal illuminance (sky + sun, no ground): the daylight factor's denominator.
+  double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
+};
+
 struct Scene {
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   std::vector<DistantSource> distant;
   std::vector<LuminaireSource> luminaires;  // photometric light sources (no geometry of their own)
+  std::optional<SkyDome> sky;               // daylight (engine/daylight.h); none indoors
   VertexStore vertices;
 
   Box bounds() const;

@@ -1,6 +1,7 @@
 #include "engine/tracer.h"
 
 #include "engine/sampling.h"
+#include "photometry/site.h"
 
 #include <algorithm>
 #include <array>
@@ -128,19 +129,31 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
   return t;
 }
 
-Rgb Tracer::distantRadiance(const Vec3& dir, bool countSources) const {
+Rgb Tracer::distantRadiance(const Vec3& dir, bool countSources, double misCosPdf, double misRatio) const {
   // Where sources at infinity overlap, the smallest one is seen (it lies in front of the larger,
   // as the sun in front of the sky).
   const DistantSource* seen = nullptr;
   for (const DistantSource& d : scene_.distant)
     if (glm::dot(dir, d.direction) >= d.cosHalfAngle && (!seen || d.solidAngleSr < seen->solidAngleSr)) seen = &d;
-  if (!seen) return Rgb(0.0);
-  const Material& m = scene_.materials[seen->material];
-  if (m.type == MaterialType::Glow) return m.color;
-  return countSources ? m.color : Rgb(0.0);
+  if (seen) {
+    const Material& m = scene_.materials[seen->material];
+    if (m.type == MaterialType::Glow) return m.color;
+    return countSources ? m.color : Rgb(0.0);
+  }
+  if (!scene_.sky) return Rgb(0.0);
+  const SkyDome& sky = *scene_.sky;
+  if (dir.z <= 0.0) return Rgb(sky.groundLuminanceCdM2 / kLumensPerWatt);
+  const Vec3 t = modelToTrue(dir, sky.northDeg);
+  double w = 1.0;
+  if (misCosPdf > 0.0) {
+    const double ps = misRatio * sky.model->pdf(t);
+    w = misCosPdf * misCosPdf / (misCosPdf * misCosPdf + ps * ps);
+  }
+  return Rgb(w * sky.model->luminance(t) / kLumensPerWatt);
 }
 
-Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const {
+Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance,
+                             double misRatio) const {
   Rgb total(0.0);
   const Strata2D strata(k);
   // Per-thread scratch for horizon-clipped polygon sources (no allocation once warm).
@@ -214,6 +227,32 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       *variance += std::max(0.0, yRest2 / kk - mean * mean) / (kk - 1);
     }
   }
+  if (scene_.sky) {
+    // The sky by importance sampling of its luminance, MIS-weighted against cosine sampling.
+    const SkyDome& sky = *scene_.sky;
+    Rgb sum(0.0);
+    double y1 = 0.0, y2 = 0.0;
+    for (int i = 0; i < k; ++i) {
+      const Vec2 u = strata.sample(i, rng);
+      double ps = 0.0;
+      const Vec3 t = sky.model->sample(u.x, u.y, &ps);
+      const Vec3 dir = trueToModel(t, sky.northDeg);
+      const double cosI = glm::dot(n, dir);
+      if (cosI <= 0.0 || ps <= 0.0) continue;
+      const double pc = cosI * kInvPi / misRatio;
+      const double w = ps * ps / (ps * ps + pc * pc);
+      const Rgb v = transmittance(p, dir, kInf, skip, kNoShape);
+      const Rgb g = v * (w * sky.model->luminance(t) / kLumensPerWatt * cosI / ps);
+      sum += g;
+      y1 += photopic(g);
+      y2 += photopic(g) * photopic(g);
+    }
+    total += sum / static_cast<double>(k);
+    if (variance && k > 1) {
+      const double mean = y1 / k;
+      *variance += std::max(0.0, y2 / k - mean * mean) / (k - 1);
+    }
+  }
   return total;
 }
 
@@ -223,13 +262,14 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
 }
 
 Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
-                         const TraceSettings& s, int diffuse, int split) const {
+                         const TraceSettings& s, int diffuse, int split, double misCosPdf, double misRatio) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
-    if (!accel_->intersect(o, d, 0.0, kInf, h, skip)) return result + beta * distantRadiance(d, countSources);
+    if (!accel_->intersect(o, d, 0.0, kInf, h, skip))
+      return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
     const Vec3 x = o + h.t * d;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
@@ -255,6 +295,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
       case MaterialType::Void:
         return result;
       case MaterialType::Mirror:
+        misCosPdf = 0.0;  // the sky seen in a mirror is not sampled directly
         beta *= m->color;
         d = d - 2.0 * glm::dot(d, ng) * ng;
         o = x + off * nf;
@@ -273,6 +314,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
           beta *= rf * ((pt + pr) / pr);
           d = d - 2.0 * glm::dot(d, ng) * ng;
           o = x + off * nf;
+          misCosPdf = 0.0;
         }
         skip = flatSkip;
         countSources = true;
@@ -283,20 +325,20 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (diffuse + 1 > s.maxBounces) return result;
-    return result + beta * diffuseVertex(x, nf, off, flatSkip, *m, rng, s, diffuse, split);
+    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split);
   }
   return result;
 }
 
-Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
+Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
                           const TraceSettings& s, int diffuse, int split) const {
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   const int k = std::max(1, split);
   Rgb out(0.0);
   // Light reflected (and diffusely transmitted) from the sampled sources.
-  if (photopic(rho) > 0.0) out += rho * kInvPi * directIrradiance(xf, nf, k, flatSkip, rng, nullptr);
-  if (photopic(tauD) > 0.0) out += tauD * kInvPi * directIrradiance(xb, -nf, k, flatSkip, rng, nullptr);
+  if (photopic(rho) > 0.0) out += rho * kInvPi * directIrradiance(xf, nf, k, flatSkip, rng, nullptr, 1.0);
+  if (photopic(tauD) > 0.0) out += tauD * kInvPi * directIrradiance(xb, -nf, k, flatSkip, rng, nullptr, 1.0);
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
   // with probability 1 − albedo).
@@ -310,12 +352,15 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& nf, double off, uint32_t fl
     const double u = rng.uniform() * norm;
     if (u < pRho) {
       const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
-      acc += rho * (norm / pRho) * pathRadiance(xf, dir, flatSkip, false, rng, s, diffuse + 1, 1);
+      acc += rho * (norm / pRho) *
+             pathRadiance(xf, dir, flatSkip, false, rng, s, diffuse + 1, 1, glm::dot(dir, nf) * kInvPi, 1.0);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
-      acc += tauD * (norm / pTd) * pathRadiance(xb, dir, flatSkip, false, rng, s, diffuse + 1, 1);
+      acc += tauD * (norm / pTd) *
+             pathRadiance(xb, dir, flatSkip, false, rng, s, diffuse + 1, 1, -glm::dot(dir, nf) * kInvPi, 1.0);
     } else if (u < pRho + pTd + pTs) {
-      acc += tauS * (norm / pTs) * pathRadiance(xb, -nf, flatSkip, true, rng, s, diffuse, 1);
+      // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
+      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, true, rng, s, diffuse, 1);
     }
   }
   return out + acc / static_cast<double>(k);
@@ -326,7 +371,10 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   Rng rng(s.seed, pointIndex);
   IrradianceEstimate est;
   double var = 0.0;
-  est.irradiance = directIrradiance(p, n, std::max(1, s.lightSamples), kNoShape, rng, &var);
+  const int mThetaN = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
+  const int cellsN = mThetaN * std::max(1, s.hemisphereSamples / mThetaN);
+  const double misRatio = static_cast<double>(std::max(1, s.lightSamples)) / cellsN;
+  est.irradiance = directIrradiance(p, n, std::max(1, s.lightSamples), kNoShape, rng, &var, misRatio);
 
   // Hemisphere: the paper's eq. 3, E ≈ (π / MN) Σ L(θ_j, φ_k) with θ_j = asin√((j + X)/M) and
   // φ_k = 2π(k + Y)/N, N ≈ πM: one sample per stratum.
@@ -345,7 +393,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
     const double u1 = (j + (su + rng.uniform()) / sub) / mTheta;
     const double u2 = (k + (sv + rng.uniform()) / sub) / nPhi;
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
-    return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit);
+    return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit, glm::dot(dir, n) * kInvPi, misRatio);
   };
   for (int c = 0; c < cells; ++c) {
     value[c] = sampleCell(c, 0, 0, 1);

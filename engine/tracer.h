@@ -71,16 +71,23 @@ class Tracer {
  private:
   // Direct irradiance at p (normal n) from every sampled source with k stratified samples each;
   // adds the variance of its photopic value to *variance when given.
-  Rgb directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const;
+  // With a sky, k sky samples by luminance are taken too, weighted against the cosine-sampled
+  // rays that accompany them by the power heuristic (Veach 1997) with misRatio = k / (number of
+  // cosine-sampled rays).
+  Rgb directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance,
+                       double misRatio) const;
   // Path-traced radiance; `diffuse` counts diffuse reflections so far; the first diffuse vertex
   // takes `split` stratified continuations.
+  // misCosPdf: density (per sr) of the cosine sampling that drew dir, for the sky's MIS weight
+  // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
   Rgb pathRadiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
-                   const TraceSettings& s, int diffuse, int split) const;
+                   const TraceSettings& s, int diffuse, int split, double misCosPdf = 0.0,
+                   double misRatio = 1.0) const;
   // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
-  Rgb diffuseVertex(const Vec3& x, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
+  Rgb diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
                     const TraceSettings& s, int diffuse, int split) const;
   // Radiance of the sky/distant sources seen along an escaping ray.
-  Rgb distantRadiance(const Vec3& dir, bool countSources) const;
+  Rgb distantRadiance(const Vec3& dir, bool countSources, double misCosPdf, double misRatio) const;
 
   const Scene& scene_;
   std::unique_ptr<RayAccelerator> accel_;
