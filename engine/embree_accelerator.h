@@ -22,7 +22,7 @@ struct EmbreeOptions {
   // RTC_SCENE_FLAG_ROBUST: watertight triangle test, conservative traversal. Needed: without it
   // about one in nine rays aimed exactly at the shared vertices and edges of a tessellated floor
   // pass through it (the floor of embree_accelerator_test.cpp), which no double re-test repairs.
-  // It costs ~25 % of the speed (docs/performance.md).
+  // It costs ~20 % of the speed (docs/performance.md).
   bool robust = true;
   bool highQuality = true;  // RTC_BUILD_QUALITY_HIGH (spatial splits) instead of MEDIUM
   bool compact = false;     // RTC_SCENE_FLAG_COMPACT: less memory, slower
