@@ -110,10 +110,6 @@ struct EmbreeCallbacks {
 
 namespace {
 
-void throwOnError(RTCDevice device, const char* what) {
-  const RTCError e = rtcGetDeviceError(device);
-  if (e != RTC_ERROR_NONE) throw std::runtime_error(std::string("Embree: ") + what + " failed (error " + std::to_string(e) + ")");
-}
 
 // The float ray Embree traverses: origin relative to the scene centre. tfar is widened by a few
 // float ulps of the ray's extent so that a surface lying just before tMax in double is not lost
@@ -146,7 +142,7 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
     triangleShapes_.push_back(i);
     for (const Vec3& v : {s.a, s.a + s.b, s.a + s.c}) {
       const Vec3 rel = v - centre_;
-      vertices_.insert(vertices_.end(), {static_cast<float>(rel.x), static_cast<float>(rel.y), static_cast<float>(rel.z)});
+      for (int k = 0; k < 3; ++k) vertices_.push_back(static_cast<float>(rel[k]));
     }
   }
   vertices_.push_back(0.0f);  // Embree reads the last vertex with a 16-byte load
@@ -154,7 +150,8 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
   for (uint32_t k = 0; k < indices_.size(); ++k) indices_[k] = k;
 
   device_ = rtcNewDevice(nullptr);
-  if (!device_) throw std::runtime_error("Embree: rtcNewDevice failed (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
+  if (!device_)
+    throw std::runtime_error("Embree: rtcNewDevice failed (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
   rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeCallbacks::memoryMonitor, this);
   rtcScene_ = rtcNewScene(device_);
   int flags = RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION;
@@ -186,7 +183,12 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
     rtcReleaseGeometry(g);
   }
   rtcCommitScene(rtcScene_);
-  throwOnError(device_, "building the scene");
+  const RTCError e = rtcGetDeviceError(device_);
+  if (e != RTC_ERROR_NONE) {  // the destructor will not run: release here
+    rtcReleaseScene(rtcScene_);
+    rtcReleaseDevice(device_);
+    throw std::runtime_error("Embree: building the scene failed (error " + std::to_string(e) + ")");
+  }
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() {

@@ -58,6 +58,7 @@ class EmbreeAccelerator : public RayAccelerator {
 
   // Runs rtcIntersect1; `exact` makes every triangle candidate pass intersectShape first.
   bool nearest(Query& q, bool exact, RayHit& hit) const;
+  // Embree's (geometry, primitive) → index into Scene::shapes.
   uint32_t toShape(unsigned geomID, unsigned primID) const {
     return geomID == triangleGeom_ ? triangleShapes_[primID] : userShapes_[primID];
   }

@@ -379,7 +379,8 @@ TEST(EmbreeAccelerator, ConcurrentQueriesAgree) {
   const std::vector<Ray> rays = randomRays(12, 4000);
   const EmbreeAccelerator acc(sc);
   std::vector<RayHit> serial(rays.size());
-  for (size_t i = 0; i < rays.size(); ++i) acc.intersect(rays[i].o, rays[i].d, rays[i].tMin, rays[i].tMax, serial[i], 3, 5);
+  for (size_t i = 0; i < rays.size(); ++i)
+    acc.intersect(rays[i].o, rays[i].d, rays[i].tMin, rays[i].tMax, serial[i], 3, 5);
   std::vector<RayHit> parallel(rays.size());
   std::vector<std::thread> threads;
   for (int k = 0; k < 4; ++k)
