@@ -6,6 +6,7 @@
 namespace candela::validation {
 
 std::vector<Case> engineCases();
+std::vector<Case> daylightCases();
 
 double CaseResult::maxRelativeError() const {
   double m = 0.0;
@@ -20,7 +21,11 @@ double CaseResult::rmsRelativeError() const {
   return std::sqrt(s / points.size());
 }
 
-std::vector<Case> allCases() { return engineCases(); }
+std::vector<Case> allCases() {
+  std::vector<Case> all = engineCases();
+  for (Case& c : daylightCases()) all.push_back(std::move(c));
+  return all;
+}
 
 std::vector<CaseResult> runCases(bool quickOnly, const RunConfig& config) {
   std::vector<CaseResult> out;
