@@ -1,0 +1,26 @@
+# candela run: a good case writes every output; each bad case exits 2 with one line naming the
+# file and line, and leaves no output folder behind (run_case.sh checks both).
+set(RUN_CASE ${CMAKE_CURRENT_SOURCE_DIR}/run_case.sh)
+set(RUN_DATA ${CMAKE_CURRENT_SOURCE_DIR}/run)
+
+# candela_run_test(NAME EXIT_CODE EXPECT_SUBSTRING CASE [ARGS...])
+function(candela_run_test name code expect case_file)
+  add_test(NAME cli.run.${name} COMMAND ${RUN_CASE} ${code} "${expect}" $<TARGET_FILE:candela> ${case_file} ${ARGN})
+  set_tests_properties(cli.run.${name} PROPERTIES WORKING_DIRECTORY ${RUN_DATA})
+endfunction()
+
+candela_run_test(small_room 0 "\"name\": \"workplane\"" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality draft)
+candela_run_test(bad_key 2 "bad_key/case.toml:8: unknown key 'hieght'" bad_key/case.toml)
+candela_run_test(missing_scene 2 "missing_scene/case.toml:3: scene file 'no_such_room.rad' not found"
+                 missing_scene/case.toml)
+candela_run_test(bad_scene 2 "bad.rad:6: polygon 'broken' needs at least 3 vertices" bad_scene/case.toml)
+candela_run_test(grid_outside 2 "outside/case.toml:9: grid 'terrace' reaches outside the scene" outside/case.toml)
+candela_run_test(daylight 2 "daylight/case.toml:9: [sky] type = \"cie-overcast\": daylight is not supported"
+                 daylight/case.toml)
+candela_run_test(same_csv 2 "same_file/case.toml:10: grids 'a b' and 'a_b' would both write a_b.csv"
+                 same_file/case.toml)
+candela_run_test(grid_named_summary 2 "grid_named_summary/case.toml:5: grid name 'summary'"
+                 grid_named_summary/case.toml)
+candela_run_test(missing_case 2 "no_such_case.toml" no_such_case.toml)
+# Options are checked by the command-line parser before anything is read.
+candela_run_test(bad_quality 2 "--quality" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality best)
