@@ -24,7 +24,7 @@ struct CaseResult {
   std::string reference;      // the closed form, in words
   double tolerance = 0.01;    // on the relative error of every point
   std::vector<PointResult> points;
-  double seconds = 0.0;
+  double seconds = 0.0;        // wall time of candela's computation (not of the reference)
   double maxRelativeError() const;
   double rmsRelativeError() const;
   bool pass() const { return maxRelativeError() <= tolerance; }
@@ -45,7 +45,7 @@ struct Case {
 // Every case, in report order.
 std::vector<Case> allCases();
 
-// Runs the cases (all, or the quick subset), timing each.
+// Runs the cases (all, or the quick subset).
 std::vector<CaseResult> runCases(bool quickOnly, const RunConfig& config);
 
 }  // namespace candela::validation

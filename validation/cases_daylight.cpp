@@ -7,6 +7,7 @@
 #include "validation/analytic.h"
 #include "validation/case_registry.h"
 
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -19,8 +20,10 @@ CaseResult run(Scene& scene, const std::vector<std::pair<std::string, SensorPoin
   const Tracer tracer(scene);
   std::vector<SensorPoint> pts;
   for (const auto& p : probes) pts.push_back(p.second);
+  const auto t0 = std::chrono::steady_clock::now();
   const auto est = computeIrradiance(tracer, pts, cfg.settings, cfg.threads);
   CaseResult r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.reference = std::move(reference);
   r.tolerance = tol;
   for (size_t i = 0; i < probes.size(); ++i)
@@ -58,6 +61,7 @@ CaseResult skyIntegrals(const RunConfig& cfg) {
     const double ref = scene.sky->horizontalSkyLux;
     CaseResult r = run(scene, {{t, {Vec3(0.0), Vec3(0, 0, 1)}}}, {ref}, cfg, "", 0.01);
     all.points.push_back(r.points.front());
+    all.seconds += r.seconds;
   }
   return all;
 }

@@ -6,6 +6,7 @@
 #include "validation/analytic.h"
 #include "validation/case_registry.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -28,8 +29,10 @@ CaseResult runScene(const std::string& radText, const std::vector<Probe>& probes
   const Tracer tracer(scene);
   std::vector<SensorPoint> pts;
   for (const Probe& p : probes) pts.push_back(p.sensor);
+  const auto t0 = std::chrono::steady_clock::now();
   const std::vector<IrradianceEstimate> est = computeIrradiance(tracer, pts, cfg.settings, cfg.threads);
   CaseResult r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.reference = std::move(reference);
   r.tolerance = tolerance;
   for (size_t i = 0; i < probes.size(); ++i)
