@@ -7,6 +7,7 @@ namespace candela::validation {
 
 std::vector<Case> engineCases();
 std::vector<Case> daylightCases();
+std::vector<Case> luminaireCases();
 
 double CaseResult::maxRelativeError() const {
   double m = 0.0;
@@ -23,6 +24,7 @@ double CaseResult::rmsRelativeError() const {
 
 std::vector<Case> allCases() {
   std::vector<Case> all = engineCases();
+  for (Case& c : luminaireCases()) all.push_back(std::move(c));
   for (Case& c : daylightCases()) all.push_back(std::move(c));
   return all;
 }
