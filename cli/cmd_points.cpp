@@ -32,6 +32,7 @@ struct PointsOptions {
   int64_t seed = -1;
   int threads = -1;
   std::string method = "path";
+  std::string accelerator = "embree";
   bool error = false;
   // Daylight (issue "Daylight"): used when --sky is given; else the case's [sky] applies.
   std::string sky;
@@ -104,7 +105,7 @@ int runPoints(const PointsOptions& o) {
     points = readPoints(in, o.pointsFile);
   }
 
-  const Tracer tracer(*scene);
+  const Tracer tracer(*scene, parseAccelerator(o.accelerator));
   const std::vector<IrradianceEstimate> est = computeIrradiance(tracer, points, settings, threads);
 
   std::ostringstream csv;
@@ -145,6 +146,8 @@ void addPointsCommand(CLI::App& app, Action& action) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
   cmd->add_option("--method", opts->method, "path (unbiased path tracer)")->check(CLI::IsMember({"path"}));
+  cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
+      ->check(CLI::IsMember({"embree", "octree"}));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
   // Daylight.
   cmd->add_option("--sky", opts->sky, "uniform | cie-overcast | cie-clear | cie:1..15 | perez | none")

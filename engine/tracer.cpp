@@ -1,5 +1,6 @@
 #include "engine/tracer.h"
 
+#include "engine/embree_accelerator.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
 
@@ -92,6 +93,19 @@ double Tracer::originOffset(const Vec3& p) {
   const double m = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   return 1e-7 * m;
 }
+
+AcceleratorKind parseAccelerator(const std::string& s) {
+  if (s == "embree") return AcceleratorKind::kEmbree;
+  if (s == "octree") return AcceleratorKind::kOctree;
+  throw std::invalid_argument("accelerator must be embree or octree, not '" + s + "'");
+}
+
+std::unique_ptr<RayAccelerator> makeAccelerator(const Scene& scene, AcceleratorKind kind) {
+  if (kind == AcceleratorKind::kOctree) return std::make_unique<Octree>(scene);
+  return std::make_unique<EmbreeAccelerator>(scene);
+}
+
+Tracer::Tracer(const Scene& scene, AcceleratorKind kind) : Tracer(scene, makeAccelerator(scene, kind)) {}
 
 Tracer::Tracer(const Scene& scene, OctreeOptions octree) : Tracer(scene, std::make_unique<Octree>(scene, octree)) {}
 
