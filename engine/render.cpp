@@ -1,0 +1,280 @@
+#include "engine/render.h"
+
+#include "engine/base/rng.h"
+#include "engine/parallel.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace candela {
+
+namespace {
+
+// Camera rays use streams far above any sensor point index, so that a view and a grid in the same
+// run never share random numbers.
+constexpr uint64_t kCameraStreamBase = 1ULL << 48;
+
+struct PixelValue {
+  Rgb radiance{0.0};
+  double luminance = 0.0;
+  double standardError = 0.0;
+};
+
+// The luminous opening of a luminaire hit by the ray (o, d) nearer than tMax: returns its
+// luminance towards the ray's origin (RGB radiance, grey) and shortens tMax, or 0.
+Rgb luminaireRadiance(const std::vector<LuminaireSource>& lums, const Vec3& o, const Vec3& d, double& tMax) {
+  Rgb out(0.0);
+  for (const LuminaireSource& l : lums) {
+    if (l.widthM <= 0.0) continue;
+    const double dn = glm::dot(d, l.axisZ);
+    if (std::abs(dn) < 1e-9) continue;
+    const double t = glm::dot(l.position - o, l.axisZ) / dn;
+    if (!(t > 0.0) || t >= tMax) continue;
+    const Vec3 q = o + t * d - l.position;
+    const double u = glm::dot(q, l.axisX), v = glm::dot(q, l.axisY);
+    double area;
+    if (l.circular) {
+      const double r = 0.5 * l.widthM;
+      if (u * u + v * v > r * r) continue;
+      area = kPi * r * r;
+    } else {
+      if (std::abs(u) > 0.5 * l.widthM || std::abs(v) > 0.5 * l.lengthM) continue;
+      area = l.widthM * l.lengthM;
+    }
+    // Mean luminance of the opening towards the eye: I / (A |cos|) in cd/m², as a grey radiance.
+    const double lum = l.intensityCd(-d) / (area * std::abs(dn));
+    out = Rgb(lum / kLumensPerWatt);
+    tMax = t;
+  }
+  return out;
+}
+
+// Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.
+PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, const TraceSettings& s,
+                      const RenderSettings& r, std::atomic<std::size_t>& rays) {
+  Rng rng(s.seed, kCameraStreamBase + static_cast<uint64_t>(y) * cam.width() + x);
+  const int n = std::max(1, r.samplesPerPixel);
+  const int m = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
+  const bool showLums = r.showLuminaires && !tracer.scene().luminaires.empty();
+  Rgb sum(0.0);
+  double y1 = 0.0, y2 = 0.0;
+  int used = 0;
+  for (int k = 0; k < n; ++k) {
+    // m × m strata, the rest jittered over the whole pixel.
+    double ju = rng.uniform(), jv = rng.uniform();
+    if (k < m * m) {
+      ju = ((k % m) + ju) / m;
+      jv = ((k / m) + jv) / m;
+    }
+    const auto dir = cam.direction(x + ju, y + jv);
+    if (!dir) continue;
+    Rgb value(0.0);
+    bool done = false;
+    if (showLums) {
+      RayHit h;
+      double tMax = tracer.accelerator().intersect(cam.position(), *dir, 0.0, 1e300, h) ? h.t : 1e300;
+      const Rgb lum = luminaireRadiance(tracer.scene().luminaires, cam.position(), *dir, tMax);
+      if (photopic(lum) > 0.0) {
+        value = lum;
+        done = true;
+      }
+    }
+    if (!done) value = tracer.radiance(cam.position(), *dir, kNoShape, true, rng, s);
+    sum += value;
+    const double l = luminanceFromRadiance(value);
+    y1 += l;
+    y2 += l * l;
+    ++used;
+  }
+  rays.fetch_add(static_cast<std::size_t>(n), std::memory_order_relaxed);
+  PixelValue p;
+  if (used == 0) return p;
+  p.radiance = sum / static_cast<double>(used);
+  p.luminance = luminanceFromRadiance(p.radiance);
+  if (used > 1) {
+    const double mean = y1 / used;
+    p.standardError = std::sqrt(std::max(0.0, (y2 / used - mean * mean) / (used - 1)));
+  }
+  return p;
+}
+
+// Lattice lines of a refinement level: multiples of `step`, and the last pixel.
+std::vector<int> latticeLines(int size, int step) {
+  std::vector<int> v;
+  for (int c = 0; c < size; c += step) v.push_back(c);
+  if (v.back() != size - 1) v.push_back(size - 1);
+  return v;
+}
+
+// Index of the interval [lines[k], lines[k+1]] containing c (the first one when c is a line).
+int intervalOf(const std::vector<int>& lines, int c) {
+  const auto it = std::upper_bound(lines.begin(), lines.end(), c);
+  const int k = static_cast<int>(it - lines.begin()) - 1;
+  return std::clamp(k, 0, std::max(0, static_cast<int>(lines.size()) - 2));
+}
+
+bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(lines.begin(), lines.end(), c); }
+
+}  // namespace
+
+Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
+                 const RenderSettings& render, const RenderProgress& progress) {
+  const Camera cam(view);
+  Image img;
+  img.width = cam.width();
+  img.height = cam.height();
+  const std::size_t total = static_cast<std::size_t>(img.width) * img.height;
+  img.radiance.assign(total, Rgb(0.0));
+  img.luminance.assign(total, 0.0);
+  img.standardError.assign(total, 0.0);
+  img.inside.assign(total, 0);
+  img.traced.assign(total, 0);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) img.inside[img.index(x, y)] = cam.pixelDirection(x, y) ? 1 : 0;
+
+  int step = 1;
+  while (step * 2 <= std::max(1, render.coarseStep)) step *= 2;
+
+  std::atomic<std::size_t> rays{0}, settled{0};
+  auto report = [&](std::size_t n) {
+    if (progress) progress(settled.fetch_add(n, std::memory_order_relaxed) + n, total);
+  };
+  auto store = [&](std::size_t i, const PixelValue& p) {
+    img.radiance[i] = p.radiance;
+    img.luminance[i] = p.luminance;
+    img.standardError[i] = p.standardError;
+  };
+  auto traceList = [&](const std::vector<std::size_t>& list) {
+    parallelFor(list.size(), threads, [&](std::size_t k) {
+      const std::size_t i = list[k];
+      const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
+      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, settings, render, rays));
+      img.traced[i] = 1;
+      report(1);
+    });
+  };
+
+  // Pass 0: the coarse lattice.
+  std::vector<int> xs = latticeLines(img.width, step), ys = latticeLines(img.height, step);
+  {
+    std::vector<std::size_t> list;
+    for (int y : ys)
+      for (int x : xs) list.push_back(img.index(x, y));
+    traceList(list);
+  }
+
+  // Refinement: halve the lattice spacing; the new pixels of a block whose corners disagree are
+  // traced, the others interpolated bilinearly from the corners.
+  while (step > 1) {
+    const int half = step / 2;
+    const std::vector<int> nxs = latticeLines(img.width, half), nys = latticeLines(img.height, half);
+    const int bw = std::max(1, static_cast<int>(xs.size()) - 1), bh = std::max(1, static_cast<int>(ys.size()) - 1);
+    std::vector<uint8_t> busy(static_cast<std::size_t>(bw) * bh, 0);
+    for (int by = 0; by < bh; ++by)
+      for (int bx = 0; bx < bw; ++bx) {
+        const int x0 = xs[bx], x1 = xs[std::min<std::size_t>(bx + 1, xs.size() - 1)];
+        const int y0 = ys[by], y1 = ys[std::min<std::size_t>(by + 1, ys.size() - 1)];
+        const std::size_t c[4] = {img.index(x0, y0), img.index(x1, y0), img.index(x0, y1), img.index(x1, y1)};
+        double lo = 1e300, hi = -1e300, mean = 0.0, se = 0.0;
+        int in = 0;
+        for (std::size_t i : c) {
+          lo = std::min(lo, img.luminance[i]);
+          hi = std::max(hi, img.luminance[i]);
+          mean += 0.25 * img.luminance[i];
+          se = std::max(se, img.standardError[i]);
+          in += img.inside[i];
+        }
+        const bool edge = in != 0 && in != 4;  // the fisheye's circle crosses the block
+        busy[static_cast<std::size_t>(by) * bw + bx] =
+            edge || hi - lo > render.refineThreshold * mean + render.noiseAllowance * std::sqrt(2.0) * se;
+      }
+    std::vector<std::size_t> toTrace, toInterpolate;
+    for (int y : nys)
+      for (int x : nxs) {
+        const bool oldX = isLine(xs, x), oldY = isLine(ys, y);
+        if (oldX && oldY) continue;
+        // Every block of the old lattice that contains the pixel (two along a shared edge).
+        bool anyBusy = false;
+        const int kx = intervalOf(xs, x), ky = intervalOf(ys, y);
+        for (int dy = (oldY && ky > 0 && ys[ky] == y) ? -1 : 0; dy <= 0; ++dy)
+          for (int dx = (oldX && kx > 0 && xs[kx] == x) ? -1 : 0; dx <= 0; ++dx)
+            anyBusy = anyBusy || busy[static_cast<std::size_t>(ky + dy) * bw + (kx + dx)];
+        (anyBusy ? toTrace : toInterpolate).push_back(img.index(x, y));
+      }
+    traceList(toTrace);
+    for (std::size_t i : toInterpolate) {
+      const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
+      const int kx = intervalOf(xs, x), ky = intervalOf(ys, y);
+      const int x0 = xs[kx], x1 = xs[std::min<std::size_t>(kx + 1, xs.size() - 1)];
+      const int y0 = ys[ky], y1 = ys[std::min<std::size_t>(ky + 1, ys.size() - 1)];
+      const double fx = x1 > x0 ? static_cast<double>(x - x0) / (x1 - x0) : 0.0;
+      const double fy = y1 > y0 ? static_cast<double>(y - y0) / (y1 - y0) : 0.0;
+      const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+      const std::size_t c[4] = {img.index(x0, y0), img.index(x1, y0), img.index(x0, y1), img.index(x1, y1)};
+      PixelValue p;
+      for (int k = 0; k < 4; ++k) {
+        p.radiance += w[k] * img.radiance[c[k]];
+        p.standardError += w[k] * img.standardError[c[k]];
+      }
+      p.luminance = luminanceFromRadiance(p.radiance);
+      if (!img.inside[i]) p = PixelValue{};
+      store(i, p);
+    }
+    report(toInterpolate.size());
+    xs = nxs;
+    ys = nys;
+    step = half;
+  }
+
+  for (uint8_t t : img.traced) img.tracedPixels += t;
+  img.cameraRays = rays.load();
+  return img;
+}
+
+ViewGeometry viewGeometry(const ViewSpec& view) {
+  const Camera cam(view);
+  ViewGeometry g;
+  const std::size_t n = static_cast<std::size_t>(cam.width()) * cam.height();
+  g.directionView.assign(n, Vec3(0.0));
+  g.solidAngleSr.assign(n, 0.0);
+  for (int y = 0; y < cam.height(); ++y)
+    for (int x = 0; x < cam.width(); ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * cam.width() + x;
+      const auto d = cam.pixelDirection(x, y);
+      if (!d) continue;
+      g.directionView[i] = Vec3(glm::dot(*d, cam.right()), glm::dot(*d, cam.up()), glm::dot(*d, cam.forward()));
+      g.solidAngleSr[i] = cam.pixelSolidAngleSr(x, y);
+    }
+  return g;
+}
+
+std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye, const Vec3& viewDirIn) {
+  const Vec3 viewDir = glm::normalize(viewDirIn);
+  std::vector<SeenLuminaire> out;
+  for (const LuminaireSource& l : tracer.scene().luminaires) {
+    if (l.widthM <= 0.0) continue;
+    const Vec3 toLum = l.position - eye;
+    const double d = glm::length(toLum);
+    if (!(d > 0.0)) continue;
+    const Vec3 dir = toLum / d;
+    const double cosView = glm::dot(dir, viewDir);
+    if (cosView <= 0.0) continue;  // behind the observer
+    const double area = l.circular ? 0.25 * kPi * l.widthM * l.widthM : l.widthM * l.lengthM;
+    const double cosOpening = std::abs(glm::dot(dir, l.axisZ));
+    if (cosOpening < 1e-9) continue;  // seen edge-on
+    SeenLuminaire s;
+    s.name = l.name;
+    s.directionWorld = dir;
+    s.distanceM = d;
+    const double intensity = l.intensityCd(-dir);
+    s.luminanceCdM2 = intensity / (area * cosOpening);
+    s.solidAngleSr = area * cosOpening / (d * d);
+    s.transmittance = photopic(tracer.transmittance(eye, dir, d * (1.0 - 1e-9), kNoShape, kNoShape));
+    s.illuminanceLux = s.transmittance * intensity * cosView / (d * d);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace candela

@@ -1,0 +1,81 @@
+// Luminance images of [[view]]s: camera rays through the tracer, with adaptive image-plane
+// sampling (a coarse lattice first, then refinement only where the luminance varies), and the
+// luminaires the eye sees for glare ratings. docs/views.md explains the method and its limits.
+#pragma once
+
+#include "engine/camera.h"
+#include "engine/case_file.h"
+#include "engine/tracer.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// A rendered view. Pixels are row-major, top row first.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<Rgb> radiance;       // Radiance RGB radiance, W/sr/m²
+  std::vector<double> luminance;   // photopic luminance, cd/m² (179 · photopic(radiance))
+  std::vector<double> standardError;  // of each luminance, cd/m² (traced pixels: from their samples)
+  std::vector<uint8_t> inside;     // 1 where the pixel centre has a ray (0 outside a fisheye's circle)
+  std::vector<uint8_t> traced;     // 1 where the pixel was traced, 0 where interpolated
+  std::size_t tracedPixels = 0;
+  std::size_t cameraRays = 0;
+
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+};
+
+struct RenderSettings {
+  int samplesPerPixel = 4;        // camera rays per traced pixel, stratified over the pixel
+  // Pixels between the samples of the first, coarse pass (rounded down to a power of two; 1 traces
+  // every pixel). Features smaller than this may be missed where the lattice misses them.
+  int coarseStep = 4;
+  // A block of the lattice is refined when its corners' luminances differ by more than this
+  // fraction of their mean plus `noiseAllowance` standard errors of the corner values (so that
+  // Monte Carlo noise alone does not force refinement everywhere).
+  double refineThreshold = 0.05;
+  double noiseAllowance = 3.0;
+  // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
+  // area) so that they appear in images and glare evaluations.
+  bool showLuminaires = true;
+};
+
+// Called with the number of pixels settled (traced or interpolated) so far, of `total`;
+// from several threads at once.
+using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
+
+// Renders a view: every pixel's luminance depends only on (seed, pixel) and the refinement
+// decisions, which depend only on traced values, so the image is identical for any `threads`
+// (0 = all cores).
+Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
+                 const RenderSettings& render = {}, const RenderProgress& progress = {});
+
+// Direction (view frame: x right, y up, z forward) and solid angle (sr) of every pixel centre of
+// a view, for glare evaluations from the image; pixels without a ray get solid angle 0.
+struct ViewGeometry {
+  std::vector<Vec3> directionView;
+  std::vector<double> solidAngleSr;
+};
+ViewGeometry viewGeometry(const ViewSpec& view);
+
+// A photometric luminaire as the eye at `eye` sees it: the luminous opening's mean luminance
+// towards the eye, I(dir to eye) / projected area, and its solid angle (projected area / d²).
+struct SeenLuminaire {
+  std::string name;
+  Vec3 directionWorld{0.0};     // unit, from the eye to the luminaire's photometric centre
+  double distanceM = 0.0;
+  double luminanceCdM2 = 0.0;
+  double solidAngleSr = 0.0;
+  double illuminanceLux = 0.0;  // its direct illuminance on a plane facing `viewDir` at the eye
+  double transmittance = 1.0;   // photopic fraction passing the scene between eye and luminaire
+};
+
+// Luminaires with a luminous opening (point luminaires have no area and are left out) in front of
+// the eye (towards `viewDir`), with their transmittance through the scene (0: hidden).
+std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye, const Vec3& viewDir);
+
+}  // namespace candela

@@ -1,0 +1,91 @@
+#include "reports/tonemap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace candela {
+
+namespace {
+
+// sRGB encoding of a linear value in [0, 1] (IEC 61966-2-1).
+uint8_t srgb8(double v) {
+  v = std::clamp(v, 0.0, 1.0);
+  const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+  return static_cast<uint8_t>(std::lround(255.0 * e));
+}
+
+}  // namespace
+
+Image8 toneMap(int width, int height, const std::vector<double>& lum, const std::vector<Rgb>& rgb,
+               const std::vector<uint8_t>& mask, double key) {
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  if (width <= 0 || height <= 0 || lum.size() != n || (!rgb.empty() && rgb.size() != n) ||
+      (!mask.empty() && mask.size() != n))
+    throw std::invalid_argument("toneMap: need width × height values");
+  auto in = [&](std::size_t i) { return mask.empty() || mask[i] != 0; };
+  // Log-average luminance (eq. 1); δ avoids log 0 on black pixels.
+  constexpr double kDelta = 1e-4;
+  double logSum = 0.0, maxL = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!in(i)) continue;
+    const double l = std::max(lum[i], 0.0);
+    logSum += std::log(kDelta + l);
+    maxL = std::max(maxL, l);
+    ++count;
+  }
+  Image8 img(width, height, Rgb8{0, 0, 0});
+  if (count == 0 || !(maxL > 0.0)) return img;
+  const double avg = std::exp(logSum / count);
+  const double scale = key / avg;
+  const double white = std::max(scale * maxL, 1e-12);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      if (!in(i)) continue;
+      const double l = std::max(lum[i], 0.0);
+      const double ls = scale * l;
+      const double ld = ls * (1.0 + ls / (white * white)) / (1.0 + ls);
+      Rgb c(ld);
+      if (!rgb.empty() && l > 0.0) {
+        // RGB relative to its photopic value, times the displayed luminance.
+        const double p = photopic(rgb[i]);
+        c = p > 0.0 ? rgb[i] * (ld / p) : Rgb(ld);
+      }
+      img.set(x, y, Rgb8{srgb8(c.x), srgb8(c.y), srgb8(c.z)});
+    }
+  return img;
+}
+
+ColorScale luminanceScale(const std::vector<double>& lum, bool logarithmic, std::optional<double> minCdM2,
+                          std::optional<double> maxCdM2) {
+  double hi = 0.0, loPos = 1e300;
+  for (double l : lum) {
+    if (!std::isfinite(l)) continue;
+    hi = std::max(hi, l);
+    if (l > 0.0) loPos = std::min(loPos, l);
+  }
+  if (maxCdM2) hi = *maxCdM2;
+  ColorScale s;
+  if (logarithmic) {
+    const double top = hi > 0.0 ? hi : 1.0;
+    const double lo = minCdM2 ? *minCdM2 : std::max(loPos < 1e300 ? loPos : top * 1e-4, top * 1e-4);
+    if (minCdM2 && maxCdM2) return ColorScale{*minCdM2, *maxCdM2, true};
+    s = niceScale(lo, top, true);
+    if (minCdM2) s.minValue = *minCdM2;
+    if (maxCdM2) s.maxValue = *maxCdM2;
+    return s;
+  }
+  if (minCdM2 && maxCdM2) return ColorScale{*minCdM2, *maxCdM2, false};
+  s = niceScale(0.0, hi, false);
+  if (minCdM2) s.minValue = *minCdM2;
+  if (maxCdM2) s.maxValue = *maxCdM2;
+  return s;
+}
+
+Image8 luminanceFalseColor(int width, int height, const std::vector<double>& lum, const ColorScale& scale) {
+  return falseColorImage(lum, width, height, scale, "cd/m2");
+}
+
+}  // namespace candela

@@ -1,0 +1,31 @@
+// Pictures of luminance images: a tone-mapped preview (what a photograph would show) and a
+// false-colour map of luminance with its legend.
+#pragma once
+
+#include "engine/base/units.h"
+#include "reports/png_writer.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace candela {
+
+// Reinhard, Stark, Shirley & Ferwerda 2002, "Photographic tone reproduction for digital images",
+// global operator (eqs. 1, 2, 4): the log-average luminance maps to the key `key`, Ld =
+// Ls (1 + Ls / Lwhite²) / (1 + Ls) with Lwhite the largest scaled luminance, colour kept by
+// scaling each pixel's RGB by Ld / L; then the sRGB transfer function (IEC 61966-2-1).
+// `rgb` may be empty (grey picture); pixels with mask 0 are black. Rows top to bottom.
+Image8 toneMap(int width, int height, const std::vector<double>& luminanceCdM2, const std::vector<Rgb>& rgb = {},
+               const std::vector<uint8_t>& mask = {}, double key = 0.18);
+
+// A false-colour scale for luminances: linear from 0 to a round number at or above the largest
+// value, or logarithmic over whole decades from max/10⁴ (or the smallest positive value, if
+// larger) to the largest; `minCdM2`/`maxCdM2` fix the range instead (log scales need min > 0).
+ColorScale luminanceScale(const std::vector<double>& luminanceCdM2, bool logarithmic,
+                          std::optional<double> minCdM2 = {}, std::optional<double> maxCdM2 = {});
+
+// The false-colour picture of a luminance image with its legend in cd/m² ("cd/m2").
+Image8 luminanceFalseColor(int width, int height, const std::vector<double>& luminanceCdM2, const ColorScale& scale);
+
+}  // namespace candela
