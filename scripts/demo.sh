@@ -4,5 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh
 scripts/build.sh
-echo "== candela points: illuminance under a 1.2 m x 0.6 m panel in a small room (cases/small-room)" >&2
-build/cli/candela points cases/small-room/room.rad --points cases/small-room/sensors.pts
+echo "== candela run: the open-plan office demo (cases/office): grids, metrics and an HTML report" >&2
+build/cli/candela run cases/office/case.toml --out out/office
+echo "== report: out/office/report.html (summary: out/office/summary.csv)" >&2
