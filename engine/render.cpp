@@ -121,6 +121,11 @@ bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(li
 Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render, const RenderProgress& progress) {
   const Camera cam(view);
+  // The tracer counts diffuse reflections along a path, and the surface a camera ray meets is the
+  // first: with N + 1, an image shows the light of N interreflections, as a grid computed with
+  // `--bounces N` does (N = 0: direct light on the surfaces seen).
+  TraceSettings s = settings;
+  s.maxBounces = settings.maxBounces + 1;
   Image img;
   img.width = cam.width();
   img.height = cam.height();
@@ -149,7 +154,7 @@ Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings
     parallelFor(list.size(), threads, [&](std::size_t k) {
       const std::size_t i = list[k];
       const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
-      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, settings, render, rays));
+      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, s, render, rays));
       img.traced[i] = 1;
       report(1);
     });

@@ -38,7 +38,7 @@ struct RenderSettings {
   // fraction of their mean plus `noiseAllowance` standard errors of the corner values (so that
   // Monte Carlo noise alone does not force refinement everywhere).
   double refineThreshold = 0.05;
-  double noiseAllowance = 3.0;
+  double noiseAllowance = 2.0;
   // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
   // area) so that they appear in images and glare evaluations.
   bool showLuminaires = true;
@@ -48,7 +48,8 @@ struct RenderSettings {
 // from several threads at once.
 using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
 
-// Renders a view: every pixel's luminance depends only on (seed, pixel) and the refinement
+// Renders a view with `settings.maxBounces` interreflections after the direct light on the
+// surfaces seen (the same light a sensor grid gets with those settings). Every pixel's luminance depends only on (seed, pixel) and the refinement
 // decisions, which depend only on traced values, so the image is identical for any `threads`
 // (0 = all cores).
 Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
