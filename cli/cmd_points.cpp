@@ -95,6 +95,7 @@ int runPoints(const PointsOptions& o) {
   if (bounces) settings.maxBounces = *bounces;
   if (samples) settings.hemisphereSamples = *samples;
   settings.seed = seed;
+  settings.method = parseMethod(o.method);
 
   std::vector<SensorPoint> points;
   if (o.pointsFile.empty() || o.pointsFile == "-") {
@@ -145,7 +146,8 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--seed", opts->seed, "random seed (same seed, same numbers; default 1)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--method", opts->method, "path (unbiased path tracer)")->check(CLI::IsMember({"path"}));
+  cmd->add_option("--method", opts->method, "path (unbiased path tracer) | cache (Ward's irradiance cache)")
+      ->check(CLI::IsMember({"path", "cache"}));
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(CLI::IsMember({"embree", "octree"}));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");

@@ -1,6 +1,7 @@
 #include "engine/tracer.h"
 
 #include "engine/embree_accelerator.h"
+#include "engine/light_selection.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
 
@@ -59,6 +60,12 @@ Quality parseQuality(const std::string& s) {
   if (s == "normal") return Quality::kNormal;
   if (s == "high") return Quality::kHigh;
   throw std::invalid_argument("quality must be draft, normal or high, not '" + s + "'");
+}
+
+Method parseMethod(const std::string& s) {
+  if (s == "path") return Method::kPath;
+  if (s == "cache") return Method::kCache;
+  throw std::invalid_argument("method must be path or cache, not '" + s + "'");
 }
 
 TraceSettings settingsForQuality(Quality q) {
@@ -170,11 +177,20 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
                              double misRatio) const {
   Rgb total(0.0);
   const Strata2D strata(k);
+  // Path vertices (no variance wanted): one light chosen per sample (engine/light_selection.h).
+  const bool atPathVertex = variance == nullptr;
+  if (atPathVertex) {
+    total = sampleLightsByImportance(lights_, scene_, p, n, k, rng,
+                                     [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
+                                       return transmittance(o, dir, tMax, skip, lightShape);
+                                     });
+  }
   // Per-thread scratch for horizon-clipped polygon sources (no allocation once warm).
   thread_local std::vector<Vec3> clipped;
   thread_local std::vector<std::array<Vec3, 3>> tris;
   thread_local std::vector<double> cumulative;
   for (const Light& light : lights_) {
+    if (atPathVertex) break;
     Rgb exact(0.0);
     const bool haveExact = unoccludedIrradiance(light, scene_, p, n, exact, &clipped);
     if (haveExact && photopic(exact) <= 0.0) continue;  // the source cannot reach this side
@@ -276,14 +292,16 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
 }
 
 Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
-                         const TraceSettings& s, int diffuse, int split, double misCosPdf, double misRatio) const {
+                         const TraceSettings& s, int diffuse, int split, double misCosPdf, double misRatio,
+                         CacheUse* cache, double* firstHitT) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
-    if (!accel_->intersect(o, d, 0.0, kInf, h, skip))
-      return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
+    const bool hit = accel_->intersect(o, d, 0.0, kInf, h, skip);
+    if (vertex == 0 && firstHitT) *firstHitT = hit ? h.t : kInf;
+    if (!hit) return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
     const Vec3 x = o + h.t * d;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
@@ -339,6 +357,22 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (diffuse + 1 > s.maxBounces) return result;
+    if (cache && cache->cache && diffuse == 0 && cacheable(*m)) {
+      // Ward's cache: direct light sampled here, indirect irradiance interpolated.
+      Rgb e(0.0);
+      cache->scratch.weights.clear();
+      if (cache->cache->interpolate(x, nf, e, &cache->scratch)) {
+        const Vec3 xf = x + off * nf;
+        const Rgb direct = directIrradiance(xf, nf, std::max(1, s.cache.lightSamples), flatSkip, rng, nullptr, 1.0);
+        const Rgb f = beta * m->diffuseReflectance * kInvPi;
+        const double fy = photopic(f);
+        for (const auto& [i, w] : cache->scratch.weights) cache->coefficients.emplace_back(i, fy * w);
+        cache->extrapolationSd += fy * std::sqrt(cache->scratch.extrapolationVariance);
+        return result + f * (direct + e);
+      }
+      ++cache->misses;
+      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1);
+    }
     return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split);
   }
   return result;
@@ -382,7 +416,108 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
 
 IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex,
                                       const TraceSettings& s) const {
+  return irradiance(p, n, pointIndex, s, nullptr);
+}
+
+namespace {
+// The stream of a point's hemisphere directions under the cache method, apart from its other
+// samples, so that phase A (cacheQueries) traces exactly the directions evaluation will.
+constexpr uint64_t kDirectionStream = 0x4000000000000000ULL;
+}  // namespace
+
+bool Tracer::cacheable(const Material& m) {
+  return (m.type == MaterialType::Plastic || m.type == MaterialType::Metal ||
+          m.type == MaterialType::Trans) &&
+         photopic(m.diffuseReflectance) > 0.0 && photopic(m.diffuseTransmittance) <= 0.0 &&
+         photopic(m.specularTransmittance) <= 0.0;
+}
+
+void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                          std::vector<CacheQuery>& out) const {
+  if (s.maxBounces < 1) return;
+  Rng dirRng(s.seed, kDirectionStream + pointIndex);
+  const int mTheta = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
+  const int nPhi = std::max(1, s.hemisphereSamples / mTheta);
+  const Frame frame = Frame::fromNormal(n);
+  for (int c = 0; c < mTheta * nPhi; ++c) {
+    const int j = c / nPhi, k = c % nPhi;
+    const double u1 = (j + dirRng.uniform()) / mTheta;
+    const double u2 = (k + dirRng.uniform()) / nPhi;
+    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    RayHit h;
+    if (!accel_->intersect(p, dir, 0.0, kInf, h, kNoShape)) continue;
+    const Shape& shape = scene_.shapes[h.shape];
+    const Material* m = &scene_.materials[shape.material];
+    if (m->type == MaterialType::Illum) {
+      if (m->alternate < 0) continue;
+      m = &scene_.materials[m->alternate];
+    }
+    if (!cacheable(*m)) continue;
+    const Vec3 x = p + h.t * dir;
+    const Vec3 ng = shapeNormal(shape, x);
+    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape});
+  }
+}
+
+double Tracer::harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) const {
+  const Strata2D strata(std::max(1, rays), 1.0 / kPi);
+  const Frame frame = Frame::fromNormal(q.n);
+  const Vec3 o = q.p + originOffset(q.p) * q.n;
+  double inv = 0.0;
+  for (int i = 0; i < strata.size(); ++i) {
+    const Vec2 u = strata.sample(i, rng);
+    RayHit h;
+    if (accel_->intersect(o, frame.toWorld(sampleCosineHemisphere(u.x, u.y)), 0.0, kInf, h, q.skip))
+      inv += 1.0 / std::max(h.t, 1e-9);
+  }
+  return inv > 0.0 ? strata.size() / inv : kInf;
+}
+
+void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s) const {
+  Rng rng(s.seed, stream);
+  HemisphereSamples h;
+  h.m = std::max(1, static_cast<int>(std::lround(std::sqrt(s.cache.recordSamples / kPi))));
+  h.n = std::max(2, s.cache.recordSamples / h.m);
+  const int cells = h.m * h.n;
+  h.radiance.resize(cells);
+  h.distanceM.resize(cells);
+  h.local.resize(cells);
+  const Frame frame = Frame::fromNormal(r.n);
+  const Vec3 o = r.p + originOffset(r.p) * r.n;
+  for (int c = 0; c < cells; ++c) {
+    const int j = c / h.n, k = c % h.n;
+    const double u1 = (j + rng.uniform()) / h.m;
+    const double u2 = (k + rng.uniform()) / h.n;
+    h.local[c] = sampleCosineHemisphere(u1, u2);
+    const Vec3 dir = frame.toWorld(h.local[c]);
+    // Everything but the sampled sources (which every lookup samples itself): sky and glow seen,
+    // and light reflected by deeper bounces, path traced with Russian roulette by albedo.
+    h.radiance[c] = pathRadiance(o, dir, r.skip, false, rng, s, 1, 1, h.local[c].z * kInvPi, 1.0, nullptr,
+                                 &h.distanceM[c]);
+  }
+  r.e = hemisphereIrradiance(h);
+  const std::array<Vec3, 3> gr = rotationalGradient(h), gt = translationalGradient(h);
+  for (int c = 0; c < 3; ++c) {
+    r.gradR[c] = frame.toWorld(gr[c]);
+    r.gradT[c] = frame.toWorld(gt[c]);
+  }
+  double collapsed = 0.0;
+  for (int c = 0; c + 1 < cells; c += 2) {
+    const double d = photopic(h.radiance[c]) - photopic(h.radiance[c + 1]);
+    collapsed += 0.25 * d * d;
+  }
+  r.variancePhotopic = kPi * kPi * 4.0 * collapsed / (static_cast<double>(cells) * cells);
+}
+
+IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                                      const IrradianceCache* cache) const {
   Rng rng(s.seed, pointIndex);
+  // Path method: directions from the point's one stream (as before the cache existed); cache
+  // method: from a stream of their own (see cacheQueries).
+  Rng dirRng(s.seed, kDirectionStream + pointIndex);
+  Rng& jitter = cache ? dirRng : rng;
+  CacheUse use;
+  use.cache = cache;
   IrradianceEstimate est;
   double var = 0.0;
   const int mThetaN = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
@@ -404,9 +539,11 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   auto sampleCell = [&](int cell, double su, double sv, int sub) {
     // Jittered sample of sub-stratum (su, sv) of `sub`×`sub` inside the cell.
     const int j = cell / nPhi, k = cell % nPhi;
-    const double u1 = (j + (su + rng.uniform()) / sub) / mTheta;
-    const double u2 = (k + (sv + rng.uniform()) / sub) / nPhi;
+    const double u1 = (j + (su + jitter.uniform()) / sub) / mTheta;
+    const double u2 = (k + (sv + jitter.uniform()) / sub) / nPhi;
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    if (cache)
+      return pathRadiance(p, dir, kNoShape, false, rng, s, 0, 1, glm::dot(dir, n) * kInvPi, misRatio, &use);
     return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit, glm::dot(dir, n) * kInvPi, misRatio);
   };
   for (int c = 0; c < cells; ++c) {
@@ -452,6 +589,26 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   double collapsed = 0.0;
   for (int c = 0; c + 1 < cells; c += 2) collapsed += 0.25 * (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
   var += kPi * kPi * 4.0 * collapsed / (static_cast<double>(cells) * cells);
+  if (cache) {
+    // The cached share. The collapsed-strata variance above sees the rays' own noise (direct
+    // light at the hits) but not the records', which many rays share: record i enters the
+    // estimate with coefficient a_i = π/cells Σ_rays beta ρ/π w_i/Σw, records are independent
+    // (own streams), so Var = Σ a_i² Var(E_i). The extrapolation share is taken as fully
+    // correlated over the rays (σ adds linearly).
+    auto& co = use.coefficients;
+    std::sort(co.begin(), co.end());
+    const double scale = kPi / static_cast<double>(cells);
+    for (size_t a = 0; a < co.size();) {
+      size_t b = a;
+      double sum = 0.0;
+      for (; b < co.size() && co[b].first == co[a].first; ++b) sum += co[b].second;
+      const double ai = scale * sum;
+      var += ai * ai * cache->record(co[a].first).variancePhotopic;
+      a = b;
+    }
+    const double sd = scale * use.extrapolationSd;
+    var += sd * sd;
+  }
   est.variancePhotopic = var;
   return est;
 }

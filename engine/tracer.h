@@ -4,6 +4,8 @@
 #pragma once
 
 #include "engine/base/rng.h"
+#include "engine/case_file.h"
+#include "engine/irradiance_cache.h"
 #include "engine/lights.h"
 #include "engine/octree.h"
 #include "engine/quality.h"
@@ -15,6 +17,12 @@
 
 namespace candela {
 
+// How interreflection is computed (Method, engine/case_file.h): an unbiased path tracer (the
+// reference) or Ward's irradiance cache at the first diffuse bounce of sensor rays, deeper
+// bounces path traced (docs/accuracy.md). Parses "path" or "cache"; throws
+// std::invalid_argument otherwise.
+Method parseMethod(const std::string& s);
+
 // Sample counts and limits of one run. Passed explicitly; no global options.
 struct TraceSettings {
   int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
@@ -23,6 +31,8 @@ struct TraceSettings {
   int firstBounceSplit = 16;     // continuations at the first diffuse vertex of each sensor ray
   double adaptiveFraction = 0.5; // extra hemisphere samples spent on the most varying strata
   uint64_t seed = 1;
+  Method method = Method::kPath;
+  CacheSettings cache;           // used by Method::kCache
 };
 
 // The sample counts a preset stands for (see docs/engine.md for why).
@@ -60,6 +70,24 @@ class Tracer {
   // Irradiance on the side of unit normal n at point p. `pointIndex` selects the random stream,
   // so the result depends only on (seed, pointIndex), never on threads.
   IrradianceEstimate irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s) const;
+  // The same with the indirect irradiance at the first diffuse hits of the hemisphere rays taken
+  // from a frozen cache (Method::kCache); a hit no record covers is path traced instead.
+  IrradianceEstimate irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                                const IrradianceCache* cache) const;
+
+  // Irradiance-cache support (engine/irradiance_cache.cpp).
+  // The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that
+  // irradiance(p, n, pointIndex, s, cache) will trace (same directions), appended to out.
+  void cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                    std::vector<CacheQuery>& out) const;
+  // Harmonic mean distance (m) to the surfaces seen from q over `rays` stratified cosine rays
+  // (Ward et al. 1988's R_i); infinity when every ray escapes.
+  double harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) const;
+  // Fills r.e, its gradients and variance from s.cache.recordSamples hemisphere rays, random
+  // stream `stream`; deeper bounces are path traced with Russian roulette (the closure).
+  void computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s) const;
+  // Whether the cache serves diffuse reflection off material m (opaque, diffusely reflecting).
+  static bool cacheable(const Material& m);
 
   // Fraction of light (RGB) that passes from o along unit dir over distance tMax: 0 behind an
   // opaque surface, glass and trans transmit their specular part. Shapes skipA/skipB are ignored.
@@ -90,9 +118,21 @@ class Tracer {
   // takes `split` stratified continuations.
   // misCosPdf: density (per sr) of the cosine sampling that drew dir, for the sky's MIS weight
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
+  // cache: at the first diffuse vertex (diffuse == 0) of a cacheable material, the indirect
+  // irradiance comes from it (CacheUse records the error share and misses). firstHitT: the
+  // distance to the first surface met (infinity when none).
+  struct CacheUse {
+    const IrradianceCache* cache = nullptr;
+    // Coefficient of each record's photopic value in the sum of the rays' radiances
+    // (beta·ρ/π·normalised weight, accumulated over rays; merged per record at the end).
+    std::vector<std::pair<uint32_t, double>> coefficients;
+    double extrapolationSd = 0.0;  // Σ beta·ρ/π·σ_extrapolation over the rays (radiance units)
+    IrradianceCache::Used scratch;
+    int misses = 0;
+  };
   Rgb pathRadiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
                    const TraceSettings& s, int diffuse, int split, double misCosPdf = 0.0,
-                   double misRatio = 1.0) const;
+                   double misRatio = 1.0, CacheUse* cache = nullptr, double* firstHitT = nullptr) const;
   // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
   Rgb diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
                     const TraceSettings& s, int diffuse, int split) const;
