@@ -335,3 +335,54 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
 }
 
 }  // namespace candela
+
+namespace candela {
+
+double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n) {
+  if (light.kind == Light::Kind::Luminaire) {
+    const LuminaireSource& lum = scene.luminaires[light.luminaire];
+    const Vec3 e = p - lum.position;
+    const double d2 = std::max(glm::dot(e, e), 0.25 * lum.sizeM() * lum.sizeM() + 1e-6);
+    const double d = std::sqrt(glm::dot(e, e));
+    const double cosI = d > 0.0 ? std::max(0.0, -glm::dot(n, e) / d) : 1.0;
+    return lum.intensityCd(d > 0.0 ? e / d : Vec3(0, 0, -1)) * (cosI + 0.05) / (kLumensPerWatt * d2);
+  }
+  const double y = photopic(light.radiance);
+  if (light.kind == Light::Kind::Distant) {
+    const DistantSource& d = scene.distant[light.distant];
+    return y * d.solidAngleSr * (std::max(0.0, glm::dot(n, d.direction)) + 0.05);
+  }
+  const Shape& s = scene.shapes[light.shape];
+  Vec3 centre, normal(0.0);
+  switch (s.type) {
+    case ShapeType::Sphere: {
+      const Vec3 e = s.a - p;
+      const double d2 = std::max(glm::dot(e, e), s.r0 * s.r0);
+      return y * kPi * s.r0 * s.r0 / d2 * (std::max(0.0, glm::dot(n, e) / std::sqrt(d2)) + 0.05);
+    }
+    case ShapeType::Ring:
+      centre = s.a;
+      normal = s.n;
+      break;
+    case ShapeType::Cone:
+      centre = 0.5 * (s.a + s.b);
+      break;
+    default: {
+      centre = Vec3(0.0);
+      for (const Vec3& v : light.outline) centre += v;
+      centre /= static_cast<double>(std::max<size_t>(1, light.outline.size()));
+      normal = s.n;
+      // One-sided: nothing reaches a receiver behind the source's plane.
+      if (glm::dot(p - light.outline[0], s.n) <= 0.0) return 0.0;
+      break;
+    }
+  }
+  const Vec3 e = centre - p;
+  const double d2 = std::max(glm::dot(e, e), light.areaM2);
+  const double d = std::sqrt(glm::dot(e, e));
+  const double cosL = glm::length(normal) > 0.0 && d > 0.0 ? std::max(0.0, -glm::dot(normal, e) / d) : 0.5;
+  const double cosI = d > 0.0 ? std::max(0.0, glm::dot(n, e) / d) : 1.0;
+  return y * light.areaM2 * (cosL + 0.05) * (cosI + 0.05) / d2;
+}
+
+}  // namespace candela

@@ -1,0 +1,67 @@
+// Direct light at path vertices (not at sensors): each of the k samples first chooses ONE light
+// with probability p_l = 0.9 · w_l / Σw + 0.1 / n (w_l a cheap estimate of its unoccluded
+// irradiance, mixed with a uniform floor so that every light that can contribute has p_l > 0),
+// then one point of it; the estimate f V / p_l is unbiased and costs one shadow ray per sample
+// whatever the number of lights. Sensors keep the per-light ratio estimator (tracer.cpp), which
+// is exact for wholly visible sources.
+#pragma once
+
+#include "engine/lights.h"
+#include "engine/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace candela {
+
+// A cheap estimate (W/m²) of the unoccluded irradiance from `light` at p (normal n): the source
+// reduced to a point at its centre (the disk and cap formulas for spheres and the sun), clamped
+// near the source. Zero only where the light certainly cannot reach: behind a one-sided source.
+double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
+
+// `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray.
+template <class Visibility>
+Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scene, const Vec3& p, const Vec3& n,
+                             int k, Rng& rng, const Visibility& visibility) {
+  const size_t count = lights.size();
+  if (count == 0) return Rgb(0.0);
+  thread_local std::vector<double> cdf;
+  cdf.resize(count);
+  double total = 0.0;
+  for (size_t l = 0; l < count; ++l) total += lightImportance(lights[l], scene, p, n);
+  if (total <= 0.0) return Rgb(0.0);
+  double acc = 0.0;
+  const double floor = 0.1 / static_cast<double>(count);
+  for (size_t l = 0; l < count; ++l) {
+    const double w = lightImportance(lights[l], scene, p, n);
+    acc += w > 0.0 ? 0.9 * w / total + floor : 0.0;
+    cdf[l] = acc;
+  }
+  if (acc <= 0.0) return Rgb(0.0);
+  const Strata2D strata(k);
+  Rgb sum(0.0);
+  for (int i = 0; i < k; ++i) {
+    const Vec2 u = strata.sample(i, rng);
+    // Choose the light with u.x, reusing its position inside the chosen interval for sampling.
+    const double target = u.x * acc;
+    size_t l = std::lower_bound(cdf.begin(), cdf.end(), target) - cdf.begin();
+    l = std::min(l, count - 1);
+    const double lo = l == 0 ? 0.0 : cdf[l - 1];
+    const double pl = (cdf[l] - lo) / acc;
+    if (pl <= 0.0) continue;
+    const double v1 = std::clamp((target - lo) / (cdf[l] - lo), 0.0, 1.0 - 1e-12);
+    LightSample ls;
+    if (!sampleLight(lights[l], scene, p, v1, u.y, ls)) continue;
+    const double cosI = glm::dot(n, ls.dir);
+    if (cosI <= 0.0) continue;
+    const uint32_t lightShape = lights[l].kind == Light::Kind::Area ? lights[l].shape : kNoShape;
+    const double tMax = std::isinf(ls.distance) ? std::numeric_limits<double>::infinity()
+                                                : ls.distance * (1.0 - 1e-9);
+    sum += ls.weight * cosI * visibility(p, ls.dir, tMax, lightShape) / pl;
+  }
+  return sum / static_cast<double>(k);
+}
+
+}  // namespace candela
