@@ -5,6 +5,7 @@
 // where the luminance changes, and images do not depend on the thread count.
 #include "engine/case_scene.h"
 #include "engine/render.h"
+#include "metrics/contrast.h"
 #include "photometry/ies_lm63.h"
 
 #include <gtest/gtest.h>
@@ -231,6 +232,34 @@ TEST(Render, SameImageForAnyThreadCount) {
   ASSERT_EQ(a.luminance.size(), b.luminance.size());
   for (std::size_t i = 0; i < a.luminance.size(); ++i) ASSERT_EQ(a.luminance[i], b.luminance[i]) << i;
   EXPECT_EQ(a.tracedPixels, b.tracedPixels);
+}
+
+// The contrast rendition factor of a matte task is 1: a dark matte card (ρ = 0.1) on a matte
+// desk (ρ = 0.5) in sunlight has the contrast (ρt − ρb)/ρb that the reference uniform sphere
+// gives. Luminances are means over 5 × 5 pixels well inside each area (each pixel to 0.34 %, the
+// sun disc's cosine spread, so C to 0.7 % of ρt/ρb = 0.2: 0.002 of CRF).
+TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
+  SunlitPlane p;
+  const double rt = 0.1;
+  addUpRect(p.sc, -0.5, 1.0, 0.5, 2.0, 1e-3, addMaterial(p.sc, MaterialType::Plastic, rt));  // 1 m card
+  const Tracer tracer(p.sc);
+  const Vec3 eye(0.0, 0.0, 1.2);
+  const ViewSpec v = view(ViewType::kPerspective, eye, {0, 1.5, -1.2}, {0, 0, 1}, {60, 60}, 41, 41);
+  TraceSettings s;
+  s.maxBounces = 0;
+  const Image img = renderView(tracer, v, s, 2);
+  const Camera cam(v);
+  auto meanAround = [&](const Vec3& target) {
+    const auto c = cam.project(target - eye);
+    double sum = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) sum += img.luminance[img.index(int(c->x) + dx, int(c->y) + dy)];
+    return sum / 9.0;
+  };
+  const double lt = meanAround({0.0, 1.5, 0.0}), lb = meanAround({0.0, 3.0, 0.0});
+  const double crf = contrastRenditionFactor(luminanceContrast(lt, lb), matteReferenceContrast(rt, SunlitPlane::kRho));
+  std::printf("[ measured ] matte task: Lt %.6g, Lb %.6g cd/m2, CRF %.5f\n", lt, lb, crf);
+  EXPECT_NEAR(crf, 1.0, 0.002);
 }
 
 }  // namespace
