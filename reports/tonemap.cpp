@@ -39,7 +39,9 @@ Image8 toneMap(int width, int height, const std::vector<double>& lum, const std:
   if (count == 0 || !(maxL > 0.0)) return img;
   const double avg = std::exp(logSum / count);
   const double scale = key / avg;
-  const double white = std::max(scale * maxL, 1e-12);
+  // Lwhite: the largest scaled luminance, but at least 1, so that a low-contrast picture keeps
+  // its key instead of burning out to white (eq. 4 maps Lwhite itself to 1).
+  const double white = std::max(scale * maxL, 1.0);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;

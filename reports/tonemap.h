@@ -13,7 +13,7 @@ namespace candela {
 
 // Reinhard, Stark, Shirley & Ferwerda 2002, "Photographic tone reproduction for digital images",
 // global operator (eqs. 1, 2, 4): the log-average luminance maps to the key `key`, Ld =
-// Ls (1 + Ls / Lwhite²) / (1 + Ls) with Lwhite the largest scaled luminance, colour kept by
+// Ls (1 + Ls / Lwhite²) / (1 + Ls) with Lwhite the largest scaled luminance (at least 1), colour kept by
 // scaling each pixel's RGB by Ld / L; then the sRGB transfer function (IEC 61966-2-1).
 // `rgb` may be empty (grey picture); pixels with mask 0 are black. Rows top to bottom.
 Image8 toneMap(int width, int height, const std::vector<double>& luminanceCdM2, const std::vector<Rgb>& rgb = {},
