@@ -137,10 +137,6 @@ int runCase(const RunOptions& o) {
 
   // 1. Everything that can be wrong with the input is found here, before any tracing.
   const CaseFile c = readCaseFile(o.caseFile);
-  if (c.sky.present && c.sky.type != SkyType::kNone)
-    throw InputError(c.sky.loc, "[sky] type = \"" + skyTypeName(c.sky.type, c.sky.cieType) +
-                                    "\": daylight is not supported by `candela run` yet (use type = \"none\" or "
-                                    "remove [sky])");
   if (c.grids.empty()) throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
 
   const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);
@@ -148,7 +144,18 @@ int runCase(const RunOptions& o) {
     throw InputError(FileLoc{outDir.string(), 0, 0}, "output path exists and is not a folder");
 
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
-  const Box bounds = scene->bounds();
+  Box bounds = scene->bounds();
+  if (scene->sky) {
+    // Under a sky the scene may be open (a ground, a building): grids must lie within its plan
+    // extent only, as a grid above the ground is outside its bounding box by design.
+    bounds.lo.z = -1e300;
+    bounds.hi.z = 1e300;
+  }
+  // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent).
+  for (const GridSpec& spec : c.grids)
+    if (spec.daylightFactor && !(scene->sky && c.sky.type == SkyType::kCieOvercast))
+      throw InputError(spec.loc, "grid '" + spec.name +
+                                     "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it)");
 
   std::vector<PreparedGrid> grids;
   std::map<std::string, std::string> stems;  // file stem -> grid name, to refuse collisions
@@ -222,21 +229,41 @@ int runCase(const RunOptions& o) {
       {"luminaires", std::to_string(c.luminaires.size())},
       {"calculation points", std::to_string(totalPoints)},
   };
+  if (scene->sky) {
+    const SkyDome& sky = *scene->sky;
+    char buf[160];
+    data.run.settings.emplace_back("sky", skyTypeName(c.sky.type, c.sky.cieType));
+    std::snprintf(buf, sizeof buf, "altitude %.2f deg, azimuth %.2f deg", sky.sunAltitudeDeg, sky.sunAzimuthDeg);
+    data.run.settings.emplace_back("sun position", buf);
+    std::snprintf(buf, sizeof buf, "%.0f lx (sky %.0f lx, sun %.0f lx)", sky.outsideHorizontalLux(),
+                  sky.horizontalSkyLux, sky.horizontalSunLux);
+    data.run.settings.emplace_back("outside horizontal illuminance", buf);
+    std::snprintf(buf, sizeof buf, "%.2f", c.sky.groundReflectance);
+    data.run.settings.emplace_back("ground reflectance", buf);
+  }
   if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()) + " not rendered (not supported yet)");
 
   std::vector<std::vector<ReportPoint>> csvPoints(grids.size());
   std::vector<std::vector<double>> errors(grids.size());
+  std::vector<std::vector<double>> luxValues(grids.size());
   std::size_t k = 0;
   for (std::size_t gi = 0; gi < grids.size(); ++gi) {
     const PreparedGrid& g = grids[gi];
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g);
+    const bool df = g.spec->daylightFactor;
+    const double outside = scene->sky ? scene->sky->outsideHorizontalLux() : 0.0;
     for (const SensorPoint& s : g.grid.points) {
       csvPoints[gi].push_back({s.position, s.normal});
-      r.values.push_back(est[k].illuminanceLux());
+      luxValues[gi].push_back(est[k].illuminanceLux());
       errors[gi].push_back(est[k].standardErrorLux());
+      r.values.push_back(df ? 100.0 * est[k].illuminanceLux() / outside : est[k].illuminanceLux());
       ++k;
+    }
+    if (df) {
+      r.quantity = "Daylight factor";
+      r.unit = "%";
     }
     r.stats = computeGridStats(r.values);
     r.targets = {g.spec->targetAverageLux, g.spec->targetUniformity};
@@ -250,7 +277,11 @@ int runCase(const RunOptions& o) {
   try {
     fs::create_directories(outDir);
     for (std::size_t gi = 0; gi < grids.size(); ++gi)
-      writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], data.grids[gi].values, {{"error_lux", errors[gi]}});
+      if (grids[gi].spec->daylightFactor)
+        writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], luxValues[gi],
+                     {{"error_lux", errors[gi]}, {"daylight_factor_pct", data.grids[gi].values}});
+      else
+        writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], luxValues[gi], {{"error_lux", errors[gi]}});
     writeSummaryCsv(outDir, data);
     writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
     writeHtmlReport(outDir / "report.html", data);
@@ -264,8 +295,14 @@ int runCase(const RunOptions& o) {
     std::ostringstream s;
     for (const GridReport& r : data.grids) {
       char buf[256];
-      std::snprintf(buf, sizeof buf, "%-20s %6zu points  Eavg %7.1f lx  Emin %7.1f lx  U0 %.2f  %s\n", r.name.c_str(),
-                    r.stats.count, r.stats.averageLux, r.stats.minimumLux, r.stats.u0, verdictName(r.check.overall));
+      if (r.unit == "%")
+        std::snprintf(buf, sizeof buf, "%-20s %6zu points  DFavg %5.2f %%  DFmin %5.2f %%  DFmedian %5.2f %%  %s\n",
+                      r.name.c_str(), r.stats.count, r.stats.averageLux, r.stats.minimumLux, r.stats.medianLux,
+                      verdictName(r.check.overall));
+      else
+        std::snprintf(buf, sizeof buf, "%-20s %6zu points  Eavg %7.1f lx  Emin %7.1f lx  U0 %.2f  %s\n",
+                      r.name.c_str(), r.stats.count, r.stats.averageLux, r.stats.minimumLux, r.stats.u0,
+                      verdictName(r.check.overall));
       s << buf;
     }
     s << "run time " << fixed(data.run.runTimeS, 1) << " s; results in " << outDir.string() << "\n";

@@ -41,6 +41,10 @@ GridStats computeGridStats(const std::vector<double>& lux, const std::vector<dou
   s.averageLux = weights.empty() ? averageIlluminance(lux) : weightedAverageIlluminance(lux, weights);
   s.minimumLux = minimumIlluminance(lux);
   s.maximumLux = maximumIlluminance(lux);
+  std::vector<double> sorted(lux);
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  s.medianLux = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
   s.u0 = s.averageLux > 0.0 ? s.minimumLux / s.averageLux : 0.0;
   s.ud = s.maximumLux > 0.0 ? s.minimumLux / s.maximumLux : 0.0;
   return s;

@@ -12,6 +12,7 @@ struct GridStats {
   double averageLux = 0.0;  // Eavg (area-weighted when weights are given)
   double minimumLux = 0.0;  // Emin
   double maximumLux = 0.0;  // Emax
+  double medianLux = 0.0;   // median (mean of the two middle values for an even count)
   double u0 = 0.0;          // overall uniformity Emin/Eavg (EN 12464-1:2021, 3.1.x "U0"); 0 if Eavg = 0
   double ud = 0.0;          // diversity Emin/Emax; 0 if Emax = 0
 };

@@ -55,7 +55,7 @@ std::string summaryCsv(const SummaryData& data) {
   std::string settings;
   for (const auto& [k, v] : data.run.settings) settings += (settings.empty() ? "" : ";") + k + "=" + v;
   std::string out =
-      "case,grid,unit,points,average,minimum,maximum,u0,ud,target_average,target_uniformity,"
+      "case,grid,unit,points,average,minimum,maximum,median,u0,ud,target_average,target_uniformity,"
       "verdict_average,verdict_uniformity,verdict,seed,version,run_time_s,settings\n";
   for (const GridReport& g : data.grids) {
     const GridStats& s = g.stats;
@@ -66,6 +66,7 @@ std::string summaryCsv(const SummaryData& data) {
                                   formatNumber(s.averageLux),
                                   formatNumber(s.minimumLux),
                                   formatNumber(s.maximumLux),
+                                  formatNumber(s.medianLux),
                                   formatNumber(s.u0),
                                   formatNumber(s.ud),
                                   g.targets.averageLux ? formatNumber(*g.targets.averageLux) : "",

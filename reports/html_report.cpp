@@ -136,6 +136,8 @@ std::string htmlReport(const ReportData& data) {
       << "</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
       << "</td><td class=\"num\">—</td><td></td></tr>\n";
+    h << "<tr><td>Median</td><td class=\"num\">" << valueText(g.stats.medianLux) << u
+      << "</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">E<sub>min</sub> / E<sub>max</sub></span></td><td class=\"num\">"
       << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";

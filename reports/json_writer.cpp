@@ -42,6 +42,7 @@ std::string summaryJson(const SummaryData& data) {
                      {"average", number(g.stats.averageLux)},
                      {"minimum", number(g.stats.minimumLux)},
                      {"maximum", number(g.stats.maximumLux)},
+                     {"median", number(g.stats.medianLux)},
                      {"u0", number(g.stats.u0)},
                      {"ud", number(g.stats.ud)},
                      {"target_average", optionalNumber(g.targets.averageLux)},

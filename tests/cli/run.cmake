@@ -15,8 +15,9 @@ candela_run_test(missing_scene 2 "missing_scene/case.toml:3: scene file 'no_such
                  missing_scene/case.toml)
 candela_run_test(bad_scene 2 "bad.rad:6: polygon 'broken' needs at least 3 vertices" bad_scene/case.toml)
 candela_run_test(grid_outside 2 "outside/case.toml:9: grid 'terrace' reaches outside the scene" outside/case.toml)
-candela_run_test(daylight 2 "daylight/case.toml:9: [sky] type = \"cie-overcast\": daylight is not supported"
-                 daylight/case.toml)
+candela_run_test(df_needs_overcast 2 "df_needs_overcast/case.toml:5: grid 'df': daylight_factor needs"
+                 df_needs_overcast/case.toml)
+candela_run_test(daylight_factor 0 "\"unit\": \"%\"" daylight_factor/case.toml)
 candela_run_test(same_csv 2 "same_file/case.toml:10: grids 'a b' and 'a_b' would both write a_b.csv"
                  same_file/case.toml)
 candela_run_test(grid_named_summary 2 "grid_named_summary/case.toml:5: grid name 'summary'"

@@ -55,3 +55,14 @@ TEST(GridStats, WeightErrors) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(GridStatsMedian, OddAndEvenCounts) {
+  EXPECT_DOUBLE_EQ(computeGridStats({5.0, 1.0, 3.0}).medianLux, 3.0);
+  EXPECT_DOUBLE_EQ(computeGridStats({4.0, 1.0, 3.0, 10.0}).medianLux, 3.5);
+}
+
+}  // namespace
+}  // namespace candela
