@@ -16,5 +16,6 @@ void addSunCommand(CLI::App& app, Action& action);
 void addLuminaireCommand(CLI::App& app, Action& action);
 void addRunCommand(CLI::App& app, Action& action);
 void addValidateCommand(CLI::App& app, Action& action);
+void addRenderCommand(CLI::App& app, Action& action);
 
 }  // namespace candela::cli

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   candela::cli::addLuminaireCommand(app, action);
   candela::cli::addRunCommand(app, action);
   candela::cli::addValidateCommand(app, action);
+  candela::cli::addRenderCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,207 @@
+// candela render CASE.toml --view NAME [--out DIR]: renders one [[view]] of a case into
+// <out>/<name>.exr (luminance in cd/m², float), <name>.png (false colour with legend) and
+// <name>_preview.png (tone mapped), and prints the view's glare ratings: UGR from the luminaires
+// (CIE 117) for every view, DGP from the image (Wienold & Christoffersen 2006) for fisheye views.
+// Everything is read and checked before tracing; each file is written atomically.
+#include "cli/commands.h"
+#include "cli/progress.h"
+
+#include "engine/base/error.h"
+#include "engine/case_file.h"
+#include "engine/case_scene.h"
+#include "engine/render.h"
+#include "metrics/glare.h"
+#include "reports/exr_writer.h"
+#include "reports/report_data.h"
+#include "reports/tonemap.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace candela::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderOptions {
+  std::string caseFile;
+  std::string view;
+  std::string outDir;   // empty: the case's [output] dir
+  std::string quality;  // empty: the case's
+  int bounces = -1;     // < 0: the case's, else the quality preset's
+  int samples = -1;
+  int64_t seed = -1;
+  int threads = -1;
+  int pixelSamples = 4;
+  int coarseStep = 4;
+  std::string scale = "log";
+  double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
+  double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
+  bool quiet = false;
+};
+
+std::string num(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+int renderCase(const RenderOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const CaseFile c = readCaseFile(o.caseFile);
+  const ViewSpec* view = nullptr;
+  for (const ViewSpec& v : c.views)
+    if (v.name == o.view) view = &v;
+  if (!view) {
+    std::string names;
+    for (const ViewSpec& v : c.views) names += (names.empty() ? "" : ", ") + v.name;
+    throw InputError(FileLoc{c.path.string(), 0, 0},
+                     "no [[view]] named '" + o.view + "' (" + (names.empty() ? "the case has no views" : "views: " + names) + ")");
+  }
+  if (o.scale == "log" && o.minCdM2 == 0.0)
+    throw InputError(FileLoc{c.path.string(), 0, 0}, "--min must be above 0 cd/m2 on a log scale");
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+
+  Quality quality = c.settings.quality;
+  if (!o.quality.empty()) quality = parseQuality(o.quality);
+  TraceSettings settings = settingsForQuality(quality);
+  if (c.settings.bounces) settings.maxBounces = *c.settings.bounces;
+  if (c.settings.samples) settings.hemisphereSamples = *c.settings.samples;
+  if (o.bounces >= 0) settings.maxBounces = o.bounces;
+  if (o.samples > 0) settings.hemisphereSamples = o.samples;
+  settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
+  const int threads = o.threads >= 0 ? o.threads : c.settings.threads;
+  const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);
+
+  RenderSettings rs;
+  rs.samplesPerPixel = o.pixelSamples;
+  rs.coarseStep = o.coarseStep;
+  const Tracer tracer(*scene);
+  Image img;
+  {
+    ProgressBar bar("rendering " + view->name, static_cast<std::size_t>(view->resolution.x) * view->resolution.y,
+                    ProgressBar::wanted(o.quiet));
+    img = renderView(tracer, *view, settings, threads, rs, [&bar](std::size_t done, std::size_t) { bar.update(done); });
+    bar.finish();
+  }
+
+  // Glare. UGR: the luminaires seen from the view point along its direction; the background is
+  // the indirect illuminance at the eye, the vertical illuminance (the tracer's estimate at the
+  // eye, facing the view) less the luminaires' direct share, over π (CIE 117).
+  const Camera cam(*view);
+  const std::vector<SeenLuminaire> seen = seenLuminaires(tracer, cam.position(), cam.forward());
+  std::vector<GlareSource> ugrSources;
+  double directLux = 0.0;
+  for (const SeenLuminaire& s : seen) {
+    directLux += s.illuminanceLux;
+    if (s.transmittance <= 0.0) continue;
+    const Vec3 d = s.directionWorld;
+    const Vec3 dv(glm::dot(d, cam.right()), glm::dot(d, cam.up()), glm::dot(d, cam.forward()));
+    ugrSources.push_back({s.luminanceCdM2 * s.transmittance, s.solidAngleSr, positionIndex(dv)});
+  }
+  const double evLux = tracer.irradiance(cam.position(), cam.forward(), 0, settings).illuminanceLux();
+  const double backgroundCdM2 = std::max(evLux - directLux, 0.0) / kPi;
+  std::optional<ImageGlare> dgp;
+  if (view->type == ViewType::kFisheye) {
+    const ViewGeometry g = viewGeometry(*view);
+    GlareDetection det;
+    det.thresholdCdM2 = o.glareThresholdCdM2;
+    dgp = evaluateImageGlare(img.luminance, g.directionView, g.solidAngleSr, img.width, img.height, det);
+  }
+
+  // Pictures.
+  std::vector<Rgb> rgbCdM2(img.radiance.size());
+  for (std::size_t i = 0; i < rgbCdM2.size(); ++i) rgbCdM2[i] = kLumensPerWatt * img.radiance[i];
+  const bool logScale = o.scale == "log";
+  const ColorScale scale = luminanceScale(img.luminance, logScale, o.minCdM2 >= 0.0 ? std::optional(o.minCdM2) : std::nullopt,
+                                          o.maxCdM2 > 0.0 ? std::optional(o.maxCdM2) : std::nullopt);
+  const std::string stem = safeFileName(view->name);
+  const fs::path exrPath = outDir / (stem + ".exr"), pngPath = outDir / (stem + ".png"),
+                 previewPath = outDir / (stem + "_preview.png");
+  try {
+    fs::create_directories(outDir);
+    writeLuminanceExr(exrPath, img.width, img.height, img.luminance, rgbCdM2,
+                      "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
+    writePng(pngPath, luminanceFalseColor(img.width, img.height, img.luminance, scale));
+    writePng(previewPath, toneMap(img.width, img.height, img.luminance, img.radiance, img.inside));
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
+  }
+
+  if (!o.quiet) {
+    double sum = 0.0, omega = 0.0, peak = 0.0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const std::size_t i = img.index(x, y);
+        const double w = cam.pixelSolidAngleSr(x, y);
+        sum += img.luminance[i] * w;
+        omega += w;
+        peak = std::max(peak, img.luminance[i]);
+      }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::ostringstream s;
+    s << "view " << view->name << ": " << img.width << " x " << img.height << " "
+      << (view->type == ViewType::kFisheye ? "fisheye" : "perspective") << ", " << img.tracedPixels << " of "
+      << img.width * img.height << " pixels traced (" << rs.samplesPerPixel << " rays each)\n";
+    s << "luminance: mean " << num(omega > 0.0 ? sum / omega : 0.0, 1) << " cd/m2, max " << num(peak, 1) << " cd/m2\n";
+    s << "vertical illuminance at the eye " << num(evLux, 1) << " lx\n";
+    if (ugrSources.empty())
+      s << "UGR: no luminaire with a luminous area in front of the observer\n";
+    else
+      s << "UGR " << num(unifiedGlareRating(backgroundCdM2, ugrSources), 1) << " (" << ugrSources.size()
+        << " luminaires, background " << num(backgroundCdM2, 1) << " cd/m2)\n";
+    if (dgp)
+      s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
+        << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";
+    s << "wrote " << exrPath.string() << ", " << pngPath.string() << ", " << previewPath.string() << " in "
+      << num(seconds, 1) << " s\n";
+    std::cout << s.str() << std::flush;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, Action& action) {
+  auto opts = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand("render", "render a [[view]] of a case: luminance EXR, false colour and preview PNGs, glare");
+  cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
+  cmd->add_option("--view", opts->view, "name of the [[view]] to render")->required();
+  cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
+  cmd->add_option("--quality", opts->quality, "draft | normal | high (default: the case's, else normal)")
+      ->check(CLI::IsMember({"draft", "normal", "high"}));
+  cmd->add_option("--bounces", opts->bounces, "diffuse interreflections followed (default: case, else quality)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--samples", opts->samples, "hemisphere samples for the eye's illuminance (default: case, else quality)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", opts->seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", opts->threads, "threads, 0 = all cores (default: the case's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--pixel-samples", opts->pixelSamples, "camera rays per traced pixel (default 4)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--scale", opts->scale, "false-colour scale: log | linear (default log)")
+      ->check(CLI::IsMember({"log", "linear"}));
+  cmd->add_option("--min", opts->minCdM2, "false-colour scale minimum, cd/m2 (default automatic)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max", opts->maxCdM2, "false-colour scale maximum, cd/m2 (default automatic)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--glare-threshold", opts->glareThresholdCdM2,
+                  "DGP glare-source threshold, cd/m2 (default 5 x the image's mean luminance)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors only)");
+  cmd->callback([opts, &action] { action = [opts] { return renderCase(*opts); }; });
+}
+
+}  // namespace candela::cli

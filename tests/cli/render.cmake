@@ -1,0 +1,13 @@
+# candela render: both projections render and report their glare ratings; bad input exits 2 with
+# one line.
+set(RENDER_CASE ${PROJECT_SOURCE_DIR}/tests/cli/render/case.toml)
+set(RENDER_OUT ${CMAKE_CURRENT_BINARY_DIR}/render_out)
+candela_cli_test(render.perspective 0 "luminaires, background" render ${RENDER_CASE} --view door --out ${RENDER_OUT})
+candela_cli_test(render.perspective_files 0 "door.exr, ${RENDER_OUT}/door.png, ${RENDER_OUT}/door_preview.png"
+                 render ${RENDER_CASE} --view door --out ${RENDER_OUT} --threads 1)
+candela_cli_test(render.fisheye 0 "glare sources above" render ${RENDER_CASE} --view eye --out ${RENDER_OUT} --scale linear)
+candela_cli_test(render.no_such_view 2 "render/case.toml: no [[view]] named 'nope' (views: door, eye)"
+                 render ${RENDER_CASE} --view nope --out ${RENDER_OUT})
+candela_cli_test(render.view_required 2 "--view" render ${RENDER_CASE})
+candela_cli_test(render.bad_scale 2 "--scale" render ${RENDER_CASE} --view door --scale cubic)
+candela_cli_test(render.missing_case 2 "no_such_case.toml" render no_such_case.toml --view door)
