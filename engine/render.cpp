@@ -191,8 +191,11 @@ Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings
           in += img.inside[i];
         }
         const bool edge = in != 0 && in != 4;  // the fisheye's circle crosses the block
+        // Corners too noisy to tell whether the block varies (standard error above the threshold)
+        // are refined as well: interpolating noise would print the lattice into the image.
+        const bool noisy = se > render.refineThreshold * mean;
         busy[static_cast<std::size_t>(by) * bw + bx] =
-            edge || hi - lo > render.refineThreshold * mean + render.noiseAllowance * std::sqrt(2.0) * se;
+            edge || noisy || hi - lo > render.refineThreshold * mean + render.noiseAllowance * std::sqrt(2.0) * se;
       }
     std::vector<std::size_t> toTrace, toInterpolate;
     for (int y : nys)

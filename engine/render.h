@@ -36,7 +36,8 @@ struct RenderSettings {
   int coarseStep = 4;
   // A block of the lattice is refined when its corners' luminances differ by more than this
   // fraction of their mean plus `noiseAllowance` standard errors of the corner values (so that
-  // Monte Carlo noise alone does not force refinement everywhere).
+  // converged Monte Carlo noise alone does not force refinement), or when a corner's standard
+  // error exceeds this fraction of the mean (too noisy to tell: refined, never interpolated).
   double refineThreshold = 0.05;
   double noiseAllowance = 2.0;
   // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
