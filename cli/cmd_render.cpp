@@ -11,7 +11,6 @@
 #include "engine/case_scene.h"
 #include "engine/render.h"
 #include "metrics/glare.h"
-#include "reports/exr_writer.h"
 #include "reports/report_data.h"
 #include "reports/tonemap.h"
 
@@ -93,22 +92,16 @@ int renderCase(const RenderOptions& o) {
     bar.finish();
   }
 
-  // Glare. UGR: the luminaires seen from the view point along its direction; the background is
-  // the indirect illuminance at the eye, the vertical illuminance (the tracer's estimate at the
-  // eye, facing the view) less the luminaires' direct share, over π (CIE 117).
+  // Glare. UGR: the luminaires seen from the view point along its direction, against the
+  // background of the indirect illuminance at the eye (CIE 117).
   const Camera cam(*view);
-  const std::vector<SeenLuminaire> seen = seenLuminaires(tracer, cam.position(), cam.forward());
+  const EyeLight eye = eyeLight(tracer, *view, settings);
   std::vector<GlareSource> ugrSources;
-  double directLux = 0.0;
-  for (const SeenLuminaire& s : seen) {
-    directLux += s.illuminanceLux;
-    if (s.transmittance <= 0.0) continue;
-    const Vec3 d = s.directionWorld;
-    const Vec3 dv(glm::dot(d, cam.right()), glm::dot(d, cam.up()), glm::dot(d, cam.forward()));
-    ugrSources.push_back({s.luminanceCdM2 * s.transmittance, s.solidAngleSr, positionIndex(dv)});
-  }
-  const double evLux = tracer.irradiance(cam.position(), cam.forward(), 0, settings).illuminanceLux();
-  const double backgroundCdM2 = std::max(evLux - directLux, 0.0) / kPi;
+  for (const SeenLuminaire& s : eye.luminaires)
+    if (s.transmittance > 0.0)
+      ugrSources.push_back({s.luminanceCdM2 * s.transmittance, s.solidAngleSr, positionIndex(s.directionView)});
+  const double evLux = eye.verticalLux;
+  const double backgroundCdM2 = eye.backgroundLuminanceCdM2();
   std::optional<ImageGlare> dgp;
   if (view->type == ViewType::kFisheye) {
     const ViewGeometry g = viewGeometry(*view);
@@ -124,14 +117,10 @@ int renderCase(const RenderOptions& o) {
   const ColorScale scale = luminanceScale(img.luminance, logScale, o.minCdM2 >= 0.0 ? std::optional(o.minCdM2) : std::nullopt,
                                           o.maxCdM2 > 0.0 ? std::optional(o.maxCdM2) : std::nullopt);
   const std::string stem = safeFileName(view->name);
-  const fs::path exrPath = outDir / (stem + ".exr"), pngPath = outDir / (stem + ".png"),
-                 previewPath = outDir / (stem + "_preview.png");
+  ViewImagePaths paths;
   try {
-    fs::create_directories(outDir);
-    writeLuminanceExr(exrPath, img.width, img.height, img.luminance, rgbCdM2,
-                      "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
-    writePng(pngPath, luminanceFalseColor(img.width, img.height, img.luminance, scale));
-    writePng(previewPath, toneMap(img.width, img.height, img.luminance, img.radiance, img.inside));
+    paths = writeViewImages(outDir, stem, img.width, img.height, img.luminance, rgbCdM2, img.inside, scale,
+                            "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
   } catch (const fs::filesystem_error& e) {
     throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
   } catch (const std::runtime_error& e) {
@@ -163,7 +152,7 @@ int renderCase(const RenderOptions& o) {
     if (dgp)
       s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
         << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";
-    s << "wrote " << exrPath.string() << ", " << pngPath.string() << ", " << previewPath.string() << " in "
+    s << "wrote " << paths.exr.string() << ", " << paths.falseColor.string() << ", " << paths.preview.string() << " in "
       << num(seconds, 1) << " s\n";
     std::cout << s.str() << std::flush;
   }

@@ -285,4 +285,19 @@ std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye,
   return out;
 }
 
+double EyeLight::backgroundLuminanceCdM2() const { return std::max(verticalLux - directLuminaireLux, 0.0) / kPi; }
+
+EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, uint64_t stream) {
+  const Camera cam(view);
+  EyeLight e;
+  e.luminaires = seenLuminaires(tracer, cam.position(), cam.forward());
+  for (SeenLuminaire& l : e.luminaires) {
+    const Vec3& d = l.directionWorld;
+    l.directionView = Vec3(glm::dot(d, cam.right()), glm::dot(d, cam.up()), glm::dot(d, cam.forward()));
+    e.directLuminaireLux += l.illuminanceLux;
+  }
+  e.verticalLux = tracer.irradiance(cam.position(), cam.forward(), stream, settings).illuminanceLux();
+  return e;
+}
+
 }  // namespace candela

@@ -69,6 +69,7 @@ ViewGeometry viewGeometry(const ViewSpec& view);
 struct SeenLuminaire {
   std::string name;
   Vec3 directionWorld{0.0};     // unit, from the eye to the luminaire's photometric centre
+  Vec3 directionView{0.0};      // the same in the view frame (x right, y up, z forward), when known
   double distanceM = 0.0;
   double luminanceCdM2 = 0.0;
   double solidAngleSr = 0.0;
@@ -79,5 +80,18 @@ struct SeenLuminaire {
 // Luminaires with a luminous opening (point luminaires have no area and are left out) in front of
 // the eye (towards `viewDir`), with their transmittance through the scene (0: hidden).
 std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye, const Vec3& viewDir);
+
+// The light at a view's eye point for glare ratings: the vertical illuminance (facing the view
+// direction, the tracer's estimate with `settings`, random stream `stream`), the luminaires seen
+// (with view-frame directions for position indices) and their direct share of that illuminance.
+struct EyeLight {
+  double verticalLux = 0.0;
+  double directLuminaireLux = 0.0;
+  std::vector<SeenLuminaire> luminaires;
+  // UGR's background luminance (CIE 117): the indirect illuminance at the eye over π, the
+  // indirect part being everything but the luminaires' direct light.
+  double backgroundLuminanceCdM2() const;
+};
+EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, uint64_t stream = 0);
 
 }  // namespace candela

@@ -1,5 +1,7 @@
 #include "reports/tonemap.h"
 
+#include "reports/exr_writer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -88,6 +90,17 @@ ColorScale luminanceScale(const std::vector<double>& lum, bool logarithmic, std:
 
 Image8 luminanceFalseColor(int width, int height, const std::vector<double>& lum, const ColorScale& scale) {
   return falseColorImage(lum, width, height, scale, "cd/m2");
+}
+
+ViewImagePaths writeViewImages(const std::filesystem::path& dir, const std::string& stem, int width, int height,
+                               const std::vector<double>& lum, const std::vector<Rgb>& rgb,
+                               const std::vector<uint8_t>& mask, const ColorScale& scale, const std::string& comment) {
+  ViewImagePaths p{dir / (stem + ".exr"), dir / (stem + ".png"), dir / (stem + "_preview.png")};
+  std::filesystem::create_directories(dir);
+  writeLuminanceExr(p.exr, width, height, lum, rgb, comment);
+  writePng(p.falseColor, luminanceFalseColor(width, height, lum, scale));
+  writePng(p.preview, toneMap(width, height, lum, rgb, mask));
+  return p;
 }
 
 }  // namespace candela

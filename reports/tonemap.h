@@ -6,7 +6,9 @@
 #include "reports/png_writer.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace candela {
@@ -27,5 +29,17 @@ ColorScale luminanceScale(const std::vector<double>& luminanceCdM2, bool logarit
 
 // The false-colour picture of a luminance image with its legend in cd/m² ("cd/m2").
 Image8 luminanceFalseColor(int width, int height, const std::vector<double>& luminanceCdM2, const ColorScale& scale);
+
+// The three files of a rendered view in `dir`: <stem>.exr (Y and, when `rgbCdM2` is given, R, G,
+// B in cd/m²; reports/exr_writer.h), <stem>.png (false colour on `scale`) and <stem>_preview.png
+// (tone mapped; pixels with mask 0 black). Creates `dir`; each file is written atomically.
+// Throws std::runtime_error or std::filesystem::filesystem_error on failure.
+struct ViewImagePaths {
+  std::filesystem::path exr, falseColor, preview;
+};
+ViewImagePaths writeViewImages(const std::filesystem::path& dir, const std::string& stem, int width, int height,
+                               const std::vector<double>& luminanceCdM2, const std::vector<Rgb>& rgbCdM2,
+                               const std::vector<uint8_t>& mask, const ColorScale& scale,
+                               const std::string& comment = {});
 
 }  // namespace candela
