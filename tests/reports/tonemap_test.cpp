@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <unistd.h>
 
 namespace candela {
 namespace {
@@ -45,6 +47,18 @@ TEST(ToneMap, LuminanceScales) {
   EXPECT_DOUBLE_EQ(fixed.maxValue, 1000.0);
   const Image8 fc = luminanceFalseColor(4, 1, lum, lin);
   EXPECT_GT(fc.width, 4);  // the legend is drawn to the right
+}
+
+// The three view files land in the folder (created), named after the stem.
+TEST(ToneMap, WriteViewImagesWritesThreeFiles) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("candela_view_images_" + std::to_string(::getpid())) / "sub";
+  const std::vector<double> lum = {1.0, 10.0, 100.0, 1000.0};
+  const ViewImagePaths p = writeViewImages(dir, "v", 2, 2, lum, {}, {}, luminanceScale(lum, true), "c");
+  EXPECT_EQ(p.exr, dir / "v.exr");
+  EXPECT_EQ(p.preview, dir / "v_preview.png");
+  for (const fs::path& f : {p.exr, p.falseColor, p.preview}) EXPECT_GT(fs::file_size(f), 0u) << f;
+  fs::remove_all(dir.parent_path());
 }
 
 }  // namespace
