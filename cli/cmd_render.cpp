@@ -146,9 +146,15 @@ int renderCase(const RenderOptions& o) {
     s << "vertical illuminance at the eye " << num(evLux, 1) << " lx\n";
     if (ugrSources.empty())
       s << "UGR: no luminaire with a luminous area in front of the observer\n";
-    else
+    else {
+      // CIE 117's formula holds for sources of 0.0003 to 0.1 sr; say so when some are outside.
+      std::size_t outside = 0;
+      for (const GlareSource& g : ugrSources) outside += g.solidAngleSr < 3e-4 || g.solidAngleSr > 0.1;
       s << "UGR " << num(unifiedGlareRating(backgroundCdM2, ugrSources), 1) << " (" << ugrSources.size()
-        << " luminaires, background " << num(backgroundCdM2, 1) << " cd/m2)\n";
+        << " luminaires, background " << num(backgroundCdM2, 1) << " cd/m2";
+      if (outside > 0) s << "; " << outside << " outside CIE 117's 0.0003-0.1 sr";
+      s << ")\n";
+    }
     if (dgp)
       s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
         << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";

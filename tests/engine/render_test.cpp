@@ -262,5 +262,35 @@ TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
   EXPECT_NEAR(crf, 1.0, 0.002);
 }
 
+// With nothing in the scene but a far-field luminaire (4.3 m away, beyond 5 × its 0.6 m size),
+// the vertical illuminance at the eye is the luminaire's direct I cos ι / d² exactly, so UGR's
+// background (the indirect part over π) is 0.
+TEST(Render, EyeLightSeparatesDirectFromIndirect) {
+  std::ostringstream ies;
+  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
+      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
+  for (int i = 0; i <= 90; i += 5) ies << i << " ";
+  ies << "\n0\n";
+  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
+  ies << "\n";
+  Scene sc;
+  LuminairePlacement lp;
+  lp.positionM = {0, 4, 2.8};
+  sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  const Tracer tracer(sc);
+  const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.2}, {0, 1, 0}, {0, 0, 1}, {60, 45}, 8, 6);
+  const EyeLight e = eyeLight(tracer, v, TraceSettings{});
+  ASSERT_EQ(e.luminaires.size(), 1u);
+  const Vec3 d = lp.positionM - v.positionM;
+  const double dist = glm::length(d);
+  const double want = sc.luminaires[0].intensityCd(-d / dist) * (d.y / dist) / (dist * dist);
+  EXPECT_NEAR(e.directLuminaireLux, want, 1e-9 * want);
+  EXPECT_NEAR(e.verticalLux, want, 1e-9 * want);
+  EXPECT_NEAR(e.backgroundLuminanceCdM2(), 0.0, 1e-9 * want);
+  // The view-frame direction: straight ahead and up by atan(1.6/4).
+  EXPECT_NEAR(e.luminaires[0].directionView.x, 0.0, 1e-12);
+  EXPECT_NEAR(std::atan2(e.luminaires[0].directionView.y, e.luminaires[0].directionView.z), std::atan2(1.6, 4.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace candela
