@@ -67,6 +67,8 @@ int renderCase(const RenderOptions& o) {
   }
   if (o.scale == "log" && o.minCdM2 == 0.0)
     throw InputError(FileLoc{c.path.string(), 0, 0}, "--min must be above 0 cd/m2 on a log scale");
+  if (o.minCdM2 >= 0.0 && o.maxCdM2 > 0.0 && o.maxCdM2 <= o.minCdM2)
+    throw InputError(FileLoc{c.path.string(), 0, 0}, "--max must be above --min");
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
 
   Quality quality = c.settings.quality;
@@ -155,6 +157,8 @@ int renderCase(const RenderOptions& o) {
       if (outside > 0) s << "; " << outside << " outside CIE 117's 0.0003-0.1 sr";
       s << ")\n";
     }
+    if (dgp && std::min(view->fovDeg.x, view->fovDeg.y) < 180.0)
+      s << "note: DGP wants the whole forward hemisphere (a 180 x 180 degree fisheye); this view sees less\n";
     if (dgp)
       s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
         << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";

@@ -11,3 +11,5 @@ candela_cli_test(render.no_such_view 2 "render/case.toml: no [[view]] named 'nop
 candela_cli_test(render.view_required 2 "--view" render ${RENDER_CASE})
 candela_cli_test(render.bad_scale 2 "--scale" render ${RENDER_CASE} --view door --scale cubic)
 candela_cli_test(render.missing_case 2 "no_such_case.toml" render no_such_case.toml --view door)
+candela_cli_test(render.min_above_max 2 "--max must be above --min" render ${RENDER_CASE} --view door --min 100 --max 10)
+candela_cli_test(render.log_min_zero 2 "--min must be above 0 cd/m2 on a log scale" render ${RENDER_CASE} --view door --min 0)
