@@ -5,6 +5,7 @@
 
 #include "engine/base/atomic_file.h"
 #include "validation/case_registry.h"
+#include "validation/speed_accuracy.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -22,9 +23,19 @@ struct ValidateOptions {
   std::string quality = "normal";
   int threads = 0;
   uint64_t seed = 1;
+  bool chart = false;
 };
 
 int runValidate(const ValidateOptions& o) {
+  if (o.chart) {
+    // The speed–accuracy study (docs/accuracy.md): CSV and SVG chart in --out.
+    const auto rows = validation::runSpeedAccuracy(o.threads, o.quick);
+    std::filesystem::create_directories(o.out);
+    writeFileAtomic(std::filesystem::path(o.out) / "speed_accuracy.csv", validation::speedAccuracyCsv(rows));
+    writeFileAtomic(std::filesystem::path(o.out) / "speed_accuracy.svg", validation::speedAccuracySvg(rows));
+    std::cout << validation::speedAccuracyCsv(rows) << std::flush;
+    return 0;
+  }
   validation::RunConfig cfg;
   cfg.settings = settingsForQuality(parseQuality(o.quality));
   cfg.settings.seed = o.seed;
@@ -76,6 +87,7 @@ void addValidateCommand(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"draft", "normal", "high"}));
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", opts->seed, "random seed");
+  cmd->add_flag("--chart", opts->chart, "speed-accuracy study instead: speed_accuracy.csv and .svg in --out");
   cmd->callback([opts, &action] { action = [opts] { return runValidate(*opts); }; });
 }
 

@@ -71,20 +71,27 @@ Method parseMethod(const std::string& s) {
 TraceSettings settingsForQuality(Quality q) {
   TraceSettings s;
   switch (q) {
+    // Cache settings (a, record samples) from the speed–accuracy study (docs/accuracy.md).
     case Quality::kDraft:
       s.hemisphereSamples = 256;
       s.lightSamples = 16;
       s.maxBounces = 8;
+      s.cache.accuracy = 0.3;
+      s.cache.recordSamples = 64;
       break;
     case Quality::kNormal:
       s.hemisphereSamples = 2048;
       s.lightSamples = 64;
       s.maxBounces = 32;
+      s.cache.accuracy = 0.2;
+      s.cache.recordSamples = 256;
       break;
     case Quality::kHigh:
       s.hemisphereSamples = 8192;
       s.lightSamples = 256;
       s.maxBounces = 64;
+      s.cache.accuracy = 0.1;
+      s.cache.recordSamples = 1024;
       break;
   }
   return s;
@@ -122,6 +129,13 @@ Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
     if (m.type == MaterialType::Glass || m.type == MaterialType::Illum ||
         (m.type == MaterialType::Trans && photopic(m.specularTransmittance) > 0.0))
       hasTransmitters_ = true;
+  // Flat mirrors get virtual light sources (images of every sampled source).
+  for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& sh = scene.shapes[i];
+    if (isFlat(sh) && scene.materials[sh.material].type == MaterialType::Mirror) mirrors_.push_back(i);
+  }
+  isMirrorImage_.assign(scene.shapes.size(), 0);
+  for (uint32_t i : mirrors_) isMirrorImage_[i] = 1;
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
@@ -173,6 +187,113 @@ Rgb Tracer::distantRadiance(const Vec3& dir, bool countSources, double misCosPdf
   return Rgb(w * sky.model->luminance(t) / kLumensPerWatt);
 }
 
+// One sampled source's irradiance at p (normal n), k stratified samples; visibility(ls, lightShape)
+// gives the RGB transmittance of sample ls (a shadow ray, or the path through a mirror).
+template <class Visibility>
+Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int k, Rng& rng, double* variance,
+                          const Visibility& visibility) const {
+  const Strata2D strata(k);
+  // Per-thread scratch for horizon-clipped polygon sources (no allocation once warm).
+  thread_local std::vector<Vec3> clipped;
+  thread_local std::vector<std::array<Vec3, 3>> tris;
+  thread_local std::vector<double> cumulative;
+  Rgb exact(0.0);
+  const bool haveExact = unoccludedIrradiance(light, scene_, p, n, exact, &clipped);
+  if (haveExact && photopic(exact) <= 0.0) return Rgb(0.0);  // the source cannot reach this side
+  // Polygon sources are sampled over their part above the receiver's horizon, so that every
+  // sample tells about visibility.
+  const bool clippedPolygon = haveExact && light.kind == Light::Kind::Area && !light.outline.empty();
+  if (clippedPolygon) {
+    tris = triangulatePolygon(clipped, scene_.shapes[light.shape].n);
+    cumulative.clear();
+    double acc = 0.0;
+    for (const auto& t : tris) {
+      acc += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+      cumulative.push_back(acc);
+    }
+  }
+  // With a closed form for the unoccluded irradiance E_u, the samples only estimate the visible
+  // fraction: E = E_u · Σ f V / Σ f, f = w cos ι. This ratio estimator is exact when the source
+  // is wholly visible, exactly 0 when wholly hidden (no light leaks), and its bias falls as 1/k.
+  // Without a closed form: E = mean(f V).
+  Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
+  double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
+  const uint32_t lightShape = light.kind == Light::Kind::Area ? light.shape : kNoShape;
+  // A far-field luminaire is one point: one shadow ray says all there is.
+  const bool point = light.kind == Light::Kind::Luminaire && haveExact;
+  const int kk = point ? 1 : k;
+  for (int i = 0; i < kk; ++i) {
+    const Vec2 u = strata.sample(i, rng);
+    LightSample ls;
+    const bool ok = clippedPolygon ? sampleClippedPolygon(light, tris, cumulative, p, u.x, u.y, ls)
+                                   : sampleLight(light, scene_, p, u.x, u.y, ls);
+    if (!ok) continue;
+    const double cosI = glm::dot(n, ls.dir);
+    if (cosI <= 0.0) continue;
+    const Rgb f = ls.weight * cosI;
+    const Rgb v = visibility(ls, lightShape);
+    const double c = haveExact ? 1.0 : 0.0;
+    sumFvc += f * v * c;
+    sumFc += f * c;
+    sumRest += f * v * (1.0 - c);
+    const double fy = photopic(f) * c, vy = photopic(f * v) / std::max(photopic(f), 1e-300);
+    yF2 += fy * fy;
+    yF2V += fy * fy * vy;
+    yF2V2 += fy * fy * vy * vy;
+    yFc += fy;
+    const double ry = photopic(f * v) * (1.0 - c);
+    yRest += ry;
+    yRest2 += ry * ry;
+  }
+  Rgb e = sumRest / static_cast<double>(kk);
+  if (haveExact) {
+    // No informative sample (numerically degenerate): claim nothing rather than leak light.
+    for (int ch = 0; ch < 3; ++ch) e[ch] += sumFc[ch] > 0.0 ? exact[ch] * sumFvc[ch] / sumFc[ch] : 0.0;
+  }
+  if (variance && kk > 1) {
+    // Delta-method variance of the ratio, E_u² Σ f²(V − R)² / (Σ f)², plus the plain part's.
+    if (yFc > 0.0) {
+      const double ratio = (yF2V > 0.0 || yF2 > 0.0) ? photopic(sumFvc) / yFc : 0.0;
+      const double resid = std::max(0.0, yF2V2 - 2.0 * ratio * yF2V + ratio * ratio * yF2);
+      *variance += photopic(exact) * photopic(exact) * resid / (yFc * yFc);
+    }
+    const double mean = yRest / kk;
+    *variance += std::max(0.0, yRest2 / kk - mean * mean) / (kk - 1);
+  }
+  return e;
+}
+
+Rgb Tracer::mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const {
+  // A flat mirror shows each source as an image behind it: the light reaching p by one
+  // reflection is the light the source would give at p's mirror image p' (normal n'), passed
+  // through the mirror's outline and reflectance. So the source is sampled from p' (with the
+  // closed form there, as a ratio estimator), and each sample's visibility is the real path:
+  // p to the mirror (which must be the first surface met) and on to the source.
+  Rgb total(0.0);
+  for (uint32_t ms : mirrors_) {
+    const Shape& mirror = scene_.shapes[ms];
+    const Vec3 nm = mirror.n, q = mirror.a;
+    const double dp = glm::dot(p - q, nm);
+    if (std::abs(dp) < 1e-12) continue;
+    const Vec3 pi = p - 2.0 * dp * nm, ni = n - 2.0 * glm::dot(n, nm) * nm;
+    const Rgb colour = scene_.materials[mirror.material].color;
+    const Vec3 side = dp > 0.0 ? nm : -nm;
+    for (const Light& light : lights_) {
+      if (light.kind == Light::Kind::Area && light.shape == ms) continue;
+      total += colour * lightEstimate(light, pi, ni, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
+        const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
+        RayHit h;
+        if (!accel_->intersect(p, dir, 0.0, ls.distance, h, skip) || h.shape != ms) return Rgb(0.0);
+        const Vec3 x = p + h.t * dir;
+        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - h.t) * (1.0 - 1e-9);
+        if (rest <= 0.0) return Rgb(0.0);
+        return transmittance(x + originOffset(x) * side, ls.dir, rest, ms, lightShape);
+      });
+    }
+  }
+  return total;
+}
+
 Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance,
                              double misRatio) const {
   Rgb total(0.0);
@@ -185,78 +306,15 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
                                        return transmittance(o, dir, tMax, skip, lightShape);
                                      });
   }
-  // Per-thread scratch for horizon-clipped polygon sources (no allocation once warm).
-  thread_local std::vector<Vec3> clipped;
-  thread_local std::vector<std::array<Vec3, 3>> tris;
-  thread_local std::vector<double> cumulative;
   for (const Light& light : lights_) {
     if (atPathVertex) break;
-    Rgb exact(0.0);
-    const bool haveExact = unoccludedIrradiance(light, scene_, p, n, exact, &clipped);
-    if (haveExact && photopic(exact) <= 0.0) continue;  // the source cannot reach this side
-    // Polygon sources are sampled over their part above the receiver's horizon, so that every
-    // sample tells about visibility.
-    const bool clippedPolygon = haveExact && light.kind == Light::Kind::Area && !light.outline.empty();
-    if (clippedPolygon) {
-      tris = triangulatePolygon(clipped, scene_.shapes[light.shape].n);
-      cumulative.clear();
-      double acc = 0.0;
-      for (const auto& t : tris) {
-        acc += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
-        cumulative.push_back(acc);
-      }
-    }
-    // With a closed form for the unoccluded irradiance E_u, the samples only estimate the visible
-    // fraction: E = E_u · Σ f V / Σ f, f = w cos ι. This ratio estimator is exact when the source
-    // is wholly visible, exactly 0 when wholly hidden (no light leaks), and its bias falls as 1/k.
-    // Without a closed form: E = mean(f V).
-    Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
-    double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
-    const uint32_t lightShape = light.kind == Light::Kind::Area ? light.shape : kNoShape;
-    // A far-field luminaire is one point: one shadow ray says all there is.
-    const bool point = light.kind == Light::Kind::Luminaire && haveExact;
-    const int kk = point ? 1 : k;
-    for (int i = 0; i < kk; ++i) {
-      const Vec2 u = strata.sample(i, rng);
-      LightSample ls;
-      const bool ok = clippedPolygon ? sampleClippedPolygon(light, tris, cumulative, p, u.x, u.y, ls)
-                                     : sampleLight(light, scene_, p, u.x, u.y, ls);
-      if (!ok) continue;
-      const double cosI = glm::dot(n, ls.dir);
-      if (cosI <= 0.0) continue;
-      const Rgb f = ls.weight * cosI;
+    total += lightEstimate(light, p, n, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
       const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
-      const Rgb v = transmittance(p, ls.dir, tMax, skip, lightShape);
-      const double c = haveExact ? 1.0 : 0.0;
-      sumFvc += f * v * c;
-      sumFc += f * c;
-      sumRest += f * v * (1.0 - c);
-      const double fy = photopic(f) * c, vy = photopic(f * v) / std::max(photopic(f), 1e-300);
-      yF2 += fy * fy;
-      yF2V += fy * fy * vy;
-      yF2V2 += fy * fy * vy * vy;
-      yFc += fy;
-      const double ry = photopic(f * v) * (1.0 - c);
-      yRest += ry;
-      yRest2 += ry * ry;
-    }
-    Rgb e = sumRest / static_cast<double>(kk);
-    if (haveExact) {
-      // No informative sample (numerically degenerate): claim nothing rather than leak light.
-      for (int ch = 0; ch < 3; ++ch) e[ch] += sumFc[ch] > 0.0 ? exact[ch] * sumFvc[ch] / sumFc[ch] : 0.0;
-    }
-    total += e;
-    if (variance && kk > 1) {
-      // Delta-method variance of the ratio, E_u² Σ f²(V − R)² / (Σ f)², plus the plain part's.
-      if (yFc > 0.0) {
-        const double ratio = (yF2V > 0.0 || yF2 > 0.0) ? photopic(sumFvc) / yFc : 0.0;
-        const double resid = std::max(0.0, yF2V2 - 2.0 * ratio * yF2V + ratio * ratio * yF2);
-        *variance += photopic(exact) * photopic(exact) * resid / (yFc * yFc);
-      }
-      const double mean = yRest / kk;
-      *variance += std::max(0.0, yRest2 / kk - mean * mean) / (kk - 1);
-    }
+      return transmittance(p, ls.dir, tMax, skip, lightShape);
+    });
   }
+  // Sources seen in flat mirrors, as virtual sources.
+  if (!mirrors_.empty()) total += mirrorIrradiance(p, n, k, skip, rng, variance);
   if (scene_.sky) {
     // The sky by importance sampling of its luminance, MIS-weighted against cosine sampling.
     const SkyDome& sky = *scene_.sky;
@@ -296,6 +354,11 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
                          CacheUse* cache, double* firstHitT) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
+  // A path that does not count sources (they are sampled at its last diffuse vertex) and meets
+  // one flat mirror keeps not counting them: the mirror's virtual sources were sampled too.
+  // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
+  bool viaImage = false;
+  int mirrorsMet = 0;
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
@@ -332,7 +395,13 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         d = d - 2.0 * glm::dot(d, ng) * ng;
         o = x + off * nf;
         skip = flatSkip;
-        countSources = true;
+        if (!countSources && mirrorsMet == 0 && isMirrorImage_[h.shape]) {
+          viaImage = true;
+        } else {
+          countSources = true;
+          viaImage = false;
+        }
+        ++mirrorsMet;
         continue;
       case MaterialType::Glass: {
         Rgb tr, rf;
@@ -342,14 +411,17 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         if (rng.uniform() * (pt + pr) < pt) {
           beta *= tr * ((pt + pr) / pt);
           o = x - off * nf;
+          // Through glass after a mirror: the virtual source's shadow ray passed it too.
+          if (!viaImage) countSources = true;
         } else {
           beta *= rf * ((pt + pr) / pr);
           d = d - 2.0 * glm::dot(d, ng) * ng;
           o = x + off * nf;
           misCosPdf = 0.0;
+          countSources = true;
+          viaImage = false;
         }
         skip = flatSkip;
-        countSources = true;
         continue;
       }
       default:
@@ -368,7 +440,10 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         const double fy = photopic(f);
         for (const auto& [i, w] : cache->scratch.weights) cache->coefficients.emplace_back(i, fy * w);
         cache->extrapolationSd += fy * std::sqrt(cache->scratch.extrapolationVariance);
-        return result + f * (direct + e);
+        result += f * (direct + e);
+        if (photopic(m->specularReflectance) > 0.0)
+          result += beta * glossyBounce(x, d, nf, off, flatSkip, *m, rng, s, diffuse);
+        return result;
       }
       ++cache->misses;
       return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1);
@@ -391,8 +466,9 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
   // with probability 1 − albedo).
   const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
-  const double norm = std::max(1.0, pRho + pTd + pTs);
-  if (pRho + pTd + pTs <= 0.0) return out;
+  const double pSp = m.type == MaterialType::Mirror ? 0.0 : photopic(m.specularReflectance);
+  const double norm = std::max(1.0, pRho + pTd + pTs + pSp);
+  if (pRho + pTd + pTs + pSp <= 0.0) return out;
   const Strata2D strata(k, 1.0 / kPi);
   Rgb acc(0.0);
   for (int j = 0; j < k; ++j) {
@@ -409,9 +485,43 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
       acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, true, rng, s, diffuse, 1);
+    } else if (u < pRho + pTd + pTs + pSp) {
+      acc += (norm / pSp) * glossyBounce(x, inDir, nf, off, flatSkip, m, rng, s, diffuse);
     }
   }
   return out + acc / static_cast<double>(k);
+}
+
+Rgb Tracer::glossyBounce(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip,
+                         const Material& m, Rng& rng, const TraceSettings& s, int diffuse) const {
+  // Radiance's isotropic Ward lobe, exp(−tan² δ/α²)/(4π α² √(cos θ_i cos θ_o)) for roughness α,
+  // sampled by its half vector h (tan² δ = −α² ln u, φ uniform: Ward 1992; Walter 2005, "Notes
+  // on the Ward BRDF"). As Radiance's sampled specular rays do, a sample carries the specular
+  // reflectance ρ_s, and a direction below the surface is drawn again (up to 8 times, then the
+  // sample is lost). Roughness 0 is the mirror direction. Sources met are counted (the light
+  // sampled at the vertex is the diffuse part's only); glossy reflections count as bounces.
+  const Vec3 wi = -inDir;
+  if (glm::dot(wi, nf) <= 0.0) return Rgb(0.0);
+  Vec3 out(0.0);
+  const double alpha = m.roughness;
+  bool ok = false;
+  if (alpha <= 0.0) {
+    out = inDir - 2.0 * glm::dot(inDir, nf) * nf;
+    ok = true;
+  } else {
+    const Frame frame = Frame::fromNormal(nf);
+    for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
+      const double u1 = rng.uniform(), u2 = rng.uniform();
+      const double tan2 = -alpha * alpha * std::log(std::max(1e-300, 1.0 - u1));
+      const double cosD = 1.0 / std::sqrt(1.0 + tan2), sinD = std::sqrt(std::max(0.0, 1.0 - cosD * cosD));
+      const double phi = kTwoPi * u2;
+      const Vec3 h = frame.toWorld(Vec3(sinD * std::cos(phi), sinD * std::sin(phi), cosD));
+      out = 2.0 * glm::dot(wi, h) * h - wi;
+      ok = glm::dot(out, nf) > 0.0;
+    }
+  }
+  if (!ok) return Rgb(0.0);
+  return m.specularReflectance * pathRadiance(x + off * nf, out, flatSkip, true, rng, s, diffuse + 1, 1);
 }
 
 IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex,

@@ -136,6 +136,16 @@ class Tracer {
   // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
   Rgb diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
                     const TraceSettings& s, int diffuse, int split) const;
+  // One source's irradiance at p with k samples (ratio estimator on its closed form where there
+  // is one); visibility(LightSample, lightShape) → RGB transmittance.
+  template <class Visibility>
+  Rgb lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int k, Rng& rng, double* variance,
+                    const Visibility& visibility) const;
+  // Irradiance from the images of the sampled sources in flat mirrors (virtual sources).
+  Rgb mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip, Rng& rng, double* variance) const;
+  // One sample of the glossy (Ward) lobe of m leaving x: its reflected radiance estimate.
+  Rgb glossyBounce(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip,
+                   const Material& m, Rng& rng, const TraceSettings& s, int diffuse) const;
   // Radiance of the sky/distant sources seen along an escaping ray.
   Rgb distantRadiance(const Vec3& dir, bool countSources, double misCosPdf, double misRatio) const;
 
@@ -143,6 +153,8 @@ class Tracer {
   std::unique_ptr<RayAccelerator> accel_;
   std::vector<Light> lights_;
   bool hasTransmitters_ = false;
+  std::vector<uint32_t> mirrors_;      // flat mirror shapes (virtual sources)
+  std::vector<char> isMirrorImage_;    // per shape: a flat mirror with virtual sources
 };
 
 }  // namespace candela

@@ -371,3 +371,94 @@ TEST(Tracer, QualityPresets) {
 
 }  // namespace
 }  // namespace candela
+
+// ---------------------------------------------------------------- mirrors and glossy reflection
+
+namespace candela {
+namespace {
+
+Scene mirrorWallScene(bool unfolded) {
+  // A grey floor (ρ 0.5) x ∈ [−1, 1], y ∈ [−1, 1], a 1 cm lamp at (0.5, 0, 1) and a perfect
+  // mirror wall at x = 1 facing −x (y ∈ [−1.5, 1.5], z ∈ [0, 3]). Unfolded: no mirror, the floor
+  // continued to x = 3 and the lamp's image at (1.5, 0, 1): everything a point at x < 1 sees
+  // through the mirror is there instead, so both scenes give the same irradiance everywhere.
+  Scene sc;
+  const uint32_t lamp = addLight(sc, 2e4), grey = addPlastic(sc, 0.5);
+  sc.addSphere(Vec3(0.5, 0, 1), 0.01, lamp);
+  if (unfolded) {
+    addUpRect(sc, -1, -1, 3, 1, 0, grey);
+    sc.addSphere(Vec3(1.5, 0, 1), 0.01, lamp);
+  } else {
+    addUpRect(sc, -1, -1, 1, 1, 0, grey);
+    const uint32_t mirror = addMaterial(sc, MaterialType::Mirror, 1.0, "mirror");
+    sc.addPolygon({{1, -1.5, 0}, {1, -1.5, 3}, {1, 1.5, 3}, {1, 1.5, 0}}, mirror);
+  }
+  return sc;
+}
+
+TEST(Tracer, SmallLampSeenInAMirrorIsExact) {
+  // A sensor on the floor facing up receives the lamp directly and its image (virtual source)
+  // through the mirror, both wholly visible: two closed forms.
+  const Scene sc = mirrorWallScene(false);
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.maxBounces = 0;
+  const Vec3 p(0.0, 0.0, 0.0);
+  const IrradianceEstimate e = tracer.irradiance(p, Vec3(0, 0, 1), 0, s);
+  const double d1 = std::hypot(0.5, 1.0), d2 = std::hypot(1.5, 1.0);
+  const double want = kLumensPerWatt * (analytic::sphereSource(2e4, 0.01, d1, 1.0 / d1) +
+                                        analytic::sphereSource(2e4, 0.01, d2, 1.0 / d2));
+  expectExact(e.illuminanceLux(), want, "lamp and its mirror image");
+}
+
+TEST(Tracer, MirrorEqualsTheUnfoldedScene) {
+  // Interreflection through the mirror (floor → mirror → floor, lamp → mirror → floor → sensor)
+  // must neither be lost nor counted twice: the mirror scene against its unfolding, at points on
+  // the floor and above it facing down, within 4 combined standard errors.
+  const Scene a = mirrorWallScene(false), b = mirrorWallScene(true);
+  const Tracer ta(a), tb(b);
+  TraceSettings s;
+  s.hemisphereSamples = 1024;
+  const std::vector<std::pair<Vec3, Vec3>> pts = {
+      {{-0.5, 0.0, 0.01}, {0, 0, 1}}, {{0.9, 0.5, 0.01}, {0, 0, 1}}, {{0.0, 0.3, 2.0}, {0, 0, -1}},
+      {{0.8, -0.2, 0.5}, {1, 0, 0}}};
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const IrradianceEstimate ea = ta.irradiance(pts[i].first, pts[i].second, i, s);
+    const IrradianceEstimate eb = tb.irradiance(pts[i].first, pts[i].second, i + 100, s);
+    const double tol = 4.0 * std::hypot(ea.standardErrorLux(), eb.standardErrorLux());
+    std::printf("[ measured ] mirror %.5g ± %.2g lux, unfolded %.5g ± %.2g lux\n", ea.illuminanceLux(),
+                ea.standardErrorLux(), eb.illuminanceLux(), eb.standardErrorLux());
+    EXPECT_NEAR(ea.illuminanceLux(), eb.illuminanceLux(), tol) << i;
+    EXPECT_NEAR(ea.illuminanceLux(), eb.illuminanceLux(), 0.03 * eb.illuminanceLux()) << i;
+  }
+}
+
+TEST(Tracer, GlossyPlasticReflectsItsSpecularEnergy) {
+  // An infinite plastic floor (colour c, specularity s) under a uniform sky of radiance L: the
+  // floor's irradiance is πL, its diffuse radiance c(1 − s)L, and with roughness 0 its specular
+  // radiance sL (the sky mirrored). A sampled glossy ray carries ρ_s (Radiance's convention) and
+  // every direction above the floor sees the sky, so any roughness gives the same sL. A sensor
+  // facing down sees E = πL (c(1 − s) + s); before glossy reflection, πL c(1 − s).
+  for (double roughness : {0.0, 0.05, 0.2}) {
+    Scene sc;
+    const uint32_t sky = addGlow(sc, 1.0);
+    sc.addDistant(Vec3(0, 0, 1), 180.0, sky, "sky");
+    Material m;
+    m.type = MaterialType::Plastic;
+    m.name = "gloss";
+    m.color = Rgb(0.4);
+    m.specularity = 0.1;
+    m.roughness = roughness;
+    deriveMaterial(m);
+    const uint32_t gloss = sc.addMaterial(m);
+    addUpRect(sc, -1e4, -1e4, 1e4, 1e4, 0.0, gloss);
+    const Tracer tracer(sc);
+    TraceSettings s;
+    const IrradianceEstimate e = tracer.irradiance(Vec3(0, 0, 1), Vec3(0, 0, -1), 0, s);
+    const double want = kLumensPerWatt * kPi * (0.4 * 0.9 + 0.1);
+    expectWithinStandardErrors(e, want, 0.01, roughness == 0.0 ? "mirror-like plastic" : "glossy plastic");
+  }
+}
+
+}  // namespace
+}  // namespace candela
