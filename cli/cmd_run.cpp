@@ -46,6 +46,7 @@ struct RunOptions {
   int samples = -1;
   int64_t seed = -1;
   int threads = -1;
+  std::string method;    // empty: the case's, else the default (path)
   bool quiet = false;
 };
 
@@ -184,6 +185,8 @@ int runCase(const RunOptions& o) {
   if (o.bounces >= 0) settings.maxBounces = o.bounces;
   if (o.samples > 0) settings.hemisphereSamples = o.samples;
   settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
+  if (c.settings.method) settings.method = *c.settings.method;
+  if (!o.method.empty()) settings.method = parseMethod(o.method);
   const int threads = o.threads >= 0 ? o.threads : c.settings.threads;
   const unsigned usedThreads = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
 
@@ -192,8 +195,6 @@ int runCase(const RunOptions& o) {
     if (!c.views.empty())
       std::cerr << "candela run: note: " << c.views.size()
                 << " [[view]] entr" << (c.views.size() == 1 ? "y is" : "ies are") << " not rendered yet\n";
-    if (c.settings.method == Method::kCache)
-      std::cerr << "candela run: note: method = \"cache\" is not available yet; the path tracer is used\n";
   }
 
   // 3. Trace all grids as one list (grids in case order): point k of the run uses random
@@ -220,7 +221,8 @@ int runCase(const RunOptions& o) {
   data.northDeg = c.site.northDeg;
   data.run.settings = {
       {"quality", qualityName(quality)},
-      {"method", "path (Monte Carlo path tracing)"},
+      {"method", settings.method == Method::kCache ? "cache (Ward's irradiance cache, path-traced closure)"
+                                                   : "path (Monte Carlo path tracing)"},
       {"diffuse bounces", std::to_string(settings.maxBounces)},
       {"hemisphere samples per point", std::to_string(settings.hemisphereSamples)},
       {"light samples per source", std::to_string(settings.lightSamples)},
@@ -325,6 +327,8 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("--samples", opts->samples, "hemisphere samples per point (default: case, else quality)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--seed", opts->seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--method", opts->method, "path | cache (default: the case's, else path)")
+      ->check(CLI::IsMember({"path", "cache"}));
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores (default: the case's)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors only)");
