@@ -278,8 +278,33 @@ std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye,
     const double intensity = l.intensityCd(-dir);
     s.luminanceCdM2 = intensity / (area * cosOpening);
     s.solidAngleSr = area * cosOpening / (d * d);
-    s.transmittance = photopic(tracer.transmittance(eye, dir, d * (1.0 - 1e-9), kNoShape, kNoShape));
-    s.illuminanceLux = s.transmittance * intensity * cosView / (d * d);
+    // Direct illuminance on the plane facing viewDir: the opening integrated as an area source
+    // (each point carrying I/A, as the tracer's near field and the image do) by the midpoint rule
+    // on 8 × 8 cells, with a shadow ray per cell; exact to O(cell²) whatever the distance, where
+    // the point law I cos ι / d² is off by O((size/d)²) (1–3 % at 5 sizes).
+    constexpr int kCells = 8;
+    double e = 0.0, eFree = 0.0;
+    for (int i = 0; i < kCells; ++i)
+      for (int j = 0; j < kCells; ++j) {
+        const double u = (i + 0.5) / kCells, w = (j + 0.5) / kCells;
+        Vec3 q = l.position;
+        if (l.circular) {
+          const double r = 0.5 * l.widthM * std::sqrt(u), phi = kTwoPi * w;  // equal-area cells
+          q += r * std::cos(phi) * l.axisX + r * std::sin(phi) * l.axisY;
+        } else {
+          q += (u - 0.5) * l.widthM * l.axisX + (w - 0.5) * l.lengthM * l.axisY;
+        }
+        const Vec3 toQ = q - eye;
+        const double dq = glm::length(toQ);
+        const Vec3 dirQ = toQ / dq;
+        const double cosI = glm::dot(dirQ, viewDir);
+        if (cosI <= 0.0 || !(dq > 0.0)) continue;
+        const double de = l.intensityCd(-dirQ) / (kCells * kCells) * cosI / (dq * dq);
+        eFree += de;
+        e += de * photopic(tracer.transmittance(eye, dirQ, dq * (1.0 - 1e-9), kNoShape, kNoShape));
+      }
+    s.illuminanceLux = e;
+    s.transmittance = eFree > 0.0 ? e / eFree : 0.0;
     out.push_back(std::move(s));
   }
   return out;

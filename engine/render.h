@@ -73,8 +73,10 @@ struct SeenLuminaire {
   double distanceM = 0.0;
   double luminanceCdM2 = 0.0;
   double solidAngleSr = 0.0;
-  double illuminanceLux = 0.0;  // its direct illuminance on a plane facing `viewDir` at the eye
-  double transmittance = 1.0;   // photopic fraction passing the scene between eye and luminaire
+  // Its direct illuminance on a plane facing `viewDir` at the eye, in lux: the opening integrated
+  // as an area source (8 × 8 cells with a shadow ray each), occlusion included.
+  double illuminanceLux = 0.0;
+  double transmittance = 1.0;   // visible fraction of that illuminance (0: hidden, 1: in full view)
 };
 
 // Luminaires with a luminous opening (point luminaires have no area and are left out) in front of
