@@ -19,6 +19,7 @@ LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const 
   l.scale = p.multiplier * p.maintenanceFactor;
   orientLuminaire(l, p.aim, p.spinDeg);
   setOpeningFromWeb(l);
+  tabulatePeakIntensity(l);
   return l;
 }
 

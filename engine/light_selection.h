@@ -30,12 +30,12 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
   thread_local std::vector<double> cdf;
   cdf.resize(count);
   double total = 0.0;
-  for (size_t l = 0; l < count; ++l) total += lightImportance(lights[l], scene, p, n);
+  for (size_t l = 0; l < count; ++l) total += cdf[l] = lightImportance(lights[l], scene, p, n);
   if (total <= 0.0) return Rgb(0.0);
   double acc = 0.0;
   const double floor = 0.1 / static_cast<double>(count);
   for (size_t l = 0; l < count; ++l) {
-    const double w = lightImportance(lights[l], scene, p, n);
+    const double w = cdf[l];
     acc += w > 0.0 ? 0.9 * w / total + floor : 0.0;
     cdf[l] = acc;
   }

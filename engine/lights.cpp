@@ -345,7 +345,7 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
     const double d2 = std::max(glm::dot(e, e), 0.25 * lum.sizeM() * lum.sizeM() + 1e-6);
     const double d = std::sqrt(glm::dot(e, e));
     const double cosI = d > 0.0 ? std::max(0.0, -glm::dot(n, e) / d) : 1.0;
-    return lum.intensityCd(d > 0.0 ? e / d : Vec3(0, 0, -1)) * (cosI + 0.05) / (kLumensPerWatt * d2);
+    return lum.peakIntensityCd(d > 0.0 ? e / d : -lum.axisZ) * (cosI + 0.05) / (kLumensPerWatt * d2);
   }
   const double y = photopic(light.radiance);
   if (light.kind == Light::Kind::Distant) {

@@ -16,6 +16,20 @@ void orientLuminaire(LuminaireSource& l, const Vec3& aim, double spinDeg) {
   l.axisY = glm::cross(z, l.axisX);
 }
 
+void tabulatePeakIntensity(LuminaireSource& l) {
+  const int n = LuminaireSource::kCosBins;
+  for (int b = 0; b < n; ++b) {
+    double peak = 0.0;
+    for (double f : {0.0, 0.5, 1.0}) {
+      const double cosG = std::clamp(-1.0 + 2.0 * (b + f) / n, -1.0, 1.0);
+      const double gammaDeg = radToDeg(std::acos(cosG));
+      for (int c = 0; c < 360; c += 5) peak = std::max(peak, l.web->intensityCd(c, gammaDeg));
+    }
+    l.peakByCosGamma[b] = l.scale * peak;
+  }
+  l.peakTabulated = true;
+}
+
 void setOpeningFromWeb(LuminaireSource& l) {
   const double w = std::abs(l.web->openingWidthM()), len = std::abs(l.web->openingLengthM());
   switch (l.web->openingShape()) {

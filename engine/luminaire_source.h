@@ -7,6 +7,8 @@
 #include "engine/base/math.h"
 #include "photometry/photometric_web.h"
 
+#include <algorithm>
+#include <array>
 #include <memory>
 #include <string>
 
@@ -28,6 +30,18 @@ struct LuminaireSource {
   double widthM = 0.0, lengthM = 0.0;
   bool circular = false;
 
+  // Largest intensity (cd, scaled) over all C planes in each of kCosBins bands of cos γ (γ from
+  // the nadir), for cheap light selection without trigonometry (engine/light_selection.h).
+  static constexpr int kCosBins = 32;
+  std::array<double, kCosBins> peakByCosGamma{};
+  bool peakTabulated = false;
+  // The tabulated peak, or the exact intensity where no table was made.
+  double peakIntensityCd(const Vec3& dir) const {
+    if (!peakTabulated) return intensityCd(dir);
+    const double cosG = -glm::dot(dir, axisZ);
+    const int bin = std::clamp(static_cast<int>((cosG + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
+    return peakByCosGamma[bin];
+  }
   // Intensity in cd towards the world direction `dir` (from the luminaire), scaled.
   double intensityCd(const Vec3& dir) const {
     return scale * web->intensityCd(Vec3(glm::dot(dir, axisX), glm::dot(dir, axisY), glm::dot(dir, axisZ)));
@@ -39,6 +53,10 @@ struct LuminaireSource {
 // it about its own up axis (−aim) counter-clockwise seen from above a downlight, so that with
 // aim [0,0,−1] and spin 0 the C0 plane points to +X and C90 to +Y; with spin 90, C0 → +Y.
 void orientLuminaire(LuminaireSource& l, const Vec3& aim, double spinDeg);
+
+// Fills peakByCosGamma from the web (sampled every 5° in C and at the ends and middle of each
+// cos γ band).
+void tabulatePeakIntensity(LuminaireSource& l);
 
 // Sets the opening from the photometric file's luminous opening: flat rectangles and discs as
 // given; other shapes by their plan (width × length) footprint; a point when both are zero.
