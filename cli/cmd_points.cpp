@@ -34,6 +34,7 @@ struct PointsOptions {
   std::string method = "path";
   std::string accelerator = "embree";
   bool error = false;
+  double targetErrorPct = 0.0;
   // Daylight (issue "Daylight"): used when --sky is given; else the case's [sky] applies.
   std::string sky;
   std::optional<double> sunAltitude, sunAzimuth, timezone, elevation, north;
@@ -96,6 +97,7 @@ int runPoints(const PointsOptions& o) {
   if (samples) settings.hemisphereSamples = *samples;
   settings.seed = seed;
   settings.method = parseMethod(o.method);
+  settings.targetRelativeError = o.targetErrorPct / 100.0;
 
   std::vector<SensorPoint> points;
   if (o.pointsFile.empty() || o.pointsFile == "-") {
@@ -151,6 +153,9 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(CLI::IsMember({"embree", "octree"}));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
+  cmd->add_option("--target-error", opts->targetErrorPct,
+                  "sample each point until its standard error is below PCT percent of its value")
+      ->check(CLI::Range(0.01, 100.0));
   // Daylight.
   cmd->add_option("--sky", opts->sky, "uniform | cie-overcast | cie-clear | cie:1..15 | perez | none")
       ->group("Daylight");

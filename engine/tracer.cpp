@@ -44,6 +44,28 @@ void thinGlass(const Material& m, double cosI, Rgb& trans, Rgb& refl) {
   }
 }
 
+// Variance of E = π/(MN) Σ y over M × N strata with one sample each (y photopic radiance, cell
+// j·N + k). One sample per stratum gives no direct variance estimate; with three or more φ
+// strata per row, the second differences along φ (wrapping) are used: for y_k = μ_k + ε_k,
+// E[(y_k−1 − 2y_k + y_k+1)²] = (curvature of μ)² + σ²_k−1 + 4σ²_k + σ²_k+1, so Σ d²/6 bounds
+// Σ σ² from above, and unlike collapsed pairs (Cochran, "Sampling Techniques", 5A.12) a smooth
+// linear trend adds nothing. Fewer φ strata: collapsed pairs, Σ (y_a − y_b)²/2 per pair.
+double stratifiedVariance(const std::vector<double>& y, int m, int n) {
+  const double cells = static_cast<double>(y.size());
+  if (y.empty()) return 0.0;
+  double sumVar = 0.0;
+  if (n >= 3 && static_cast<size_t>(m) * n == y.size()) {
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < n; ++k) {
+        const double d = y[j * n + (k + n - 1) % n] - 2.0 * y[j * n + k] + y[j * n + (k + 1) % n];
+        sumVar += d * d / 6.0;
+      }
+  } else {
+    for (size_t c = 0; c + 1 < y.size(); c += 2) sumVar += (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
+  }
+  return kPi * kPi * sumVar / (cells * cells);
+}
+
 }  // namespace
 
 const char* qualityName(Quality q) {
@@ -611,12 +633,9 @@ void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSett
     r.gradR[c] = frame.toWorld(gr[c]);
     r.gradT[c] = frame.toWorld(gt[c]);
   }
-  double collapsed = 0.0;
-  for (int c = 0; c + 1 < cells; c += 2) {
-    const double d = photopic(h.radiance[c]) - photopic(h.radiance[c + 1]);
-    collapsed += 0.25 * d * d;
-  }
-  r.variancePhotopic = kPi * kPi * 4.0 * collapsed / (static_cast<double>(cells) * cells);
+  std::vector<double> y(cells);
+  for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);
+  r.variancePhotopic = stratifiedVariance(y, h.m, h.n);
 }
 
 IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
@@ -694,11 +713,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   Rgb sum(0.0);
   for (int c = 0; c < cells; ++c) sum += value[c];
   est.irradiance += kPi * sum / static_cast<double>(cells);
-  // Variance by collapsing neighbouring strata in pairs (Cochran, "Sampling Techniques", 5A.12):
-  // Σ (y_a − y_b)² / 4 over pairs, scaled to the mean; an overestimate for smooth integrands.
-  double collapsed = 0.0;
-  for (int c = 0; c + 1 < cells; c += 2) collapsed += 0.25 * (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
-  var += kPi * kPi * 4.0 * collapsed / (static_cast<double>(cells) * cells);
+  var += stratifiedVariance(y, mTheta, nPhi);
   if (cache) {
     // The cached share. The collapsed-strata variance above sees the rays' own noise (direct
     // light at the hits) but not the records', which many rays share: record i enters the

@@ -33,6 +33,11 @@ struct TraceSettings {
   uint64_t seed = 1;
   Method method = Method::kPath;
   CacheSettings cache;           // used by Method::kCache
+  // --target-error: when > 0, each point takes further independent batches of samples (each
+  // as above, its own random stream) until its standard error is at most this fraction of its
+  // value, or maxBatches are spent.
+  double targetRelativeError = 0.0;
+  int maxBatches = 256;
 };
 
 // The sample counts a preset stands for (see docs/engine.md for why).
