@@ -41,6 +41,7 @@ struct RenderOptions {
   int threads = -1;
   int pixelSamples = 4;
   int coarseStep = 4;
+  int irradianceSamples = 0;
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
@@ -85,6 +86,7 @@ int renderCase(const RenderOptions& o) {
   RenderSettings rs;
   rs.samplesPerPixel = o.pixelSamples;
   rs.coarseStep = o.coarseStep;
+  rs.irradianceSamples = o.irradianceSamples;
   const Tracer tracer(*scene);
   Image img;
   {
@@ -190,6 +192,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--irradiance-samples", opts->irradianceSamples,
+                  "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray (0 = off)")
+      ->check(CLI::Range(0, 65536));
   cmd->add_option("--scale", opts->scale, "false-colour scale: log | linear (default log)")
       ->check(CLI::IsMember({"log", "linear"}));
   cmd->add_option("--min", opts->minCdM2, "false-colour scale minimum, cd/m2 (default automatic)")

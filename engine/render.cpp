@@ -14,6 +14,14 @@ namespace {
 // Camera rays use streams far above any sensor point index, so that a view and a grid in the same
 // run never share random numbers.
 constexpr uint64_t kCameraStreamBase = 1ULL << 48;
+constexpr uint64_t kIrradianceStreamBase = 1ULL << 56;
+
+// Opaque and purely diffuse: all its reflected light is ρ E / π (no specular lobe, nothing
+// transmitted), so the irradiance estimate may stand in for a path.
+bool isMatteOpaque(const Material& m) {
+  return (m.type == MaterialType::Plastic || m.type == MaterialType::Metal) && photopic(m.specularReflectance) <= 0.0 &&
+         photopic(m.diffuseTransmittance) <= 0.0 && photopic(m.specularTransmittance) <= 0.0;
+}
 
 struct PixelValue {
   Rgb radiance{0.0};
@@ -52,7 +60,8 @@ Rgb luminaireRadiance(const std::vector<LuminaireSource>& lums, const Vec3& o, c
 
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.
 PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, const TraceSettings& s,
-                      const RenderSettings& r, std::atomic<std::size_t>& rays) {
+                      const TraceSettings& irradianceSettings, const RenderSettings& r,
+                      std::atomic<std::size_t>& rays) {
   Rng rng(s.seed, kCameraStreamBase + static_cast<uint64_t>(y) * cam.width() + x);
   const int n = std::max(1, r.samplesPerPixel);
   const int m = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
@@ -71,12 +80,30 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
     if (!dir) continue;
     Rgb value(0.0);
     bool done = false;
+    RayHit h;
+    bool hit = false;
+    if (showLums || r.irradianceSamples > 0) hit = tracer.accelerator().intersect(cam.position(), *dir, 0.0, 1e300, h);
     if (showLums) {
-      RayHit h;
-      double tMax = tracer.accelerator().intersect(cam.position(), *dir, 0.0, 1e300, h) ? h.t : 1e300;
+      double tMax = hit ? h.t : 1e300;
       const Rgb lum = luminaireRadiance(tracer.scene().luminaires, cam.position(), *dir, tMax);
       if (photopic(lum) > 0.0) {
         value = lum;
+        done = true;
+      }
+    }
+    if (!done && hit && r.irradianceSamples > 0) {
+      // A matte opaque surface seen directly: L = ρ E / π with E the sensor estimator's
+      // irradiance just above it (stratified hemisphere, per-light ratio estimators), far less
+      // noisy than one path. Its own stream: pixel-sample index above the camera streams.
+      const Shape& shape = tracer.scene().shapes[h.shape];
+      const Material& mat = tracer.scene().materials[shape.material];
+      if (isMatteOpaque(mat)) {
+        const Vec3 xh = cam.position() + h.t * *dir;
+        const Vec3 ng = shapeNormal(shape, xh);
+        const Vec3 nf = glm::dot(*dir, ng) < 0.0 ? ng : -ng;
+        const Vec3 p = xh + Tracer::originOffset(xh) * nf;
+        const uint64_t stream = kIrradianceStreamBase + (static_cast<uint64_t>(y) * cam.width() + x) * n + k;
+        value = mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, irradianceSettings).irradiance;
         done = true;
       }
     }
@@ -126,6 +153,11 @@ Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings
   // `--bounces N` does (N = 0: direct light on the surfaces seen).
   TraceSettings s = settings;
   s.maxBounces = settings.maxBounces + 1;
+  // The irradiance at a surface seen counts its N bounces from there, as a sensor does.
+  TraceSettings si = settings;
+  si.hemisphereSamples = std::max(1, render.irradianceSamples);
+  si.lightSamples = std::max(1, render.irradianceLightSamples);
+  si.firstBounceSplit = 1;
   Image img;
   img.width = cam.width();
   img.height = cam.height();
@@ -154,7 +186,7 @@ Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings
     parallelFor(list.size(), threads, [&](std::size_t k) {
       const std::size_t i = list[k];
       const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
-      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, s, render, rays));
+      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, s, si, render, rays));
       img.traced[i] = 1;
       report(1);
     });

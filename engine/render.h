@@ -40,6 +40,13 @@ struct RenderSettings {
   // error exceeds this fraction of the mean (too noisy to tell: refined, never interpolated).
   double refineThreshold = 0.05;
   double noiseAllowance = 2.0;
+  // With irradianceSamples > 0, a camera ray meeting a matte opaque surface (plastic or metal
+  // without specular lobe) takes L = ρ E / π from the sensor estimator's irradiance there, with
+  // this many hemisphere samples and `irradianceLightSamples` per source, instead of following
+  // one path: direct light exact where a source is wholly visible, indirect stratified. Costs
+  // about irradianceSamples paths per camera ray; other surfaces are path traced.
+  int irradianceSamples = 0;
+  int irradianceLightSamples = 4;
   // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
   // area) so that they appear in images and glare evaluations.
   bool showLuminaires = true;

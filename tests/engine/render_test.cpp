@@ -100,6 +100,15 @@ TEST(Render, LambertianPlaneHasLuminanceRhoEOverPiInEveryPixel) {
     // A uniform image: only the coarse lattice is traced (9 × 6 of 33 × 21 with a step of 4).
     EXPECT_EQ(img.tracedPixels, 9u * 6u);
   }
+  // With the irradiance estimate at matte surfaces the sun's ratio estimator is exact (wholly
+  // visible source with a closed form), so every pixel is ρE/π to rounding.
+  {
+    const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.6}, {0, 1, -1}, {0, 0, 1}, {60, 40}, 33, 21);
+    RenderSettings r;
+    r.irradianceSamples = 16;
+    const Image img = renderView(tracer, v, s, 2, r);
+    for (std::size_t i = 0; i < img.luminance.size(); ++i) ASSERT_NEAR(img.luminance[i], want, 1e-9 * want) << i;
+  }
   // Fisheye straight down: every pixel whose whole footprint is more than a pixel inside the rim
   // sees the plane (rays at the rim run to the horizon, beyond the 10 km plane).
   {
