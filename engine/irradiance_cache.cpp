@@ -174,23 +174,23 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
   return id;
 }
 
-bool IrradianceCache::covers(const Vec3& p, const Vec3& n) const {
+bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape) const {
   const double k = 1.0 / settings_.accuracy;
   bool found = false;
   visit(p, 0.0, [&](uint32_t i) {
-    if (!found && weight(records_[i], p, n) > k) found = true;
+    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape)) found = true;
   });
   return found;
 }
 
-bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used) const {
+bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape) const {
   const double k = 1.0 / settings_.accuracy;
   // Gathered in the octree's fixed order, so sums are reproducible.
   thread_local std::vector<std::pair<double, uint32_t>> found;
   found.clear();
   visit(p, 0.0, [&](uint32_t i) {
     const double w = weight(records_[i], p, n);
-    if (w > k) found.emplace_back(w, i);
+    if (w > k && usable(records_[i], p, n, shape)) found.emplace_back(w, i);
   });
   if (found.empty()) return false;
   Rgb sum(0.0);
@@ -218,6 +218,9 @@ bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* 
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads) {
   IrradianceCache cache(tracer.scene().bounds(), settings.cache);
+  cache.setVisibility([&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) {
+    return tracer.cacheVisible(p, n, shape, r);
+  });
   // Phase A: first diffuse hits of each point's initial hemisphere cells, gathered in parallel in
   // batches, then walked in order on one thread: an uncovered hit becomes a record.
   constexpr size_t kBatch = 64;
@@ -230,11 +233,12 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
     });
     for (const auto& list : hits) {
       for (const CacheQuery& q : list) {
-        if (cache.covers(q.p, q.n)) continue;
+        if (cache.covers(q.p, q.n, q.shape)) continue;
         IrradianceRecord r;
         r.p = q.p;
         r.n = q.n;
         r.skip = q.skip;
+        r.shape = q.shape;
         Rng rng(settings.seed, kRadiusStream + cache.size());
         r.radiusM = tracer.harmonicMeanDistance(q, settings.cache.radiusSamples, rng);
         cache.add(r);

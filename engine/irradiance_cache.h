@@ -35,6 +35,7 @@ struct IrradianceRecord {
   std::array<Vec3, 3> gradR{};  // rotational gradient per channel, W/m² per rad
   double variancePhotopic = 0.0;  // variance of photopic(e) from the record's own samples
   uint32_t skip = 0xffffffffu;  // flat shape the record lies on (excluded from its rays)
+  uint32_t shape = 0xffffffffu; // shape the record lies on
 };
 
 // A surface point where a sensor ray's first diffuse reflection needs indirect irradiance: the
@@ -42,7 +43,8 @@ struct IrradianceRecord {
 struct CacheQuery {
   Vec3 p{0.0};
   Vec3 n{0.0, 0.0, 1.0};
-  uint32_t skip = 0xffffffffu;
+  uint32_t skip = 0xffffffffu;   // flat shape hit (its rays skip it), or ~0u
+  uint32_t shape = 0xffffffffu;  // the shape hit
 };
 
 // Hemisphere samples of one record in the paper's M × N stratification (θ_j = asin√((j+X)/M),
@@ -72,6 +74,10 @@ struct CacheSettings {
   double minSpacingM = 0.005;  // bounds on a record's valid radius a·R_i (m)
   double maxSpacingM = 1.0;
   bool gradients = true;
+  // Use a record only where a ray joins it to the point without meeting a third surface: a thin
+  // wall between a lit and a dark room then stops light leaking along the floor (costs one
+  // shadow ray per candidate record).
+  bool visibilityCheck = true;
 };
 
 class IrradianceCache {
@@ -82,8 +88,13 @@ class IrradianceCache {
   // Adds a record whose value is still to be computed; applies min/max spacing and neighbour
   // clamping (R_i ≤ R_j + |P_i − P_j| both ways). Returns its index.
   uint32_t add(const IrradianceRecord& r);
-  // True when some record has w_i(p, n) > 1/a.
-  bool covers(const Vec3& p, const Vec3& n) const;
+  // visible(p, n, shape, record): nothing but p's and the record's own shapes between them.
+  using Visibility = std::function<bool(const Vec3&, const Vec3&, uint32_t, const IrradianceRecord&)>;
+  void setVisibility(Visibility v) { visible_ = std::move(v); }
+
+  // True when some record has w_i(p, n) > 1/a (and is visible from p when checked). `shape`:
+  // the shape p lies on.
+  bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu) const;
   // What an interpolation used, for error bars: each record with its normalised weight, and an
   // interpolation share: a quarter of the squared gradient correction (photopic, (W/m²)²),
   // i.e. how far the records had to be extrapolated.
@@ -93,7 +104,8 @@ class IrradianceCache {
   };
   // Gradient-corrected weighted mean (W/m²) of the records with w_i > 1/a; false when none.
   // Appends to *used when given.
-  bool interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used = nullptr) const;
+  bool interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used = nullptr,
+                   uint32_t shape = 0xffffffffu) const;
 
   size_t size() const { return records_.size(); }
   IrradianceRecord& record(size_t i) { return records_[i]; }
@@ -116,7 +128,12 @@ class IrradianceCache {
   void visit(const Vec3& p, double extraM, const std::function<void(uint32_t)>& fn) const;
   void visitNode(int32_t node, const Vec3& p, double extraM, const std::function<void(uint32_t)>& fn) const;
 
+  bool usable(const IrradianceRecord& r, const Vec3& p, const Vec3& n, uint32_t shape) const {
+    return !visible_ || !settings_.visibilityCheck || visible_(p, n, shape, r);
+  }
+
   CacheSettings settings_;
+  Visibility visible_;
   std::vector<IrradianceRecord> records_;
   std::vector<Node> nodes_;
 };

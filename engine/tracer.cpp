@@ -91,27 +91,31 @@ Method parseMethod(const std::string& s) {
 }
 
 TraceSettings settingsForQuality(Quality q) {
+  // Presets leave the number of bounces to Russian roulette by albedo (unbiased: a path ends
+  // with probability 1 − albedo at each vertex), so closed bright rooms converge to the whole
+  // series (E_d/(1 − ρ)); a cap of 32 would drop 0.9³³ = 3 % of a ρ = 0.9 box. --bounces N
+  // still truncates on request.
   TraceSettings s;
   switch (q) {
     // Cache settings (a, record samples) from the speed–accuracy study (docs/accuracy.md).
     case Quality::kDraft:
       s.hemisphereSamples = 256;
       s.lightSamples = 16;
-      s.maxBounces = 8;
+      s.maxBounces = kUnlimitedBounces;
       s.cache.accuracy = 0.3;
       s.cache.recordSamples = 64;
       break;
     case Quality::kNormal:
       s.hemisphereSamples = 2048;
       s.lightSamples = 64;
-      s.maxBounces = 32;
+      s.maxBounces = kUnlimitedBounces;
       s.cache.accuracy = 0.2;
       s.cache.recordSamples = 256;
       break;
     case Quality::kHigh:
       s.hemisphereSamples = 8192;
       s.lightSamples = 256;
-      s.maxBounces = 64;
+      s.maxBounces = kUnlimitedBounces;
       s.cache.accuracy = 0.1;
       s.cache.recordSamples = 1024;
       break;
@@ -455,7 +459,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
       // Ward's cache: direct light sampled here, indirect irradiance interpolated.
       Rgb e(0.0);
       cache->scratch.weights.clear();
-      if (cache->cache->interpolate(x, nf, e, &cache->scratch)) {
+      if (cache->cache->interpolate(x, nf, e, &cache->scratch, h.shape)) {
         const Vec3 xf = x + off * nf;
         const Rgb direct = directIrradiance(xf, nf, std::max(1, s.cache.lightSamples), flatSkip, rng, nullptr, 1.0);
         const Rgb f = beta * m->diffuseReflectance * kInvPi;
@@ -587,8 +591,17 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
     if (!cacheable(*m)) continue;
     const Vec3 x = p + h.t * dir;
     const Vec3 ng = shapeNormal(shape, x);
-    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape});
+    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
   }
+}
+
+bool Tracer::cacheVisible(const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) const {
+  const Vec3 a = p + originOffset(p) * n, b = r.p + originOffset(r.p) * r.n;
+  const Vec3 d = b - a;
+  const double len = glm::length(d);
+  if (len <= 0.0) return true;
+  // Both endpoints' own shapes are skipped: a chord of a convex surface passes inside it.
+  return !accel_->occluded(a, d / len, 0.0, len, shape, r.shape);
 }
 
 double Tracer::harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) const {

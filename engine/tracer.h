@@ -23,6 +23,10 @@ namespace candela {
 // std::invalid_argument otherwise.
 Method parseMethod(const std::string& s);
 
+// The presets' bounce limit: a safety cap only; Russian roulette ends paths long before
+// (expected length 1/(1 − albedo)).
+inline constexpr int kUnlimitedBounces = 1000;
+
 // Sample counts and limits of one run. Passed explicitly; no global options.
 struct TraceSettings {
   int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
@@ -91,6 +95,9 @@ class Tracer {
   // Fills r.e, its gradients and variance from s.cache.recordSamples hemisphere rays, random
   // stream `stream`; deeper bounces are path traced with Russian roulette (the closure).
   void computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s) const;
+  // Whether a record may serve point p (normal n) on `shape`: the segment between the two
+  // points, each lifted off its surface, meets no shape but theirs.
+  bool cacheVisible(const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) const;
   // Whether the cache serves diffuse reflection off material m (opaque, diffusely reflecting).
   static bool cacheable(const Material& m);
 

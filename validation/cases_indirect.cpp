@@ -40,7 +40,7 @@ CaseResult runIndirect(const RunConfig& cfg, const std::string& scene, Method me
   s.method = method;
   CaseResult r;
   const std::vector<IrradianceEstimate> est = runIndirectScene(sc, s, cfg.threads, &r.seconds);
-  r.reference = sc.closedFormLux.empty() ? "path tracer, 8192 samples, 64 bounces" : sc.reference;
+  r.reference = sc.closedFormLux.empty() ? "path tracer, 8192 samples, all bounces" : sc.reference;
   r.tolerance = tolerance;
   for (size_t i = 0; i < est.size(); ++i) {
     char label[64];

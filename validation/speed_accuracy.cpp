@@ -153,7 +153,7 @@ TraceSettings referenceSettings() {
   TraceSettings s = settingsForQuality(Quality::kHigh);
   s.hemisphereSamples = 8192;
   s.lightSamples = 256;
-  s.maxBounces = 64;
+  s.maxBounces = kUnlimitedBounces;
   s.method = Method::kPath;
   s.seed = 0x5eed;
   return s;

@@ -25,8 +25,8 @@ struct IndirectScene {
 // lit only by an uplight, and a furnished office.
 std::vector<IndirectScene> indirectScenes();
 
-// The converged reference: the path tracer at 8192 hemisphere samples, 256 light samples, 64
-// bounces, a seed of its own.
+// The converged reference: the path tracer at 8192 hemisphere samples, 256 light samples,
+// bounces left to Russian roulette, a seed of its own.
 TraceSettings referenceSettings();
 
 // Illuminance (lux) and standard errors of a scene's points under `s`; *seconds gets the wall

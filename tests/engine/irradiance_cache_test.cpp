@@ -132,13 +132,18 @@ TEST(IrradianceCache, OctreeSearchFindsWhatBruteForceFinds) {
     double sw = 0.0, swe = 0.0;
     for (size_t i = 0; i < c.size(); ++i) {
       const double w = c.weight(c.record(i), p, n);
-      if (w > 1.0 / cs.accuracy) sw += w, swe += w * c.record(i).e[0];
+      if (w > 1.0 / cs.accuracy) {
+        sw += w;
+        swe += w * c.record(i).e[0];
+      }
     }
     Rgb e;
     cs.gradients = false;
     const bool got = c.interpolate(p, n, e);
     ASSERT_EQ(got, sw > 0.0) << q;
-    if (got) EXPECT_NEAR(e[0], swe / sw, 1e-12) << q;
+    if (got) {
+      EXPECT_NEAR(e[0], swe / sw, 1e-12) << q;
+    }
   }
 }
 
