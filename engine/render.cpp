@@ -357,4 +357,42 @@ EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSetting
   return e;
 }
 
+double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target, const TraceSettings& settings,
+                       uint64_t stream, int pathSamples) {
+  const Vec3 d = glm::normalize(target - eye);
+  RayHit h;
+  if (!tracer.accelerator().intersect(eye, d, 0.0, 1e300, h)) return 0.0;
+  const Shape& shape = tracer.scene().shapes[h.shape];
+  const Material& mat = tracer.scene().materials[shape.material];
+  if (isMatteOpaque(mat)) {
+    const Vec3 x = eye + h.t * d;
+    const Vec3 ng = shapeNormal(shape, x);
+    const Vec3 nf = glm::dot(d, ng) < 0.0 ? ng : -ng;
+    const Vec3 p = x + Tracer::originOffset(x) * nf;
+    return luminanceFromRadiance(mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, settings).irradiance);
+  }
+  TraceSettings s = settings;
+  s.maxBounces = settings.maxBounces + 1;  // as renderView: the surface seen is the first reflection
+  Rng rng(settings.seed, stream);
+  Rgb sum(0.0);
+  const int n = std::max(1, pathSamples);
+  for (int k = 0; k < n; ++k) sum += tracer.radiance(eye, d, kNoShape, true, rng, s);
+  return luminanceFromRadiance(sum / static_cast<double>(n));
+}
+
+Scene referenceSphereScene(const Scene& scene, double luminanceCdM2) {
+  Scene ref = scene;
+  for (Material& m : ref.materials)
+    if (m.isEmitter()) m.color = Rgb(0.0);
+  ref.luminaires.clear();
+  ref.sky.reset();
+  ref.distant.clear();  // sources at infinity (sun, sky glows) are no obstruction: gone
+  Material sphere;
+  sphere.type = MaterialType::Glow;
+  sphere.name = "reference_sphere";
+  sphere.color = Rgb(luminanceCdM2 / kLumensPerWatt);
+  ref.addDistant({0.0, 0.0, 1.0}, 360.0, ref.addMaterial(sphere), "reference_sphere");
+  return ref;
+}
+
 }  // namespace candela

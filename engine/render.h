@@ -103,4 +103,16 @@ struct EyeLight {
 };
 EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, uint64_t stream = 0);
 
+// Luminance in cd/m² of the surface point `target` seen from `eye` (contrast of a task against
+// its background, metrics/contrast.h): a matte opaque surface gives ρ E / π with E the sensor
+// estimator's irradiance there (`settings`, random stream `stream`); any other surface the mean
+// of `pathSamples` camera paths through the point. 0 when nothing is hit.
+double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target, const TraceSettings& settings,
+                       uint64_t stream, int pathSamples = 256);
+
+// The scene under CRF's reference lighting: the same surfaces and materials, every source put
+// out (emitter surfaces black, no luminaires, no sky, no distant sources) and a uniform sphere of luminance `luminanceCdM2`
+// (a 360° glow) around it all. Keep it alive while a Tracer uses it.
+Scene referenceSphereScene(const Scene& scene, double luminanceCdM2 = 100.0);
+
 }  // namespace candela

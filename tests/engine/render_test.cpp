@@ -333,5 +333,51 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   EXPECT_TRUE(glare.sources.empty());
 }
 
+// CRF end to end: a matte card on a matte desk lit by a far-field Lambertian panel (the engine's
+// point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
+// Matte surfaces have L = ρE/π, so C = (ρt E_t − ρb E_b)/(ρb E_b), with E_t/E_b from the web's
+// intensities; under the sphere both points see the whole sky over a 40 m floor, E = π L exactly,
+// so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
+TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
+  std::ostringstream ies;
+  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
+      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
+  for (int i = 0; i <= 90; i += 5) ies << i << " ";
+  ies << "\n0\n";
+  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
+  ies << "\n";
+  Scene sc;
+  const double rb = 0.5, rt = 0.1;
+  addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::Plastic, rb));
+  addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::Plastic, rt));
+  LuminairePlacement lp;
+  lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
+  sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  const Tracer tracer(sc);
+  const Scene refScene = referenceSphereScene(sc, 100.0);
+  const Tracer ref(refScene);
+  TraceSettings s;
+  s.maxBounces = 0;
+  const Vec3 eye(0.0, 0.0, 0.6), task(0.0, 1.0, 1e-3), background(0.0, 1.15, 0.0);
+  const double ct = luminanceContrast(luminanceToward(tracer, eye, task, s, 1), luminanceToward(tracer, eye, background, s, 2));
+  const double lt = luminanceToward(ref, eye, task, s, 3), lb = luminanceToward(ref, eye, background, s, 4);
+  EXPECT_NEAR(lt, rt * 100.0, 1e-9 * 100.0);
+  EXPECT_NEAR(lb, rb * 100.0, 1e-9 * 100.0);
+  const double cref = luminanceContrast(lt, lb);
+  EXPECT_NEAR(cref, matteReferenceContrast(rt, rb), 1e-9);
+  const auto e = [&](const Vec3& p) {
+    const Vec3 d = lp.positionM - p;
+    const double dist = glm::length(d);
+    return sc.luminaires[0].intensityCd(-d / dist) * (d.z / dist) / (dist * dist);
+  };
+  const double ratio = e(task) / e(background);
+  const double crf = contrastRenditionFactor(ct, cref);
+  std::printf("[ measured ] reference sphere: C %.6f, C_ref %.6f, CRF %.6f (E_t/E_b %.6f)\n", ct, cref, crf, ratio);
+  // (The estimate is taken 10⁻⁷ m off the surface, where the ray met it: 10⁻⁷ relative.)
+  EXPECT_NEAR(ct, (rt * ratio - rb) / rb, 1e-7);
+  EXPECT_NEAR(crf, (rt * ratio - rb) / (rt - rb), 1e-7);
+  EXPECT_NEAR(crf, 1.0, 0.01);
+}
+
 }  // namespace
 }  // namespace candela
