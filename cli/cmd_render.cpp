@@ -10,6 +10,7 @@
 #include "engine/case_file.h"
 #include "engine/case_scene.h"
 #include "engine/render.h"
+#include "metrics/contrast.h"
 #include "metrics/glare.h"
 #include "reports/report_data.h"
 #include "reports/tonemap.h"
@@ -45,6 +46,7 @@ struct RenderOptions {
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
+  std::vector<double> task, background;   // points (m) for contrast and CRF, seen from the view point
   bool quiet = false;
 };
 
@@ -114,6 +116,28 @@ int renderCase(const RenderOptions& o) {
     dgp = evaluateImageGlare(img.luminance, g.directionView, g.solidAngleSr, img.width, img.height, det);
   }
 
+  // Contrast of a task point against a background point seen from the view point, under the
+  // case's lighting and under the reference uniform sphere (CRF).
+  struct ContrastLine {
+    double lt, lb, c, cref;
+  };
+  std::optional<ContrastLine> contrast;
+  if (o.task.size() == 3 && o.background.size() == 3) {
+    const Vec3 task(o.task[0], o.task[1], o.task[2]), background(o.background[0], o.background[1], o.background[2]);
+    const Scene refScene =
+        referenceSphereScene(*scene, {shapeToward(tracer, cam.position(), task), shapeToward(tracer, cam.position(), background)});
+    const Tracer ref(refScene);
+    const double lt = luminanceToward(tracer, cam.position(), task, settings, 1);
+    const double lb = luminanceToward(tracer, cam.position(), background, settings, 2);
+    const double rt = luminanceToward(ref, cam.position(), task, settings, 3);
+    const double rb = luminanceToward(ref, cam.position(), background, settings, 4);
+    if (!(lb > 0.0) || !(rb > 0.0) || rt == rb)
+      throw InputError(FileLoc{c.path.string(), 0, 0},
+                       "--task/--background: the background is dark or task and background look alike under "
+                       "the reference sphere; no contrast to rate");
+    contrast = ContrastLine{lt, lb, luminanceContrast(lt, lb), luminanceContrast(rt, rb)};
+  }
+
   // Pictures.
   std::vector<Rgb> rgbCdM2(img.radiance.size());
   for (std::size_t i = 0; i < rgbCdM2.size(); ++i) rgbCdM2[i] = kLumensPerWatt * img.radiance[i];
@@ -164,6 +188,10 @@ int renderCase(const RenderOptions& o) {
     if (dgp)
       s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
         << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";
+    if (contrast)
+      s << "contrast: task " << num(contrast->lt, 2) << " cd/m2, background " << num(contrast->lb, 2) << " cd/m2, C "
+        << num(contrast->c, 3) << ", under the reference sphere " << num(contrast->cref, 3) << ", CRF "
+        << num(contrastRenditionFactor(contrast->c, contrast->cref), 3) << "\n";
     s << "wrote " << paths.exr.string() << ", " << paths.falseColor.string() << ", " << paths.preview.string() << " in "
       << num(seconds, 1) << " s\n";
     std::cout << s.str() << std::flush;
@@ -204,6 +232,9 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--glare-threshold", opts->glareThresholdCdM2,
                   "DGP glare-source threshold, cd/m2 (default 5 x the image's mean luminance)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--task", opts->task, "task point X Y Z (m) for contrast and CRF, seen from the view point")
+      ->expected(3);
+  cmd->add_option("--background", opts->background, "background point X Y Z (m) next to the task")->expected(3);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors only)");
   cmd->callback([opts, &action] { action = [opts] { return renderCase(*opts); }; });
 }

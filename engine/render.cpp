@@ -380,13 +380,24 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   return luminanceFromRadiance(sum / static_cast<double>(n));
 }
 
-Scene referenceSphereScene(const Scene& scene, double luminanceCdM2) {
-  Scene ref = scene;
+uint32_t shapeToward(const Tracer& tracer, const Vec3& eye, const Vec3& target) {
+  RayHit h;
+  return tracer.accelerator().intersect(eye, glm::normalize(target - eye), 0.0, 1e300, h) ? h.shape : kNoShape;
+}
+
+Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keepShapes, double luminanceCdM2) {
+  Scene ref;
+  ref.materials = scene.materials;
   for (Material& m : ref.materials)
     if (m.isEmitter()) m.color = Rgb(0.0);
-  ref.luminaires.clear();
-  ref.sky.reset();
-  ref.distant.clear();  // sources at infinity (sun, sky glows) are no obstruction: gone
+  ref.vertices = scene.vertices;  // shapes index into it: kept whole
+  for (std::size_t k = 0; k < keepShapes.size(); ++k) {
+    const uint32_t i = keepShapes[k];
+    if (i >= scene.shapes.size()) continue;
+    if (std::find(keepShapes.begin(), keepShapes.begin() + k, i) != keepShapes.begin() + k) continue;  // listed twice
+    ref.shapes.push_back(scene.shapes[i]);
+    ref.shapeNames.push_back(i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string());
+  }
   Material sphere;
   sphere.type = MaterialType::Glow;
   sphere.name = "reference_sphere";

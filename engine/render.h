@@ -110,9 +110,13 @@ EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSetting
 double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target, const TraceSettings& settings,
                        uint64_t stream, int pathSamples = 256);
 
-// The scene under CRF's reference lighting: the same surfaces and materials, every source put
-// out (emitter surfaces black, no luminaires, no sky, no distant sources) and a uniform sphere of luminance `luminanceCdM2`
-// (a 360° glow) around it all. Keep it alive while a Tracer uses it.
-Scene referenceSphereScene(const Scene& scene, double luminanceCdM2 = 100.0);
+// The shape the eye at `eye` sees in the direction of `target` (kNoShape when none).
+uint32_t shapeToward(const Tracer& tracer, const Vec3& eye, const Vec3& target);
+
+// CRF's reference: the task in a photometric sphere. Only the shapes `keepShapes` (the task's and
+// its background's surfaces, e.g. from shapeToward) with their materials (emitters black), no
+// luminaires, sky or distant sources, and a uniform sphere of luminance `luminanceCdM2` (a 360°
+// glow) all around. Keep it alive while a Tracer uses it.
+Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keepShapes, double luminanceCdM2 = 100.0);
 
 }  // namespace candela

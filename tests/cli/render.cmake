@@ -13,3 +13,9 @@ candela_cli_test(render.bad_scale 2 "--scale" render ${RENDER_CASE} --view door 
 candela_cli_test(render.missing_case 2 "no_such_case.toml" render no_such_case.toml --view door)
 candela_cli_test(render.min_above_max 2 "--max must be above --min" render ${RENDER_CASE} --view door --min 100 --max 10)
 candela_cli_test(render.log_min_zero 2 "--min must be above 0 cd/m2 on a log scale" render ${RENDER_CASE} --view door --min 0)
+# Contrast: a floor point against the wall behind it (different materials), then two floor points
+# (the same material: no reference contrast, refused).
+candela_cli_test(render.contrast 0 ", CRF " render ${RENDER_CASE} --view door --out ${RENDER_OUT}
+                 --task 2.0 2.5 0.0 --background 2.0 3.0 0.3)
+candela_cli_test(render.contrast_same_material 2 "task and background look alike under the reference sphere"
+                 render ${RENDER_CASE} --view door --out ${RENDER_OUT} --task 2.0 2.0 0.0 --background 2.0 2.5 0.0)

@@ -336,8 +336,8 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
 // CRF end to end: a matte card on a matte desk lit by a far-field Lambertian panel (the engine's
 // point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
 // Matte surfaces have L = ρE/π, so C = (ρt E_t − ρb E_b)/(ρb E_b), with E_t/E_b from the web's
-// intensities; under the sphere both points see the whole sky over a 40 m floor, E = π L exactly,
-// so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
+// intensities; under the sphere (task and desk alone, the wall added afterwards left out) both
+// points see the whole sky over a 40 m floor, E = π L exactly, so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
 TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   std::ostringstream ies;
   ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
@@ -353,12 +353,19 @@ TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   LuminairePlacement lp;
   lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
   sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the
+  // sphere out, so the reference keeps only the two surfaces seen.
+  sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::Plastic, 0.7));
   const Tracer tracer(sc);
-  const Scene refScene = referenceSphereScene(sc, 100.0);
-  const Tracer ref(refScene);
   TraceSettings s;
   s.maxBounces = 0;
   const Vec3 eye(0.0, 0.0, 0.6), task(0.0, 1.0, 1e-3), background(0.0, 1.15, 0.0);
+  const std::vector<uint32_t> keep = {shapeToward(tracer, eye, task), shapeToward(tracer, eye, background), 1u};
+  EXPECT_EQ(keep[0], 1u);
+  EXPECT_EQ(keep[1], 0u);
+  const Scene refScene = referenceSphereScene(sc, keep, 100.0);
+  EXPECT_EQ(refScene.shapes.size(), 2u);
+  const Tracer ref(refScene);
   const double ct = luminanceContrast(luminanceToward(tracer, eye, task, s, 1), luminanceToward(tracer, eye, background, s, 2));
   const double lt = luminanceToward(ref, eye, task, s, 3), lb = luminanceToward(ref, eye, background, s, 4);
   EXPECT_NEAR(lt, rt * 100.0, 1e-9 * 100.0);
