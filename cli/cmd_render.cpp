@@ -42,7 +42,7 @@ struct RenderOptions {
   int threads = -1;
   int pixelSamples = 4;
   int coarseStep = 4;
-  int irradianceSamples = 0;
+  int irradianceSamples = -1;  // < 0: automatic (64 with daylight, else 0)
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
@@ -88,7 +88,10 @@ int renderCase(const RenderOptions& o) {
   RenderSettings rs;
   rs.samplesPerPixel = o.pixelSamples;
   rs.coarseStep = o.coarseStep;
-  rs.irradianceSamples = o.irradianceSamples;
+  // Daylight enters rooms through windows, which a path's single sky sample rarely finds: camera
+  // paths alone leave salt-and-pepper noise (docs/views.md); the stratified irradiance estimate at
+  // the surfaces seen does not.
+  rs.irradianceSamples = o.irradianceSamples >= 0 ? o.irradianceSamples : (scene->sky ? 64 : 0);
   const Tracer tracer(*scene);
   Image img;
   {
@@ -169,7 +172,9 @@ int renderCase(const RenderOptions& o) {
     std::ostringstream s;
     s << "view " << view->name << ": " << img.width << " x " << img.height << " "
       << (view->type == ViewType::kFisheye ? "fisheye" : "perspective") << ", " << img.tracedPixels << " of "
-      << img.width * img.height << " pixels traced (" << rs.samplesPerPixel << " rays each)\n";
+      << img.width * img.height << " pixels traced (" << rs.samplesPerPixel << " rays each"
+      << (rs.irradianceSamples > 0 ? ", irradiance from " + std::to_string(rs.irradianceSamples) + " samples at matte surfaces" : "")
+      << ")\n";
     s << "luminance: mean " << num(omega > 0.0 ? sum / omega : 0.0, 1) << " cd/m2, max " << num(peak, 1) << " cd/m2\n";
     s << "vertical illuminance at the eye " << num(evLux, 1) << " lx\n";
     if (ugrSources.empty())
@@ -221,7 +226,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("--irradiance-samples", opts->irradianceSamples,
-                  "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray (0 = off)")
+                  "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray "
+                  "(0 = off; default 64 with daylight, else 0)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--scale", opts->scale, "false-colour scale: log | linear (default log)")
       ->check(CLI::IsMember({"log", "linear"}));
