@@ -47,7 +47,8 @@ double daylightGlareProbability(double verticalIlluminanceLux, const std::vector
                                 bool lowLight = true);
 
 // How glare sources are found in an image: pixels brighter than `thresholdCdM2` when it is
-// positive, else than `averageFactor` × the image's mean luminance (evalglare's default of 5 ×).
+// positive, else than `averageFactor` × the image's mean luminance (evalglare 1.x's default of 5 ×;
+// evalglare 2.x defaults to a fixed 2000 cd/m², per its author on the Radiance forum).
 struct GlareDetection {
   double thresholdCdM2 = 0.0;
   double averageFactor = 5.0;
