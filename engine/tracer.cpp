@@ -437,8 +437,8 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         if (rng.uniform() * (pt + pr) < pt) {
           beta *= tr * ((pt + pr) / pt);
           o = x - off * nf;
-          // Through glass after a mirror: the virtual source's shadow ray passed it too.
-          if (!viaImage) countSources = true;
+          // Thin glass keeps the direction: whether sources count is the incoming ray's state
+          // (shadow rays through the same glass already carried them from a diffuse vertex).
         } else {
           beta *= rf * ((pt + pr) / pr);
           d = d - 2.0 * glm::dot(d, ng) * ng;
@@ -472,15 +472,15 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         return result;
       }
       ++cache->misses;
-      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1);
+      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources);
     }
-    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split);
+    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources);
   }
   return result;
 }
 
 Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
-                          const TraceSettings& s, int diffuse, int split) const {
+                          const TraceSettings& s, int diffuse, int split, bool countSources) const {
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   const int k = std::max(1, split);
@@ -510,7 +510,9 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
              pathRadiance(xb, dir, flatSkip, false, rng, s, diffuse + 1, 1, -glm::dot(dir, nf) * kInvPi, 1.0);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
-      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, true, rng, s, diffuse, 1);
+      // Straight on, so sources count as they did for the incoming ray (shadow rays through the
+      // trans already carried them to diffuse vertices).
+      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1);
     } else if (u < pRho + pTd + pTs + pSp) {
       acc += (norm / pSp) * glossyBounce(x, inDir, nf, off, flatSkip, m, rng, s, diffuse);
     }

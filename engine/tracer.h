@@ -147,7 +147,7 @@ class Tracer {
                    double misRatio = 1.0, CacheUse* cache = nullptr, double* firstHitT = nullptr) const;
   // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
   Rgb diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
-                    const TraceSettings& s, int diffuse, int split) const;
+                    const TraceSettings& s, int diffuse, int split, bool countSources) const;
   // One source's irradiance at p with k samples (ratio estimator on its closed form where there
   // is one); visibility(LightSample, lightShape) → RGB transmittance.
   template <class Visibility>
