@@ -50,7 +50,9 @@ void thinGlass(const Material& m, double cosI, Rgb& trans, Rgb& refl) {
 // E[(y_k−1 − 2y_k + y_k+1)²] = (curvature of μ)² + σ²_k−1 + 4σ²_k + σ²_k+1, so Σ d²/6 bounds
 // Σ σ² from above, and unlike collapsed pairs (Cochran, "Sampling Techniques", 5A.12) a smooth
 // linear trend adds nothing. Fewer φ strata: collapsed pairs, Σ (y_a − y_b)²/2 per pair.
-double stratifiedVariance(const std::vector<double>& y, int m, int n) {
+// counts (optional): samples averaged in each cell (adaptive super-sampling); a cell's share is
+// divided by its count, the variance of a mean of that many samples from the cell.
+double stratifiedVariance(const std::vector<double>& y, int m, int n, const std::vector<int>* counts = nullptr) {
   const double cells = static_cast<double>(y.size());
   if (y.empty()) return 0.0;
   double sumVar = 0.0;
@@ -58,7 +60,7 @@ double stratifiedVariance(const std::vector<double>& y, int m, int n) {
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < n; ++k) {
         const double d = y[j * n + (k + n - 1) % n] - 2.0 * y[j * n + k] + y[j * n + (k + 1) % n];
-        sumVar += d * d / 6.0;
+        sumVar += d * d / 6.0 / (counts ? (*counts)[j * n + k] : 1);
       }
   } else {
     for (size_t c = 0; c + 1 < y.size(); c += 2) sumVar += (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
@@ -677,9 +679,10 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   const Frame frame = Frame::fromNormal(n);
   thread_local std::vector<Rgb> value;
   thread_local std::vector<double> y, diff;
-  thread_local std::vector<int> order;
+  thread_local std::vector<int> order, counts;
   value.assign(cells, Rgb(0.0));
   y.assign(cells, 0.0);
+  counts.assign(cells, 1);
   auto sampleCell = [&](int cell, double su, double sv, int sub) {
     // Jittered sample of sub-stratum (su, sv) of `sub`×`sub` inside the cell.
     const int j = cell / nPhi, k = cell % nPhi;
@@ -722,13 +725,14 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
       Rgb acc = value[c];
       for (int q = 0; q < sub * sub; ++q) acc += sampleCell(c, q / sub, q % sub, sub);
       value[c] = acc / static_cast<double>(1 + sub * sub);
+      counts[c] = 1 + sub * sub;
       y[c] = photopic(value[c]);
     }
   }
   Rgb sum(0.0);
   for (int c = 0; c < cells; ++c) sum += value[c];
   est.irradiance += kPi * sum / static_cast<double>(cells);
-  var += stratifiedVariance(y, mTheta, nPhi);
+  var += stratifiedVariance(y, mTheta, nPhi, &counts);
   if (cache) {
     // The cached share. The collapsed-strata variance above sees the rays' own noise (direct
     // light at the hits) but not the records', which many rays share: record i enters the

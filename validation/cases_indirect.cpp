@@ -90,8 +90,10 @@ std::vector<Case> indirectCases() {
       indirect("integrating-sphere-rho0.5", Method::kCache, 0.02, true),
       indirect("integrating-sphere-rho0.8", Method::kCache, 0.02, true),
       {"cache-sphere-on-plane-rho0.5", "indirect", true, cacheSphereOnPlane},
-      indirect("sphere-on-plane-sun-sky", Method::kCache, 0.02, false),
-      indirect("sphere-on-plane-sun-sky", Method::kPath, 0.02, false),
+      // 3 %: floor points a few cm from the contact point, in the shadow (130 lux) beside the
+      // sunlit sphere (35 000 lux), carry standard errors of 1–2 % at every preset.
+      indirect("sphere-on-plane-sun-sky", Method::kCache, 0.03, false),
+      indirect("sphere-on-plane-sun-sky", Method::kPath, 0.03, false),
       indirect("uplit-room", Method::kCache, 0.02, false),
       indirect("uplit-room", Method::kPath, 0.02, false),
       indirect("furnished-office", Method::kCache, 0.02, false),

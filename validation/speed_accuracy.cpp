@@ -60,13 +60,16 @@ IndirectScene integratingSphere(double rho) {
   s.name = "integrating-sphere-rho" + num(rho);
   s.rad = "void light lamp 0 0 3 1000 1000 1000\nlamp sphere bulb 0 0 4 0 0 0 0.02\n" + plastic("wall", rho) +
           "wall bubble shell 0 0 4 0 0 0 1\n";
-  // The sensor, d from the centre and facing it, receives the lamp's E_d(d) and the wall's
-  // radiance ρ E_w/(π(1 − ρ)) (E_w = π L r² on the wall, all bounces) over its hemisphere less
-  // the lamp's disc, a fraction sin² α = (r/d)² of π.
-  s.reference = "E = E_d(d) + (1 - (r/d)^2) rho E_w / (1 - rho)";
+  // The wall receives E_w = π L r² directly, and of the light it reflects a fraction r² (the
+  // lamp's projected solid angle over π, seen from the wall 1 m away along its normal) falls on
+  // the black lamp, the rest on the wall: E_wall = E_w / (1 − ρ(1 − r²)). The sensor, d from
+  // the centre and facing it, receives the lamp's E_d(d) and the wall's radiance ρ E_wall/π over
+  // its hemisphere less the lamp's disc, a fraction sin² α = (r/d)² of π.
+  s.reference = "E = E_d(d) + (1 - (r/d)^2) rho E_w / (1 - rho (1 - r^2))";
   const double d = 0.999, r = 0.02;
   const double ew = analytic::sphereSource(1000.0, r, 1.0, 1.0);
-  const double e = kLumensPerWatt * (analytic::sphereSource(1000.0, r, d, 1.0) + (1.0 - (r / d) * (r / d)) * rho * ew / (1.0 - rho));
+  const double e = kLumensPerWatt * (analytic::sphereSource(1000.0, r, d, 1.0) +
+                                     (1.0 - (r / d) * (r / d)) * rho * ew / (1.0 - rho * (1.0 - r * r)));
   // A spiral of 26 directions (Fibonacci lattice), roughly uniform over the sphere.
   const int n = 26;
   for (int i = 0; i < n; ++i) {
@@ -177,10 +180,11 @@ std::vector<ChartRow> runSpeedAccuracy(int threads, bool quick) {
     double accuracy;
     int recordSamples;
   };
+  // The presets' own settings (draft, normal, high: engine/tracer.cpp) and points between them.
   std::vector<Setting> settings = {
-      {Method::kPath, 128, 0, 0},         {Method::kPath, 512, 0, 0},         {Method::kPath, 2048, 0, 0},
-      {Method::kPath, 8192, 0, 0},        {Method::kCache, 512, 0.3, 64},     {Method::kCache, 1024, 0.25, 128},
-      {Method::kCache, 2048, 0.2, 256},   {Method::kCache, 2048, 0.15, 512},  {Method::kCache, 4096, 0.1, 1024},
+      {Method::kPath, 256, 0, 0},         {Method::kPath, 512, 0, 0},          {Method::kPath, 2048, 0, 0},
+      {Method::kPath, 8192, 0, 0},        {Method::kCache, 256, 0.3, 64},      {Method::kCache, 1024, 0.25, 128},
+      {Method::kCache, 2048, 0.2, 256},   {Method::kCache, 4096, 0.15, 512},   {Method::kCache, 8192, 0.1, 1024},
   };
   if (quick) settings = {{Method::kPath, 128, 0, 0}, {Method::kCache, 256, 0.25, 128}};
   std::vector<ChartRow> rows;

@@ -211,7 +211,8 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
     pts.push_back({d * dir, -dir});
   const auto est = computeIrradiance(tracer, pts, cacheSettings(), 0);
   const double ew = analytic::sphereSource(L, r, 1.0, 1.0), ed = analytic::sphereSource(L, r, d, 1.0);
-  const double want = kLumensPerWatt * (ed + (1.0 - (r / d) * (r / d)) * rho * ew / (1.0 - rho));
+  // The black lamp takes a fraction r² of the light each wall point reflects: 1 − ρ(1 − r²).
+  const double want = kLumensPerWatt * (ed + (1.0 - (r / d) * (r / d)) * rho * ew / (1.0 - rho * (1.0 - r * r)));
   for (const auto& e : est) {
     std::printf("[ measured ] integrating sphere: %.5g ± %.2g lux, closed form %.5g lux\n", e.illuminanceLux(),
                 e.standardErrorLux(), want);
