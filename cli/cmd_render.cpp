@@ -4,6 +4,7 @@
 // (CIE 117) for every view, DGP from the image (Wienold & Christoffersen 2006) for fisheye views.
 // Everything is read and checked before tracing; each file is written atomically.
 #include "cli/commands.h"
+#include "cli/view_glare.h"
 #include "cli/progress.h"
 
 #include "engine/base/error.h"
@@ -101,23 +102,13 @@ int renderCase(const RenderOptions& o) {
     bar.finish();
   }
 
-  // Glare. UGR: the luminaires seen from the view point along its direction, against the
-  // background of the indirect illuminance at the eye (CIE 117).
+  // Glare: UGR from the luminaires seen, DGP from a fisheye image (cli/view_glare.h).
   const Camera cam(*view);
-  const EyeLight eye = eyeLight(tracer, *view, settings);
-  std::vector<GlareSource> ugrSources;
-  for (const SeenLuminaire& s : eye.luminaires)
-    if (s.transmittance > 0.0)
-      ugrSources.push_back({s.luminanceCdM2 * s.transmittance, s.solidAngleSr, positionIndex(s.directionView)});
-  const double evLux = eye.verticalLux;
-  const double backgroundCdM2 = eye.backgroundLuminanceCdM2();
-  std::optional<ImageGlare> dgp;
-  if (view->type == ViewType::kFisheye) {
-    const ViewGeometry g = viewGeometry(*view);
-    GlareDetection det;
-    det.thresholdCdM2 = o.glareThresholdCdM2;
-    dgp = evaluateImageGlare(img.luminance, g.directionView, g.solidAngleSr, img.width, img.height, det);
-  }
+  const ViewGlare glare = computeViewGlare(tracer, *view, settings, img, o.glareThresholdCdM2);
+  const std::vector<GlareSource>& ugrSources = glare.sources;
+  const double evLux = glare.verticalLux;
+  const double backgroundCdM2 = glare.backgroundCdM2;
+  const std::optional<ImageGlare>& dgp = glare.dgp;
 
   // Contrast of a task point against a background point seen from the view point, under the
   // case's lighting and under the reference uniform sphere (CRF).

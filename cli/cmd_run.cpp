@@ -3,6 +3,10 @@
 // metrics and target verdicts, and only then writes <grid>.csv, summary.csv, summary.json and
 // report.html, each file atomically. A run that fails on bad input writes nothing.
 #include "cli/commands.h"
+#include "cli/view_glare.h"
+#include "engine/render.h"
+#include "reports/png_writer.h"
+#include "reports/tonemap.h"
 #include "cli/progress.h"
 
 #include "engine/base/atomic_file.h"
@@ -192,9 +196,6 @@ int runCase(const RunOptions& o) {
 
   // Notes, after validation so that a bad case prints its one error line only.
   if (!o.quiet) {
-    if (!c.views.empty())
-      std::cerr << "candela run: note: " << c.views.size()
-                << " [[view]] entr" << (c.views.size() == 1 ? "y is" : "ies are") << " not rendered yet\n";
   }
 
   // 3. Trace all grids as one list (grids in case order): point k of the run uses random
@@ -243,7 +244,7 @@ int runCase(const RunOptions& o) {
     std::snprintf(buf, sizeof buf, "%.2f", c.sky.groundReflectance);
     data.run.settings.emplace_back("ground reflectance", buf);
   }
-  if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()) + " not rendered (not supported yet)");
+  if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()));
 
   std::vector<std::vector<ReportPoint>> csvPoints(grids.size());
   std::vector<std::vector<double>> errors(grids.size());
@@ -273,6 +274,50 @@ int runCase(const RunOptions& o) {
     r.layout = planLayout(g);
     data.grids.push_back(std::move(r));
   }
+  // 4b. Views: luminance images and visual metrics (docs/views.md), computed before anything is
+  // written like the grids.
+  struct RenderedView {
+    std::string stem;
+    Image img;
+    std::vector<Rgb> rgbCdM2;
+    ColorScale scale;
+  };
+  std::vector<RenderedView> rendered;
+  for (const ViewSpec& view : c.views) {
+    RenderSettings rs;
+    // Matte surfaces seen take a stratified irradiance estimate (64 samples): plain camera paths
+    // leave salt-and-pepper noise at the few rays per pixel a report can afford (docs/views.md).
+    rs.irradianceSamples = 64;
+    RenderedView rv;
+    {
+      ProgressBar bar("rendering " + view.name, static_cast<std::size_t>(view.resolution.x) * view.resolution.y,
+                      ProgressBar::wanted(o.quiet));
+      rv.img = renderView(tracer, view, settings, threads, rs, [&bar](std::size_t done, std::size_t) { bar.update(done); });
+      bar.finish();
+    }
+    const cli::ViewGlare glare = cli::computeViewGlare(tracer, view, settings, rv.img, 0.0);
+    rv.rgbCdM2.resize(rv.img.radiance.size());
+    for (std::size_t i = 0; i < rv.rgbCdM2.size(); ++i) rv.rgbCdM2[i] = kLumensPerWatt * rv.img.radiance[i];
+    rv.scale = luminanceScale(rv.img.luminance, true);
+    rv.stem = safeFileName(view.name);
+    ViewReport vr;
+    vr.name = view.name;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%s, %d × %d px, from (%.2f, %.2f, %.2f) m; files %s.exr, %s.png",
+                  view.type == ViewType::kFisheye ? "fisheye 180°" : "perspective", rv.img.width, rv.img.height,
+                  view.positionM.x, view.positionM.y, view.positionM.z, rv.stem.c_str(), rv.stem.c_str());
+    vr.description = buf;
+    vr.falseColorPng = encodePng(luminanceFalseColor(rv.img.width, rv.img.height, rv.img.luminance, rv.scale));
+    vr.previewPng = encodePng(toneMap(rv.img.width, rv.img.height, rv.img.luminance, rv.rgbCdM2, rv.img.inside));
+    vr.metrics.emplace_back("Vertical illuminance at the eye", fixed(glare.verticalLux, 1) + " lx");
+    vr.metrics.emplace_back("UGR (CIE 117)", glare.sources.empty() ? "no luminaire in view"
+                                                                   : fixed(glare.ugr, 1) + " (" +
+                                                                         std::to_string(glare.sources.size()) +
+                                                                         " luminaires)");
+    if (glare.dgp) vr.metrics.emplace_back("DGP (Wienold & Christoffersen 2006)", fixed(glare.dgp->dgp, 3));
+    data.views.push_back(std::move(vr));
+    rendered.push_back(std::move(rv));
+  }
   data.run.runTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // 5. Write. Each file goes through a temporary and a rename.
@@ -284,6 +329,9 @@ int runCase(const RunOptions& o) {
                      {{"error_lux", errors[gi]}, {"daylight_factor_pct", data.grids[gi].values}});
       else
         writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], luxValues[gi], {{"error_lux", errors[gi]}});
+    for (const RenderedView& rv : rendered)
+      writeViewImages(outDir, rv.stem, rv.img.width, rv.img.height, rv.img.luminance, rv.rgbCdM2, rv.img.inside,
+                      rv.scale, "candela " + std::string(CANDELA_VERSION) + ", case " + c.name);
     writeSummaryCsv(outDir, data);
     writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
     writeHtmlReport(outDir / "report.html", data);

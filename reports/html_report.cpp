@@ -12,6 +12,23 @@ namespace candela {
 
 namespace {
 
+// RFC 4648 base64, for embedding PNG pictures as data URIs.
+std::string base64(const std::vector<uint8_t>& bytes) {
+  static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const uint32_t b0 = bytes[i], b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0, b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const uint32_t v = (b0 << 16) | (b1 << 8) | b2;
+    out += kTable[(v >> 18) & 63];
+    out += kTable[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
+  }
+  return out;
+}
+
+
 constexpr const char* kCss = R"css(
 :root { --ink:#1d2327; --muted:#5f6b73; --line:#d9dee2; --band:#f5f7f8; --accent:#2c5f7c;
         --pass:#1e7b34; --pass-bg:#e3f4e6; --fail:#b3261e; --fail-bg:#fbe5e3; }
@@ -26,6 +43,9 @@ header p.desc { margin:0 0 12px; color:var(--muted); }
 dl.meta { display:flex; flex-wrap:wrap; gap:6px 28px; margin:0; font-size:12px; }
 dl.meta div { display:flex; gap:6px; } dl.meta dt { color:var(--muted); } dl.meta dd { margin:0; font-weight:600; }
 section { padding:22px 36px; border-bottom:1px solid var(--line); }
+.views { display:flex; gap:16px; flex-wrap:wrap; margin:8px 0 12px; }
+.views figure { margin:0; } .views img { max-width:520px; width:100%; border:1px solid var(--line); }
+.views figcaption { font-size:12px; color:#555; margin-top:4px; }
 h2 { font-size:18px; margin:0 0 4px; font-weight:600; }
 h2 .n { color:var(--accent); margin-right:8px; }
 p.sub { margin:0 0 14px; color:var(--muted); font-size:13px; }
@@ -149,6 +169,23 @@ std::string htmlReport(const ReportData& data) {
   }
 
   // Calculation settings and timing.
+  // Views: the pictures are embedded as data URIs, so the page stays one self-contained file.
+  for (std::size_t i = 0; i < data.views.size(); ++i) {
+    const ViewReport& v = data.views[i];
+    h << "<section class=\"grid\" id=\"view-" << i + 1 << "\">\n<h2>View: " << xmlEscape(v.name) << "</h2>\n<p class=\"sub\">"
+      << xmlEscape(v.description) << "</p>\n<div class=\"views\">\n";
+    if (!v.previewPng.empty())
+      h << "<figure><img alt=\"tone-mapped view " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
+        << base64(v.previewPng) << "\"><figcaption>Tone-mapped luminance</figcaption></figure>\n";
+    if (!v.falseColorPng.empty())
+      h << "<figure><img alt=\"false-colour luminance of " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
+        << base64(v.falseColorPng) << "\"><figcaption>Luminance, cd/m²</figcaption></figure>\n";
+    h << "</div>\n<table>\n<tbody>\n";
+    for (const auto& [k, val] : v.metrics)
+      h << "<tr><td>" << xmlEscape(k) << "</td><td class=\"num\">" << xmlEscape(val) << "</td></tr>\n";
+    h << "</tbody>\n</table>\n</section>\n";
+  }
+
   h << "<section class=\"settings\">\n<h2>Calculation</h2>\n<p class=\"sub\">Settings of this run; with the same "
        "seed and settings candela reproduces these numbers exactly, on any number of threads.</p>\n"
     << "<table class=\"kv\">\n<tbody>\n";

@@ -64,9 +64,19 @@ struct RunInfo {
   std::vector<std::pair<std::string, std::string>> settings;
 };
 
+// A rendered view: its pictures (PNG bytes, embedded in the HTML) and visual metrics as rows.
+struct ViewReport {
+  std::string name;
+  std::string description;           // e.g. "perspective 60° × 45°, 480 × 320 px"
+  std::vector<uint8_t> falseColorPng;  // luminance in false colour with its legend
+  std::vector<uint8_t> previewPng;     // tone-mapped
+  std::vector<std::pair<std::string, std::string>> metrics;  // {"UGR", "18.5"}, ...
+};
+
 struct ReportData {
   RunInfo run;
   std::vector<GridReport> grids;
+  std::vector<ViewReport> views;
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
 };
 using SummaryData = ReportData;

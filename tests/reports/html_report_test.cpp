@@ -25,14 +25,15 @@ std::string reportText() {
   return s.str();
 }
 
-// Opens offline: nothing is fetched from anywhere — no URLs, no src= attributes, no
-// stylesheets or scripts by reference, no url() except to in-document ids.
+// Opens offline: nothing is fetched from anywhere — no URLs, no src= attribute except embedded
+// data: URIs, no stylesheets or scripts by reference, no url() except to in-document ids.
 TEST(HtmlReport, IsSelfContained) {
   const std::string html = reportText();
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_EQ(html.find("http://"), std::string::npos);
   EXPECT_EQ(html.find("https://"), std::string::npos);
-  EXPECT_EQ(html.find("src="), std::string::npos);
+  const std::regex externalSrc(R"(src="(?!data:image/png;base64,))");
+  EXPECT_FALSE(std::regex_search(html, externalSrc));
   EXPECT_EQ(html.find("<link"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("@import"), std::string::npos);
@@ -78,6 +79,35 @@ TEST(HtmlReport, WritesSampleForScreenshot) {
   const fs::path path = target ? fs::path(target) : fs::path(testing::TempDir()) / "candela_sample_report.html";
   writeHtmlReport(path, testing_sample::sampleReport());
   EXPECT_TRUE(fs::exists(path));
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// A view's pictures are embedded as base64 data URIs (RFC 4648: bytes 1 2 3 4 → "AQIDBA==")
+// with its metrics beside them.
+TEST(HtmlReport, EmbedsViewPicturesAndMetrics) {
+  ReportData data = testing_sample::sampleReport();
+  ViewReport v;
+  v.name = "desk <view>";
+  v.description = "fisheye 180°";
+  v.previewPng = {1, 2, 3, 4};
+  v.falseColorPng = {255, 0};
+  v.metrics = {{"UGR", "18.5"}, {"DGP", "0.192"}};
+  data.views.push_back(v);
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "candela_report_view" / "report.html";
+  writeHtmlReport(path, data);
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string html = s.str();
+  EXPECT_NE(html.find("src=\"data:image/png;base64,AQIDBA==\""), std::string::npos);
+  EXPECT_NE(html.find("src=\"data:image/png;base64,/wA=\""), std::string::npos);
+  EXPECT_NE(html.find("desk &lt;view&gt;"), std::string::npos);
+  EXPECT_NE(html.find("<td>UGR</td><td class=\"num\">18.5</td>"), std::string::npos);
 }
 
 }  // namespace
