@@ -3,6 +3,7 @@
 // <name>_preview.png (tone mapped), and prints the view's glare ratings: UGR from the luminaires
 // (CIE 117) for every view, DGP from the image (Wienold & Christoffersen 2006) for fisheye views.
 // Everything is read and checked before tracing; each file is written atomically.
+#include "cli/case_options.h"
 #include "cli/commands.h"
 #include "cli/view_glare.h"
 #include "cli/progress.h"
@@ -36,11 +37,7 @@ struct RenderOptions {
   std::string caseFile;
   std::string view;
   std::string outDir;   // empty: the case's [output] dir
-  std::string quality;  // empty: the case's
-  int bounces = -1;     // < 0: the case's, else the quality preset's
-  int samples = -1;
-  int64_t seed = -1;
-  int threads = -1;
+  CaseTraceOptions trace;
   int pixelSamples = 4;
   int coarseStep = 4;
   int irradianceSamples = -1;  // < 0: automatic (64 with daylight, else 0)
@@ -75,15 +72,9 @@ int renderCase(const RenderOptions& o) {
     throw InputError(FileLoc{c.path.string(), 0, 0}, "--max must be above --min");
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
 
-  Quality quality = c.settings.quality;
-  if (!o.quality.empty()) quality = parseQuality(o.quality);
-  TraceSettings settings = settingsForQuality(quality);
-  if (c.settings.bounces) settings.maxBounces = *c.settings.bounces;
-  if (c.settings.samples) settings.hemisphereSamples = *c.settings.samples;
-  if (o.bounces >= 0) settings.maxBounces = o.bounces;
-  if (o.samples > 0) settings.hemisphereSamples = o.samples;
-  settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
-  const int threads = o.threads >= 0 ? o.threads : c.settings.threads;
+  const ResolvedTrace resolved = resolveTrace(c, o.trace);
+  const TraceSettings& settings = resolved.settings;
+  const int threads = resolved.threads;
   const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);
 
   RenderSettings rs;
@@ -203,15 +194,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
   cmd->add_option("--view", opts->view, "name of the [[view]] to render")->required();
   cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
-  cmd->add_option("--quality", opts->quality, "draft | normal | high (default: the case's, else normal)")
-      ->check(CLI::IsMember({"draft", "normal", "high"}));
-  cmd->add_option("--bounces", opts->bounces, "diffuse interreflections followed (default: case, else quality)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--samples", opts->samples, "hemisphere samples for the eye's illuminance (default: case, else quality)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", opts->seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--threads", opts->threads, "threads, 0 = all cores (default: the case's)")
-      ->check(CLI::NonNegativeNumber);
+  addCaseTraceOptions(cmd, opts->trace, "hemisphere samples for the eye's illuminance");
   cmd->add_option("--pixel-samples", opts->pixelSamples, "camera rays per traced pixel (default 4)")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")

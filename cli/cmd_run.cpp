@@ -2,6 +2,7 @@
 // scene files, luminaires, grids), traces every grid's points with one tracer, computes the
 // metrics and target verdicts, and only then writes <grid>.csv, summary.csv, summary.json and
 // report.html, each file atomically. A run that fails on bad input writes nothing.
+#include "cli/case_options.h"
 #include "cli/commands.h"
 #include "cli/view_glare.h"
 #include "engine/render.h"
@@ -45,12 +46,7 @@ namespace fs = std::filesystem;
 struct RunOptions {
   std::string caseFile;
   std::string outDir;    // empty: the case's [output] dir
-  std::string quality;   // empty: the case's
-  int bounces = -1;      // < 0: the case's, else the quality preset's
-  int samples = -1;
-  int64_t seed = -1;
-  int threads = -1;
-  std::string method;    // empty: the case's, else the default (path)
+  CaseTraceOptions trace;
   bool quiet = false;
 };
 
@@ -181,17 +177,10 @@ int runCase(const RunOptions& o) {
   }
 
   // 2. Settings: the case's, then the command line's.
-  Quality quality = c.settings.quality;
-  if (!o.quality.empty()) quality = parseQuality(o.quality);
-  TraceSettings settings = settingsForQuality(quality);
-  if (c.settings.bounces) settings.maxBounces = *c.settings.bounces;
-  if (c.settings.samples) settings.hemisphereSamples = *c.settings.samples;
-  if (o.bounces >= 0) settings.maxBounces = o.bounces;
-  if (o.samples > 0) settings.hemisphereSamples = o.samples;
-  settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
-  if (c.settings.method) settings.method = *c.settings.method;
-  if (!o.method.empty()) settings.method = parseMethod(o.method);
-  const int threads = o.threads >= 0 ? o.threads : c.settings.threads;
+  const ResolvedTrace resolved = resolveTrace(c, o.trace);
+  const Quality quality = resolved.quality;
+  const TraceSettings settings = resolved.settings;
+  const int threads = resolved.threads;
   const unsigned usedThreads = threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
 
   // Notes, after validation so that a bad case prints its one error line only.
@@ -368,17 +357,7 @@ void addRunCommand(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand("run", "calculate a case: grids, metrics, CSV/JSON summaries and an HTML report");
   cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
   cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
-  cmd->add_option("--quality", opts->quality, "draft | normal | high (default: the case's, else normal)")
-      ->check(CLI::IsMember({"draft", "normal", "high"}));
-  cmd->add_option("--bounces", opts->bounces, "diffuse interreflections followed (default: case, else quality)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--samples", opts->samples, "hemisphere samples per point (default: case, else quality)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", opts->seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--method", opts->method, "path | cache (default: the case's, else path)")
-      ->check(CLI::IsMember({"path", "cache"}));
-  cmd->add_option("--threads", opts->threads, "threads, 0 = all cores (default: the case's)")
-      ->check(CLI::NonNegativeNumber);
+  addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point");
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors only)");
   cmd->callback([opts, &action] { action = [opts] { return runCase(*opts); }; });
 }

@@ -24,6 +24,19 @@ std::vector<Vec3> clipToHorizon(const std::vector<Vec3>& poly, const Vec3& p, co
   return out;
 }
 
+// Uniform point on a triangulated area: u1 picks a triangle by area and is rescaled within that
+// triangle's interval (which keeps the stratification of (u1, u2)); k receives the triangle.
+Vec3 pointOnTriangles(const std::vector<std::array<Vec3, 3>>& tris, const std::vector<double>& cumulative,
+                      double u1, double u2, size_t& k) {
+  const double target = u1 * cumulative.back();
+  k = std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin();
+  k = std::min(k, tris.size() - 1);
+  const double lo = k == 0 ? 0.0 : cumulative[k - 1];
+  const double span = cumulative[k] - lo;
+  const double v1 = span > 0.0 ? std::clamp((target - lo) / span, 0.0, 1.0) : 0.5;
+  return sampleTriangle(tris[k][0], tris[k][1], tris[k][2], v1, u2);
+}
+
 // Cosine-weighted solid angle of a circular cap of half-angle α whose axis makes angle θ with the
 // normal, when the cap is wholly above the horizon: π sin²α cos θ.
 bool capProjectedSolidAngle(const Vec3& axis, double sinAlpha, const Vec3& n, double& out) {
@@ -158,16 +171,8 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
   switch (s.type) {
     case ShapeType::Triangle:
     case ShapeType::Polygon: {
-      // Pick a triangle by area, reusing u1 rescaled within its interval (keeps stratification).
-      const double target = u1 * light.areaM2;
-      size_t k = std::lower_bound(light.cumulativeArea.begin(), light.cumulativeArea.end(), target) -
-                 light.cumulativeArea.begin();
-      k = std::min(k, light.triangles.size() - 1);
-      const double lo = k == 0 ? 0.0 : light.cumulativeArea[k - 1];
-      const double span = light.cumulativeArea[k] - lo;
-      const double v1 = span > 0.0 ? std::clamp((target - lo) / span, 0.0, 1.0) : 0.5;
-      const auto& t = light.triangles[k];
-      y = sampleTriangle(t[0], t[1], t[2], v1, u2);
+      size_t k;
+      y = pointOnTriangles(light.triangles, light.cumulativeArea, u1, u2, k);
       ny = s.n;
       break;
     }
@@ -251,13 +256,8 @@ bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3,
                           LightSample& out) {
   if (tris.empty()) return false;
   const double area = cumulative.back();
-  const double target = u1 * area;
-  size_t k = std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin();
-  k = std::min(k, tris.size() - 1);
-  const double lo = k == 0 ? 0.0 : cumulative[k - 1];
-  const double span = cumulative[k] - lo;
-  const double v1 = span > 0.0 ? std::clamp((target - lo) / span, 0.0, 1.0) : 0.5;
-  const Vec3 y = sampleTriangle(tris[k][0], tris[k][1], tris[k][2], v1, u2);
+  size_t k;
+  const Vec3 y = pointOnTriangles(tris, cumulative, u1, u2, k);
   const Vec3 e = y - p;
   const double dist2 = glm::dot(e, e);
   if (dist2 <= 0.0) return false;

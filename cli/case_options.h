@@ -1,0 +1,35 @@
+// The trace options every case-based command shares (run, render): the case's [settings] first,
+// then what the command line says.
+#pragma once
+
+#include "engine/case_file.h"
+#include "engine/tracer.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace candela::cli {
+
+struct CaseTraceOptions {
+  std::string quality;  // empty: the case's
+  int bounces = -1;     // < 0: the case's, else the quality preset's
+  int samples = -1;     // <= 0: the case's, else the preset's
+  int64_t seed = -1;    // < 0: the case's
+  int threads = -1;     // < 0: the case's
+  std::string method;   // empty: the case's, else path
+};
+
+// Adds --quality, --bounces, --samples (with `samplesHelp`), --seed, --method and --threads.
+void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp);
+
+struct ResolvedTrace {
+  Quality quality = Quality::kNormal;
+  TraceSettings settings;
+  int threads = 0;  // 0 = all cores
+};
+
+ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o);
+
+}  // namespace candela::cli
