@@ -17,6 +17,14 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Rays cast, tallied per thread and added to the tracer's total in blocks (one atomic add per
+// 4096 rays) and whenever a top-level call (irradiance, a cache record) ends.
+struct RayTally {
+  const Tracer* owner = nullptr;
+  uint64_t n = 0;
+};
+thread_local RayTally tRays;
+
 bool isFlat(const Shape& s) {
   return s.type == ShapeType::Triangle || s.type == ShapeType::Polygon || s.type == ShapeType::Ring;
 }
@@ -129,6 +137,27 @@ double IrradianceEstimate::standardErrorLux() const {
   return kLumensPerWatt * std::sqrt(std::max(0.0, variancePhotopic));
 }
 
+void Tracer::countRay() const {
+  // A tally left by another tracer on this thread is dropped, never added through its pointer
+  // (that tracer may be gone): every top-level call flushes its own before returning.
+  if (tRays.owner != this) {
+    tRays.owner = this;
+    tRays.n = 0;
+  }
+  if (++tRays.n >= 4096) flushRays();
+}
+
+void Tracer::flushRays() const {
+  if (tRays.owner != this) return;
+  rays_.fetch_add(tRays.n, std::memory_order_relaxed);
+  tRays.n = 0;
+}
+
+uint64_t Tracer::raysTraced() const {
+  flushRays();
+  return rays_.load(std::memory_order_relaxed);
+}
+
 double Tracer::originOffset(const Vec3& p) {
   // Doubles locate a hit to ~1e-15 of its coordinates; 1e-7 of the larger of 1 m and the
   // coordinates clears that by far while staying far below any modelled gap (≥ 0.1 mm).
@@ -167,12 +196,14 @@ Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
+  countRay();
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
   Rgb t(1.0);
   double tMin = 0.0;
   for (int i = 0; i < 64; ++i) {
     RayHit h;
+    if (i > 0) countRay();
     if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
     const Shape& s = scene_.shapes[h.shape];
     const Material& m = scene_.materials[s.material];
@@ -311,6 +342,7 @@ Rgb Tracer::mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       total += colour * lightEstimate(light, pi, ni, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
         const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
         RayHit h;
+        countRay();
         if (!accel_->intersect(p, dir, 0.0, ls.distance, h, skip) || h.shape != ms) return Rgb(0.0);
         const Vec3 x = p + h.t * dir;
         const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - h.t) * (1.0 - 1e-9);
@@ -390,6 +422,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
+    countRay();
     const bool hit = accel_->intersect(o, d, 0.0, kInf, h, skip);
     if (vertex == 0 && firstHitT) *firstHitT = hit ? h.t : kInf;
     if (!hit) return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
@@ -585,6 +618,7 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
     const double u2 = (k + dirRng.uniform()) / nPhi;
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
     RayHit h;
+    countRay();
     if (!accel_->intersect(p, dir, 0.0, kInf, h, kNoShape)) continue;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
@@ -597,6 +631,7 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
     const Vec3 ng = shapeNormal(shape, x);
     out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
   }
+  flushRays();
 }
 
 bool Tracer::cacheVisible(const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) const {
@@ -605,6 +640,7 @@ bool Tracer::cacheVisible(const Vec3& p, const Vec3& n, uint32_t shape, const Ir
   const double len = glm::length(d);
   if (len <= 0.0) return true;
   // Both endpoints' own shapes are skipped: a chord of a convex surface passes inside it.
+  countRay();
   return !accel_->occluded(a, d / len, 0.0, len, shape, r.shape);
 }
 
@@ -616,9 +652,11 @@ double Tracer::harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) con
   for (int i = 0; i < strata.size(); ++i) {
     const Vec2 u = strata.sample(i, rng);
     RayHit h;
+    countRay();
     if (accel_->intersect(o, frame.toWorld(sampleCosineHemisphere(u.x, u.y)), 0.0, kInf, h, q.skip))
       inv += 1.0 / std::max(h.t, 1e-9);
   }
+  flushRays();
   return inv > 0.0 ? strata.size() / inv : kInf;
 }
 
@@ -653,6 +691,7 @@ void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSett
   std::vector<double> y(cells);
   for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);
   r.variancePhotopic = stratifiedVariance(y, h.m, h.n);
+  flushRays();
 }
 
 IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
@@ -754,6 +793,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
     var += sd * sd;
   }
   est.variancePhotopic = var;
+  flushRays();
   return est;
 }
 

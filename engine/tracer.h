@@ -11,6 +11,7 @@
 #include "engine/quality.h"
 #include "engine/scene.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -111,6 +112,11 @@ class Tracer {
   Rgb radiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
                const TraceSettings& s) const;
 
+  // Rays cast so far (nearest-hit and shadow rays, each query of the accelerator counted once;
+  // a shadow ray walked through glass counts each surface met). Complete after the calls of
+  // computeIrradiance have returned.
+  uint64_t raysTraced() const;
+
   const Scene& scene() const { return scene_; }
   const RayAccelerator& accelerator() const { return *accel_; }
   const std::vector<Light>& lights() const { return lights_; }
@@ -161,8 +167,12 @@ class Tracer {
   // Radiance of the sky/distant sources seen along an escaping ray.
   Rgb distantRadiance(const Vec3& dir, bool countSources, double misCosPdf, double misRatio) const;
 
+  void countRay() const;
+  void flushRays() const;
+
   const Scene& scene_;
   std::unique_ptr<RayAccelerator> accel_;
+  mutable std::atomic<uint64_t> rays_{0};
   std::vector<Light> lights_;
   bool hasTransmitters_ = false;
   std::vector<uint32_t> mirrors_;      // flat mirror shapes (virtual sources)

@@ -163,13 +163,14 @@ TraceSettings referenceSettings() {
 }
 
 std::vector<IrradianceEstimate> runIndirectScene(const IndirectScene& sc, const TraceSettings& s, int threads,
-                                                 double* seconds) {
+                                                 double* seconds, double* rays) {
   Scene scene;
   readRadianceText(sc.rad, "<" + sc.name + ">", scene);
   const Tracer tracer(scene);
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<IrradianceEstimate> est = computeIrradiance(tracer, sc.points, s, threads);
   if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (rays) *rays = static_cast<double>(tracer.raysTraced());
   return est;
 }
 
@@ -211,7 +212,7 @@ std::vector<ChartRow> runSpeedAccuracy(int threads, bool quick) {
       r.setting = "samples=" + std::to_string(st.samples) +
                   (st.method == Method::kCache ? " a=" + num(st.accuracy) + " record=" + std::to_string(st.recordSamples)
                                                : "");
-      const std::vector<IrradianceEstimate> est = runIndirectScene(sc, s, threads, &r.seconds);
+      const std::vector<IrradianceEstimate> est = runIndirectScene(sc, s, threads, &r.seconds, &r.rays);
       double sum2 = 0.0;
       for (size_t i = 0; i < est.size(); ++i) {
         const double rel = ref[i] > 0.0 ? (est[i].illuminanceLux() - ref[i]) / ref[i] : 0.0;
@@ -219,8 +220,9 @@ std::vector<ChartRow> runSpeedAccuracy(int threads, bool quick) {
         r.maxRelativeError = std::max(r.maxRelativeError, std::abs(rel));
       }
       r.rmsRelativeError = std::sqrt(sum2 / std::max<size_t>(1, est.size()));
-      std::fprintf(stderr, "%-26s %-6s %-36s %9.3f s  rms %7.3f %%  max %7.3f %%\n", r.scene.c_str(), r.method.c_str(),
-                   r.setting.c_str(), r.seconds, 100 * r.rmsRelativeError, 100 * r.maxRelativeError);
+      std::fprintf(stderr, "%-26s %-6s %-36s %9.3f s %6.2f Mrays/s  rms %7.3f %%  max %7.3f %%\n", r.scene.c_str(),
+                   r.method.c_str(), r.setting.c_str(), r.seconds, 1e-6 * r.rays / std::max(r.seconds, 1e-9),
+                   100 * r.rmsRelativeError, 100 * r.maxRelativeError);
       rows.push_back(r);
     }
   }
@@ -229,12 +231,12 @@ std::vector<ChartRow> runSpeedAccuracy(int threads, bool quick) {
 
 std::string speedAccuracyCsv(const std::vector<ChartRow>& rows) {
   std::ostringstream o;
-  o << "scene,method,setting,hemisphere_samples,accuracy,time_s,rms_relative_error,max_relative_error\n";
+  o << "scene,method,setting,hemisphere_samples,accuracy,time_s,rays,rays_per_s,rms_relative_error,max_relative_error\n";
   char b[512];
   for (const ChartRow& r : rows) {
-    std::snprintf(b, sizeof b, "%s,%s,\"%s\",%d,%.3g,%.4f,%.6g,%.6g\n", r.scene.c_str(), r.method.c_str(),
-                  r.setting.c_str(), r.hemisphereSamples, r.accuracy, r.seconds, r.rmsRelativeError,
-                  r.maxRelativeError);
+    std::snprintf(b, sizeof b, "%s,%s,\"%s\",%d,%.3g,%.4f,%.0f,%.4g,%.6g,%.6g\n", r.scene.c_str(), r.method.c_str(),
+                  r.setting.c_str(), r.hemisphereSamples, r.accuracy, r.seconds, r.rays,
+                  r.rays / std::max(r.seconds, 1e-9), r.rmsRelativeError, r.maxRelativeError);
     o << b;
   }
   return o.str();

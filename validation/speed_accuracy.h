@@ -30,15 +30,16 @@ std::vector<IndirectScene> indirectScenes();
 TraceSettings referenceSettings();
 
 // Illuminance (lux) and standard errors of a scene's points under `s`; *seconds gets the wall
-// time of the computation (cache filling included, scene building excluded).
+// time of the computation (cache filling included, scene building excluded), *rays the rays cast.
 std::vector<IrradianceEstimate> runIndirectScene(const IndirectScene& sc, const TraceSettings& s, int threads,
-                                                 double* seconds);
+                                                 double* seconds, double* rays = nullptr);
 
 struct ChartRow {
   std::string scene, method, setting;
   int hemisphereSamples = 0;
   double accuracy = 0.0;  // cache only: Ward's a
   double seconds = 0.0;
+  double rays = 0.0;      // rays cast (nearest-hit and shadow)
   double rmsRelativeError = 0.0, maxRelativeError = 0.0;
 };
 
