@@ -281,6 +281,17 @@ Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int 
   // A far-field luminaire is one point: one shadow ray says all there is.
   const bool point = light.kind == Light::Kind::Luminaire && haveExact;
   const int kk = point ? 1 : k;
+  // Per-stratum terms for the variance (zero where a sample tells nothing).
+  thread_local std::vector<double> zRatio, zRest;
+  if (variance) {
+    zRatio.assign(kk, 0.0);
+    zRest.assign(kk, 0.0);
+  }
+  thread_local std::vector<double> fyS, vyS;
+  if (variance) {
+    fyS.assign(kk, 0.0);
+    vyS.assign(kk, 0.0);
+  }
   for (int i = 0; i < kk; ++i) {
     const Vec2 u = strata.sample(i, rng);
     LightSample ls;
@@ -303,6 +314,11 @@ Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int 
     const double ry = photopic(f * v) * (1.0 - c);
     yRest += ry;
     yRest2 += ry * ry;
+    if (variance) {
+      fyS[i] = fy;
+      vyS[i] = vy;
+      zRest[i] = ry;
+    }
   }
   Rgb e = sumRest / static_cast<double>(kk);
   if (haveExact) {
@@ -310,15 +326,27 @@ Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int 
     for (int ch = 0; ch < 3; ++ch) e[ch] += sumFc[ch] > 0.0 ? exact[ch] * sumFvc[ch] / sumFc[ch] : 0.0;
   }
   if (variance && kk > 1) {
-    // Delta-method variance of the ratio, E_u² Σ f²(V − R)² / (Σ f)², plus the plain part's.
+    // Delta-method variance of the ratio: the linearised terms z_i = f_i (V_i − R) have
+    // Var(Σ z) / (Σ f)² scaled by E_u²; the plain part's terms are the samples themselves. The
+    // samples are stratified (Strata2D: i and i + 1 are neighbouring strata of one row), so the
+    // variance of each sum is estimated by collapsing strata in pairs (Cochran, "Sampling
+    // Techniques", 5A.12): Σ over pairs of (z_a − z_b)², which counts the difference of the two
+    // strata's means as noise (an upper bound) but, unlike Σ z², not what stratification removes
+    // (e.g. a panel whose part behind a screen is sampled by whole rows of strata).
+    auto collapsed = [kk](const std::vector<double>& z) {
+      double v = 0.0;
+      for (int i = 0; i + 1 < kk; i += 2) v += (z[i] - z[i + 1]) * (z[i] - z[i + 1]);
+      if (kk % 2 == 1) v += 2.0 * z[kk - 1] * z[kk - 1];  // an unpaired stratum: as if iid, doubled
+      return v;
+    };
     if (yFc > 0.0) {
       const double ratio = (yF2V > 0.0 || yF2 > 0.0) ? photopic(sumFvc) / yFc : 0.0;
-      const double resid = std::max(0.0, yF2V2 - 2.0 * ratio * yF2V + ratio * ratio * yF2);
-      *variance += photopic(exact) * photopic(exact) * resid / (yFc * yFc);
+      for (int i = 0; i < kk; ++i) zRatio[i] = fyS[i] * (vyS[i] - ratio);
+      *variance += photopic(exact) * photopic(exact) * collapsed(zRatio) / (yFc * yFc);
     }
-    const double mean = yRest / kk;
-    *variance += std::max(0.0, yRest2 / kk - mean * mean) / (kk - 1);
+    if (yRest > 0.0) *variance += collapsed(zRest) / (static_cast<double>(kk) * kk);
   }
+
   return e;
 }
 
