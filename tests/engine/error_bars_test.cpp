@@ -106,6 +106,30 @@ TEST(ErrorBars, PathTracerCoversItsShare) {
   EXPECT_LE(b, kHi);
 }
 
+TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
+  // Direct light only: a 1 m light panel 2 m above the sensor, and a black sheet halfway up
+  // covering x < 0: a ray to the panel point (x, y, 2) crosses z = 1 at (x/2, y/2), so exactly
+  // the panel's x < 0 half is hidden, E = the x > 0 half's configuration factor (corner
+  // rectangles). The ratio estimator's samples then carry V = 0 or 1 by whole strata columns.
+  Scene sc;
+  const uint32_t lamp = addMat(sc, MaterialType::Light, 100.0), black = addMat(sc, MaterialType::Plastic, 0.0);
+  sc.addPolygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2}, {0.5, -0.5, 2}}, lamp);
+  sc.addPolygon({{-5, -5, 1}, {-5, 5, 1}, {0, 5, 1}, {0, -5, 1}}, black);
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.hemisphereSamples = 16;
+  s.lightSamples = 16;
+  s.maxBounces = 0;
+  const double exact = kLumensPerWatt * analytic::rectangleAbove(100.0, 0.0, -0.5, 0.5, 0.5, 2.0, 0.0, 0.0);
+  const double a = coverage([&](uint64_t seed) {
+    TraceSettings t = s;
+    t.seed = seed;
+    return tracer.irradiance(Vec3(0.0), Vec3(0, 0, 1), 0, t);
+  }, exact, "direct light, half-hidden panel (16 samples)");
+  EXPECT_GE(a, kLo);
+  EXPECT_LE(a, kHi);
+}
+
 TEST(ErrorBars, IrradianceCacheCoversItsShare) {
   const Scene sphere = integratingSphere(0.5);
   const Tracer ts(sphere);
