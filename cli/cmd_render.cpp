@@ -103,25 +103,16 @@ int renderCase(const RenderOptions& o) {
 
   // Contrast of a task point against a background point seen from the view point, under the
   // case's lighting and under the reference uniform sphere (CRF).
-  struct ContrastLine {
-    double lt, lb, c, cref;
-  };
-  std::optional<ContrastLine> contrast;
+  // From the command line, else from the view's `task`/`background` keys.
+  std::optional<ViewContrast> contrast;
+  std::optional<Vec3> task = view->taskM, background = view->backgroundM;
   if (o.task.size() == 3 && o.background.size() == 3) {
-    const Vec3 task(o.task[0], o.task[1], o.task[2]), background(o.background[0], o.background[1], o.background[2]);
-    const Scene refScene =
-        referenceSphereScene(*scene, {shapeToward(tracer, cam.position(), task), shapeToward(tracer, cam.position(), background)});
-    const Tracer ref(refScene);
-    const double lt = luminanceToward(tracer, cam.position(), task, settings, 1);
-    const double lb = luminanceToward(tracer, cam.position(), background, settings, 2);
-    const double rt = luminanceToward(ref, cam.position(), task, settings, 3);
-    const double rb = luminanceToward(ref, cam.position(), background, settings, 4);
-    if (!(lb > 0.0) || !(rb > 0.0) || rt == rb)
-      throw InputError(FileLoc{c.path.string(), 0, 0},
-                       "--task/--background: the background is dark or task and background look alike under "
-                       "the reference sphere; no contrast to rate");
-    contrast = ContrastLine{lt, lb, luminanceContrast(lt, lb), luminanceContrast(rt, rb)};
+    task = Vec3(o.task[0], o.task[1], o.task[2]);
+    background = Vec3(o.background[0], o.background[1], o.background[2]);
   }
+  if (task && background)
+    contrast = computeViewContrast(*scene, tracer, cam.position(), *task, *background, settings,
+                                   o.task.size() == 3 ? FileLoc{c.path.string(), 0, 0} : view->loc);
 
   // Pictures.
   std::vector<Rgb> rgbCdM2(img.radiance.size());
@@ -176,9 +167,9 @@ int renderCase(const RenderOptions& o) {
       s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
         << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";
     if (contrast)
-      s << "contrast: task " << num(contrast->lt, 2) << " cd/m2, background " << num(contrast->lb, 2) << " cd/m2, C "
-        << num(contrast->c, 3) << ", under the reference sphere " << num(contrast->cref, 3) << ", CRF "
-        << num(contrastRenditionFactor(contrast->c, contrast->cref), 3) << "\n";
+      s << "contrast: task " << num(contrast->taskCdM2, 2) << " cd/m2, background " << num(contrast->backgroundCdM2, 2)
+        << " cd/m2, C " << num(contrast->contrast, 3) << ", under the reference sphere "
+        << num(contrast->referenceContrast, 3) << ", CRF " << num(contrast->crf(), 3) << "\n";
     s << "wrote " << paths.exr.string() << ", " << paths.falseColor.string() << ", " << paths.preview.string() << " in "
       << num(seconds, 1) << " s\n";
     std::cout << s.str() << std::flush;

@@ -304,6 +304,14 @@ int runCase(const RunOptions& o) {
                                                                          std::to_string(glare.sources.size()) +
                                                                          " luminaires)");
     if (glare.dgp) vr.metrics.emplace_back("DGP (Wienold & Christoffersen 2006)", fixed(glare.dgp->dgp, 3));
+    if (view.taskM && view.backgroundM) {
+      const cli::ViewContrast vc = cli::computeViewContrast(*scene, tracer, view.positionM, *view.taskM,
+                                                            *view.backgroundM, settings, view.loc);
+      vr.metrics.emplace_back("Task / background luminance",
+                              fixed(vc.taskCdM2, 2) + " / " + fixed(vc.backgroundCdM2, 2) + " cd/m²");
+      vr.metrics.emplace_back("Contrast C = (Lt − Lb)/Lb", fixed(vc.contrast, 3));
+      vr.metrics.emplace_back("Contrast rendition factor CRF", fixed(vc.crf(), 3));
+    }
     data.views.push_back(std::move(vr));
     rendered.push_back(std::move(rv));
   }

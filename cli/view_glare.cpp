@@ -1,6 +1,7 @@
 #include "cli/view_glare.h"
 
 #include "engine/camera.h"
+#include "metrics/contrast.h"
 
 namespace candela::cli {
 
@@ -21,6 +22,26 @@ ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const Tra
     g.dgp = evaluateImageGlare(img.luminance, geo.directionView, geo.solidAngleSr, img.width, img.height, det);
   }
   return g;
+}
+
+double ViewContrast::crf() const { return contrastRenditionFactor(contrast, referenceContrast); }
+
+ViewContrast computeViewContrast(const Scene& scene, const Tracer& tracer, const Vec3& eye, const Vec3& task,
+                                 const Vec3& background, const TraceSettings& settings, const FileLoc& loc) {
+  const Scene refScene =
+      referenceSphereScene(scene, {shapeToward(tracer, eye, task), shapeToward(tracer, eye, background)});
+  const Tracer ref(refScene);
+  ViewContrast v;
+  v.taskCdM2 = luminanceToward(tracer, eye, task, settings, 1);
+  v.backgroundCdM2 = luminanceToward(tracer, eye, background, settings, 2);
+  const double rt = luminanceToward(ref, eye, task, settings, 3);
+  const double rb = luminanceToward(ref, eye, background, settings, 4);
+  if (!(v.backgroundCdM2 > 0.0) || !(rb > 0.0) || rt == rb)
+    throw InputError(loc, "task/background: the background is dark or task and background look alike under the "
+                          "reference sphere; no contrast to rate");
+  v.contrast = luminanceContrast(v.taskCdM2, v.backgroundCdM2);
+  v.referenceContrast = luminanceContrast(rt, rb);
+  return v;
 }
 
 }  // namespace candela::cli

@@ -23,4 +23,18 @@ struct ViewGlare {
 ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
                            const Image& img, double glareThresholdCdM2);
 
+// Luminance contrast of a task point against a background point seen from `eye`, under the
+// scene's lighting and under the reference uniform sphere (CRF = C / C_ref).
+struct ViewContrast {
+  double taskCdM2 = 0.0, backgroundCdM2 = 0.0;
+  double contrast = 0.0;           // C = (Lt − Lb) / Lb
+  double referenceContrast = 0.0;  // C_ref under the uniform sphere
+  double crf() const;
+};
+
+// Throws InputError at `loc` when the background is dark or task and background look alike under
+// the reference sphere (no contrast to rate).
+ViewContrast computeViewContrast(const Scene& scene, const Tracer& tracer, const Vec3& eye, const Vec3& task,
+                                 const Vec3& background, const TraceSettings& settings, const FileLoc& loc);
+
 }  // namespace candela::cli

@@ -490,6 +490,12 @@ void readView(const Context& c, const toml::table& t, int index, CaseFile& out) 
                      std::to_string(h) + "]");
     v.resolution = glm::ivec2(static_cast<int>(w), static_cast<int>(h));
   }
+  const toml::node* task = tab.get("task");
+  const toml::node* background = tab.get("background");
+  if (task) v.taskM = asVec3(c, *task, "task");
+  if (background) v.backgroundM = asVec3(c, *background, "background");
+  if ((task != nullptr) != (background != nullptr))
+    c.fail(task ? *task : *background, "a view's contrast needs both 'task' and 'background' points");
   tab.finish();
   out.views.push_back(std::move(v));
 }

@@ -95,6 +95,9 @@ struct ViewSpec {
   Vec3 up{0.0, 0.0, 1.0};               // unit
   Vec2 fovDeg{60.0, 45.0};              // horizontal, vertical full angles
   glm::ivec2 resolution{800, 600};      // pixels, width × height
+  // Contrast: a task point and a background point (m) seen from the view position; both or
+  // neither. The run reports C = (Lt − Lb)/Lb and CRF = C / C_ref (docs/views.md).
+  std::optional<Vec3> taskM, backgroundM;
   FileLoc loc;
 };
 

@@ -25,3 +25,5 @@ candela_run_test(grid_named_summary 2 "grid_named_summary/case.toml:5: grid name
 candela_run_test(missing_case 2 "no_such_case.toml" no_such_case.toml)
 # Options are checked by the command-line parser before anything is read.
 candela_run_test(bad_quality 2 "--quality" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality best)
+# Views with contrast keys: the report carries the contrast rendition factor.
+candela_run_test(view_contrast 0 "Contrast rendition factor" view_contrast/case.toml --quality draft)

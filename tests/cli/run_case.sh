@@ -11,7 +11,7 @@ out_dir="$tmp/out"
 code=$?
 status=0
 if [ "$code" != "$want_code" ]; then echo "exit code $code, expected $want_code"; status=1; fi
-if ! grep -qF -- "$want_text" "$tmp/stdout" "$tmp/stderr" $( [ -f "$out_dir/summary.json" ] && echo "$out_dir/summary.json"); then echo "output lacks: $want_text"; status=1; fi
+if ! grep -qF -- "$want_text" "$tmp/stdout" "$tmp/stderr" $( [ -f "$out_dir/summary.json" ] && echo "$out_dir/summary.json") $( [ -f "$out_dir/report.html" ] && echo "$out_dir/report.html"); then echo "output lacks: $want_text"; status=1; fi
 if [ "$want_code" = 0 ]; then
   for f in summary.csv summary.json report.html; do
     [ -s "$out_dir/$f" ] || { echo "missing output $f"; status=1; }

@@ -155,6 +155,7 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"negative_spacing.toml", 4, "'spacing' must be greater than 0"},
                     ErrorCase{"zero_area.toml", 3, "zero area"},
                     ErrorCase{"bad_resolution.toml", 4, "'resolution' must be between 1 and 16384"},
+                    ErrorCase{"contrast_half.toml", 5, "needs both 'task' and 'background'"},
                     ErrorCase{"unknown_sky.toml", 5, "unknown sky type 'cloudy'"},
                     ErrorCase{"unknown_quality.toml", 3, "unknown quality 'ultra'"},
                     ErrorCase{"duplicate_grid.toml", 6, "two grids are named 'a'"},
