@@ -14,6 +14,7 @@
 // at t = 40 m) and vertices (≤ 6e-7 m) add up to under 5e-6 m. kFloatTolM = 2e-5 m is four
 // times that, still far below the 0.05–0.6 m sizes of the shapes.
 #include "engine/embree_accelerator.h"
+#include "tests/engine/ray_query_support.h"
 #include "engine/octree.h"
 #include "engine/tracer.h"
 
@@ -34,34 +35,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kFloatTolM = 2e-5;
 
-struct Ray {
-  Vec3 o, d;
-  double tMin = 0.0, tMax = kInf;
-};
-
-struct BruteHit {
-  double t;
-  uint32_t shape;
-};
-
-std::vector<BruteHit> bruteHits(const Scene& sc, const Ray& r) {
-  std::vector<BruteHit> hits;
-  for (uint32_t i = 0; i < sc.shapes.size(); ++i) {
-    double t;
-    if (intersectShape(sc.shapes[i], sc.vertices, r.o, r.d, r.tMin, r.tMax, t)) hits.push_back({t, i});
-  }
-  std::sort(hits.begin(), hits.end(), [](const BruteHit& a, const BruteHit& b) { return a.t < b.t; });
-  return hits;
-}
-
-Vec3 randomUnit(std::mt19937_64& g) {
-  std::normal_distribution<double> N;
-  for (;;) {
-    const Vec3 v(N(g), N(g), N(g));
-    const double l = glm::length(v);
-    if (l > 1e-6) return v / l;
-  }
-}
+using test_support::BruteHit;
+using test_support::Ray;
+using test_support::bruteHits;
+using test_support::randomUnit;
 
 double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;

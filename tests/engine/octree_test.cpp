@@ -4,6 +4,7 @@
 // axis-aligned directions with zero components, rays lying in or crossing the root cube's
 // mid-planes, origins outside the cube, shapes lying in the mid-planes.
 #include "engine/octree.h"
+#include "tests/engine/ray_query_support.h"
 
 #include <gtest/gtest.h>
 
@@ -19,35 +20,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-struct Ray {
-  Vec3 o, d;
-  double tMin = 0.0, tMax = kInf;
-};
-
-struct BruteHit {
-  double t;
-  uint32_t shape;
-};
-
-// Every hit of the ray in (tMin, tMax), nearest first.
-std::vector<BruteHit> bruteHits(const Scene& sc, const Ray& r) {
-  std::vector<BruteHit> hits;
-  for (uint32_t i = 0; i < sc.shapes.size(); ++i) {
-    double t;
-    if (intersectShape(sc.shapes[i], sc.vertices, r.o, r.d, r.tMin, r.tMax, t)) hits.push_back({t, i});
-  }
-  std::sort(hits.begin(), hits.end(), [](const BruteHit& a, const BruteHit& b) { return a.t < b.t; });
-  return hits;
-}
-
-Vec3 randomUnit(std::mt19937_64& g) {
-  std::normal_distribution<double> N;
-  for (;;) {
-    const Vec3 v(N(g), N(g), N(g));
-    const double l = glm::length(v);
-    if (l > 1e-6) return v / l;
-  }
-}
+using test_support::BruteHit;
+using test_support::Ray;
+using test_support::bruteHits;
+using test_support::randomUnit;
 
 // 2000 small shapes of every kind in [0, 10]³. Two tiny triangles pin the scene bounds to
 // exactly [0, 10]³, so the root cube's mid-planes are x, y, z = 5; a few shapes lie in them.
