@@ -1,14 +1,16 @@
 // candela validate [--quick] [--out DIR]: runs the validation cases at the default (or given)
 // quality and prints case, reference, result, errors, tolerance, verdict and wall time; writes
-// validation.csv. Exit code 1 when any case fails.
+// validation.csv and validation.html. Exit code 1 when any case fails.
 #include "cli/commands.h"
 
 #include "engine/base/atomic_file.h"
 #include "validation/case_registry.h"
+#include "validation/validation_html.h"
 #include "validation/speed_accuracy.h"
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -72,6 +74,18 @@ int runValidate(const ValidateOptions& o) {
   table << line;
   std::filesystem::create_directories(o.out);
   writeFileAtomic(std::filesystem::path(o.out) / "validation.csv", csv.str());
+  // The page embeds the speed–accuracy chart when `--chart` has left one in the same folder.
+  validation::ValidationPage page;
+  page.quality = o.quality;
+  page.seed = o.seed;
+  page.version = CANDELA_VERSION;
+  if (std::ifstream svg(std::filesystem::path(o.out) / "speed_accuracy.svg"); svg) {
+    std::ostringstream ss;
+    ss << svg.rdbuf();
+    page.chartSvg = ss.str();
+    if (const size_t at = page.chartSvg.find("<svg"); at != std::string::npos) page.chartSvg.erase(0, at);
+  }
+  writeFileAtomic(std::filesystem::path(o.out) / "validation.html", validation::validationHtml(results, page));
   std::cout << table.str() << std::flush;
   return failed ? 1 : 0;
 }
