@@ -64,7 +64,7 @@ int runValidate(const ValidateOptions& o) {
     for (const auto& p : r.points) {
       std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.9g,%.9g,%.4g,%.6g,%.4g,%s,%.4f\n", r.name.c_str(),
                     r.group.c_str(), p.label.c_str(), p.referenceLux, p.resultLux, p.standardErrorLux,
-                    p.relativeError(), r.tolerance, std::abs(p.relativeError()) <= r.tolerance ? "pass" : "fail",
+                    p.relativeError(), r.tolerance, r.pointPasses(p) ? "pass" : "fail",
                     r.seconds);
       csv << line;
     }

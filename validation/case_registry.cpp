@@ -8,6 +8,7 @@ namespace candela::validation {
 std::vector<Case> engineCases();
 std::vector<Case> daylightCases();
 std::vector<Case> luminaireCases();
+std::vector<Case> stabilityCases();
 std::vector<Case> indirectCases();
 
 double CaseResult::maxRelativeError() const {
@@ -27,6 +28,7 @@ std::vector<Case> allCases() {
   std::vector<Case> all = engineCases();
   for (Case& c : luminaireCases()) all.push_back(std::move(c));
   for (Case& c : daylightCases()) all.push_back(std::move(c));
+  for (Case& c : stabilityCases()) all.push_back(std::move(c));
   for (Case& c : indirectCases()) all.push_back(std::move(c));
   return all;
 }

@@ -4,7 +4,9 @@
 
 #include "engine/tracer.h"
 
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,7 +17,11 @@ struct PointResult {
   double referenceLux = 0.0;
   double resultLux = 0.0;
   double standardErrorLux = 0.0;
-  double relativeError() const { return referenceLux != 0.0 ? (resultLux - referenceLux) / referenceLux : 0.0; }
+  // Relative to the reference; against a reference of 0 (a dark room) any light is an infinite error.
+  double relativeError() const {
+    if (referenceLux != 0.0) return (resultLux - referenceLux) / referenceLux;
+    return resultLux == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  }
 };
 
 struct CaseResult {
@@ -27,7 +33,15 @@ struct CaseResult {
   double seconds = 0.0;        // wall time of candela's computation (not of the reference)
   double maxRelativeError() const;
   double rmsRelativeError() const;
-  bool pass() const { return maxRelativeError() <= tolerance; }
+  double absoluteToleranceLux = 0.0;  // a point also passes within this many lux of its reference
+  bool pointPasses(const PointResult& p) const {
+    return std::abs(p.relativeError()) <= tolerance || std::abs(p.resultLux - p.referenceLux) <= absoluteToleranceLux;
+  }
+  bool pass() const {
+    for (const PointResult& p : points)
+      if (!pointPasses(p)) return false;
+    return true;
+  }
 };
 
 struct RunConfig {

@@ -1,0 +1,145 @@
+// Stability cases (issue "Validation suite", stability report): where methods usually fail.
+// Each states its reference; docs/validation.md reports the measured error at the default
+// settings. Near contact is covered by the sphere-on-plane cases (0.25 m from the contact point,
+// sensors 1 cm up) and by tests/engine/stability_test.cpp (5 mm from the sphere).
+#include "engine/rad_reader.h"
+#include "engine/sensors.h"
+#include "validation/analytic.h"
+#include "validation/case_registry.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace candela::validation {
+
+namespace {
+
+CaseResult runRad(const std::string& rad, const std::vector<std::pair<std::string, SensorPoint>>& probes,
+                  const std::vector<double>& refs, const RunConfig& cfg, std::string reference, double tol,
+                  double absTolLux = 0.0) {
+  Scene scene;
+  readRadianceText(rad, "<stability>", scene);
+  const Tracer tracer(scene);
+  std::vector<SensorPoint> pts;
+  for (const auto& p : probes) pts.push_back(p.second);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto est = computeIrradiance(tracer, pts, cfg.settings, cfg.threads);
+  CaseResult r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.reference = std::move(reference);
+  r.tolerance = tol;
+  r.absoluteToleranceLux = absTolLux;
+  for (size_t i = 0; i < probes.size(); ++i)
+    r.points.push_back({probes[i].first, refs[i], est[i].illuminanceLux(), est[i].standardErrorLux()});
+  return r;
+}
+
+constexpr double kLux = kLumensPerWatt;
+
+CaseResult lightLeak(const RunConfig& cfg) {
+  // Two rooms sharing a 5 cm thick wall (two polygons); a bright panel in the left room only.
+  // The right room is closed and must stay exactly dark, also at points 1 mm from the wall.
+  const std::string rad =
+      "void plastic white 0 0 5 0.8 0.8 0.8 0 0\n"
+      "void light lamp 0 0 3 100 100 100\n"
+      // right room: x 2.05..4, closed box, faces inward
+      "white polygon rf 0 0 12 2.05 0 0  4 0 0  4 3 0  2.05 3 0\n"
+      "white polygon rc 0 0 12 2.05 0 2.8  2.05 3 2.8  4 3 2.8  4 0 2.8\n"
+      "white polygon rw 0 0 12 2.05 0 0  2.05 3 0  2.05 3 2.8  2.05 0 2.8\n"
+      "white polygon re 0 0 12 4 0 0  4 0 2.8  4 3 2.8  4 3 0\n"
+      "white polygon rs 0 0 12 2.05 0 0  2.05 0 2.8  4 0 2.8  4 0 0\n"
+      "white polygon rn 0 0 12 2.05 3 0  4 3 0  4 3 2.8  2.05 3 2.8\n"
+      // left room: x 0..2, open on the left, with its own wall at x = 2 facing left
+      "white polygon lf 0 0 12 0 0 0  2 0 0  2 3 0  0 3 0\n"
+      "white polygon lc 0 0 12 0 0 2.8  0 3 2.8  2 3 2.8  2 0 2.8\n"
+      "white polygon lw 0 0 12 2 0 0  2 0 2.8  2 3 2.8  2 3 0\n"
+      "lamp polygon panel 0 0 12 0.7 1.2 2.79  0.7 1.8 2.79  1.3 1.8 2.79  1.3 1.2 2.79\n";
+  std::vector<std::pair<std::string, SensorPoint>> probes = {
+      {"1 mm from the wall", {Vec3(2.051, 1.5, 1.4), Vec3(1, 0, 0)}},
+      {"facing the wall", {Vec3(2.051, 1.5, 1.4), Vec3(-1, 0, 0)}},
+      {"floor corner", {Vec3(2.051, 0.001, 0.001), glm::normalize(Vec3(1, 1, 1))}},
+      {"room centre", {Vec3(3.0, 1.5, 0.8), Vec3(0, 0, 1)}}};
+  return runRad(rad, probes, std::vector<double>(probes.size(), 0.0), cfg,
+                "a closed room next to a lit one stays exactly dark", 0.0, 0.0);
+}
+
+CaseResult integratingSphere09(const RunConfig& cfg) {
+  // Very high reflectance: E = E_d/(1 − ρ) with ρ = 0.9 (ten times the direct light).
+  const std::string rad = "void light lamp 0 0 3 1000 1000 1000\n"
+                          "lamp sphere bulb 0 0 4 0 0 0 0.02\n"
+                          "void plastic wall 0 0 5 0.9 0.9 0.9 0 0\n"
+                          "wall bubble shell 0 0 4 0 0 0 1\n";
+  const double ed = analytic::sphereSource(1000.0, 0.02, 0.999, 1.0);
+  std::vector<std::pair<std::string, SensorPoint>> probes;
+  for (Vec3 dir : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 0.6, 0.8)})
+    probes.push_back({"(" + std::to_string(dir.x).substr(0, 4) + "," + std::to_string(dir.y).substr(0, 4) + "," +
+                          std::to_string(dir.z).substr(0, 4) + ")",
+                      {0.999 * dir, -dir}});
+  return runRad(rad, probes, std::vector<double>(probes.size(), kLux * analytic::integratingSphere(ed, 0.9)), cfg,
+                "E = E_d / (1 - 0.9)", 0.02);
+}
+
+CaseResult tinyLamp(const RunConfig& cfg) {
+  // A 1 cm lamp (sphere r = 5 mm) 1 m above a mirror floor of reflectance 0.9: seen directly by
+  // an upward sensor, and through the mirror (its image 1 m below the floor) by a downward one.
+  const std::string rad = "void light lamp 0 0 3 5e5 5e5 5e5\n"
+                          "lamp sphere bulb 0 0 4 0 0 1 0.005\n"
+                          "void mirror floor 0 0 3 0.9 0.9 0.9\n"
+                          "floor polygon m 0 0 12 -50 -50 0  50 -50 0  50 50 0  -50 50 0\n";
+  const Vec3 up(1.0, 0.0, 0.5), down(1.0, 0.0, 0.5);
+  const Vec3 toLamp = Vec3(0, 0, 1) - up, toImage = Vec3(0, 0, -1) - down;
+  const double dl = glm::length(toLamp), di = glm::length(toImage);
+  std::vector<std::pair<std::string, SensorPoint>> probes = {
+      {"direct", {up, Vec3(0, 0, 1)}}, {"in the mirror", {down, Vec3(0, 0, -1)}}};
+  std::vector<double> refs = {
+      kLux * analytic::sphereSource(5e5, 0.005, dl, glm::dot(Vec3(0, 0, 1), toLamp / dl)),
+      kLux * 0.9 * analytic::sphereSource(5e5, 0.005, di, glm::dot(Vec3(0, 0, -1), toImage / di))};
+  return runRad(rad, probes, refs, cfg, "E = pi L r^2 cos / d^2, the image's with the mirror's 0.9", 0.01);
+}
+
+// Irradiance from a Lambertian rectangle [x0,x1]×[y0,y1] at height z facing down, on a sensor
+// at p with normal n, by midpoint quadrature over the rectangle (cos clamped at the horizon):
+// E = ∫ L max(0, cos θ_s) cos θ_l / r² dA. Independent of the engine's clipped Lambert formula.
+double rectangleQuadrature(double L, double x0, double y0, double x1, double y1, double z, const Vec3& p,
+                           const Vec3& n, int m) {
+  double sum = 0.0;
+  const double dx = (x1 - x0) / m, dy = (y1 - y0) / m;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const Vec3 q(x0 + (i + 0.5) * dx, y0 + (j + 0.5) * dy, z);
+      const Vec3 e = q - p;
+      const double r2 = glm::dot(e, e), r = std::sqrt(r2);
+      const double cs = glm::dot(n, e) / r, cl = (p.z < z ? (z - p.z) / r : 0.0);
+      if (cs > 0.0) sum += L * cs * cl / r2 * dx * dy;
+    }
+  return sum;
+}
+
+CaseResult grazingSensor(const RunConfig& cfg) {
+  // Sensors tilted until their horizon cuts a 1 m × 1 m panel 1 m above them.
+  const std::string rad = "void light panel 0 0 3 50 50 50\n"
+                          "panel polygon p 0 0 12 -0.5 -0.5 1  -0.5 0.5 1  0.5 0.5 1  0.5 -0.5 1\n";
+  std::vector<std::pair<std::string, SensorPoint>> probes;
+  std::vector<double> refs;
+  for (double tiltDeg : {80.0, 88.0, 92.0}) {
+    const Vec3 n(std::sin(degToRad(tiltDeg)), 0.0, std::cos(degToRad(tiltDeg)));
+    probes.push_back({"tilt " + std::to_string(static_cast<int>(tiltDeg)) + " deg", {Vec3(-0.2, 0.1, 0.0), n}});
+    refs.push_back(kLux * rectangleQuadrature(50.0, -0.5, -0.5, 0.5, 0.5, 1.0, Vec3(-0.2, 0.1, 0.0), n, 2000));
+  }
+  return runRad(rad, probes, refs, cfg, "midpoint quadrature (2000^2) over the panel, clipped at the horizon",
+                0.01);
+}
+
+}  // namespace
+
+std::vector<Case> stabilityCases() {
+  return {
+      {"stability-light-leak", "stability", true, lightLeak},
+      {"stability-reflectance-0.9", "stability", true, integratingSphere09},
+      {"stability-tiny-lamp-and-mirror", "stability", true, tinyLamp},
+      {"stability-grazing-sensor", "stability", true, grazingSensor},
+  };
+}
+
+}  // namespace candela::validation
