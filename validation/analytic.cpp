@@ -62,6 +62,30 @@ double sphereOnPlane(double rho, double skyRadiance, double radiusM, double xM, 
   return kPi * sum / (2.0 * n * n);
 }
 
+double overcastAperture(const double p[3], const double normal[3], const double c[3], const double u[3],
+                        const double v[3], double eh, int n) {
+  const double lz = 9.0 * eh / (7.0 * kPi);
+  // Aperture normal and area from the edges.
+  const double an[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const double area = std::sqrt(an[0] * an[0] + an[1] * an[1] + an[2] * an[2]);
+  const double cell = area / (static_cast<double>(n) * n);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double a = (i + 0.5) / n, b = (j + 0.5) / n;
+      double e[3];
+      for (int k = 0; k < 3; ++k) e[k] = c[k] + a * u[k] + b * v[k] - p[k];
+      const double r2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], r = std::sqrt(r2);
+      const double w[3] = {e[0] / r, e[1] / r, e[2] / r};
+      const double cosI = normal[0] * w[0] + normal[1] * w[1] + normal[2] * w[2];
+      if (w[2] <= 0.0 || cosI <= 0.0) continue;
+      const double cosA = std::abs(an[0] * w[0] + an[1] * w[1] + an[2] * w[2]) / area;
+      sum += lz * (1.0 + 2.0 * w[2]) / 3.0 * cosI * cosA / r2 * cell;
+    }
+  }
+  return sum;
+}
+
 double integratingSphere(double directIrradiance, double rho) { return directIrradiance / (1.0 - rho); }
 
 }  // namespace candela::analytic

@@ -36,6 +36,14 @@ double uniformSky(double radiance);
 // uniform; `n` cells per axis (n² rays).
 double sphereOnPlane(double rho, double skyRadiance, double radiusM, double xM, double hM, int n = 3000);
 
+// Illuminance (lux) at p on a sensor with unit normal (nx, ny, nz) through a parallelogram
+// aperture (corner c, edges u and v, m) under the CIE overcast sky of horizontal illuminance eh
+// (lux), nothing else visible: E = ∫ L(ω) max(0, cos ι) |cos θ_a| / r² dA with the Moon–Spencer
+// luminance L = Lz (1 + 2 sin h)/3, Lz = 9 eh/(7π), and L = 0 below the horizon; midpoint rule
+// on n × n cells.
+double overcastAperture(const double p[3], const double normal[3], const double c[3], const double u[3],
+                        const double v[3], double eh, int n);
+
 // Integrating sphere (closed, uniform reflectance ρ): with direct irradiance E_d everywhere on the
 // wall, the total is E_d / (1 − ρ) (geometric series of interreflections).
 double integratingSphere(double directIrradiance, double rho);

@@ -104,24 +104,36 @@ CaseResult roofOpening(const RunConfig& cfg) {
 }
 
 // E at p (facing up) through a window in the plane x = 0 spanning y ∈ [y0, y1], z ∈ [z0, z1],
-// under the CIE overcast sky of horizontal illuminance eh: midpoint quadrature over the window,
-// E = ∫ L(ω) cos ι cos θ_w / r² dA with L = Lz (1 + 2 sin h)/3 and Lz = 9 eh / (7π).
+// under the CIE overcast sky of horizontal illuminance eh (analytic::overcastAperture).
 double overcastWindow(const Vec3& p, double y0, double y1, double z0, double z1, double eh, int n) {
-  const double lz = 9.0 * eh / (7.0 * kPi);
-  double sum = 0.0;
-  const double dy = (y1 - y0) / n, dz = (z1 - z0) / n;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const Vec3 q(0.0, y0 + (i + 0.5) * dy, z0 + (j + 0.5) * dz);
-      const Vec3 e = q - p;
-      const double r2 = glm::dot(e, e), r = std::sqrt(r2);
-      const Vec3 w = e / r;
-      if (w.z <= 0.0) continue;
-      const double lum = lz * (1.0 + 2.0 * w.z) / 3.0;
-      sum += lum * w.z * std::abs(w.x) / r2 * dy * dz;
-    }
+  const double pp[3] = {p.x, p.y, p.z}, up[3] = {0, 0, 1}, c[3] = {0, y0, z0}, u[3] = {0, y1 - y0, 0},
+               v[3] = {0, 0, z1 - z0};
+  return analytic::overcastAperture(pp, up, c, u, v, eh, n);
+}
+
+CaseResult roofOpeningOvercastDf(const RunConfig& cfg) {
+  // CIE 171's daylight-factor cases as published descriptions reconstruct them (a roof opening
+  // under the CIE overcast sky, e.g. Maamari, Fontoynont & Adra 2006): with a black interior the
+  // daylight factor is the sky component, DF = 100 E / E_h, by quadrature over the opening.
+  Scene scene;
+  readRadianceText("void plastic black 0 0 5 0 0 0 0 0\n"
+                   "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
+                   "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
+                   "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
+                   "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n",
+                   "<roof>", scene);
+  addDaylight(scene, skySpec("cie-overcast"));
+  std::vector<std::pair<std::string, SensorPoint>> probes;
+  std::vector<double> refs;
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {0.5, 0.75}, {2.0, 1.0}}) {
+    const double pp[3] = {x, y, 0.0}, up[3] = {0, 0, 1}, c[3] = {-0.5, -0.75, 3.0}, u[3] = {1.0, 0, 0},
+                 v[3] = {0, 1.5, 0};
+    probes.push_back({"(" + std::to_string(x).substr(0, 3) + "," + std::to_string(y).substr(0, 4) + ")",
+                      {Vec3(x, y, 0.0), Vec3(0, 0, 1)}});
+    refs.push_back(analytic::overcastAperture(pp, up, c, u, v, 10000.0, 1500));
   }
-  return sum;
+  CaseResult r = run(scene, probes, refs, cfg, "sky component (= DF x E_h) by quadrature of the overcast sky", 0.01);
+  return r;
 }
 
 CaseResult sideWindow(const RunConfig& cfg) {
@@ -157,6 +169,7 @@ std::vector<Case> daylightCases() {
       // CI runs (docs/validation.md). Not in the quick subset for that reason.
       {"roof-opening-uniform-sky", "daylight", false, roofOpening},
       {"side-window-overcast-sky", "daylight", false, sideWindow},
+      {"cie171-roof-opening-daylight-factor", "cie171", false, roofOpeningOvercastDf},
   };
 }
 

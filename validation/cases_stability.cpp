@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace candela::validation {
@@ -131,6 +132,85 @@ CaseResult grazingSensor(const RunConfig& cfg) {
                 0.01);
 }
 
+CaseResult coplanarSource(const RunConfig& cfg) {
+  // A light panel flush with (coplanar to) a black ceiling that covers it: shadow rays to the
+  // panel end in the ceiling's plane and must not be stopped by it. Reference: the lone panel.
+  const std::string rad = "void light panel 0 0 3 50 50 50\n"
+                          "void plastic black 0 0 5 0 0 0 0 0\n"
+                          "black polygon ceiling 0 0 12 -3 -3 2.5  -3 3 2.5  3 3 2.5  3 -3 2.5\n"
+                          "panel polygon p 0 0 12 -0.6 -0.3 2.5  -0.6 0.3 2.5  0.6 0.3 2.5  0.6 -0.3 2.5\n";
+  std::vector<std::pair<std::string, SensorPoint>> probes;
+  std::vector<double> refs;
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.5}, {-2.0, 1.0}}) {
+    probes.push_back({"(" + std::to_string(x).substr(0, 4) + "," + std::to_string(y).substr(0, 3) + ")",
+                      {Vec3(x, y, 0.0), Vec3(0, 0, 1)}});
+    refs.push_back(kLux * analytic::rectangleAbove(50.0, -0.6, -0.3, 0.6, 0.3, 2.5, x, y));
+  }
+  return runRad(rad, probes, refs, cfg, "the lone panel's configuration factor", 0.01);
+}
+
+// CIE 171:2006 test case "diffuse inter-reflections" as published descriptions reconstruct it
+// (e.g. Maamari, Fontoynont & Adra 2006, Energy and Buildings 38: an empty 4 m cube of uniform
+// reflectance lit from inside). Reconstructed here by flux balance, which holds in any closed
+// room of uniform ρ: the flux arriving on all surfaces is Φ/(1 − ρ), so the area-averaged
+// interreflected irradiance is ρΦ / (A(1 − ρ)). The source is a small light sphere (r = 5 cm) at
+// the centre, whose direct irradiance is known exactly at every point (π L r² cos θ / d²) and is
+// subtracted, so that the grid average (8 × 8 cells per face) only averages the smooth indirect
+// field. The standard's own source and grids may differ.
+CaseResult cube(const RunConfig& cfg, double rho) {
+  const double L = 2000.0, r = 0.05, side = 4.0;
+  char mat[160];
+  std::snprintf(mat, sizeof mat, "void plastic wall 0 0 5 %g %g %g 0 0\n", rho, rho, rho);
+  const std::string rad = std::string("void light lamp 0 0 3 2000 2000 2000\n") +
+                          "lamp sphere bulb 0 0 4 2 2 2 0.05\n" + mat +
+                          "wall polygon floor 0 0 12 0 0 0  0 4 0  4 4 0  4 0 0\n"
+                          "wall polygon ceiling 0 0 12 0 0 4  4 0 4  4 4 4  0 4 4\n"
+                          "wall polygon w1 0 0 12 0 0 0  4 0 0  4 0 4  0 0 4\n"
+                          "wall polygon w2 0 0 12 0 4 0  0 4 4  4 4 4  4 4 0\n"
+                          "wall polygon w3 0 0 12 0 0 0  0 0 4  0 4 4  0 4 0\n"
+                          "wall polygon w4 0 0 12 4 0 0  4 4 0  4 4 4  4 0 4\n";
+  Scene scene;
+  readRadianceText(rad, "<cube>", scene);
+  const Tracer tracer(scene);
+  std::vector<SensorPoint> pts;
+  const int n = 8;
+  const double off = 0.001;
+  for (int face = 0; face < 6; ++face) {
+    const int axis = face / 2;
+    const bool high = face % 2;
+    Vec3 normal(0.0);
+    normal[axis] = high ? -1.0 : 1.0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        Vec3 p(0.0);
+        p[axis] = high ? side - off : off;
+        p[(axis + 1) % 3] = (i + 0.5) * side / n;
+        p[(axis + 2) % 3] = (j + 0.5) * side / n;
+        pts.push_back({p, normal});
+      }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto est = computeIrradiance(tracer, pts, cfg.settings, cfg.threads);
+  CaseResult res;
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double indirect = 0.0, var = 0.0;
+  for (size_t k = 0; k < pts.size(); ++k) {
+    const Vec3 toC = Vec3(2.0) - pts[k].position;
+    const double d = glm::length(toC);
+    const double direct = kLux * analytic::sphereSource(L, r, d, glm::dot(pts[k].normal, toC / d));
+    indirect += est[k].illuminanceLux() - direct;
+    var += est[k].standardErrorLux() * est[k].standardErrorLux();
+  }
+  indirect /= static_cast<double>(pts.size());
+  const double fluxLux = kLux * kPi * L * 4.0 * kPi * r * r;  // lumens of a sphere of radiance L
+  const double area = 6.0 * side * side;
+  res.reference = "flux balance: mean interreflected E = rho Phi / (A (1 - rho))";
+  res.tolerance = 0.02;
+  res.points.push_back({"mean of 384 points", rho * fluxLux / (area * (1.0 - rho)), indirect,
+                        std::sqrt(var) / static_cast<double>(pts.size())});
+  return res;
+}
+
 }  // namespace
 
 std::vector<Case> stabilityCases() {
@@ -139,6 +219,9 @@ std::vector<Case> stabilityCases() {
       {"stability-reflectance-0.9", "stability", true, integratingSphere09},
       {"stability-tiny-lamp-and-mirror", "stability", true, tinyLamp},
       {"stability-grazing-sensor", "stability", true, grazingSensor},
+      {"stability-coplanar-source", "stability", true, coplanarSource},
+      {"cie171-cube-interreflection-rho0.5", "cie171", true, [](const RunConfig& c) { return cube(c, 0.5); }},
+      {"cie171-cube-interreflection-rho0.8", "cie171", false, [](const RunConfig& c) { return cube(c, 0.8); }},
   };
 }
 
