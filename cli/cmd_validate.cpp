@@ -46,10 +46,10 @@ int runValidate(const ValidateOptions& o) {
 
   std::ostringstream table, csv;
   char line[512];
-  std::snprintf(line, sizeof line, "%-28s %-14s %12s %12s %9s %9s %7s %-7s %8s\n", "case", "point", "reference_lux",
-                "result_lux", "max_err%", "rms_err%", "tol%", "verdict", "time_s");
+  std::snprintf(line, sizeof line, "%-28s %-14s %12s %12s %9s %9s %7s %-7s %8s\n", "case", "point", "reference",
+                "result", "max_err%", "rms_err%", "tol%", "verdict", "time_s");
   table << line;
-  csv << "case,group,point,reference_lux,result_lux,standard_error_lux,relative_error,tolerance,verdict,time_s\n";
+  csv << "case,group,point,unit,reference,result,standard_error,relative_error,tolerance,verdict,time_s\n";
   int failed = 0;
   for (const auto& r : results) {
     // The row shows the point with the largest error.
@@ -62,8 +62,8 @@ int runValidate(const ValidateOptions& o) {
                   100 * r.rmsRelativeError(), 100 * r.tolerance, r.pass() ? "pass" : "FAIL", r.seconds);
     table << line;
     for (const auto& p : r.points) {
-      std::snprintf(line, sizeof line, "%s,%s,\"%s\",%.9g,%.9g,%.4g,%.6g,%.4g,%s,%.4f\n", r.name.c_str(),
-                    r.group.c_str(), p.label.c_str(), p.referenceLux, p.resultLux, p.standardErrorLux,
+      std::snprintf(line, sizeof line, "%s,%s,\"%s\",%s,%.9g,%.9g,%.4g,%.6g,%.4g,%s,%.4f\n", r.name.c_str(),
+                    r.group.c_str(), p.label.c_str(), r.unit.c_str(), p.referenceLux, p.resultLux, p.standardErrorLux,
                     p.relativeError(), r.tolerance, r.pointPasses(p) ? "pass" : "fail",
                     r.seconds);
       csv << line;

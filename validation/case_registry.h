@@ -12,6 +12,8 @@
 
 namespace candela::validation {
 
+// Values are in the case's unit: lux for every lighting case (the field names say so), degrees
+// for the solar position case.
 struct PointResult {
   std::string label;          // e.g. "x=0.25 m"
   double referenceLux = 0.0;
@@ -29,6 +31,7 @@ struct CaseResult {
   std::string group;          // "engine", "luminaires", "daylight", ...
   std::string reference;      // the closed form, in words
   double tolerance = 0.01;    // on the relative error of every point
+  std::string unit = "lux";   // of the point values
   std::vector<PointResult> points;
   double seconds = 0.0;        // wall time of candela's computation (not of the reference)
   double maxRelativeError() const;

@@ -2,6 +2,7 @@
 // opening under a uniform sky (configuration factor) and a side window under the CIE overcast
 // sky (quadrature of the Moon–Spencer luminance over the window).
 #include "engine/daylight.h"
+#include "photometry/sun_spa.h"
 #include "engine/rad_reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
@@ -158,10 +159,39 @@ CaseResult sideWindow(const RunConfig& cfg) {
   return run(scene, probes, refs, cfg, "quadrature of Moon-Spencer luminance over the window", 0.01);
 }
 
+CaseResult spaExample(const RunConfig&) {
+  // Reda & Andreas (2004), NREL/TP-560-34302, the report's example: 2003-10-17 12:30:30 at
+  // UTC−7, 39.742476° N, 105.1786° W, 1830.14 m, 820 mbar, 11 °C, ΔT 67 s → topocentric zenith
+  // 50.11162°, azimuth 194.34024°. Checked to 0.0001°.
+  SpaInput in;
+  in.year = 2003;
+  in.month = 10;
+  in.day = 17;
+  in.hourOfDay = 12.5 + 30.0 / 3600.0;
+  in.timezoneHours = -7.0;
+  in.latitudeDeg = 39.742476;
+  in.longitudeDeg = -105.1786;
+  in.elevationM = 1830.14;
+  in.pressureMbar = 820.0;
+  in.temperatureC = 11.0;
+  in.deltaTSec = 67.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const SpaResult sun = computeSunPosition(in);
+  CaseResult r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.reference = "NREL SPA report's example (Reda & Andreas 2004)";
+  r.unit = "deg";
+  r.tolerance = 0.0;
+  r.absoluteToleranceLux = 1e-4;  // degrees here
+  r.points = {{"zenith", 50.11162, sun.zenithDeg, 0.0}, {"azimuth", 194.34024, sun.azimuthDeg, 0.0}};
+  return r;
+}
+
 }  // namespace
 
 std::vector<Case> daylightCases() {
   return {
+      {"nrel-spa-example", "daylight", true, spaExample},
       {"sky-integrals", "daylight", true, skyIntegrals},
       {"overcast-vertical", "daylight", true, overcastVertical},
       // Small apertures seen by hemisphere sampling: at normal quality their error (2–4 % at the

@@ -157,6 +157,7 @@ std::vector<Case> engineCases() {
       {"uniform-sky", "engine", true, uniformSky},
       {"sphere-on-plane-rho0", "engine", true, [](const RunConfig& c) { return sphereOnPlane(c, 0.0); }},
       {"sphere-on-plane-rho0.5", "engine", true, [](const RunConfig& c) { return sphereOnPlane(c, 0.5); }},
+      {"integrating-sphere-rho0.2", "engine", true, [](const RunConfig& c) { return integratingSphere(c, 0.2); }},
       {"integrating-sphere-rho0.5", "engine", true, [](const RunConfig& c) { return integratingSphere(c, 0.5); }},
       {"integrating-sphere-rho0.8", "engine", true, [](const RunConfig& c) { return integratingSphere(c, 0.8); }},
   };

@@ -68,7 +68,8 @@ std::string validationHtml(const std::vector<CaseResult>& results, const Validat
   for (const CaseResult& r : results) {
     h << "<details id=\"" << escape(r.name) << "\"" << (r.pass() ? "" : " open") << "><summary>" << badge(r.pass())
       << " " << escape(r.name) << " — " << r.points.size() << " points</summary>\n<table><thead><tr><th>Point</th>"
-      << "<th class=\"num\">Reference (lux)</th><th class=\"num\">Result (lux)</th><th class=\"num\">Std. error (lux)"
+      << "<th class=\"num\">Reference (" << escape(r.unit) << ")</th><th class=\"num\">Result (" << escape(r.unit)
+      << ")</th><th class=\"num\">Std. error (" << escape(r.unit) << ")"
       << "</th><th class=\"num\">Error</th></tr></thead><tbody>\n";
     for (const PointResult& p : r.points)
       h << "<tr><td>" << escape(p.label) << "</td><td class=\"num\">" << num("%.5g", p.referenceLux)
