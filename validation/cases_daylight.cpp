@@ -82,15 +82,19 @@ CaseResult overcastVertical(const RunConfig& cfg) {
   return run(scene, probes, refs, cfg, "E_v = 0.39618 E_h (Moon-Spencer integral)", 0.01);
 }
 
+// An infinite black roof 3 m up with a 1 m × 1.5 m opening over [−0.5, 0.5] × [−0.75, 0.75].
+constexpr const char* kRoofWithOpening =
+    "void plastic black 0 0 5 0 0 0 0 0\n"
+    "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
+    "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
+    "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
+    "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n";
+
 CaseResult roofOpening(const RunConfig& cfg) {
   // A 1 m × 1.5 m opening in an infinite black roof 3 m up, uniform sky of 10000 lux: a floor
   // sensor sees the sky only through it, E = E_h · F, F the configuration factor of the opening.
   Scene scene;
-  readRadianceText("void plastic black 0 0 5 0 0 0 0 0\n"
-                   "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
-                   "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
-                   "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
-                   "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n",
+  readRadianceText(kRoofWithOpening,
                    "<roof>", scene);
   addDaylight(scene, skySpec("uniform"));
   const double L = 10000.0 / kPi;  // luminance of a uniform sky of E_h = 10000 lux
@@ -117,11 +121,7 @@ CaseResult roofOpeningOvercastDf(const RunConfig& cfg) {
   // under the CIE overcast sky, e.g. Maamari, Fontoynont & Adra 2006): with a black interior the
   // daylight factor is the sky component, DF = 100 E / E_h, by quadrature over the opening.
   Scene scene;
-  readRadianceText("void plastic black 0 0 5 0 0 0 0 0\n"
-                   "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
-                   "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
-                   "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
-                   "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n",
+  readRadianceText(kRoofWithOpening,
                    "<roof>", scene);
   addDaylight(scene, skySpec("cie-overcast"));
   std::vector<std::pair<std::string, SensorPoint>> probes;
