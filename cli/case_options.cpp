@@ -9,12 +9,12 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--samples", o.samples, samplesHelp + " (default: case, else quality)")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", o.seed, "random seed (default: the case's, else 1)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--method", o.method, "path | cache (default: the case's, else path)")
+  cmd->add_option("--method", o.method, "path | cache (default: the case's, else cache for grids, path for views)")
       ->check(CLI::IsMember({"path", "cache"}));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's)")->check(CLI::NonNegativeNumber);
 }
 
-ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o) {
+ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o, Method defaultMethod) {
   ResolvedTrace r;
   r.quality = o.quality.empty() ? c.settings.quality : parseQuality(o.quality);
   r.settings = settingsForQuality(r.quality);
@@ -23,7 +23,7 @@ ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o) {
   if (o.bounces >= 0) r.settings.maxBounces = o.bounces;
   if (o.samples > 0) r.settings.hemisphereSamples = o.samples;
   r.settings.seed = o.seed >= 0 ? static_cast<uint64_t>(o.seed) : c.settings.seed;
-  if (c.settings.method) r.settings.method = *c.settings.method;
+  r.settings.method = c.settings.method.value_or(defaultMethod);
   if (!o.method.empty()) r.settings.method = parseMethod(o.method);
   r.threads = o.threads >= 0 ? o.threads : c.settings.threads;
   return r;

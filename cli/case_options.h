@@ -18,7 +18,7 @@ struct CaseTraceOptions {
   int samples = -1;     // <= 0: the case's, else the preset's
   int64_t seed = -1;    // < 0: the case's
   int threads = -1;     // < 0: the case's
-  std::string method;   // empty: the case's, else path
+  std::string method;   // empty: the case's, else the command's default
 };
 
 // Adds --quality, --bounces, --samples (with `samplesHelp`), --seed, --method and --threads.
@@ -30,6 +30,8 @@ struct ResolvedTrace {
   int threads = 0;  // 0 = all cores
 };
 
-ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o);
+// `defaultMethod` applies when neither the case nor the command line names one: the irradiance
+// cache for grids (`run`), the path tracer for single views (`render`).
+ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o, Method defaultMethod);
 
 }  // namespace candela::cli

@@ -72,7 +72,7 @@ int renderCase(const RenderOptions& o) {
     throw InputError(FileLoc{c.path.string(), 0, 0}, "--max must be above --min");
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
 
-  const ResolvedTrace resolved = resolveTrace(c, o.trace);
+  const ResolvedTrace resolved = resolveTrace(c, o.trace, Method::kPath);
   const TraceSettings& settings = resolved.settings;
   const int threads = resolved.threads;
   const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);

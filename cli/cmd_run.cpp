@@ -177,7 +177,7 @@ int runCase(const RunOptions& o) {
   }
 
   // 2. Settings: the case's, then the command line's.
-  const ResolvedTrace resolved = resolveTrace(c, o.trace);
+  const ResolvedTrace resolved = resolveTrace(c, o.trace, Method::kCache);
   const Quality quality = resolved.quality;
   const TraceSettings settings = resolved.settings;
   const int threads = resolved.threads;
