@@ -5,6 +5,8 @@
 #include "photometry/ies_lm63.h"
 #include "validation/analytic.h"
 
+#include "tests/engine/lambertian_panel.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -84,18 +86,11 @@ TEST(LuminaireSource, MultiplierAndMaintenanceFactorScale) {
 // above a sensor: the area-source answer is Lambert's, E = L · F·π for the square; the point-source
 // answer I0/h² would overstate it.
 TEST(LuminaireSource, NearFieldPanelGivesTheAreaSourceAnswer) {
-  std::ostringstream ies;
-  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel written for the candela tests\nTILT=NONE\n"
-      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
-  for (int i = 0; i <= 90; i += 5) ies << i << " ";
-  ies << "\n0\n";
-  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
-  ies << "\n";
   Scene sc;
   LuminairePlacement p;
   p.positionM = {0, 0, 0.3};
   sc.luminaires.push_back(
-      placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "panel.ies", ".")), p));
+      placeLuminaire(test_support::lambertianPanel(), p));
   const Tracer tracer(sc);
   TraceSettings s;
   s.lightSamples = 4096;

@@ -10,6 +10,8 @@
 #include "photometry/ies_lm63.h"
 #include "validation/analytic.h"
 
+#include "tests/engine/lambertian_panel.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -160,18 +162,11 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
 // A Lambertian 600 mm panel (I = 1000 cos γ cd) seen from below: its opening has luminance
 // I/(A cos γ) = 1000/0.36 cd/m² from every direction, in the image and for glare ratings.
 TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
-  std::ostringstream ies;
-  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
-      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
-  for (int i = 0; i <= 90; i += 5) ies << i << " ";
-  ies << "\n0\n";
-  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
-  ies << "\n";
   Scene sc;
   LuminairePlacement lp;
   lp.name = "panel";
   lp.positionM = {0, 2, 2.8};
-  sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   const Tracer tracer(sc);
   const Vec3 eye(0, 0, 1.2);
   const Vec3 d = lp.positionM - eye;
@@ -279,17 +274,10 @@ TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
 // 8 × 8 midpoint rule; the tracer's vertical illuminance at the eye is the same light (near field:
 // sampled over the opening), so UGR's background, the rest over π, is 0 to its Monte Carlo error.
 TEST(Render, EyeLightSeparatesDirectFromIndirect) {
-  std::ostringstream ies;
-  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
-      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
-  for (int i = 0; i <= 90; i += 5) ies << i << " ";
-  ies << "\n0\n";
-  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
-  ies << "\n";
   Scene sc;
   LuminairePlacement lp;
   lp.positionM = {0.3, 0.5, 2.8};
-  sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   const Tracer tracer(sc);
   const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.2}, {0, 0, 1}, {0, 1, 0}, {60, 45}, 8, 6);
   TraceSettings s;
@@ -339,20 +327,13 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
 // intensities; under the sphere (task and desk alone, the wall added afterwards left out) both
 // points see the whole sky over a 40 m floor, E = π L exactly, so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
 TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
-  std::ostringstream ies;
-  ies << "IESNA:LM-63-2002\n[TEST] Lambertian 600 mm panel\nTILT=NONE\n"
-      << "1 -1 1 19 1 1 2 0.6 0.6 0\n1 1 30\n";
-  for (int i = 0; i <= 90; i += 5) ies << i << " ";
-  ies << "\n0\n";
-  for (int i = 0; i <= 90; i += 5) ies << 1000.0 * std::cos(degToRad(i)) << " ";
-  ies << "\n";
   Scene sc;
   const double rb = 0.5, rt = 0.1;
   addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::Plastic, rb));
   addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::Plastic, rt));
   LuminairePlacement lp;
   lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
-  sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies.str(), "p.ies", ".")), lp));
+  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the
   // sphere out, so the reference keeps only the two surfaces seen.
   sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::Plastic, 0.7));
