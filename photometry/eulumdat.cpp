@@ -7,6 +7,7 @@
 // 26d colour, 26e colour rendering, 26f watts incl. ballast  27 ten direct ratios
 // 28 Mc C angles  29 Ng gamma angles  30 intensities (cd/klm) of planes Mc1..Mc2, Ng each.
 #include "photometry/eulumdat.h"
+#include "photometry/text_lines.h"
 
 #include "engine/base/error.h"
 
@@ -22,20 +23,7 @@ namespace {
 
 class LdtLines {
  public:
-  LdtLines(std::string file, std::string_view text) : file_(std::move(file)) {
-    size_t start = 0;
-    while (start <= text.size()) {
-      size_t end = text.find('\n', start);
-      if (end == std::string_view::npos) end = text.size();
-      std::string line(text.substr(start, end - start));
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      lines_.push_back(std::move(line));
-      if (end == text.size()) break;
-      start = end + 1;
-    }
-    while (!lines_.empty() && lines_.back().find_first_not_of(" \t\x1a") == std::string::npos)
-      lines_.pop_back();
-  }
+  LdtLines(std::string file, std::string_view text) : file_(std::move(file)), lines_(splitLines(text)) {}
 
   std::string text(const std::string& what) {
     if (pos_ >= lines_.size())

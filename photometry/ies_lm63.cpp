@@ -9,6 +9,7 @@
 //   vertical angles). After the TILT line numbers may wrap freely across lines and be
 //   separated by blanks or commas.
 #include "photometry/ies_lm63.h"
+#include "photometry/text_lines.h"
 
 #include "engine/base/error.h"
 
@@ -35,22 +36,6 @@ std::string readText(const std::filesystem::path& path, const FileLoc& loc) {
   return ss.str();
 }
 
-std::vector<std::string> splitLines(std::string_view text) {
-  std::vector<std::string> lines;
-  size_t start = 0;
-  while (start <= text.size()) {
-    size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    std::string line(text.substr(start, end - start));
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-    if (end == text.size()) break;
-    start = end + 1;
-  }
-  while (!lines.empty() && lines.back().find_first_not_of(" \t\x1a") == std::string::npos)
-    lines.pop_back();
-  return lines;
-}
 
 std::string trim(std::string_view s) {
   const size_t a = s.find_first_not_of(" \t\r");
