@@ -1,5 +1,7 @@
 #include "validation/validation_html.h"
 
+#include "reports/plan_svg.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -7,20 +9,6 @@
 namespace candela::validation {
 
 namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string num(const char* fmt, double v) {
   char b[64];
@@ -49,16 +37,16 @@ std::string validationHtml(const std::vector<CaseResult>& results, const Validat
        ".pass{background:#e3f4e6;color:#1e6b2e} .fail{background:#fbe3e3;color:#9b1c1c}\n"
        "details{margin:4px 0} summary{cursor:pointer;font-size:13px}\n"
        "</style></head><body><main>\n";
-  h << "<h1>candela validation</h1>\n<p class=\"sub\">candela " << escape(page.version) << " · quality "
-    << escape(page.quality) << " · seed " << page.seed << " · " << results.size() << " cases: "
+  h << "<h1>candela validation</h1>\n<p class=\"sub\">candela " << xmlEscape(page.version) << " · quality "
+    << xmlEscape(page.quality) << " · seed " << page.seed << " · " << results.size() << " cases: "
     << results.size() - failed << " passed, " << failed << " failed. Errors are relative to the reference; the "
     << "time is candela's computation only.</p>\n";
   h << "<h2>Cases</h2>\n<table><thead><tr><th>Group</th><th>Case</th><th>Reference</th><th class=\"num\">Max error"
        "</th><th class=\"num\">RMS error</th><th class=\"num\">Tolerance</th><th>Verdict</th><th class=\"num\">Time"
        "</th></tr></thead><tbody>\n";
   for (const CaseResult& r : results)
-    h << "<tr><td>" << escape(r.group) << "</td><td><a href=\"#" << escape(r.name) << "\">" << escape(r.name)
-      << "</a></td><td>" << escape(r.reference) << "</td><td class=\"num\">" << num("%.3f %%", 100 * r.maxRelativeError())
+    h << "<tr><td>" << xmlEscape(r.group) << "</td><td><a href=\"#" << xmlEscape(r.name) << "\">" << xmlEscape(r.name)
+      << "</a></td><td>" << xmlEscape(r.reference) << "</td><td class=\"num\">" << num("%.3f %%", 100 * r.maxRelativeError())
       << "</td><td class=\"num\">" << num("%.3f %%", 100 * r.rmsRelativeError()) << "</td><td class=\"num\">"
       << num("%.1f %%", 100 * r.tolerance) << "</td><td>" << badge(r.pass()) << "</td><td class=\"num\">"
       << num("%.3f s", r.seconds) << "</td></tr>\n";
@@ -66,13 +54,13 @@ std::string validationHtml(const std::vector<CaseResult>& results, const Validat
   if (!page.chartSvg.empty()) h << "<h2>Speed and accuracy</h2>\n" << page.chartSvg << "\n";
   h << "<h2>Points</h2>\n";
   for (const CaseResult& r : results) {
-    h << "<details id=\"" << escape(r.name) << "\"" << (r.pass() ? "" : " open") << "><summary>" << badge(r.pass())
-      << " " << escape(r.name) << " — " << r.points.size() << " points</summary>\n<table><thead><tr><th>Point</th>"
-      << "<th class=\"num\">Reference (" << escape(r.unit) << ")</th><th class=\"num\">Result (" << escape(r.unit)
-      << ")</th><th class=\"num\">Std. error (" << escape(r.unit) << ")"
+    h << "<details id=\"" << xmlEscape(r.name) << "\"" << (r.pass() ? "" : " open") << "><summary>" << badge(r.pass())
+      << " " << xmlEscape(r.name) << " — " << r.points.size() << " points</summary>\n<table><thead><tr><th>Point</th>"
+      << "<th class=\"num\">Reference (" << xmlEscape(r.unit) << ")</th><th class=\"num\">Result (" << xmlEscape(r.unit)
+      << ")</th><th class=\"num\">Std. error (" << xmlEscape(r.unit) << ")"
       << "</th><th class=\"num\">Error</th></tr></thead><tbody>\n";
     for (const PointResult& p : r.points)
-      h << "<tr><td>" << escape(p.label) << "</td><td class=\"num\">" << num("%.5g", p.referenceLux)
+      h << "<tr><td>" << xmlEscape(p.label) << "</td><td class=\"num\">" << num("%.5g", p.referenceLux)
         << "</td><td class=\"num\">" << num("%.5g", p.resultLux) << "</td><td class=\"num\">"
         << num("%.3g", p.standardErrorLux) << "</td><td class=\"num\">" << num("%+.3f %%", 100 * p.relativeError())
         << "</td></tr>\n";
