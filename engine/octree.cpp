@@ -146,23 +146,8 @@ namespace {
 
 using Octree_Triangle = Octree::Triangle;
 
-// Möller & Trumbore (1997), as intersectShape does (same arithmetic, so the same t), on the
-// compact copy.
 inline bool hitTriangle(const Octree_Triangle& tri, const Vec3& o, const Vec3& d, double tMin, double tMax, double& t) {
-  const Vec3 p = glm::cross(d, tri.e2);
-  const double det = glm::dot(tri.e1, p);
-  if (det == 0.0) return false;
-  const double inv = 1.0 / det;
-  const Vec3 tv = o - tri.v0;
-  const double u = glm::dot(tv, p) * inv;
-  if (u < 0.0 || u > 1.0) return false;
-  const Vec3 q = glm::cross(tv, tri.e1);
-  const double v = glm::dot(d, q) * inv;
-  if (v < 0.0 || u + v > 1.0) return false;
-  const double tt = glm::dot(tri.e2, q) * inv;
-  if (tt <= tMin || tt >= tMax) return false;
-  t = tt;
-  return true;
+  return intersectTriangle(tri.v0, tri.e1, tri.e2, o, d, tMin, tMax, t);
 }
 
 }  // namespace

@@ -174,23 +174,8 @@ bool coneOverlapsBox(const Shape& s, const Vec3& lo, const Vec3& hi) {
 bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const Vec3& dir, double tMin,
                     double tMax, double& t) {
   switch (s.type) {
-    case ShapeType::Triangle: {
-      // Möller & Trumbore (1997), "Fast, minimum storage ray-triangle intersection".
-      const Vec3 p = glm::cross(dir, s.c);
-      const double det = glm::dot(s.b, p);
-      if (det == 0.0) return false;
-      const double inv = 1.0 / det;
-      const Vec3 tv = o - s.a;
-      const double u = glm::dot(tv, p) * inv;
-      if (u < 0.0 || u > 1.0) return false;
-      const Vec3 q = glm::cross(tv, s.b);
-      const double v = glm::dot(dir, q) * inv;
-      if (v < 0.0 || u + v > 1.0) return false;
-      const double tt = glm::dot(s.c, q) * inv;
-      if (tt <= tMin || tt >= tMax) return false;
-      t = tt;
-      return true;
-    }
+    case ShapeType::Triangle:
+      return intersectTriangle(s.a, s.b, s.c, o, dir, tMin, tMax, t);
     case ShapeType::Polygon: {
       const double denom = glm::dot(s.n, dir);
       if (denom == 0.0) return false;

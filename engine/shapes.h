@@ -34,6 +34,27 @@ struct VertexStore {
   std::vector<Vec2> projected;
 };
 
+// Möller & Trumbore (1997), "Fast, minimum storage ray-triangle intersection": the ray o + t·dir
+// against the triangle (v0, v0 + e1, v0 + e2) for t in (tMin, tMax). Shared by intersectShape and
+// the octree's compact triangles, so both give the same t to the last bit.
+[[gnu::always_inline]] inline bool intersectTriangle(const Vec3& v0, const Vec3& e1, const Vec3& e2, const Vec3& o, const Vec3& dir,
+                              double tMin, double tMax, double& t) {
+  const Vec3 p = glm::cross(dir, e2);
+  const double det = glm::dot(e1, p);
+  if (det == 0.0) return false;
+  const double inv = 1.0 / det;
+  const Vec3 tv = o - v0;
+  const double u = glm::dot(tv, p) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  const Vec3 q = glm::cross(tv, e1);
+  const double v = glm::dot(dir, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  const double tt = glm::dot(e2, q) * inv;
+  if (tt <= tMin || tt >= tMax) return false;
+  t = tt;
+  return true;
+}
+
 // Nearest intersection of the ray o + t·dir with the shape for t in (tMin, tMax); dir need not be
 // unit length for polygons but must be for spheres/cones (the integrator always passes unit
 // vectors). Returns true and sets t on a hit.
