@@ -37,6 +37,21 @@ Vec3 pointOnTriangles(const std::vector<std::array<Vec3, 3>>& tris, const std::v
   return sampleTriangle(tris[k][0], tris[k][1], tris[k][2], v1, u2);
 }
 
+// A uniformly sampled point y (front normal ny) of a source of the given area and radiance, seen
+// from p: direction, distance and weight L cos θ_l A / d²; false behind the one-sided source.
+bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radiance, double areaM2, LightSample& out) {
+  const Vec3 e = y - p;
+  const double dist2 = glm::dot(e, e);
+  if (dist2 <= 0.0) return false;
+  const double dist = std::sqrt(dist2);
+  out.dir = e / dist;
+  out.distance = dist;
+  const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
+  if (cosL <= 0.0) return false;
+  out.weight = radiance * (cosL * areaM2 / dist2);
+  return true;
+}
+
 // Cosine-weighted solid angle of a circular cap of half-angle α whose axis makes angle θ with the
 // normal, when the cap is wholly above the horizon: π sin²α cos θ.
 bool capProjectedSolidAngle(const Vec3& axis, double sinAlpha, const Vec3& n, double& out) {
@@ -99,6 +114,7 @@ std::vector<Light> collectLights(const Scene& scene) {
         l.outline.assign(scene.vertices.points.begin() + s.firstVertex,
                          scene.vertices.points.begin() + s.firstVertex + s.vertexCount);
       }
+      l.normal = s.n;
       l.triangles = triangulatePolygon(l.outline, s.n);
       double acc = 0.0;
       for (const auto& t : l.triangles) {
@@ -217,16 +233,7 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       break;
     }
   }
-  const Vec3 e = y - p;
-  const double dist2 = glm::dot(e, e);
-  if (dist2 <= 0.0) return false;
-  const double dist = std::sqrt(dist2);
-  out.dir = e / dist;
-  out.distance = dist;
-  const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
-  if (cosL <= 0.0) return false;
-  out.weight = light.radiance * (cosL * light.areaM2 / dist2);
-  return true;
+  return areaSample(y, ny, p, light.radiance, light.areaM2, out);
 }
 
 double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
@@ -258,16 +265,8 @@ bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3,
   const double area = cumulative.back();
   size_t k;
   const Vec3 y = pointOnTriangles(tris, cumulative, u1, u2, k);
-  const Vec3 e = y - p;
-  const double dist2 = glm::dot(e, e);
-  if (dist2 <= 0.0) return false;
-  const double dist = std::sqrt(dist2);
-  out.dir = e / dist;
-  out.distance = dist;
-  const Vec3 ny = glm::normalize(glm::cross(tris[k][1] - tris[k][0], tris[k][2] - tris[k][0]));
-  const double cosL = std::abs(glm::dot(ny, out.dir));
-  out.weight = light.radiance * (cosL * area / dist2);
-  return true;
+  // The clipped part lies in the source's plane and p in front of it (unoccludedIrradiance).
+  return areaSample(y, light.normal, p, light.radiance, area, out);
 }
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,

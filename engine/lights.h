@@ -21,6 +21,7 @@ struct Light {
   std::vector<std::array<Vec3, 3>> triangles;
   std::vector<double> cumulativeArea;
   std::vector<Vec3> outline;  // polygon vertices, for Lambert's formula
+  Vec3 normal{0.0};           // polygon: unit front normal (the emitting side)
   double areaM2 = 0.0;
 };
 
