@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,54 @@ struct PlanLayout {
   std::vector<Vec2> outline;         // calculation area outline (m), optional
 };
 
+// One time step of an annual run, as the weather file (EPW) labels it: month 1–12, day of month
+// 1–31, and the hour *ending* 1–24 (EPW convention: hour 1 covers 00:00–01:00 local standard time).
+struct HourStamp {
+  uint8_t month = 1;
+  uint8_t day = 1;
+  uint8_t hourEnding = 1;
+  bool operator==(const HourStamp&) const = default;
+};
+
+// Grid means of the annual metrics (metrics/annual.h computes them). Names follow IES LM-83-12
+// and the UDI bins of Nabil & Mardaljevic (2005): 100 lx and 3000 lx bounds.
+struct AnnualSummary {
+  double da300Pct = 0.0;             // DA300: mean daylight autonomy, % of occupied hours
+  double cda300Pct = 0.0;            // cDA300: continuous DA (partial credit below 300 lx), %
+  double udiFellShortPct = 0.0;      // UDI_fell_short: E < 100 lx, % of occupied hours
+  double udiSupplementaryPct = 0.0;  // UDI_supplementary: 100 ≤ E < 300 lx, %
+  double udiAutonomousPct = 0.0;     // UDI_autonomous: 300 ≤ E ≤ 3000 lx, %
+  double udiExceededPct = 0.0;       // UDI_exceeded: E > 3000 lx, %
+  double sda300_50Pct = 0.0;         // sDA300/50%: % of sensors with DA300 ≥ 50 %
+  double ase1000_250Pct = 0.0;       // ASE1000,250: % of sensors with > 250 h of direct sun ≥ 1000 lx
+  double sunHoursMean = 0.0;         // mean over sensors of the hours with direct sun, h
+  int sensors = 0;
+  int occupiedHours = 0;             // hours counted in the percentages
+};
+
+// The annual results of one grid, for the annual CSV, the summary and the HTML section. The
+// per-sensor vectors have one entry per point of the grid, in the grid's point order.
+struct AnnualGridReport {
+  std::vector<double> daPct;                 // DA300 per sensor, % of occupied hours
+  std::vector<double> cdaPct;                // cDA300 per sensor, %
+  std::vector<double> udiFellShortPct;       // per sensor, % of occupied hours
+  std::vector<double> udiSupplementaryPct;
+  std::vector<double> udiAutonomousPct;
+  std::vector<double> udiExceededPct;
+  std::vector<double> aseHours;              // occupied hours with direct sun ≥ 1000 lx, h
+  std::vector<double> sunHours;              // occupied hours with direct sun on the sensor, h
+  // Per-sensor verdicts for the sDA/ASE plan; when left empty they are derived as
+  // daPct ≥ 50 and aseHours > 250 (LM-83-12 thresholds).
+  std::vector<bool> sdaPass;
+  std::vector<bool> aseExceeded;
+  AnnualSummary summary;
+  // Temporal map of one sensor: its index in the grid, and its illuminance in lux for every
+  // time step of the year (`hours` labels them; both have the same length, 8760 or 8784).
+  int chosenSensor = -1;                     // < 0: no temporal map
+  std::vector<double> chosenSensorLux;
+  std::vector<HourStamp> hours;
+};
+
 // One grid's results and verdicts.
 struct GridReport {
   std::string name;
@@ -49,6 +98,7 @@ struct GridReport {
   GridTargets targets;
   TargetCheck check;
   PlanLayout layout;
+  std::optional<AnnualGridReport> annual;  // set for grids of an annual run ([sky] type = "annual")
 };
 
 // The run as a whole.
@@ -60,6 +110,10 @@ struct RunInfo {
   std::string startedAt;             // ISO 8601 local time of the run
   uint64_t seed = 0;
   double runTimeS = 0.0;             // wall-clock time of the computation, s
+  // Annual runs: wall-clock time of the daylight-coefficient step and of the 8760-hour product
+  // (coefficients × sky vectors), s. Unset for other runs.
+  std::optional<double> coefficientsTimeS;
+  std::optional<double> productTimeS;
   // Settings as shown to the reader, in order: {"quality", "normal"}, {"bounces", "2"}, ...
   std::vector<std::pair<std::string, std::string>> settings;
 };
