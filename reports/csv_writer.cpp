@@ -18,28 +18,54 @@ std::string csvField(const std::string& text) {
   return q + "\"";
 }
 
-std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
-                    const std::vector<ExtraColumn>& extraColumns) {
-  if (lux.size() != points.size())
-    throw std::invalid_argument("gridCsv: " + std::to_string(points.size()) + " points but " +
-                                std::to_string(lux.size()) + " illuminances");
-  std::string out = "x,y,z,dx,dy,dz,illuminance_lux";
-  for (const ExtraColumn& c : extraColumns) {
+std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns) {
+  std::string out = "x,y,z,dx,dy,dz";
+  for (const ExtraColumn& c : columns) {
     if (c.values.size() != points.size())
-      throw std::invalid_argument("gridCsv: column '" + c.name + "' has " + std::to_string(c.values.size()) +
+      throw std::invalid_argument("CSV column '" + c.name + "' has " + std::to_string(c.values.size()) +
                                   " values for " + std::to_string(points.size()) + " points");
     out += "," + csvField(c.name);
   }
   out += "\n";
   for (std::size_t i = 0; i < points.size(); ++i) {
     const ReportPoint& p = points[i];
+    std::string row;
     for (double v : {p.position.x, p.position.y, p.position.z, p.normal.x, p.normal.y, p.normal.z})
-      out += formatNumber(v, 10) + ",";
-    out += formatNumber(lux[i], 8);
-    for (const ExtraColumn& c : extraColumns) out += "," + formatNumber(c.values[i], 8);
-    out += "\n";
+      row += (row.empty() ? "" : ",") + formatNumber(v, 10);
+    for (const ExtraColumn& c : columns) row += "," + formatNumber(c.values[i], 8);
+    out += row + "\n";
   }
   return out;
+}
+
+std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
+                    const std::vector<ExtraColumn>& extraColumns) {
+  if (lux.size() != points.size())
+    throw std::invalid_argument("gridCsv: " + std::to_string(points.size()) + " points but " +
+                                std::to_string(lux.size()) + " illuminances");
+  std::vector<ExtraColumn> columns = {{"illuminance_lux", lux}};
+  columns.insert(columns.end(), extraColumns.begin(), extraColumns.end());
+  return pointsCsv(points, columns);
+}
+
+std::string annualGridCsv(const std::vector<ReportPoint>& points, const AnnualGridReport& a) {
+  return pointsCsv(points, {{"DA300", a.daPct},
+                            {"cDA300", a.cdaPct},
+                            {"UDI_fell_short", a.udiFellShortPct},
+                            {"UDI_supplementary", a.udiSupplementaryPct},
+                            {"UDI_autonomous", a.udiAutonomousPct},
+                            {"UDI_exceeded", a.udiExceededPct},
+                            {"ASE_hours", a.aseHours},
+                            {"sun_hours", a.sunHours}});
+}
+
+fs::path writeAnnualGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
+                            const AnnualGridReport& annual) {
+  const std::string text = annualGridCsv(points, annual);
+  fs::create_directories(dir);
+  const fs::path path = dir / (safeFileName(gridName) + "_annual.csv");
+  writeFileAtomic(path, text);
+  return path;
 }
 
 fs::path writeGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
@@ -56,7 +82,14 @@ std::string summaryCsv(const SummaryData& data) {
   for (const auto& [k, v] : data.run.settings) settings += (settings.empty() ? "" : ";") + k + "=" + v;
   std::string out =
       "case,grid,unit,points,average,minimum,maximum,median,u0,ud,target_average,target_uniformity,"
-      "verdict_average,verdict_uniformity,verdict,seed,version,run_time_s,settings\n";
+      "verdict_average,verdict_uniformity,verdict,seed,version,run_time_s,settings";
+  bool anyAnnual = false;
+  for (const GridReport& g : data.grids) anyAnnual = anyAnnual || g.annual.has_value();
+  if (anyAnnual)
+    out += ",DA300,cDA300,UDI_fell_short,UDI_supplementary,UDI_autonomous,UDI_exceeded,sDA300_50,ASE1000_250,"
+           "occupied_hours,coefficients_time_s,product_time_s";
+  out += "\n";
+  auto optionalTime = [](const std::optional<double>& t) { return t ? formatNumber(*t, 6) : std::string(); };
   for (const GridReport& g : data.grids) {
     const GridStats& s = g.stats;
     std::vector<std::string> f = {csvField(data.run.caseName),
@@ -78,6 +111,17 @@ std::string summaryCsv(const SummaryData& data) {
                                   csvField(data.run.version),
                                   formatNumber(data.run.runTimeS, 6),
                                   csvField(settings)};
+    if (anyAnnual && g.annual) {
+      const AnnualSummary& a = g.annual->summary;
+      for (double v : {a.da300Pct, a.cda300Pct, a.udiFellShortPct, a.udiSupplementaryPct, a.udiAutonomousPct,
+                       a.udiExceededPct, a.sda300_50Pct, a.ase1000_250Pct})
+        f.push_back(formatNumber(v));
+      f.push_back(std::to_string(a.occupiedHours));
+      f.push_back(optionalTime(data.run.coefficientsTimeS));
+      f.push_back(optionalTime(data.run.productTimeS));
+    } else if (anyAnnual) {
+      f.insert(f.end(), 11, "");
+    }
     for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
     out += "\n";
   }

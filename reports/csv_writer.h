@@ -15,14 +15,32 @@ namespace candela {
 std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
                     const std::vector<ExtraColumn>& extraColumns = {});
 
+// Header "x,y,z,dx,dy,dz[,column...]" and one row per point: the first six columns of every grid
+// CSV, then `columns` (8 significant digits). gridCsv is this with illuminance_lux first.
+// Throws std::invalid_argument when a column's length differs from the number of points.
+std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns);
+
 // Writes <dir>/<safeFileName(gridName)>.csv and returns its path; creates `dir` if needed.
 std::filesystem::path writeGridCsv(const std::filesystem::path& dir, const std::string& gridName,
                                    const std::vector<ReportPoint>& points, const std::vector<double>& lux,
                                    const std::vector<ExtraColumn>& extraColumns = {});
 
+// Per-sensor annual metrics of a grid: x,y,z,dx,dy,dz,DA300,cDA300,UDI_fell_short,
+// UDI_supplementary,UDI_autonomous,UDI_exceeded,ASE_hours,sun_hours (m, unit normal, % of
+// occupied hours, hours). Throws std::invalid_argument when a metric has the wrong length.
+std::string annualGridCsv(const std::vector<ReportPoint>& points, const AnnualGridReport& annual);
+
+// Writes <dir>/<safeFileName(gridName)>_annual.csv and returns its path; creates `dir` if needed.
+std::filesystem::path writeAnnualGridCsv(const std::filesystem::path& dir, const std::string& gridName,
+                                         const std::vector<ReportPoint>& points, const AnnualGridReport& annual);
+
 // summary.csv columns, in order (empty field = not applicable):
-//   case,grid,unit,points,average,minimum,maximum,u0,ud,target_average,target_uniformity,
+//   case,grid,unit,points,average,minimum,maximum,median,u0,ud,target_average,target_uniformity,
 //   verdict_average,verdict_uniformity,verdict,seed,version,run_time_s,settings
+// and, only when some grid has annual results (empty on the other rows):
+//   DA300,cDA300,UDI_fell_short,UDI_supplementary,UDI_autonomous,UDI_exceeded (grid means, % of
+//   occupied hours),sDA300_50,ASE1000_250 (% of sensors),occupied_hours,coefficients_time_s,
+//   product_time_s (s)
 // `settings` is "key=value;key=value". Fields are quoted as RFC 4180 when needed.
 std::string summaryCsv(const SummaryData& data);
 

@@ -32,24 +32,43 @@ std::string summaryJson(const SummaryData& data) {
   json settings = json::object();
   for (const auto& [k, v] : data.run.settings) settings[k] = v;
   j["settings"] = settings;
+  if (data.run.coefficientsTimeS) j["coefficients_time_s"] = number(*data.run.coefficientsTimeS);
+  if (data.run.productTimeS) j["product_time_s"] = number(*data.run.productTimeS);
   json grids = json::array();
   for (const GridReport& g : data.grids) {
-    grids.push_back({{"name", g.name},
-                     {"description", g.description},
-                     {"quantity", g.quantity},
-                     {"unit", g.unit},
-                     {"points", g.stats.count},
-                     {"average", number(g.stats.averageLux)},
-                     {"minimum", number(g.stats.minimumLux)},
-                     {"maximum", number(g.stats.maximumLux)},
-                     {"median", number(g.stats.medianLux)},
-                     {"u0", number(g.stats.u0)},
-                     {"ud", number(g.stats.ud)},
-                     {"target_average", optionalNumber(g.targets.averageLux)},
-                     {"target_uniformity", optionalNumber(g.targets.uniformity)},
-                     {"verdict_average", verdictName(g.check.average)},
-                     {"verdict_uniformity", verdictName(g.check.uniformity)},
-                     {"verdict", verdictName(g.check.overall)}});
+    json o = {{"name", g.name},
+             {"description", g.description},
+             {"quantity", g.quantity},
+             {"unit", g.unit},
+             {"points", g.stats.count},
+             {"average", number(g.stats.averageLux)},
+             {"minimum", number(g.stats.minimumLux)},
+             {"maximum", number(g.stats.maximumLux)},
+             {"median", number(g.stats.medianLux)},
+             {"u0", number(g.stats.u0)},
+             {"ud", number(g.stats.ud)},
+             {"target_average", optionalNumber(g.targets.averageLux)},
+             {"target_uniformity", optionalNumber(g.targets.uniformity)},
+             {"verdict_average", verdictName(g.check.average)},
+             {"verdict_uniformity", verdictName(g.check.uniformity)},
+             {"verdict", verdictName(g.check.overall)}};
+    if (g.annual) {
+      const AnnualSummary& a = g.annual->summary;
+      o["DA300"] = number(a.da300Pct);
+      o["cDA300"] = number(a.cda300Pct);
+      o["UDI_fell_short"] = number(a.udiFellShortPct);
+      o["UDI_supplementary"] = number(a.udiSupplementaryPct);
+      o["UDI_autonomous"] = number(a.udiAutonomousPct);
+      o["UDI_exceeded"] = number(a.udiExceededPct);
+      o["sDA300_50"] = number(a.sda300_50Pct);
+      o["ASE1000_250"] = number(a.ase1000_250Pct);
+      o["sun_hours_mean"] = number(a.sunHoursMean);
+      o["sensors"] = a.sensors;
+      o["occupied_hours"] = a.occupiedHours;
+      o["coefficients_time_s"] = optionalNumber(data.run.coefficientsTimeS);
+      o["product_time_s"] = optionalNumber(data.run.productTimeS);
+    }
+    grids.push_back(o);
   }
   j["grids"] = grids;
   return j.dump(2) + "\n";

@@ -13,7 +13,12 @@ namespace candela {
 //   "settings": {key: value, ...},
 //   "grids": [{"name", "description", "quantity", "unit", "points", "average", "minimum",
 //              "maximum", "u0", "ud", "target_average", "target_uniformity" (null if unset),
-//              "verdict_average", "verdict_uniformity", "verdict"}]
+//              "verdict_average", "verdict_uniformity", "verdict",
+//              annual grids only: "DA300", "cDA300", "UDI_fell_short", "UDI_supplementary",
+//              "UDI_autonomous", "UDI_exceeded" (grid means, % of occupied hours), "sDA300_50",
+//              "ASE1000_250" (% of sensors), "sun_hours_mean" (h), "sensors", "occupied_hours",
+//              "coefficients_time_s", "product_time_s" (s, null if unset)}],
+//   annual runs only: "coefficients_time_s", "product_time_s"
 // }
 // Values are in each grid's unit (lux, or % for daylight-factor grids); verdicts "pass",
 // "fail" or "n/a".

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 #include "reports/report_data.h"
 
@@ -66,6 +67,118 @@ inline ReportData sampleReport() {
   c.targets = {100.0, std::nullopt};
   c.check = checkTargets(c.stats, c.targets);
   d.grids = {a, b, c};
+  return d;
+}
+
+// A synthetic year for the annual reports: hour stamps from the month lengths of a non-leap
+// year; outdoor horizontal illuminance 100 klx × sin of a day-arc (sunrise 06:00, sunset 18:00)
+// scaled by season; a sensor y m from the window wall (y = 0) sees 5 % of it × exp(−y / 1.2 m),
+// plus 8 klx of direct sun from 10:00 to 14:00 on two days out of three when y is less than
+// 1 m + 1.5 m × winter factor (low winter sun reaches deeper). Metrics over the occupied hours
+// 08:00–18:00 are computed here with plain loops (the reports only print what they are given).
+inline std::vector<HourStamp> sampleYearStamps() {
+  const int days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  std::vector<HourStamp> out;
+  for (int m = 1; m <= 12; ++m)
+    for (int d = 1; d <= days[m - 1]; ++d)
+      for (int h = 1; h <= 24; ++h)
+        out.push_back({static_cast<uint8_t>(m), static_cast<uint8_t>(d), static_cast<uint8_t>(h)});
+  return out;
+}
+
+struct SampleHour {
+  double lux = 0.0;
+  bool directSun = false;
+};
+
+inline SampleHour sampleSensorHour(double yM, int hourIndex) {
+  const int day = hourIndex / 24;
+  const double mid = hourIndex % 24 + 0.5;  // middle of the hour, h
+  const double season = 0.5 * (1.0 + std::cos(2.0 * 3.141592653589793 * (day - 172) / 365.0));  // 1 at midsummer
+  const double arc = std::sin(3.141592653589793 * (mid - 6.0) / 12.0);
+  const double outdoor = mid > 6.0 && mid < 18.0 ? 100000.0 * arc * (0.4 + 0.6 * season) : 0.0;
+  SampleHour s;
+  s.directSun = mid > 10.0 && mid < 14.0 && day % 3 != 0 && yM < 1.0 + 1.5 * (1.0 - season);
+  s.lux = 0.05 * outdoor * std::exp(-yM / 1.2) + (s.directSun ? 8000.0 : 0.0);
+  return s;
+}
+
+inline AnnualGridReport sampleAnnual(const GridReport& grid) {
+  AnnualGridReport a;
+  a.hours = sampleYearStamps();
+  const std::size_t n = grid.values.size();
+  int occupied = 0;
+  double sda = 0.0, ase = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = grid.layout.planPositions[i].y;
+    double da = 0, cda = 0, fell = 0, sup = 0, aut = 0, exc = 0, aseH = 0, sunH = 0;
+    occupied = 0;
+    for (std::size_t h = 0; h < a.hours.size(); ++h) {
+      const int hourEnding = a.hours[h].hourEnding;
+      if (hourEnding <= 8 || hourEnding > 18) continue;  // occupied 08:00-18:00
+      ++occupied;
+      const SampleHour s = sampleSensorHour(y, static_cast<int>(h));
+      da += s.lux >= 300.0;
+      cda += std::min(1.0, s.lux / 300.0);
+      fell += s.lux < 100.0;
+      sup += s.lux >= 100.0 && s.lux < 300.0;
+      aut += s.lux >= 300.0 && s.lux <= 3000.0;
+      exc += s.lux > 3000.0;
+      sunH += s.directSun;
+      aseH += s.directSun;  // the sun patch is 8 klx >= 1000 lx
+    }
+    auto pct = [&](double hours) { return 100.0 * hours / occupied; };
+    a.daPct.push_back(pct(da));
+    a.cdaPct.push_back(pct(cda));
+    a.udiFellShortPct.push_back(pct(fell));
+    a.udiSupplementaryPct.push_back(pct(sup));
+    a.udiAutonomousPct.push_back(pct(aut));
+    a.udiExceededPct.push_back(pct(exc));
+    a.aseHours.push_back(aseH);
+    a.sunHours.push_back(sunH);
+    sda += pct(da) >= 50.0;
+    ase += aseH > 250.0;
+  }
+  auto mean = [&](const std::vector<double>& v) {
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return sum / static_cast<double>(v.size());
+  };
+  a.summary.da300Pct = mean(a.daPct);
+  a.summary.cda300Pct = mean(a.cdaPct);
+  a.summary.udiFellShortPct = mean(a.udiFellShortPct);
+  a.summary.udiSupplementaryPct = mean(a.udiSupplementaryPct);
+  a.summary.udiAutonomousPct = mean(a.udiAutonomousPct);
+  a.summary.udiExceededPct = mean(a.udiExceededPct);
+  a.summary.sda300_50Pct = 100.0 * sda / static_cast<double>(n);
+  a.summary.ase1000_250Pct = 100.0 * ase / static_cast<double>(n);
+  a.summary.sunHoursMean = mean(a.sunHours);
+  a.summary.sensors = static_cast<int>(n);
+  a.summary.occupiedHours = occupied;
+  // The lead picks the grid's centre sensor; so does the sample.
+  const int cx = grid.layout.columns / 2, cy = grid.layout.rows / 2;
+  a.chosenSensor = cy * grid.layout.columns + cx;
+  const double yc = grid.layout.planPositions[static_cast<std::size_t>(a.chosenSensor)].y;
+  for (std::size_t h = 0; h < a.hours.size(); ++h)
+    a.chosenSensorLux.push_back(sampleSensorHour(yc, static_cast<int>(h)).lux);
+  return a;
+}
+
+// The office report plus an annual daylight grid whose plan values are its DA300 (%).
+inline ReportData sampleAnnualReport() {
+  ReportData d = sampleReport();
+  GridReport g = sampleGrid("Daylit office", 0.0, 0.0, 6.0, 4.0, 0.25);
+  g.annual = sampleAnnual(g);
+  g.quantity = "Daylight autonomy DA300";
+  g.unit = "%";
+  g.values = g.annual->daPct;
+  g.stats = computeGridStats(g.values);
+  g.targets = {};
+  g.check = checkTargets(g.stats, g.targets);
+  d.grids.push_back(g);
+  d.run.coefficientsTimeS = 12.5;
+  d.run.productTimeS = 0.75;
+  d.run.settings.push_back({"sky", "annual, weather = sample.epw"});
   return d;
 }
 
