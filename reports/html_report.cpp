@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "engine/base/atomic_file.h"
+#include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
 #include "reports/plan_svg.h"
 
@@ -66,6 +67,12 @@ td.num, th.num { text-align:right; font-variant-numeric:tabular-nums; }
 .metrics td .f { display:block; color:var(--muted); font-size:11px; }
 table.kv { max-width:560px; }
 .kv td:first-child { color:var(--muted); width:40%; }
+h3 { font-size:14px; margin:18px 0 6px; font-weight:600; }
+.multiples { display:flex; flex-wrap:wrap; gap:14px; }
+.multiples figure, .temporal { margin:0; }
+.multiples figcaption, .temporal figcaption { font-size:11px; color:var(--muted); margin-top:2px; max-width:560px; }
+.temporal img { max-width:100%; }
+td code { font-size:12px; }
 footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
 @media print { body { background:#fff; } .page { box-shadow:none; margin:0; max-width:none; }
                section.grid { break-inside:avoid; } }
@@ -83,6 +90,112 @@ std::string valueText(double v) {
 }
 
 std::string unitText(const std::string& unit) { return unit == "%" ? "%" : " " + xmlEscape(unit); }
+
+// Percent in tables: one decimal.
+std::string pctText(double v) { return formatFixed(v, 1) + " %"; }
+
+// A plan of one per-sensor annual metric (0–100 %) with the grid's layout.
+std::string metricPlan(const GridReport& g, const std::string& quantity, const std::vector<double>& values,
+                       const PlanOptions& options) {
+  GridReport m;
+  m.name = g.name;
+  m.quantity = quantity;
+  m.unit = "%";
+  m.values = values;
+  m.stats = computeGridStats(values);
+  m.layout = g.layout;
+  return planSvg(m, ColorScale{0.0, 100.0, false}, options);
+}
+
+// "Annual daylight" section of an annual grid: DA300 plan and the summary table, UDI plans as
+// small multiples, the sDA/ASE plan and the temporal map of the chosen sensor.
+void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index, const RunInfo& run, double northDeg) {
+  const AnnualGridReport& a = *g.annual;
+  const AnnualSummary& s = a.summary;
+  const std::string id = "annual" + std::to_string(index + 1);
+  h << "<section class=\"grid annual\" id=\"annual-" << index + 1 << "\">\n<h2><span class=\"n\">" << index + 1
+    << "</span>Annual daylight: " << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">Climate-based daylight over "
+    << s.occupiedHours << " occupied hours of the weather year, " << s.sensors
+    << " sensors. Percentages of occupied hours are means over the sensors; sDA and ASE are shares of "
+       "sensors (IES LM-83-12). UDI bins after Nabil &amp; Mardaljevic (2005): fell short &lt; 100 lx, "
+       "supplementary 100–300 lx, autonomous 300–3000 lx, exceeded &gt; 3000 lx.</p>\n<div class=\"grid-body\">\n";
+  if (!a.daPct.empty()) {
+    PlanOptions opt;
+    opt.northDeg = northDeg;
+    opt.idPrefix = id + "-da";
+    opt.contourLevels = {25.0, 50.0, 75.0};
+    h << "<figure>\n" << metricPlan(g, "Daylight autonomy DA300", a.daPct, opt)
+      << "<figcaption>DA300 per sensor: share of occupied hours with at least 300 lx from daylight, 0–100 %; "
+         "lines at 25, 50 and 75 %.</figcaption>\n</figure>\n";
+  }
+  h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Metric</th><th class=\"num\">Value</th><th>Meaning</th></tr>"
+       "</thead>\n<tbody>\n";
+  auto row = [&](const char* name, const std::string& value, const char* meaning) {
+    h << "<tr><td>" << name << "</td><td class=\"num\">" << value << "</td><td>" << meaning << "</td></tr>\n";
+  };
+  row("DA300", pctText(s.da300Pct), "occupied hours with E ≥ 300 lx (mean over sensors)");
+  row("cDA300", pctText(s.cda300Pct), "as DA300 with partial credit E/300 below 300 lx");
+  row("UDI_fell_short", pctText(s.udiFellShortPct), "occupied hours with E &lt; 100 lx");
+  row("UDI_supplementary", pctText(s.udiSupplementaryPct), "100 ≤ E &lt; 300 lx");
+  row("UDI_autonomous", pctText(s.udiAutonomousPct), "300 ≤ E ≤ 3000 lx");
+  row("UDI_exceeded", pctText(s.udiExceededPct), "E &gt; 3000 lx");
+  row("sDA300_50", pctText(s.sda300_50Pct), "sensors with DA300 ≥ 50 %");
+  row("ASE1000_250", pctText(s.ase1000_250Pct), "sensors with more than 250 h of direct sun ≥ 1000 lx");
+  row("sun hours", formatFixed(s.sunHoursMean, 0) + " h", "occupied hours with direct sun (mean over sensors)");
+  row("occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
+  if (run.coefficientsTimeS) row("coefficients_time_s", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
+  if (run.productTimeS) row("product_time_s", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
+  h << "</tbody>\n</table>\n</div>\n</div>\n";
+
+  struct Bin {
+    const char* name;
+    const std::vector<double>* values;
+    double meanPct;
+  };
+  const Bin bins[] = {{"UDI_fell_short", &a.udiFellShortPct, s.udiFellShortPct},
+                      {"UDI_supplementary", &a.udiSupplementaryPct, s.udiSupplementaryPct},
+                      {"UDI_autonomous", &a.udiAutonomousPct, s.udiAutonomousPct},
+                      {"UDI_exceeded", &a.udiExceededPct, s.udiExceededPct}};
+  h << "<h3>Useful daylight illuminance</h3>\n<div class=\"multiples\">\n";
+  for (const auto& [name, values, meanPct] : bins) {
+    if (values->empty()) continue;
+    PlanOptions opt;
+    opt.northDeg = northDeg;
+    opt.idPrefix = id + "-" + name;
+    opt.maxPlanWidthPx = 230.0;
+    opt.maxPlanHeightPx = 170.0;
+    opt.contours = false;
+    opt.cellValues = false;
+    h << "<figure>\n" << metricPlan(g, name, *values, opt) << "<figcaption>" << name << ", % of occupied hours ("
+      << pctText(meanPct) << " mean)</figcaption>\n</figure>\n";
+  }
+  h << "</div>\n";
+
+  const std::vector<bool> pass = sdaPassPerSensor(a), ase = aseExceededPerSensor(a);
+  if (!pass.empty()) {
+    PlanOptions opt;
+    opt.idPrefix = id + "-sda";
+    h << "<h3>Spatial daylight autonomy and annual sunlight exposure</h3>\n<figure class=\"temporal\">\n"
+      << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA300_50 = " << pctText(s.sda300_50Pct)
+      << " of sensors, ASE1000_250 = " << pctText(s.ase1000_250Pct) << " of sensors.</figcaption>\n</figure>\n";
+  }
+
+  if (a.chosenSensor >= 0 && !a.chosenSensorLux.empty()) {
+    const TemporalMap map = temporalMap(a.chosenSensorLux, a.hours);
+    std::string where;
+    const std::size_t k = static_cast<std::size_t>(a.chosenSensor);
+    if (k < g.layout.planPositions.size())
+      where = " at (" + formatFixed(g.layout.planPositions[k].x, 2) + ", " + formatFixed(g.layout.planPositions[k].y, 2) +
+              ") m";
+    h << "<h3>Hourly illuminance of sensor " << a.chosenSensor << where << "</h3>\n<figure class=\"temporal\">"
+      << "<img alt=\"temporal map of sensor " << a.chosenSensor << "\" width=\"" << map.image.width << "\" height=\""
+      << map.image.height << "\" src=\"data:image/png;base64," << base64(encodePng(map.image))
+      << "\"><figcaption>Temporal map: days of the year from left (1 January; month numbers below) to right, hours "
+         "of the day from midnight (top) to midnight (bottom); illuminance in lx on a log scale from 10 to "
+         "100 000 lx, values outside clamped.</figcaption></figure>\n";
+  }
+  h << "</section>\n";
+}
 
 }  // namespace
 
@@ -166,6 +279,7 @@ std::string htmlReport(const ReportData& data) {
         << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
     h << "</tbody>\n</table>\n</div>\n</div>\n</section>\n";
+    if (g.annual) annualSection(h, g, i, run, data.northDeg);
   }
 
   // Calculation settings and timing.
@@ -195,6 +309,8 @@ std::string htmlReport(const ReportData& data) {
   for (const auto& [k, v] : run.settings) row(k, v);
   row("seed", std::to_string(run.seed));
   row("run time", formatFixed(run.runTimeS, run.runTimeS < 10 ? 2 : 1) + " s");
+  if (run.coefficientsTimeS) row("daylight coefficients time", formatFixed(*run.coefficientsTimeS, 2) + " s");
+  if (run.productTimeS) row("hourly product time", formatFixed(*run.productTimeS, 2) + " s");
   row("software", "candela " + run.version);
   h << "</tbody>\n</table>\n</section>\n";
   h << "<footer>Generated by candela " << xmlEscape(run.version)
