@@ -113,7 +113,7 @@ PerezSky::PerezSky(const PerezInput& in, const FileLoc& loc) : sun_(glm::normali
                                       kDirectEff[i].x3 * std::exp(5.73 * zenith - 5.0) + kDirectEff[i].x4 * delta_);
   diffuseLux_ = dhi * diffuseEfficacy_;
   directLux_ = dni * directEfficacy_;
-  calibrate(diffuseLux_);
+  if (in.calibrate) calibrate(diffuseLux_);
 }
 
 double PerezSky::coefficient(char which) const {

@@ -22,6 +22,11 @@ struct PerezInput {
   Vec3 sunDirTrue{0.0, 0.0, 1.0};     // unit vector towards the sun, true frame
   int dayOfYear = 172;                // 1..366, for the extraterrestrial irradiance
   std::optional<double> dewPointC;    // surface dew point, deg C; without it W = 2 cm
+  // false skips SkyModel::calibrate (its hemisphere integral and the 256 x 64 sampling table):
+  // scale() and luminance() are then 0 and sample()/pdf() must not be called; the shape
+  // (relativeLuminance, coefficient) and the efficacies/illuminances stay valid. For callers that
+  // normalise the shape themselves, e.g. the hourly sky vectors of photometry/annual_sky.h.
+  bool calibrate = true;
 };
 
 class PerezSky : public SkyModel {

@@ -413,4 +413,6 @@ SpaResult computeSunPosition(const SpaInput& in) {
   return r;
 }
 
+SpaResult computeSunPositionOnly(const SpaInput& in) { return positionOnly(in); }
+
 }  // namespace candela

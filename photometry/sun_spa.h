@@ -42,6 +42,9 @@ struct SpaResult {
 
 // Throws InputError (no location) for inputs outside the algorithm's valid ranges.
 SpaResult computeSunPosition(const SpaInput& in);
+// The same position without the sunrise/transit/sunset search (those fields stay 0, polarDay
+// false): ~250 times cheaper, for callers that need many positions (photometry/annual_sky.h).
+SpaResult computeSunPositionOnly(const SpaInput& in);
 
 // Julian day (UT) of a calendar date and UT fraction of day, Gregorian from 1582-10-15
 // (report eq. 4).
