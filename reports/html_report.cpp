@@ -141,7 +141,7 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
   row("UDI_exceeded", pctText(s.udiExceededPct), "E &gt; 3000 lx");
   row("sDA300_50", pctText(s.sda300_50Pct), "sensors with DA300 ≥ 50 %");
   row("ASE1000_250", pctText(s.ase1000_250Pct), "sensors with more than 250 h of direct sun ≥ 1000 lx");
-  row("sun hours", formatFixed(s.sunHoursMean, 0) + " h", "occupied hours with direct sun (mean over sensors)");
+  row("sun hours", formatFixed(s.sunHoursMean, 0) + " h", "hours of the year with direct sun on the sensor (mean over sensors)");
   row("occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
   if (run.coefficientsTimeS) row("coefficients_time_s", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
   if (run.productTimeS) row("product_time_s", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");

@@ -74,7 +74,7 @@ struct AnnualGridReport {
   std::vector<double> udiAutonomousPct;
   std::vector<double> udiExceededPct;
   std::vector<double> aseHours;              // occupied hours with direct sun ≥ 1000 lx, h
-  std::vector<double> sunHours;              // occupied hours with direct sun on the sensor, h
+  std::vector<double> sunHours;              // hours of the year (occupied or not) with direct sun on the sensor, h
   // Per-sensor verdicts for the sDA/ASE plan; when left empty they are derived as
   // daPct ≥ 50 and aseHours > 250 (LM-83-12 thresholds).
   std::vector<bool> sdaPass;

@@ -124,7 +124,7 @@ inline AnnualGridReport sampleAnnual(const GridReport& grid) {
       sup += s.lux >= 100.0 && s.lux < 300.0;
       aut += s.lux >= 300.0 && s.lux <= 3000.0;
       exc += s.lux > 3000.0;
-      sunH += s.directSun;
+      sunH += s.directSun;  // the sun patch lies within the occupied hours: same as the whole year
       aseH += s.directSun;  // the sun patch is 8 klx >= 1000 lx
     }
     auto pct = [&](double hours) { return 100.0 * hours / occupied; };
