@@ -5,6 +5,7 @@
 #include "engine/base/math.h"
 #include "engine/base/rng.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace candela {
@@ -45,7 +46,10 @@ class Strata2D {
  public:
   Strata2D(int n, double aspect = 1.0) {
     n_ = n < 1 ? 1 : n;
-    ny_ = std::max(1, static_cast<int>(std::lround(std::sqrt(n_ / aspect))));
+    // At most n strata in φ: with n = 1 or 2 and aspect 1/π, √(n π) rounds to more strata than
+    // samples, and the samples would only ever cover the first of them (a half or two thirds
+    // of the azimuths).
+    ny_ = std::clamp(static_cast<int>(std::lround(std::sqrt(n_ / aspect))), 1, n_);
     nx_ = std::max(1, n_ / ny_);
     // Samples beyond nx·ny are drawn unstratified (keeps exactly n samples).
   }
