@@ -25,6 +25,65 @@ struct RayTally {
 };
 thread_local RayTally tRays;
 
+// Daylight coefficients (Tracer::skyCoefficients): while a tally is active on this thread, every
+// sky or ground contribution the estimator makes is also added to its patch's bin, as lux per
+// cd/m² of patch luminance. `outer` is the product of the factors the enclosing calls will apply
+// to the radiance being computed (1/k of a split, ρ/π of a diffuse vertex, ...), so a
+// contribution's weight is known where it arises; TallyFactor scopes each such factor.
+struct SkyTally {
+  const SkyPatches* patches = nullptr;  // sky patches tallied (none: suns only)
+  double northDeg = 0.0;
+  double* direct = nullptr;    // seen from the sensor with no reflection on the way
+  double* indirect = nullptr;  // everything else
+  // The direct part is computed patch by patch apart (skyCoefficients), so the sensor's own sky
+  // samples and unreflected escapes are not tallied.
+  bool directApart = false;
+  // Suns (unit, model frame) whose light is tallied at path vertices by a shadow ray each, per
+  // unit normal illuminance (Tracer::sunCoefficients).
+  const std::vector<Vec3>* suns = nullptr;
+  double* sunIndirect = nullptr;
+  Rgb outer{1.0};
+};
+thread_local SkyTally* tTally = nullptr;
+
+class TallyFactor {
+ public:
+  explicit TallyFactor(const Rgb& f) {
+    if (tTally) {
+      saved_ = tTally->outer;
+      tTally->outer *= f;
+    }
+  }
+  explicit TallyFactor(double f) : TallyFactor(Rgb(f)) {}
+  ~TallyFactor() {
+    if (tTally) tTally->outer = saved_;
+  }
+  TallyFactor(const TallyFactor&) = delete;
+  TallyFactor& operator=(const TallyFactor&) = delete;
+
+ private:
+  Rgb saved_{1.0};
+};
+
+// Runs f with the thread's sky tally set to `tally`.
+template <class F>
+void withTally(SkyTally& tally, const F& f) {
+  tTally = &tally;
+  try {
+    f();
+  } catch (...) {
+    tTally = nullptr;
+    throw;
+  }
+  tTally = nullptr;
+}
+
+// Adds weight·outer (photopic: the sky's luminance is achromatic) to the bin of model direction d.
+void tallySky(const Vec3& d, const Rgb& weight, bool direct) {
+  const int bin = tTally->patches->indexOf(modelToTrue(d, tTally->northDeg));
+  (direct ? tTally->direct : tTally->indirect)[bin] += photopic(tTally->outer * weight);
+}
+
 bool isFlat(const Shape& s) {
   return s.type == ShapeType::Triangle || s.type == ShapeType::Polygon || s.type == ShapeType::Ring;
 }
@@ -403,7 +462,17 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
   }
   // Sources seen in flat mirrors, as virtual sources.
   if (!mirrors_.empty()) total += mirrorIrradiance(p, n, k, skip, rng, variance);
-  if (scene_.sky) {
+  if (tTally && tTally->suns && atPathVertex) {
+    // Sun coefficients: each sun's light at this vertex, one shadow ray (a point: its disc
+    // matters for the direct sun only).
+    const std::vector<Vec3>& suns = *tTally->suns;
+    for (size_t j = 0; j < suns.size(); ++j) {
+      const double cosI = glm::dot(n, suns[j]);
+      if (cosI <= 0.0) continue;
+      tTally->sunIndirect[j] += photopic(tTally->outer * transmittance(p, suns[j], kInf, skip, kNoShape)) * cosI;
+    }
+  }
+  if (scene_.sky && !(tTally && !tTally->patches)) {
     // The sky by importance sampling of its luminance, MIS-weighted against cosine sampling.
     const SkyDome& sky = *scene_.sky;
     Rgb sum(0.0);
@@ -419,6 +488,8 @@ Rgb Tracer::directIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       const double w = ps * ps / (ps * ps + pc * pc);
       const Rgb v = transmittance(p, dir, kInf, skip, kNoShape);
       const Rgb g = v * (w * sky.model->luminance(t) / kLumensPerWatt * cosI / ps);
+      if (tTally && tTally->patches && !(tTally->directApart && !atPathVertex))
+        tallySky(dir, v * (w * cosI / ps / k), !atPathVertex);
       sum += g;
       y1 += photopic(g);
       y2 += photopic(g) * photopic(g);
@@ -447,13 +518,25 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
   // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
   bool viaImage = false;
   int mirrorsMet = 0;
+  bool reflected = false;  // a specular reflection on the way (for the sky tally's direct part)
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
     countRay();
     const bool hit = accel_->intersect(o, d, 0.0, kInf, h, skip);
     if (vertex == 0 && firstHitT) *firstHitT = hit ? h.t : kInf;
-    if (!hit) return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
+    if (!hit) {
+      if (tTally && tTally->patches && scene_.sky && !(tTally->directApart && diffuse == 0 && !reflected)) {
+        // Sky (MIS-weighted as distantRadiance weighs it) or ground (always in full).
+        double w = 1.0;
+        if (d.z > 0.0 && misCosPdf > 0.0) {
+          const double ps = misRatio * scene_.sky->model->pdf(modelToTrue(d, scene_.sky->northDeg));
+          w = misCosPdf * misCosPdf / (misCosPdf * misCosPdf + ps * ps);
+        }
+        tallySky(d, beta * w, diffuse == 0 && !reflected);
+      }
+      return result + beta * distantRadiance(d, countSources, misCosPdf, misRatio);
+    }
     const Vec3 x = o + h.t * d;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
@@ -480,6 +563,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         return result;
       case MaterialType::Mirror:
         misCosPdf = 0.0;  // the sky seen in a mirror is not sampled directly
+        reflected = true;
         beta *= m->color;
         d = d - 2.0 * glm::dot(d, ng) * ng;
         o = x + off * nf;
@@ -504,6 +588,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
           // (shadow rays through the same glass already carried them from a diffuse vertex).
         } else {
           beta *= rf * ((pt + pr) / pr);
+          reflected = true;
           d = d - 2.0 * glm::dot(d, ng) * ng;
           o = x + off * nf;
           misCosPdf = 0.0;
@@ -537,6 +622,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
       ++cache->misses;
       return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources);
     }
+    const TallyFactor tf(beta);
     return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources);
   }
   return result;
@@ -549,8 +635,14 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
   const int k = std::max(1, split);
   Rgb out(0.0);
   // Light reflected (and diffusely transmitted) from the sampled sources.
-  if (photopic(rho) > 0.0) out += rho * kInvPi * directIrradiance(xf, nf, k, flatSkip, rng, nullptr, 1.0);
-  if (photopic(tauD) > 0.0) out += tauD * kInvPi * directIrradiance(xb, -nf, k, flatSkip, rng, nullptr, 1.0);
+  if (photopic(rho) > 0.0) {
+    const TallyFactor tf(rho * kInvPi);
+    out += rho * kInvPi * directIrradiance(xf, nf, k, flatSkip, rng, nullptr, 1.0);
+  }
+  if (photopic(tauD) > 0.0) {
+    const TallyFactor tf(tauD * kInvPi);
+    out += tauD * kInvPi * directIrradiance(xb, -nf, k, flatSkip, rng, nullptr, 1.0);
+  }
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
   // with probability 1 − albedo).
@@ -565,18 +657,22 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
     const double u = rng.uniform() * norm;
     if (u < pRho) {
       const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      const TallyFactor tf(rho * (norm / pRho / k));
       acc += rho * (norm / pRho) *
              pathRadiance(xf, dir, flatSkip, false, rng, s, diffuse + 1, 1, glm::dot(dir, nf) * kInvPi, 1.0);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      const TallyFactor tf(tauD * (norm / pTd / k));
       acc += tauD * (norm / pTd) *
              pathRadiance(xb, dir, flatSkip, false, rng, s, diffuse + 1, 1, -glm::dot(dir, nf) * kInvPi, 1.0);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
       // Straight on, so sources count as they did for the incoming ray (shadow rays through the
       // trans already carried them to diffuse vertices).
+      const TallyFactor tf(tauS * (norm / pTs / k));
       acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1);
     } else if (u < pRho + pTd + pTs + pSp) {
+      const TallyFactor tf(norm / pSp / k);
       acc += (norm / pSp) * glossyBounce(x, inDir, nf, off, flatSkip, m, rng, s, diffuse);
     }
   }
@@ -612,6 +708,7 @@ Rgb Tracer::glossyBounce(const Vec3& x, const Vec3& inDir, const Vec3& nf, doubl
     }
   }
   if (!ok) return Rgb(0.0);
+  const TallyFactor tf(m.specularReflectance);
   return m.specularReflectance * pathRadiance(x + off * nf, out, flatSkip, true, rng, s, diffuse + 1, 1);
 }
 
@@ -624,7 +721,57 @@ namespace {
 // The stream of a point's hemisphere directions under the cache method, apart from its other
 // samples, so that phase A (cacheQueries) traces exactly the directions evaluation will.
 constexpr uint64_t kDirectionStream = 0x4000000000000000ULL;
+// The stream of a point's patch-by-patch direct sky samples (skyCoefficients).
+constexpr uint64_t kPatchStream = 0x1000000000000000ULL;
 }  // namespace
+
+void Tracer::skyCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                             const SkyPatches& patches, double* direct, double* indirect,
+                             bool directByPatch) const {
+  if (!scene_.sky) throw std::logic_error("skyCoefficients needs a scene with a sky");
+  TraceSettings t = s;
+  t.method = Method::kPath;
+  t.adaptiveFraction = 0.0;
+  t.targetRelativeError = 0.0;
+  // The sky seen directly, patch by patch: s.lightSamples stratified directions in each (uniform
+  // in solid angle; the ground takes 4× as many, being 2π sr), each with its shadow ray through
+  // glass and trans as the point estimator's would. Every patch gets its own samples, so a
+  // small bright patch (the circumsolar sky) is known as well as a large dim one, which sky
+  // samples drawn over the whole hemisphere cannot give a patch seen through a window.
+  Rng rng(s.seed, kPatchStream + pointIndex);
+  for (int b = 0; directByPatch && b < patches.count(); ++b) {
+    const Strata2D strata(std::max(1, s.lightSamples) * (b == 0 ? 4 : 1));
+    double sum = 0.0;
+    for (int i = 0; i < strata.size(); ++i) {
+      const Vec2 u = strata.sample(i, rng);
+      const Vec3 d = trueToModel(patches.sample(b, u.x, u.y), scene_.sky->northDeg);
+      const double c = glm::dot(n, d);
+      if (c <= 0.0) continue;
+      sum += c * photopic(transmittance(p, d, kInf, kNoShape, kNoShape));
+    }
+    direct[b] += patches.solidAngle(b) * sum / strata.size();
+  }
+  SkyTally tally;
+  tally.patches = &patches;
+  tally.northDeg = scene_.sky->northDeg;
+  tally.direct = direct;
+  tally.indirect = indirect;
+  tally.directApart = directByPatch;
+  withTally(tally, [&] { irradiance(p, n, pointIndex, t, nullptr); });
+  flushRays();
+}
+
+void Tracer::sunCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                             const std::vector<Vec3>& sunDirsModel, double* indirect) const {
+  TraceSettings t = s;
+  t.method = Method::kPath;
+  t.adaptiveFraction = 0.0;
+  t.targetRelativeError = 0.0;
+  SkyTally tally;
+  tally.suns = &sunDirsModel;
+  tally.sunIndirect = indirect;
+  withTally(tally, [&] { irradiance(p, n, pointIndex, t, nullptr); });
+}
 
 bool Tracer::cacheable(const Material& m) {
   return (m.type == MaterialType::Plastic || m.type == MaterialType::Metal ||
@@ -756,6 +903,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
     const double u1 = (j + (su + jitter.uniform()) / sub) / mTheta;
     const double u2 = (k + (sv + jitter.uniform()) / sub) / nPhi;
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    const TallyFactor tf(kPi / cells);  // the ray's share of E (sky tally: never refined)
     if (cache)
       return pathRadiance(p, dir, kNoShape, false, rng, s, 0, 1, glm::dot(dir, n) * kInvPi, misRatio, &use);
     return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit, glm::dot(dir, n) * kInvPi, misRatio);
@@ -770,7 +918,9 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   // stays an unbiased estimate of its mean (choosing by its own value, as -as does, biases the
   // strata left alone towards their neighbours).
   const int sub = 2;
-  const int refine = std::min(cells, static_cast<int>(s.adaptiveFraction * cells) / (sub * sub));
+  // (Not while tallying sky coefficients: a refined stratum's first sample would change weight.)
+  const int refine =
+      tTally ? 0 : std::min(cells, static_cast<int>(s.adaptiveFraction * cells) / (sub * sub));
   if (refine > 0) {
     diff.assign(cells, 0.0);
     for (int c = 0; c < cells; ++c) {

@@ -10,6 +10,7 @@
 #include "engine/octree.h"
 #include "engine/quality.h"
 #include "engine/scene.h"
+#include "photometry/sky_patches.h"
 
 #include <atomic>
 #include <cstdint>
@@ -84,6 +85,29 @@ class Tracer {
   // from a frozen cache (Method::kCache); a hit no record covers is path traced instead.
   IrradianceEstimate irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                                 const IrradianceCache* cache) const;
+
+  // Daylight coefficients at a sensor (docs/annual.md): the illuminance in lux that a luminance
+  // of 1 cd/m² over each patch of `patches` (index 0 the ground) gives at p, added to direct[]
+  // (seen from p with no reflection between: straight through thin glass and trans) and
+  // indirect[] (after any reflection), each patches.count() long. The same estimator as
+  // irradiance() — sky sampled by s.lightSamples importance samples (MIS) and by the stratified
+  // hemisphere, interreflection path traced — with the method forced to path and no adaptive
+  // supersampling. The scene needs a sky (its model only guides sampling; a uniform sky suits
+  // every patch); its other sources add nothing to the tallies.
+  // directByPatch: the direct part is sampled patch by patch (s.lightSamples stratified shadow
+  // rays in each, 4× for the ground), so that every patch's share is known alike; false tallies
+  // the point estimator's own sky samples instead (the same random numbers as irradiance(), for
+  // tests).
+  void skyCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                       const SkyPatches& patches, double* direct, double* indirect,
+                       bool directByPatch = true) const;
+
+  // Interreflected illuminance in lux at p from each sun direction (unit, model frame) per lux
+  // of direct normal illuminance, added to indirect[] (one per sun): the light of the suns
+  // reaching every diffuse vertex of the paths, one shadow ray per sun per vertex. The sun's
+  // direct light at p is not included.
+  void sunCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                       const std::vector<Vec3>& sunDirsModel, double* indirect) const;
 
   // Irradiance-cache support (engine/irradiance_cache.cpp).
   // The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that

@@ -37,6 +37,26 @@ double SkyPatches::solidAngle(int index) const {
   return kTwoPi / rowCount_[r] * (std::sin((r + 1) * alpha_) - std::sin(r * alpha_));
 }
 
+Vec3 SkyPatches::sample(int index, double u1, double u2) const {
+  // Uniform in solid angle: sin(altitude) uniform over the patch's range, azimuth uniform.
+  double z0 = 0.0, z1 = 0.0, az0 = 0.0, width = kTwoPi;
+  if (index <= 0) {
+    z0 = -1.0;
+  } else if (index >= skyPatchCount()) {
+    z0 = std::sin(7 * n_ * alpha_);
+    z1 = 1.0;
+  } else {
+    const int r = int(std::upper_bound(rowStart_.begin(), rowStart_.end(), index) - rowStart_.begin()) - 1;
+    z0 = std::sin(r * alpha_);
+    z1 = std::sin((r + 1) * alpha_);
+    width = kTwoPi / rowCount_[r];
+    az0 = width * (index - rowStart_[r]) - 0.5 * width;  // patches are centred on multiples of the width
+  }
+  const double z = z0 + u1 * (z1 - z0), az = az0 + u2 * width;
+  const double rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return Vec3(rxy * std::sin(az), rxy * std::cos(az), z);
+}
+
 int SkyPatches::indexOf(const Vec3& dirTrue) const {
   const double len = glm::length(dirTrue);
   if (!(dirTrue.z > 0.0) || !(len > 0.0)) return 0;

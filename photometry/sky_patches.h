@@ -29,6 +29,9 @@ class SkyPatches {
   Vec3 centre(int index) const;
   // Solid angle in sr (the sky patches sum to 2 pi; the ground is 2 pi).
   double solidAngle(int index) const;
+  // A direction uniformly distributed in solid angle over the patch, from (u1, u2) in [0,1)^2
+  // (the ground: the whole lower hemisphere). Unit length, true frame.
+  Vec3 sample(int index, double u1, double u2) const;
   // Patch containing a direction (need not be unit length); directions with z <= 0 are ground.
   int indexOf(const Vec3& dirTrue) const;
 

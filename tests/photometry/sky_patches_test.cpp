@@ -65,3 +65,32 @@ TEST(SkyPatches, PatchAreasByMonteCarlo) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(SkyPatches, SamplesFallInTheirPatchAndCoverIt) {
+  // Every sample lies in its own patch (indexOf), and the mean of z over a patch's samples matches
+  // the mean of z over the patch computed from its altitude range (uniform in solid angle).
+  for (int n : {1, 2}) {
+    const SkyPatches p(n);
+    for (int i = 0; i < p.count(); ++i) {
+      double sumZ = 0.0;
+      const int k = 16;
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b) {
+          const Vec3 d = p.sample(i, (a + 0.5) / k, (b + 0.5) / k);
+          ASSERT_NEAR(glm::length(d), 1.0, 1e-12);
+          ASSERT_EQ(p.indexOf(d), i) << "patch " << i << " MF " << n;
+          sumZ += d.z;
+        }
+      // For z uniform over [z0, z1] (Archimedes), the mean is the midpoint; the cap and the
+      // ground follow from their solid angles: Ω = 2π (z1 − z0) for a full zone.
+      const Vec3 lo = p.sample(i, 0.0, 0.5), hi = p.sample(i, 1.0 - 1e-12, 0.5);
+      EXPECT_NEAR(sumZ / (k * k), 0.5 * (lo.z + hi.z), 1e-9) << "patch " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace candela

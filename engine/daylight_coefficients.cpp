@@ -1,0 +1,204 @@
+#include "engine/daylight_coefficients.h"
+
+#include "engine/daylight.h"
+#include "engine/parallel.h"
+#include "engine/sampling.h"
+#include "photometry/site.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <limits>
+#include <cmath>
+#include <stdexcept>
+
+namespace candela {
+
+PatchSky::PatchSky(const SkyPatches& patches, std::vector<double> luminanceCdM2)
+    : patches_(patches), luminance_(std::move(luminanceCdM2)) {
+  if (luminance_.size() != static_cast<size_t>(patches_.count()))
+    throw std::invalid_argument("PatchSky: one luminance per patch expected");
+  // Relative luminance is the luminance itself: scale 1.
+  calibrate(integrateRelative(Vec3(0.0, 0.0, 1.0)));
+}
+
+double PatchSky::relativeLuminance(const Vec3& dirTrue) const { return luminance_[patches_.indexOf(dirTrue)]; }
+
+std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky) {
+  const SkyPatches patches(sky.subdivision);
+  std::vector<double> mean(patches.count(), 0.0);
+  for (size_t h = 0; h < sky.hours.size(); ++h)
+    for (int p = 1; p < patches.count(); ++p) mean[p] += sky.at(static_cast<int>(h), p);
+  double all = 0.0;
+  for (int p = 1; p < patches.count(); ++p) all += mean[p];
+  all /= std::max(1, patches.count() - 1);
+  // A year without daylight still needs a sampling density: uniform.
+  for (int p = 1; p < patches.count(); ++p) mean[p] += all > 0.0 ? 0.1 * all : 1.0;
+  return std::make_shared<PatchSky>(patches, std::move(mean));
+}
+
+DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                                 const std::vector<Vec3>& normals, const SkyPatches& patches,
+                                                 const TraceSettings& settings, int threads,
+                                                 const std::function<void(size_t)>& progress) {
+  if (positions.size() != normals.size()) throw std::invalid_argument("positions and normals differ in size");
+  DaylightCoefficients dc;
+  dc.sensors = static_cast<int>(positions.size());
+  dc.patches = patches.count();
+  const size_t np = static_cast<size_t>(dc.patches);
+  dc.total.assign(positions.size() * np, 0.0f);
+  std::atomic<size_t> done{0};
+  parallelFor(positions.size(), threads, [&](size_t i) {
+    thread_local std::vector<double> direct, indirect;
+    direct.assign(np, 0.0);
+    indirect.assign(np, 0.0);
+    tracer.skyCoefficients(positions[i], normals[i], i, settings, patches, direct.data(), indirect.data());
+    for (size_t p = 0; p < np; ++p) dc.total[i * np + p] = static_cast<float>(direct[p] + indirect[p]);
+    const size_t d = ++done;
+    if (progress) progress(d);
+  });
+  return dc;
+}
+
+SunSet indirectSunSet(const AnnualSky& sky, int subdivision) {
+  const SkyPatches coarse(subdivision);
+  std::vector<Vec3> sum(coarse.count(), Vec3(0.0));
+  std::vector<int> patchOf(sky.hours.size(), -1);
+  for (int h : sunHours(sky)) {
+    patchOf[h] = coarse.indexOf(sky.hours[h].sunDirTrue);
+    sum[patchOf[h]] += sky.hours[h].sunDirTrue;
+  }
+  SunSet set;
+  std::vector<int> indexOfPatch(coarse.count(), -1);
+  for (int p = 0; p < coarse.count(); ++p)
+    if (glm::length(sum[p]) > 0.0) {
+      indexOfPatch[p] = static_cast<int>(set.dirsTrue.size());
+      set.dirsTrue.push_back(glm::normalize(sum[p]));
+    }
+  set.ofHour.assign(sky.hours.size(), -1);
+  for (size_t h = 0; h < sky.hours.size(); ++h)
+    if (patchOf[h] >= 0) set.ofHour[h] = indexOfPatch[patchOf[h]];
+  return set;
+}
+
+std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                           const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
+                                           const TraceSettings& settings, int threads,
+                                           const std::function<void(size_t)>& progress) {
+  const size_t ns = sunDirsModel.size();
+  std::vector<float> out(positions.size() * ns, 0.0f);
+  std::atomic<size_t> done{0};
+  parallelFor(positions.size(), threads, [&](size_t i) {
+    thread_local std::vector<double> acc;
+    acc.assign(ns, 0.0);
+    tracer.sunCoefficients(positions[i], normals[i], i, settings, sunDirsModel, acc.data());
+    for (size_t j = 0; j < ns; ++j) out[i * ns + j] = static_cast<float>(acc[j]);
+    const size_t d = ++done;
+    if (progress) progress(d);
+  });
+  return out;
+}
+
+std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                         const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
+                                         int samples, uint64_t seed, int threads) {
+  const size_t ns = sunDirsModel.size();
+  std::vector<float> out(positions.size() * ns, 0.0f);
+  const double cosMax = std::cos(0.5 * degToRad(kSunDiameterDeg));
+  const Strata2D strata(std::max(1, samples));
+  // Its own streams, apart from the points' (which the sky coefficients use).
+  constexpr uint64_t kSunStream = 0x2000000000000000ULL;
+  parallelFor(positions.size(), threads, [&](size_t i) {
+    Rng rng(seed, kSunStream + i);
+    const Vec3& p = positions[i];
+    const Vec3& n = normals[i];
+    for (size_t j = 0; j < ns; ++j) {
+      const Vec3& sun = sunDirsModel[j];
+      // Wholly behind the receiver (the disc's half-angle is 0.27°): nothing to trace.
+      if (glm::dot(n, sun) < -0.005) continue;
+      const Frame frame = Frame::fromNormal(sun);
+      double sum = 0.0;
+      for (int k = 0; k < strata.size(); ++k) {
+        const Vec2 u = strata.sample(k, rng);
+        const Vec3 d = frame.toWorld(sampleUniformCone(u.x, u.y, cosMax));
+        const double c = glm::dot(n, d);
+        if (c <= 0.0) continue;
+        sum += c * photopic(tracer.transmittance(p, d, std::numeric_limits<double>::infinity(), kNoShape, kNoShape));
+      }
+      out[i * ns + j] = static_cast<float>(sum / strata.size());
+    }
+  });
+  return out;
+}
+
+std::vector<int> sunHours(const AnnualSky& sky) {
+  std::vector<int> hours;
+  for (size_t h = 0; h < sky.hours.size(); ++h)
+    if (sky.hours[h].sunUp && sky.hours[h].directNormalLux > 0.0 && sky.hours[h].sunPatch > 0)
+      hours.push_back(static_cast<int>(h));
+  return hours;
+}
+
+std::vector<Vec3> sunDirectionsModel(const AnnualSky& sky, double northDeg) {
+  std::vector<Vec3> dirs;
+  for (int h : sunHours(sky)) dirs.push_back(trueToModel(sky.hours[h].sunDirTrue, northDeg));
+  return dirs;
+}
+
+AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::vector<float>& sunCoefficients,
+                                    const std::vector<float>& sunIndirect, const SunSet& sunSet,
+                                    const AnnualSky& sky, int threads) {
+  const auto start = std::chrono::steady_clock::now();
+  const int nh = static_cast<int>(sky.hours.size());
+  const int np = dc.patches;
+  if (sky.patchCount != np) throw std::invalid_argument("daylight coefficients and sky vectors have different patch counts");
+  if (sky.luminance.size() != static_cast<size_t>(nh) * np) throw std::invalid_argument("sky vectors: wrong size");
+  const std::vector<int> sun = sunHours(sky);
+  const size_t nsun = sun.size(), nset = sunSet.dirsTrue.size();
+  if (sunCoefficients.size() != static_cast<size_t>(dc.sensors) * nsun)
+    throw std::invalid_argument("direct sun coefficients: wrong size");
+  if (sunIndirect.size() != static_cast<size_t>(dc.sensors) * nset || sunSet.ofHour.size() != sky.hours.size())
+    throw std::invalid_argument("interreflected sun coefficients: wrong size");
+
+  AnnualIlluminance out;
+  out.sensors = dc.sensors;
+  out.hours = nh;
+  out.total.assign(static_cast<size_t>(dc.sensors) * nh, 0.0f);
+  out.directSun.assign(static_cast<size_t>(dc.sensors) * nh, 0.0f);
+
+  // Column-major views: L is patches × hours, DC is patches × sensors, E is hours × sensors, so
+  // E = Lᵀ DC is sensor-major in memory. Sensors go in blocks of a fixed size, so every value
+  // is summed in the same order whatever the number of threads.
+  using ConstMap = Eigen::Map<const Eigen::MatrixXf>;
+  const ConstMap lum(sky.luminance.data(), np, nh);
+  constexpr int kBlock = 64;
+  const int blocks = (dc.sensors + kBlock - 1) / kBlock;
+  parallelFor(static_cast<size_t>(blocks), threads, [&](size_t b) {
+    const int s0 = static_cast<int>(b) * kBlock, count = std::min(kBlock, dc.sensors - s0);
+    const ConstMap coef(dc.total.data() + static_cast<size_t>(s0) * np, np, count);
+    Eigen::Map<Eigen::MatrixXf> e(out.total.data() + static_cast<size_t>(s0) * nh, nh, count);
+    e.noalias() = lum.transpose() * coef;
+    // The sun: direct at its position, interreflected from its stand-in of the set.
+    for (int s = s0; s < s0 + count; ++s) {
+      float* es = out.total.data() + static_cast<size_t>(s) * nh;
+      float* ds = out.directSun.data() + static_cast<size_t>(s) * nh;
+      const float* sc = sunCoefficients.data() + static_cast<size_t>(s) * nsun;
+      const float* si = sunIndirect.data() + static_cast<size_t>(s) * nset;
+      for (size_t j = 0; j < nsun; ++j) {
+        const int h = sun[j];
+        const double edn = sky.hours[h].directNormalLux;
+        const double direct = sc[j] * edn;
+        const int k = sunSet.ofHour[h];
+        const double inter = k >= 0 ? si[k] * edn : 0.0;
+        ds[h] = static_cast<float>(direct);
+        es[h] += static_cast<float>(direct + inter);
+      }
+    }
+  });
+  out.productTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace candela

@@ -1,0 +1,105 @@
+// Annual daylight by daylight coefficients (docs/annual.md): trace once, then every hour of a
+// year is a matrix product.
+//
+//   E(s, h) = Σ_p DC(s, p) L(p, h)                    sky and ground patches
+//           + S(s, h) E_sun,n(h)                      direct sun at its actual position
+//           + I(s, j(h)) E_sun,n(h)                   the sun's interreflected light
+//
+// DC(s, p) is the illuminance at sensor s from a luminance of 1 cd/m² over patch p (lux per
+// cd/m²), traced with the point-study estimator (Tracer::skyCoefficients). The sun is not
+// spread over a patch: S(s, h) is the cosine-weighted visible fraction of the 0.533° disc at the
+// hour's actual position, so sun patches and ASE have sharp edges; I(s, j) is the interreflected
+// illuminance per lux of direct normal illuminance from sun position j of a set that covers the
+// year's sun path (the mean position of the hours whose sun lies in each patch of Reinhart's MF:2), traced
+// with a shadow ray to every sun at every diffuse vertex (Tracer::sunCoefficients).
+#pragma once
+
+#include "engine/tracer.h"
+#include "photometry/annual_sky.h"
+#include "photometry/sky_patches.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace candela {
+
+struct DaylightCoefficients {
+  int sensors = 0, patches = 0;
+  // Sensor-major, [s * patches + p], lux per cd/m² of patch luminance.
+  std::vector<float> total;
+};
+
+// Sun positions standing for the year's suns in the interreflected term: the normalised mean
+// direction of the sun-up hours (with direct light) in each patch of SkyPatches(subdivision).
+struct SunSet {
+  std::vector<Vec3> dirsTrue;  // unit, true frame
+  std::vector<int> ofHour;     // per hour of the sky: index into dirsTrue, -1 without direct sun
+};
+// Reinhart MF:2 (6° rows): with Tregenza's 12° patches the stand-in sun moved the sun patch on
+// a floor enough for errors of 5–13 % in a side-lit room at a low sun (tests).
+SunSet indirectSunSet(const AnnualSky& sky, int subdivision = 2);
+
+// A sky whose luminance is constant over each patch of `patches` (cd/m², one per patch; index 0,
+// the ground, is not part of a sky). As the scene's sky of a coefficient run it guides the
+// sampling of the sky (Tracer::skyCoefficients); as a point run's sky it is what the
+// coefficients assume.
+class PatchSky : public SkyModel {
+ public:
+  PatchSky(const SkyPatches& patches, std::vector<double> luminanceCdM2);
+  double relativeLuminance(const Vec3& dirTrue) const override;
+  std::string name() const override { return "patches"; }
+
+ private:
+  SkyPatches patches_;
+  std::vector<double> luminance_;
+};
+
+// The sampling guide of a year's coefficients: each sky patch's mean luminance over the hours,
+// plus a floor of a tenth of the mean (so that no patch goes unsampled).
+std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky);
+
+// Coefficients of every sensor (point i uses random stream i: results do not depend on the
+// thread count). The tracer's scene must have a sky (see Tracer::skyCoefficients).
+// progress(done) as for computeIrradiance (thread-safe, cheap), may be empty.
+DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                                 const std::vector<Vec3>& normals, const SkyPatches& patches,
+                                                 const TraceSettings& settings, int threads,
+                                                 const std::function<void(size_t)>& progress = {});
+
+// S(s, j) for sun directions j (unit, model frame): mean over `samples` stratified directions
+// in the sun's disc of max(0, cos incidence) × transmittance, sensor-major [s * suns + j].
+// Illuminance from the sun is S × its direct normal illuminance.
+std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                         const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
+                                         int samples, uint64_t seed, int threads);
+
+// I(s, j) for the suns of a set (unit, model frame), sensor-major [s * suns + j], lux per lux of
+// direct normal illuminance. Point i uses random stream i.
+std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
+                                           const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
+                                           const TraceSettings& settings, int threads,
+                                           const std::function<void(size_t)>& progress = {});
+
+// A year of hourly illuminance at the sensors, sensor-major [s * hours + h], lux.
+struct AnnualIlluminance {
+  int sensors = 0, hours = 0;
+  std::vector<float> total;      // sky + ground + sun, direct and interreflected
+  std::vector<float> directSun;  // the sun's direct part alone (ASE, hours of sun, blinds rule)
+  double productTimeS = 0.0;     // wall time of the hourly products
+};
+
+// The products above for every hour of `sky`. sunCoefficients has one column per hour with the
+// sun up and a direct normal illuminance > 0, in hour order (as sunDirectionsModel returns
+// them); sunIndirect one per sun of `sunSet`. Throws std::invalid_argument when sizes disagree.
+AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::vector<float>& sunCoefficients,
+                                    const std::vector<float>& sunIndirect, const SunSet& sunSet,
+                                    const AnnualSky& sky, int threads);
+
+// The hours that have direct sun (sun up, direct normal illuminance > 0) and their directions
+// in the model frame (site north `northDeg`).
+std::vector<int> sunHours(const AnnualSky& sky);
+std::vector<Vec3> sunDirectionsModel(const AnnualSky& sky, double northDeg);
+
+}  // namespace candela
