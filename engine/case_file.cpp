@@ -535,6 +535,58 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
   tab.finish();
 }
 
+// "HH:MM" (00:00 .. 24:00) as hours.
+double readClock(const Context& c, const toml::node& n, std::string_view key) {
+  const std::string text = asString(c, n, key);
+  int h = 0, m = 0, used = 0;
+  if (std::sscanf(text.c_str(), "%d:%d%n", &h, &m, &used) != 2 || static_cast<std::size_t>(used) != text.size() ||
+      h < 0 || h > 24 || m < 0 || m > 59 || (h == 24 && m > 0))
+    c.fail(n, keyText(key) + " must be a time of day \"HH:MM\" (00:00 .. 24:00), got '" + text + "'");
+  return h + m / 60.0;
+}
+
+void readAnnual(const Context& c, const toml::table& t, AnnualSpec& a) {
+  Table tab(t, c, "[annual]");
+  a.present = true;
+  a.loc = tab.loc();
+  if (const toml::node* n = tab.get("occupancy_start")) a.occupancyStartHour = readClock(c, *n, "occupancy_start");
+  if (const toml::node* n = tab.get("occupancy_end")) a.occupancyEndHour = readClock(c, *n, "occupancy_end");
+  if (a.occupancyEndHour <= a.occupancyStartHour)
+    throw InputError(a.loc, "'occupancy_end' must be later than 'occupancy_start'");
+  auto positive = [&](const char* key, double& v) {
+    v = numberOr(tab, key, v);
+    if (tab.get(key)) checkMin(tab, key, v, 0.0, true, " lux");
+  };
+  positive("da_threshold", a.daThresholdLux);
+  positive("udi_low", a.udiLowLux);
+  positive("udi_high", a.udiHighLux);
+  positive("ase_threshold", a.aseThresholdLux);
+  if (!(a.udiLowLux < a.daThresholdLux && a.daThresholdLux < a.udiHighLux))
+    throw InputError(a.loc, "the thresholds must satisfy udi_low < da_threshold < udi_high");
+  a.sdaFraction = numberOr(tab, "sda_fraction", a.sdaFraction);
+  checkRange(tab, "sda_fraction", a.sdaFraction, 0.0, 1.0, "");
+  a.aseHours = numberOr(tab, "ase_hours", a.aseHours);
+  checkRange(tab, "ase_hours", a.aseHours, 0.0, 8784.0, " h");
+  auto count = [&](const char* key, int lo, int hi, int& v) {
+    const toml::node* n = tab.get(key);
+    if (!n) return;
+    const int64_t x = asInteger(c, *n, key);
+    if (x < lo || x > hi)
+      c.fail(*n, keyText(key) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+                     std::to_string(x));
+    v = static_cast<int>(x);
+  };
+  count("sky_subdivision", 1, 8, a.skySubdivision);
+  count("sun_samples", 1, 256, a.sunSamples);
+  if (const toml::node* n = tab.get("blinds")) a.blinds = asBool(c, *n, "blinds");
+  if (tab.get("report_sensor")) {
+    int v = 0;
+    count("report_sensor", 0, 100'000'000, v);
+    a.reportSensor = v;
+  }
+  tab.finish();
+}
+
 void readOutput(const Context& c, const toml::table& t, OutputSpec& o) {
   Table tab(t, c, "[output]");
   if (const toml::node* n = tab.get("dir")) {
@@ -563,12 +615,12 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   out.name = path.stem().string();
   out.output.dir = (c.dir / "out").lexically_normal();
 
-  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "site", "sky",
-                                                  "grid", "view", "settings", "output"};
+  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "site", "sky",    "grid",
+                                                  "view", "settings", "annual", "output"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
-                                               "' (expected case, scene, luminaire, site, sky, grid, view, settings or output)");
+                                               "' (expected case, scene, luminaire, site, sky, grid, view, settings, annual or output)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -589,6 +641,11 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
     for (const toml::node& n : *a) readView(c, *n.as_table(), index++, out);
   }
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
+  if (auto t = singleTable(c, root, "annual")) {
+    readAnnual(c, *t, out.annual);
+    if (out.sky.type != SkyType::kAnnual)
+      throw InputError(out.annual.loc, "an [annual] table needs [sky] type = \"annual\"");
+  }
   if (auto t = singleTable(c, root, "output")) readOutput(c, *t, out.output);
   return out;
 }

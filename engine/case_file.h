@@ -115,6 +115,25 @@ struct Settings {
   int threads = 0;                      // 0 = all cores
 };
 
+// [annual]: settings of a climate-based annual study ([sky] type = "annual"). Defaults are those
+// of the metrics' definitions (docs/annual.md).
+struct AnnualSpec {
+  bool present = false;
+  double occupancyStartHour = 8.0;      // local standard time, "HH:MM" in the file
+  double occupancyEndHour = 18.0;
+  double daThresholdLux = 300.0;        // DA, cDA, sDA
+  double udiLowLux = 100.0;             // UDI: fell short below, supplementary from here
+  double udiHighLux = 3000.0;           // UDI: exceeded above
+  double sdaFraction = 0.5;             // sDA: share of occupied hours at daThresholdLux
+  double aseThresholdLux = 1000.0;      // ASE: direct sun
+  double aseHours = 250.0;              // ASE: hours above aseThresholdLux
+  int skySubdivision = 1;               // Reinhart MF: 1 = Tregenza's 145 patches
+  int sunSamples = 4;                   // rays over the sun's disc per sensor and hour
+  bool blinds = true;                   // LM-83's operable blinds for sDA
+  std::optional<int> reportSensor;      // the sensor whose hours are plotted (index, 0-based)
+  FileLoc loc;
+};
+
 struct OutputSpec {
   std::filesystem::path dir;            // default: "out" beside the case file
 };
@@ -130,6 +149,7 @@ struct CaseFile {
   std::vector<GridSpec> grids;
   std::vector<ViewSpec> views;
   Settings settings;
+  AnnualSpec annual;
   OutputSpec output;
 };
 

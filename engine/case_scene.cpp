@@ -36,6 +36,33 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   return scene;
 }
 
+Site caseSite(const CaseFile& c, const EpwLocation* weather) {
+  if (c.site.present) {
+    const double lat = c.site.latitudeDeg ? *c.site.latitudeDeg
+                                          : parseLatitudeDeg(c.site.latitudeText, c.site.latitudeLoc);
+    const double lon = c.site.longitudeDeg ? *c.site.longitudeDeg
+                                           : parseLongitudeDeg(c.site.longitudeText, c.site.longitudeLoc);
+    const double tz = c.site.timezoneHours ? *c.site.timezoneHours : (weather ? weather->timezoneHours : 0.0);
+    return makeSite(lat, lon, c.site.elevationM, tz, c.site.northDeg, c.site.grid == "utm" ? "utm" : "", c.site.loc);
+  }
+  if (weather)
+    return makeSite(weather->latitudeDeg, weather->longitudeDeg, weather->elevationM, weather->timezoneHours, 0.0);
+  return Site{};
+}
+
+std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
+  auto scene = std::make_unique<Scene>();
+  for (const ScenePath& s : c.scenes) readRadianceFile(s.file, *scene);
+  SkyConditions uniform;
+  uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
+  SkyDome dome;
+  dome.model = makeSky("uniform", uniform, c.sky.loc);
+  dome.northDeg = northDeg;
+  dome.horizontalSkyLux = uniform.diffuseHorizontalLux;
+  scene->sky = dome;
+  return scene;
+}
+
 DaylightSpec daylightFromCase(const CaseFile& c) {
   DaylightSpec d;
   if (!c.sky.present || c.sky.type == SkyType::kNone) return d;
@@ -54,14 +81,9 @@ DaylightSpec daylightFromCase(const CaseFile& c) {
   d.diffuseHorizontalWm2 = c.sky.diffuseHorizontalIrradianceWm2;
   d.groundReflectance = c.sky.groundReflectance;
   if (c.site.present) {
-    const double lat = c.site.latitudeDeg ? *c.site.latitudeDeg
-                                          : parseLatitudeDeg(c.site.latitudeText, c.site.latitudeLoc);
-    const double lon = c.site.longitudeDeg ? *c.site.longitudeDeg
-                                           : parseLongitudeDeg(c.site.longitudeText, c.site.longitudeLoc);
-    const Site site = makeSite(lat, lon, c.site.elevationM, c.site.timezoneHours.value_or(0.0), c.site.northDeg,
-                               c.site.grid == "utm" ? "utm" : "", c.site.loc);
-    d.latitudeDeg = lat;
-    d.longitudeDeg = lon;
+    const Site site = caseSite(c);
+    d.latitudeDeg = site.latitudeDeg;
+    d.longitudeDeg = site.longitudeDeg;
     d.elevationM = site.elevationM;
     d.timezoneHours = site.timezoneHours;
     d.northDeg = site.trueNorthDeg();

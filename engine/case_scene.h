@@ -5,6 +5,8 @@
 #include "engine/case_file.h"
 #include "engine/daylight.h"
 #include "engine/scene.h"
+#include "photometry/epw.h"
+#include "photometry/site.h"
 
 #include <memory>
 
@@ -19,6 +21,15 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight = true
 // `weather`, the direct normal and diffuse horizontal irradiance (and illuminance) of the EPW
 // hour containing `time` are used (hour-ending records: 12:30 is in hour 13).
 DaylightSpec daylightFromCase(const CaseFile& c);
+
+// The site of a case: its [site] table, or else the weather file's LOCATION (annual studies).
+// Throws InputError at [site] for a bad latitude/longitude text.
+Site caseSite(const CaseFile& c, const EpwLocation* weather = nullptr);
+
+// The scene of an annual daylight study ([sky] type = "annual", docs/annual.md): the [[scene]]
+// geometry under a uniform sky that only guides the sampling of the sky coefficients
+// (Tracer::skyCoefficients). Luminaires are left out: annual metrics are of daylight alone.
+std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg);
 
 // Places one luminaire from its photometric web.
 LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminairePlacement& p);
