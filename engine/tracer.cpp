@@ -369,13 +369,17 @@ Rgb Tracer::mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       if (light.kind == Light::Kind::Area && light.shape == ms) continue;
       total += colour * lightEstimate(light, pi, ni, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
         const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
-        RayHit h;
-        countRay();
-        if (!accel_->intersect(p, dir, 0.0, ls.distance, h, skip) || h.shape != ms) return Rgb(0.0);
-        const Vec3 x = p + h.t * dir;
-        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - h.t) * (1.0 - 1e-9);
+        // Both legs pass transmitting surfaces (glass, trans, illum without alternate) as shadow
+        // rays do, so that a path meeting them before the mirror does not count the image again
+        // (pathRadiance: the first mirror after a diffuse vertex is an image).
+        double tm = 0.0;
+        if (!intersectShape(mirror, scene_.vertices, p, dir, 0.0, ls.distance, tm)) return Rgb(0.0);
+        const Vec3 x = p + tm * dir;
+        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - tm) * (1.0 - 1e-9);
         if (rest <= 0.0) return Rgb(0.0);
-        return transmittance(x + originOffset(x) * side, ls.dir, rest, ms, lightShape);
+        const Rgb toMirror = transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms);
+        if (photopic(toMirror) <= 0.0) return Rgb(0.0);
+        return toMirror * transmittance(x + originOffset(x) * side, ls.dir, rest, ms, lightShape);
       });
     }
   }
@@ -439,14 +443,16 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
 
 Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
                          const TraceSettings& s, int diffuse, int split, double misCosPdf, double misRatio,
-                         CacheUse* cache, double* firstHitT) const {
+                         CacheUse* cache, double* firstHitT, int mirrorsBefore) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
   // A path that does not count sources (they are sampled at its last diffuse vertex) and meets
-  // one flat mirror keeps not counting them: the mirror's virtual sources were sampled too.
-  // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
+  // one flat mirror keeps not counting them: the mirror's virtual sources were sampled too, with
+  // their visibility through transmitting surfaces before and after the mirror. Beyond that one
+  // reflection (a second mirror, glass reflection) it counts them again. mirrorsBefore carries
+  // the mirrors met before a trans surface's specular transmission continued the path.
   bool viaImage = false;
-  int mirrorsMet = 0;
+  int mirrorsMet = mirrorsBefore;
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
     RayHit h;
@@ -535,15 +541,18 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         return result;
       }
       ++cache->misses;
-      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources);
+      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources,
+                                           misCosPdf, misRatio, mirrorsMet);
     }
-    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources);
+    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources,
+                                         misCosPdf, misRatio, mirrorsMet);
   }
   return result;
 }
 
 Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
-                          const TraceSettings& s, int diffuse, int split, bool countSources) const {
+                          const TraceSettings& s, int diffuse, int split, bool countSources,
+                          double misCosPdf, double misRatio, int mirrorsMet) const {
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   const int k = std::max(1, split);
@@ -574,8 +583,10 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
       // Straight on, so sources count as they did for the incoming ray (shadow rays through the
-      // trans already carried them to diffuse vertices).
-      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1);
+      // trans already carried them to diffuse vertices, and mirror images through it), and the
+      // sky keeps the incoming ray's MIS weight (sky samples' shadow rays pass the trans too).
+      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1, misCosPdf,
+                                                misRatio, nullptr, nullptr, mirrorsMet);
     } else if (u < pRho + pTd + pTs + pSp) {
       acc += (norm / pSp) * glossyBounce(x, inDir, nf, off, flatSkip, m, rng, s, diffuse);
     }
