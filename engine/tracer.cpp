@@ -1,6 +1,7 @@
 #include "engine/tracer.h"
 
 #include "engine/embree_accelerator.h"
+#include "engine/fresnel.h"
 #include "engine/light_selection.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
@@ -215,7 +216,10 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     } else if (m.type == MaterialType::Trans) {
       t *= m.specularTransmittance;
     } else if (!(m.type == MaterialType::Illum && m.alternate < 0)) {
-      return Rgb(0.0);  // opaque (an illum with no alternate is invisible to all but its own rays)
+      // Opaque (an illum with no alternate is invisible to all but its own rays). A dielectric
+      // is opaque here too: it bends light, so no straight shadow ray passes it (as Radiance's
+      // source rays); paths find what lies behind it (pathRadiance).
+      return Rgb(0.0);
     }
     if (photopic(t) <= 0.0) return Rgb(0.0);
     tMin = h.t + originOffset(x);
@@ -517,6 +521,32 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
           viaImage = false;
         }
         skip = flatSkip;
+        continue;
+      }
+      case MaterialType::Dielectric: {
+        // A smooth boundary into (front face) or out of (back face) a medium of index n: the ray
+        // reflects with probability R (Fresnel, unpolarised; 1 beyond the critical angle) or
+        // refracts (Snell), so each event carries weight 1 and the estimator is unbiased. A ray
+        // that meets the back face travelled inside: Beer–Lambert, transmission per metre raised
+        // to the distance (as Radiance's dielectric). No dispersion (the Hartmann constant is
+        // ignored) and radiance is not scaled by n² inside (the factors cancel for sensors and
+        // sources outside). Shadow rays cannot pass (transmittance()), so sources and the sky
+        // seen through it count in full.
+        if (!front)
+          for (int c = 0; c < 3; ++c) beta[c] *= std::pow(m->color[c], h.t);
+        const double eta = front ? m->refractiveIndex : 1.0 / m->refractiveIndex;
+        const Fresnel f = fresnel(-glm::dot(d, nf), eta);
+        if (rng.uniform() < f.unpolarised()) {
+          d = d - 2.0 * glm::dot(d, nf) * nf;
+          o = x + off * nf;
+        } else {
+          d = refractDirection(d, nf, eta, f.cosT);
+          o = x - off * nf;
+        }
+        skip = flatSkip;
+        misCosPdf = 0.0;
+        countSources = true;
+        viaImage = false;
         continue;
       }
       default:
