@@ -12,7 +12,7 @@ namespace {
 
 constexpr const char* kSupported =
     "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source; "
-    "plastic, metal, trans, mirror, glass, light, illum, glow";
+    "plastic, metal, trans, mirror, glass, dielectric, light, illum, glow";
 
 struct Token {
   std::string_view text;
@@ -193,6 +193,20 @@ class Reader {
         m.color = vec(p, 0);
         if (p.reals.size() == 4) m.refractiveIndex = p.reals[3];
         break;
+      case MaterialType::Dielectric:
+        // Radiance reference manual: "mod dielectric id 0 0 5 rtn gtn btn n hc", transmission
+        // per unit length (scene units: metres), refractive index, Hartmann constant.
+        expectStrings(p, 0);
+        expectReals(p, 5);
+        m.color = vec(p, 0);
+        m.refractiveIndex = p.reals[3];
+        m.hartmannConstant = p.reals[4];
+        for (int c = 0; c < 3; ++c)
+          if (!(m.color[c] > 0.0 && m.color[c] <= 1.0))
+            fail(p.line, "dielectric '" + p.name + "' needs a transmission per metre in (0, 1] for each channel");
+        if (!(m.refractiveIndex > 0.0))
+          fail(p.line, "dielectric '" + p.name + "' needs a refractive index > 0");
+        break;
       case MaterialType::Glow:
         expectStrings(p, 0);
         expectReals(p, 4);
@@ -250,6 +264,7 @@ class Reader {
     if (t == "trans") return addMaterial(p, MaterialType::Trans);
     if (t == "mirror") return addMaterial(p, MaterialType::Mirror);
     if (t == "glass") return addMaterial(p, MaterialType::Glass);
+    if (t == "dielectric") return addMaterial(p, MaterialType::Dielectric);
     if (t == "light") return addMaterial(p, MaterialType::Light);
     if (t == "illum") return addMaterial(p, MaterialType::Illum);
     if (t == "glow") return addMaterial(p, MaterialType::Glow);

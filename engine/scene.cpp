@@ -12,6 +12,7 @@ const char* materialTypeName(MaterialType t) {
     case MaterialType::Trans: return "trans";
     case MaterialType::Mirror: return "mirror";
     case MaterialType::Glass: return "glass";
+    case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Light: return "light";
     case MaterialType::Illum: return "illum";
     case MaterialType::Glow: return "glow";

@@ -14,7 +14,7 @@
 
 namespace candela {
 
-enum class MaterialType { Void, Plastic, Metal, Trans, Mirror, Glass, Light, Illum, Glow };
+enum class MaterialType { Void, Plastic, Metal, Trans, Mirror, Glass, Dielectric, Light, Illum, Glow };
 
 const char* materialTypeName(MaterialType t);
 
@@ -24,12 +24,14 @@ struct Material {
   MaterialType type = MaterialType::Void;
   std::string name;
   FileLoc loc;
-  Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour or light/glow/illum radiance
+  Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
+                         // dielectric transmission per metre of path inside (fraction, per channel)
   double specularity = 0.0;   // plastic, metal, trans (fraction)
   double roughness = 0.0;     // plastic, metal, trans (rms slope)
   double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
   double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
-  double refractiveIndex = 1.52;     // glass
+  double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)
+  double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
   double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
   int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
   // Derived (Radiance's definitions of plastic, metal and trans):

@@ -1,6 +1,7 @@
 #include "engine/tracer.h"
 
 #include "engine/embree_accelerator.h"
+#include "engine/fresnel.h"
 #include "engine/light_selection.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
@@ -274,7 +275,10 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     } else if (m.type == MaterialType::Trans) {
       t *= m.specularTransmittance;
     } else if (!(m.type == MaterialType::Illum && m.alternate < 0)) {
-      return Rgb(0.0);  // opaque (an illum with no alternate is invisible to all but its own rays)
+      // Opaque (an illum with no alternate is invisible to all but its own rays). A dielectric
+      // is opaque here too: it bends light, so no straight shadow ray passes it (as Radiance's
+      // source rays); paths find what lies behind it (pathRadiance).
+      return Rgb(0.0);
     }
     if (photopic(t) <= 0.0) return Rgb(0.0);
     tMin = h.t + originOffset(x);
@@ -428,13 +432,17 @@ Rgb Tracer::mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
       if (light.kind == Light::Kind::Area && light.shape == ms) continue;
       total += colour * lightEstimate(light, pi, ni, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
         const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
-        RayHit h;
-        countRay();
-        if (!accel_->intersect(p, dir, 0.0, ls.distance, h, skip) || h.shape != ms) return Rgb(0.0);
-        const Vec3 x = p + h.t * dir;
-        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - h.t) * (1.0 - 1e-9);
+        // Both legs pass transmitting surfaces (glass, trans, illum without alternate) as shadow
+        // rays do, so that a path meeting them before the mirror does not count the image again
+        // (pathRadiance: the first mirror after a diffuse vertex is an image).
+        double tm = 0.0;
+        if (!intersectShape(mirror, scene_.vertices, p, dir, 0.0, ls.distance, tm)) return Rgb(0.0);
+        const Vec3 x = p + tm * dir;
+        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - tm) * (1.0 - 1e-9);
         if (rest <= 0.0) return Rgb(0.0);
-        return transmittance(x + originOffset(x) * side, ls.dir, rest, ms, lightShape);
+        const Rgb toMirror = transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms);
+        if (photopic(toMirror) <= 0.0) return Rgb(0.0);
+        return toMirror * transmittance(x + originOffset(x) * side, ls.dir, rest, ms, lightShape);
       });
     }
   }
@@ -510,14 +518,16 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
 
 Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
                          const TraceSettings& s, int diffuse, int split, double misCosPdf, double misRatio,
-                         CacheUse* cache, double* firstHitT) const {
+                         CacheUse* cache, double* firstHitT, int mirrorsBefore) const {
   Rgb result(0.0), beta(1.0);
   Vec3 o = origin, d = direction;
   // A path that does not count sources (they are sampled at its last diffuse vertex) and meets
-  // one flat mirror keeps not counting them: the mirror's virtual sources were sampled too.
-  // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
+  // one flat mirror keeps not counting them: the mirror's virtual sources were sampled too, with
+  // their visibility through transmitting surfaces before and after the mirror. Beyond that one
+  // reflection (a second mirror, glass reflection) it counts them again. mirrorsBefore carries
+  // the mirrors met before a trans surface's specular transmission continued the path.
   bool viaImage = false;
-  int mirrorsMet = 0;
+  int mirrorsMet = mirrorsBefore;
   bool reflected = false;  // a specular reflection on the way (for the sky tally's direct part)
   // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
   for (int vertex = 0; vertex < 64; ++vertex) {
@@ -598,6 +608,33 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         skip = flatSkip;
         continue;
       }
+      case MaterialType::Dielectric: {
+        // A smooth boundary into (front face) or out of (back face) a medium of index n: the ray
+        // reflects with probability R (Fresnel, unpolarised; 1 beyond the critical angle) or
+        // refracts (Snell), so each event carries weight 1 and the estimator is unbiased. A ray
+        // that meets the back face travelled inside: Beer–Lambert, transmission per metre raised
+        // to the distance (as Radiance's dielectric). No dispersion (the Hartmann constant is
+        // ignored) and radiance is not scaled by n² inside (the factors cancel for sensors and
+        // sources outside). Shadow rays cannot pass (transmittance()), so sources and the sky
+        // seen through it count in full.
+        if (!front)
+          for (int c = 0; c < 3; ++c) beta[c] *= std::pow(m->color[c], h.t);
+        const double eta = front ? m->refractiveIndex : 1.0 / m->refractiveIndex;
+        const Fresnel f = fresnel(-glm::dot(d, nf), eta);
+        if (rng.uniform() < f.unpolarised()) {
+          d = d - 2.0 * glm::dot(d, nf) * nf;
+          o = x + off * nf;
+        } else {
+          d = refractDirection(d, nf, eta, f.cosT);
+          o = x - off * nf;
+        }
+        skip = flatSkip;
+        misCosPdf = 0.0;
+        countSources = true;
+        viaImage = false;
+        reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
+        continue;
+      }
       default:
         break;
     }
@@ -620,16 +657,19 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         return result;
       }
       ++cache->misses;
-      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources);
+      return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, 1, countSources,
+                                           misCosPdf, misRatio, mirrorsMet);
     }
     const TallyFactor tf(beta);
-    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources);
+    return result + beta * diffuseVertex(x, d, nf, off, flatSkip, *m, rng, s, diffuse, split, countSources,
+                                         misCosPdf, misRatio, mirrorsMet);
   }
   return result;
 }
 
 Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
-                          const TraceSettings& s, int diffuse, int split, bool countSources) const {
+                          const TraceSettings& s, int diffuse, int split, bool countSources,
+                          double misCosPdf, double misRatio, int mirrorsMet) const {
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   const int k = std::max(1, split);
@@ -668,9 +708,11 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
       // Straight on, so sources count as they did for the incoming ray (shadow rays through the
-      // trans already carried them to diffuse vertices).
+      // trans already carried them to diffuse vertices, and mirror images through it), and the
+      // sky keeps the incoming ray's MIS weight (sky samples' shadow rays pass the trans too).
       const TallyFactor tf(tauS * (norm / pTs / k));
-      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1);
+      acc += tauS * (norm / pTs) * pathRadiance(xb, inDir, flatSkip, countSources, rng, s, diffuse, 1, misCosPdf,
+                                                misRatio, nullptr, nullptr, mirrorsMet);
     } else if (u < pRho + pTd + pTs + pSp) {
       const TallyFactor tf(norm / pSp / k);
       acc += (norm / pSp) * glossyBounce(x, inDir, nf, off, flatSkip, m, rng, s, diffuse);

@@ -162,7 +162,8 @@ class Tracer {
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
   // cache: at the first diffuse vertex (diffuse == 0) of a cacheable material, the indirect
   // irradiance comes from it (CacheUse records the error share and misses). firstHitT: the
-  // distance to the first surface met (infinity when none).
+  // distance to the first surface met (infinity when none). mirrorsBefore: flat mirrors met since
+  // the last diffuse vertex, before a trans surface's specular transmission continued the path.
   struct CacheUse {
     const IrradianceCache* cache = nullptr;
     // Coefficient of each record's photopic value in the sum of the rays' radiances
@@ -174,10 +175,14 @@ class Tracer {
   };
   Rgb pathRadiance(const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
                    const TraceSettings& s, int diffuse, int split, double misCosPdf = 0.0,
-                   double misRatio = 1.0, CacheUse* cache = nullptr, double* firstHitT = nullptr) const;
-  // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray.
+                   double misRatio = 1.0, CacheUse* cache = nullptr, double* firstHitT = nullptr,
+                   int mirrorsBefore = 0) const;
+  // Light leaving a diffuse vertex at x (facing normal nf) towards the incoming ray. The incoming
+  // ray's countSources, MIS density and ratio and flat mirrors met carry on through specular
+  // transmission (trans), which keeps its direction.
   Rgb diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip, const Material& m, Rng& rng,
-                    const TraceSettings& s, int diffuse, int split, bool countSources) const;
+                    const TraceSettings& s, int diffuse, int split, bool countSources, double misCosPdf,
+                    double misRatio, int mirrorsMet) const;
   // One source's irradiance at p with k samples (ratio estimator on its closed form where there
   // is one); visibility(LightSample, lightShape) → RGB transmittance.
   template <class Visibility>
