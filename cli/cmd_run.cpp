@@ -9,6 +9,8 @@
 #include "reports/png_writer.h"
 #include "reports/tonemap.h"
 #include "cli/progress.h"
+#include "cli/run_annual.h"
+#include "cli/run_grids.h"
 
 #include "engine/base/atomic_file.h"
 #include "engine/base/error.h"
@@ -50,68 +52,7 @@ struct RunOptions {
   bool quiet = false;
 };
 
-// A grid of the case with its points, ready to trace.
-struct PreparedGrid {
-  const GridSpec* spec = nullptr;
-  SensorGrid grid;
-  std::string fileStem;  // <fileStem>.csv
-};
-
 std::string fixed(double v, int decimals) { return formatFixed(v, decimals); }
-
-std::string vecText(const Vec3& v) {
-  return "(" + formatNumber(v.x, 4) + ", " + formatNumber(v.y, 4) + ", " + formatNumber(v.z, 4) + ")";
-}
-
-bool isHorizontalUp(const PlaneGridSpec& p) {
-  const Vec3 n = p.normal ? *p.normal : glm::cross(p.uAxis, p.vAxis);
-  return p.uAxis == Vec3(1, 0, 0) && p.vAxis == Vec3(0, 1, 0) && glm::length(n - Vec3(0, 0, 1)) < 1e-9;
-}
-
-// One line a reader of the report understands: orientation, height, spacing, border.
-std::string gridDescription(const PreparedGrid& g) {
-  const GridSpec& s = *g.spec;
-  if (s.kind == GridKind::kPoints) return "sensor points from " + s.pointsFile.filename().string();
-  const PlaneGridSpec& p = s.plane;
-  std::string d = isHorizontalUp(p) ? "horizontal, " + fixed(p.origin.z, 2) + " m above floor level"
-                                    : "plane through " + vecText(p.origin) + " m, sensors facing " +
-                                          vecText(g.grid.points.front().normal);
-  d += ", spacing " + fixed(g.grid.spacingM.x, 2) + " × " + fixed(g.grid.spacingM.y, 2) + " m";
-  if (p.borderM > 0.0) d += ", border " + fixed(p.borderM, 2) + " m";
-  return d;
-}
-
-PlanLayout planLayout(const PreparedGrid& g) {
-  PlanLayout l;
-  if (g.grid.regular) {
-    l.regular = true;
-    l.columns = g.grid.columns;
-    l.rows = g.grid.rows;
-    l.originM = g.grid.latticeOriginUv;
-    l.spacingM = g.grid.spacingM;
-    l.cells = g.grid.cell;
-    l.planPositions = g.grid.uv;
-    const PlaneGridSpec& p = g.spec->plane;
-    l.outline = p.outline;
-    if (p.isRectangle && p.outline.size() == 2) {
-      const Vec2 a = p.outline[0], b = p.outline[1];
-      l.outline = {a, Vec2(b.x, a.y), b, Vec2(a.x, b.y)};
-    }
-  } else {
-    // Points files: drawn as dots at their plan (x, y) positions.
-    for (const SensorPoint& s : g.grid.points) l.planPositions.emplace_back(s.position.x, s.position.y);
-  }
-  return l;
-}
-
-std::string localTimeNow() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
-  return buf;
-}
 
 // summary.json as the reports writer makes it, plus what only the run knows per grid: the
 // actual spacing (m) and the number of lattice columns and rows.
@@ -144,37 +85,26 @@ int runCase(const RunOptions& o) {
   if (fs::exists(outDir) && !fs::is_directory(outDir))
     throw InputError(FileLoc{outDir.string(), 0, 0}, "output path exists and is not a folder");
 
-  const std::unique_ptr<Scene> scene = loadCaseScene(c);
-  Box bounds = scene->bounds();
-  if (scene->sky) {
-    // Under a sky the scene may be open (a ground, a building): grids must lie within its plan
-    // extent only, as a grid above the ground is outside its bounding box by design.
-    bounds.lo.z = -1e300;
-    bounds.hi.z = 1e300;
+  if (c.sky.type == SkyType::kAnnual) {
+    AnnualRunOptions ao;
+    ao.outDir = outDir;
+    ao.trace = o.trace;
+    ao.quiet = o.quiet;
+    ao.start = start;
+    ao.startedAt = startedAt;
+    return runAnnualCase(c, ao);
   }
+
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
   // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent).
   for (const GridSpec& spec : c.grids)
     if (spec.daylightFactor && !(scene->sky && c.sky.type == SkyType::kCieOvercast))
       throw InputError(spec.loc, "grid '" + spec.name +
                                      "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it)");
 
-  std::vector<PreparedGrid> grids;
-  std::map<std::string, std::string> stems;  // file stem -> grid name, to refuse collisions
+  const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
   std::size_t totalPoints = 0;
-  for (const GridSpec& spec : c.grids) {
-    checkGridInside(spec, bounds);
-    PreparedGrid g;
-    g.spec = &spec;
-    g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(spec.plane, spec.loc) : readPointsFile(spec.pointsFile);
-    g.fileStem = safeFileName(spec.name);
-    if (g.fileStem == "summary")
-      throw InputError(spec.loc, "grid name '" + spec.name + "' would overwrite summary.csv; choose another name");
-    if (const auto [it, fresh] = stems.emplace(g.fileStem, spec.name); !fresh)
-      throw InputError(spec.loc, "grids '" + it->second + "' and '" + spec.name + "' would both write " +
-                                     g.fileStem + ".csv; choose distinct names");
-    totalPoints += g.grid.size();
-    grids.push_back(std::move(g));
-  }
+  for (const PreparedGrid& g : grids) totalPoints += g.grid.size();
 
   // 2. Settings: the case's, then the command line's.
   const ResolvedTrace resolved = resolveTrace(c, o.trace, Method::kCache);
