@@ -114,9 +114,9 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   const EpwFile epw = readEpw(c.sky.weather.string());
   if (!epw.isFullYear())
-    throw InputError(FileLoc{c.sky.weather.string(), 0, 0},
-                     "an annual study needs a full year of hourly records (8760 or 8784), the file has " +
-                         std::to_string(epw.records.size()));
+    throw InputError(FileLoc{c.sky.weather.string(), epw.records.empty() ? 8 : epw.records.back().line, 0},
+                     "the file ends after " + std::to_string(epw.records.size()) +
+                         " hourly records; an annual study needs a full year (8760 or 8784)");
   const Site site = caseSite(c, &epw.location);
   const double north = site.trueNorthDeg();
   const AnnualSpec& a = c.annual;
@@ -137,7 +137,7 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
   if (a.reportSensor)
     for (const PreparedGrid& g : grids)
       if (*a.reportSensor >= static_cast<int>(g.grid.size()))
-        throw InputError(a.loc, "report_sensor " + std::to_string(*a.reportSensor) + " is beyond grid '" +
+        throw InputError(a.reportSensorLoc, "report_sensor " + std::to_string(*a.reportSensor) + " is beyond grid '" +
                                     g.spec->name + "' (" + std::to_string(g.grid.size()) + " points)");
   const ResolvedTrace resolved = resolveTrace(c, o.trace, Method::kPath);
   TraceSettings settings = resolved.settings;

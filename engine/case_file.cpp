@@ -583,6 +583,7 @@ void readAnnual(const Context& c, const toml::table& t, AnnualSpec& a) {
     int v = 0;
     count("report_sensor", 0, 100'000'000, v);
     a.reportSensor = v;
+    a.reportSensorLoc = c.at(*tab.get("report_sensor"));
   }
   tab.finish();
 }

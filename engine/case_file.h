@@ -131,6 +131,7 @@ struct AnnualSpec {
   int sunSamples = 4;                   // rays over the sun's disc per sensor and hour
   bool blinds = true;                   // LM-83's operable blinds for sDA
   std::optional<int> reportSensor;      // the sensor whose hours are plotted (index, 0-based)
+  FileLoc reportSensorLoc;
   FileLoc loc;
 };
 

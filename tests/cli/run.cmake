@@ -27,3 +27,11 @@ candela_run_test(missing_case 2 "no_such_case.toml" no_such_case.toml)
 candela_run_test(bad_quality 2 "--quality" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality best)
 # Views with contrast keys: the report carries the contrast rendition factor.
 candela_run_test(view_contrast 0 "Contrast rendition factor" view_contrast/case.toml --quality draft)
+# Annual daylight ([sky] type = "annual"): the summary carries LM-83's names; bad annual input is
+# refused before anything is traced.
+candela_run_test(annual 0 "\"sDA300_50\"" annual/case.toml)
+candela_run_test(annual_needs_annual_sky 2 "annual_no_sky/case.toml:4: an [annual] table needs [sky] type = \"annual\""
+                 annual_no_sky/case.toml)
+candela_run_test(annual_needs_full_year 2 "one_day.epw:32: the file ends after 24 hourly records; an annual study needs a full year" annual_short_epw/case.toml)
+candela_run_test(annual_report_sensor 2 "annual_bad_sensor/case.toml:9: report_sensor 99 is beyond grid 'desk'"
+                 annual_bad_sensor/case.toml)
