@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace candela {
 
@@ -18,6 +19,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Random streams of phase A (record radii) and phase B (record values), apart from the points'.
 constexpr uint64_t kRadiusStream = 0x5000000000000000ULL;
 constexpr uint64_t kRecordStream = 0x6000000000000000ULL;
+// The second level's (two-level cache).
+constexpr uint64_t kRadiusStream2 = 0x5800000000000000ULL;
+constexpr uint64_t kRecordStream2 = 0x7000000000000000ULL;
 
 }  // namespace
 
@@ -27,44 +31,39 @@ Rgb hemisphereIrradiance(const HemisphereSamples& h) {
   return h.radiance.empty() ? Rgb(0.0) : kPi * sum / static_cast<double>(h.radiance.size());
 }
 
-std::array<Vec3, 3> rotationalGradient(const HemisphereSamples& h) {
-  // Cosine-weighted samples estimate ∫ f cos θ dω by π/(MN) Σ f; here f = L tan θ v(φ), so the
-  // sum estimates ∫ L sin θ v dω = ∫ L (n × ω) dω. Rotating n by δ (n' = n + δ × n) changes
-  // E = ∫ L max(0, n·ω) dω by δ·∫ L (n × ω) dω = (n × n')·G_r (the horizon term vanishes with
-  // cos θ). As Ward & Heckbert, tan θ and v are functions of the cell, not of the jittered
-  // sample, so that a uniform L gives exactly 0 (tan θ at the sample near the horizon is
-  // noisy); here their means over the cell: with u = sin² θ, ∫ tan θ du = F(u) =
-  // asin √u − √(u(1 − u)), and the mean of v over [φ_k, φ_k+1] is v(φ_centre) sin(π/N)/(π/N).
-  // (Tan θ at the centre would miss 7 % of the gradient at M = 40: tan θ is singular at the horizon.)
-  std::array<Vec3, 3> g{};
+std::vector<CellWeights> cellWeights(const HemisphereSamples& h) {
   const int m = h.m, n = h.n;
-  if (m < 1 || n < 1) return g;
+  std::vector<CellWeights> w(static_cast<size_t>(std::max(0, m * n)));
+  if (m < 1 || n < 1) return w;
+  auto idx = [n](int j, int k) { return j * n + k; };
+  const double cellE = kPi / static_cast<double>(m * n);
+  for (CellWeights& c : w) c.e = cellE;
+  // Rotational gradient. Cosine-weighted samples estimate ∫ f cos θ dω by π/(MN) Σ f; here
+  // f = L tan θ v(φ), so the sum estimates ∫ L sin θ v dω = ∫ L (n × ω) dω. Rotating n by δ
+  // (n' = n + δ × n) changes E = ∫ L max(0, n·ω) dω by δ·∫ L (n × ω) dω = (n × n')·G_r (the
+  // horizon term vanishes with cos θ). As Ward & Heckbert, tan θ and v are functions of the
+  // cell, not of the jittered sample, so that a uniform L gives exactly 0 (tan θ at the sample
+  // near the horizon is noisy); here their means over the cell: with u = sin² θ, ∫ tan θ du =
+  // F(u) = asin √u − √(u(1 − u)), and the mean of v over [φ_k, φ_k+1] is v(φ_centre) sin(π/N)/(π/N).
+  // (Tan θ at the centre would miss 7 % of the gradient at M = 40: tan θ is singular at the horizon.)
   auto F = [](double u) { return std::asin(std::sqrt(u)) - std::sqrt(std::max(0.0, u * (1.0 - u))); };
-  std::vector<double> meanTan(m);
-  for (int j = 0; j < m; ++j) meanTan[j] = m * (F(static_cast<double>(j + 1) / m) - F(static_cast<double>(j) / m));
   const double sinc = n > 1 ? std::sin(kPi / n) / (kPi / n) : 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double phi = kTwoPi * (k + 0.5) / n;
-    const Vec3 v = sinc * Vec3(-std::sin(phi), std::cos(phi), 0.0);
-    Rgb row(0.0);
-    for (int j = 0; j < m; ++j) row += h.radiance[j * n + k] * meanTan[j];
-    for (int c = 0; c < 3; ++c) g[c] += row[c] * v;
+  for (int j = 0; j < m; ++j) {
+    const double meanTan = m * (F(static_cast<double>(j + 1) / m) - F(static_cast<double>(j) / m));
+    for (int k = 0; k < n; ++k) {
+      const double phi = kTwoPi * (k + 0.5) / n;
+      w[idx(j, k)].rot = cellE * meanTan * sinc * Vec3(-std::sin(phi), std::cos(phi), 0.0);
+    }
   }
-  for (int c = 0; c < 3; ++c) g[c] *= kPi / static_cast<double>(m * n);
-  return g;
-}
-
-std::array<Vec3, 3> translationalGradient(const HemisphereSamples& h) {
-  // Ward & Heckbert 1992, as written by Křivánek et al. (2005): moving the point moves the
-  // boundaries between cells over the surfaces seen; each boundary contributes the radiance
-  // difference across it times its projected motion, at the nearer of the two distances.
+  // Translational gradient of Ward & Heckbert 1992, as written by Křivánek et al. (2005): moving
+  // the point moves the boundaries between cells over the surfaces seen; each boundary
+  // contributes the radiance difference across it times its projected motion, at the nearer of
+  // the two distances.
   //   ∇E = Σ_k [ u_k (2π/N) Σ_{j≥1} sin θ_j− cos² θ_j− (L_jk − L_j−1,k) / min(r_jk, r_j−1,k)
   //            + v_k− Σ_j (sin θ_j+ − sin θ_j−) (L_jk − L_j,k−1) / min(r_jk, r_j,k−1) ]
   // with sin² θ_j− = j/M, sin² θ_j+ = (j+1)/M, u_k at φ = 2π(k + ½)/N, v_k− at 2πk/N + π/2.
-  std::array<Vec3, 3> g{};
-  const int m = h.m, n = h.n;
-  if (m < 1 || n < 2) return g;
-  auto idx = [n](int j, int k) { return j * n + k; };
+  // Each boundary term f (L_a − L_b) adds +f to cell a's weight and −f to cell b's.
+  if (n < 2) return w;
   for (int k = 0; k < n; ++k) {
     const double phiC = kTwoPi * (k + 0.5) / n, phiB = kTwoPi * k / n;
     const Vec3 u(std::cos(phiC), std::sin(phiC), 0.0);
@@ -75,18 +74,148 @@ std::array<Vec3, 3> translationalGradient(const HemisphereSamples& h) {
         const double s2 = static_cast<double>(j) / m;
         const double r = std::min(h.distanceM[idx(j, k)], h.distanceM[idx(j - 1, k)]);
         if (r > 0.0 && r < kInf) {
-          const double f = kTwoPi / n * std::sqrt(s2) * (1.0 - s2) / r;
-          for (int c = 0; c < 3; ++c) g[c] += f * (h.radiance[idx(j, k)][c] - h.radiance[idx(j - 1, k)][c]) * u;
+          const Vec3 f = kTwoPi / n * std::sqrt(s2) * (1.0 - s2) / r * u;
+          w[idx(j, k)].trans += f;
+          w[idx(j - 1, k)].trans -= f;
         }
       }
       const double r = std::min(h.distanceM[idx(j, k)], h.distanceM[idx(j, km)]);
       if (r > 0.0 && r < kInf) {
-        const double f = (std::sqrt(static_cast<double>(j + 1) / m) - std::sqrt(static_cast<double>(j) / m)) / r;
-        for (int c = 0; c < 3; ++c) g[c] += f * (h.radiance[idx(j, k)][c] - h.radiance[idx(j, km)][c]) * v;
+        const Vec3 f = (std::sqrt(static_cast<double>(j + 1) / m) - std::sqrt(static_cast<double>(j) / m)) / r * v;
+        w[idx(j, k)].trans += f;
+        w[idx(j, km)].trans -= f;
       }
     }
   }
+  return w;
+}
+
+std::array<Vec3, 3> rotationalGradient(const HemisphereSamples& h) {
+  std::array<Vec3, 3> g{};
+  const std::vector<CellWeights> w = cellWeights(h);
+  for (size_t c = 0; c < w.size(); ++c)
+    for (int ch = 0; ch < 3; ++ch) g[ch] += h.radiance[c][ch] * w[c].rot;
   return g;
+}
+
+std::array<Vec3, 3> translationalGradient(const HemisphereSamples& h) {
+  std::array<Vec3, 3> g{};
+  const std::vector<CellWeights> w = cellWeights(h);
+  for (size_t c = 0; c < w.size(); ++c)
+    for (int ch = 0; ch < 3; ++ch) g[ch] += h.radiance[c][ch] * w[c].trans;
+  return g;
+}
+
+void addOuter(std::array<double, 28>& c, const RecordVector& x, double s) {
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i <= j; ++i) c[j * (j + 1) / 2 + i] += s * x[i] * x[j];
+}
+
+double recordQuadratic(const IrradianceRecord& r, const RecordVector& b) {
+  double q = 0.0;
+  for (int j = 0; j < 7; ++j) {
+    q += r.covariance[j * (j + 1) / 2 + j] * b[j] * b[j];
+    for (int i = 0; i < j; ++i) q += 2.0 * r.covariance[j * (j + 1) / 2 + i] * b[i] * b[j];
+  }
+  return std::max(0.0, q);
+}
+
+RecordVector lookupVector(const IrradianceRecord& r, const Vec3& p, const Vec3& n, bool gradients) {
+  RecordVector b{};
+  b[0] = 1.0;
+  if (gradients) {
+    const Vec3 rot = glm::cross(r.n, n), dp = p - r.p;
+    for (int i = 0; i < 3; ++i) {
+      b[1 + i] = rot[i];
+      b[4 + i] = dp[i];
+    }
+  }
+  return b;
+}
+
+void setRecordValue(IrradianceRecord& r, const HemisphereSamples& h, const Frame& frame) {
+  r.e = hemisphereIrradiance(h);
+  const std::vector<CellWeights> w = cellWeights(h);
+  std::array<Vec3, 3> gr{}, gt{};
+  for (size_t c = 0; c < w.size(); ++c)
+    for (int ch = 0; ch < 3; ++ch) {
+      gr[ch] += h.radiance[c][ch] * w[c].rot;
+      gt[ch] += h.radiance[c][ch] * w[c].trans;
+    }
+  for (int ch = 0; ch < 3; ++ch) {
+    r.gradR[ch] = frame.toWorld(gr[ch]);
+    r.gradT[ch] = frame.toWorld(gt[ch]);
+  }
+  // Covariance of Q = Σ_c λ_c y_c (y_c the photopic radiance of cell c, the cells independent):
+  // Σ_c σ_c² λ_c λ_cᵀ, with σ_c² estimated locally as stratifiedVariance does globally: d_c²/6
+  // from the second difference along φ (E[d_c²] = curvature² + σ²_c−1 + 4σ²_c + σ²_c+1), or
+  // (y_a − y_b)²/2 for collapsed pairs when there are fewer than three φ strata. For E
+  // (λ = π/(MN)) this is exactly stratifiedVariance.
+  const int m = h.m, n = h.n, cells = m * n;
+  std::vector<double> y(cells), s2(cells, 0.0);
+  for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);
+  if (n >= 3) {
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < n; ++k) {
+        const double d = y[j * n + (k + n - 1) % n] - 2.0 * y[j * n + k] + y[j * n + (k + 1) % n];
+        s2[j * n + k] = d * d / 6.0;
+      }
+  } else {
+    for (int c = 0; c + 1 < cells; c += 2) s2[c] = s2[c + 1] = 0.5 * (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
+  }
+  r.covariance.fill(0.0);
+  for (int c = 0; c < cells; ++c) {
+    const Vec3 rot = frame.toWorld(w[c].rot), trans = frame.toWorld(w[c].trans);
+    addOuter(r.covariance, {w[c].e, rot.x, rot.y, rot.z, trans.x, trans.y, trans.z}, s2[c]);
+  }
+  r.variancePhotopic = r.covariance[0];
+}
+
+void CacheTally::merge(const std::vector<int>* counts) {
+  std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
+    return a.cell < b.cell || (a.cell == b.cell && a.record < b.record);
+  });
+  size_t out = 0;
+  for (size_t a = 0; a < entries_.size();) {
+    Entry e = entries_[a];
+    size_t b = a + 1;
+    for (; b < entries_.size() && entries_[b].cell == e.cell && entries_[b].record == e.record; ++b)
+      for (int q = 0; q < 7; ++q) e.beta[q] += entries_[b].beta[q];
+    const double inv = counts ? 1.0 / (*counts)[e.cell] : 1.0;
+    for (double& x : e.beta) x *= inv;
+    entries_[out++] = e;
+    a = b;
+  }
+  entries_.resize(out);
+  merged_ = true;
+}
+
+double CacheTally::recordVariance(const IrradianceCache& cache, double scale, const std::vector<int>* counts) {
+  if (!merged_) merge(counts);
+  thread_local std::vector<std::pair<uint32_t, RecordVector>> perRecord;
+  perRecord.clear();
+  for (const Entry& e : entries_) perRecord.emplace_back(e.record, e.beta);
+  std::sort(perRecord.begin(), perRecord.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  double var = 0.0, sharedSd = 0.0;
+  for (size_t a = 0; a < perRecord.size();) {
+    RecordVector sum{};
+    size_t b = a;
+    for (; b < perRecord.size() && perRecord[b].first == perRecord[a].first; ++b)
+      for (int q = 0; q < 7; ++q) sum[q] += scale * perRecord[b].second[q];
+    const IrradianceRecord& r = cache.record(perRecord[a].first);
+    var += recordQuadratic(r, sum);
+    sharedSd += std::abs(sum[0]) * r.sharedSd;
+    a = b;
+  }
+  return var + sharedSd * sharedSd;
+}
+
+CacheSettings deeperLevel(const CacheSettings& first) {
+  CacheSettings s = first;
+  s.recordSamples = std::max(64, first.recordSamples / 4);
+  s.accuracy = 2.0 * first.accuracy;
+  s.levels = 1;
+  return s;
 }
 
 IrradianceCache::IrradianceCache(const Box& bounds, const CacheSettings& settings) : settings_(settings) {
@@ -194,7 +323,7 @@ bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* 
   });
   if (found.empty()) return false;
   Rgb sum(0.0);
-  double sumW = 0.0, extrap = 0.0;
+  double sumW = 0.0;
   for (const auto& [w, i] : found) {
     const IrradianceRecord& r = records_[i];
     Rgb e = r.e;
@@ -204,33 +333,28 @@ bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* 
     }
     sum += w * e;
     sumW += w;
-    const double dy = photopic(e) - photopic(r.e);
-    extrap += w * 0.25 * dy * dy;
   }
   out = sum / sumW;
   if (used) {
     for (const auto& [w, i] : found) used->weights.emplace_back(i, w / sumW);
-    used->extrapolationVariance = extrap / sumW;
   }
   return true;
 }
 
-IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads) {
-  IrradianceCache cache(tracer.scene().bounds(), settings.cache);
-  cache.setVisibility([&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) {
-    return tracer.cacheVisible(p, n, shape, r);
-  });
-  // Phase A: first diffuse hits of each point's initial hemisphere cells, gathered in parallel in
-  // batches, then walked in order on one thread: an uncovered hit becomes a record.
+namespace {
+
+// Phase A over a list of queries, gathered in parallel in batches (gather(i, out): the queries of
+// item i, in order) and walked in order on one thread: an uncovered hit becomes a record whose
+// R_i comes from stream radiusStream + its index.
+void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, uint64_t radiusStream,
+                  const TraceSettings& settings, int threads,
+                  const std::function<void(size_t, std::vector<CacheQuery>&)>& gather) {
   constexpr size_t kBatch = 64;
   std::vector<std::vector<CacheQuery>> hits;
-  for (size_t b = 0; b < points.size(); b += kBatch) {
-    const size_t e = std::min(points.size(), b + kBatch);
+  for (size_t b = 0; b < items; b += kBatch) {
+    const size_t e = std::min(items, b + kBatch);
     hits.assign(e - b, {});
-    parallelFor(e - b, threads, [&](size_t i) {
-      tracer.cacheQueries(points[b + i].position, points[b + i].normal, b + i, settings, hits[i]);
-    });
+    parallelFor(e - b, threads, [&](size_t i) { gather(b + i, hits[i]); });
     for (const auto& list : hits) {
       for (const CacheQuery& q : list) {
         if (cache.covers(q.p, q.n, q.shape)) continue;
@@ -239,15 +363,50 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
         r.n = q.n;
         r.skip = q.skip;
         r.shape = q.shape;
-        Rng rng(settings.seed, kRadiusStream + cache.size());
+        Rng rng(settings.seed, radiusStream + cache.size());
         r.radiusM = tracer.harmonicMeanDistance(q, settings.cache.radiusSamples, rng);
         cache.add(r);
       }
     }
   }
+}
+
+}  // namespace
+
+IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                     const TraceSettings& settings, int threads) {
+  auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) {
+    return tracer.cacheVisible(p, n, shape, r);
+  };
+  IrradianceCache cache(tracer.scene().bounds(), settings.cache);
+  cache.setVisibility(visibility);
+  // Phase A: first diffuse hits of each point's initial hemisphere cells.
+  placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
+               [&](size_t i, std::vector<CacheQuery>& out) {
+                 tracer.cacheQueries(points[i].position, points[i].normal, i, settings, out);
+               });
+  // Second level: phase A over the first level's record rays (the directions phase B will
+  // trace), then its values, frozen before the first level's values use it. A record ray's
+  // first hit is the second diffuse bounce: only when bounces go that far.
+  const bool twoLevels = settings.cache.levels >= 2 && settings.maxBounces >= 2;
+  std::optional<IrradianceCache> deeper;
+  if (twoLevels) {
+    TraceSettings s2 = settings;
+    s2.cache = deeperLevel(settings.cache);
+    deeper.emplace(tracer.scene().bounds(), s2.cache);
+    deeper->setVisibility(visibility);
+    placeRecords(*deeper, tracer, cache.size(), kRadiusStream2, s2, threads,
+                 [&](size_t i, std::vector<CacheQuery>& out) {
+                   tracer.recordQueries(cache.record(i), kRecordStream + i, settings, out);
+                 });
+    parallelFor(deeper->size(), threads, [&](size_t i) {
+      tracer.computeRecord(deeper->record(i), kRecordStream2 + i, s2, nullptr, 2);
+    });
+  }
   // Phase B: the values, record i from stream i.
+  const IrradianceCache* d = deeper ? &*deeper : nullptr;
   parallelFor(cache.size(), threads, [&](size_t i) {
-    tracer.computeRecord(cache.record(i), kRecordStream + i, settings);
+    tracer.computeRecord(cache.record(i), kRecordStream + i, settings, d, 1);
   });
   return cache;
 }

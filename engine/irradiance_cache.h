@@ -9,6 +9,10 @@
 // in a fixed order (phase A, sequential: which records exist and their radii; phase B, parallel:
 // their values, each from its own random stream), then frozen; the points are then evaluated in
 // parallel against the frozen cache. Results are therefore identical for any thread count.
+// With two levels (CacheSettings::levels), a second cache serves the first diffuse hits of the
+// first level's record rays, with fewer samples and a looser a (Ward et al. 1988: deeper values
+// matter less, their contribution being attenuated by reflectance); it is filled the same way
+// and frozen before the first level's values are computed.
 #pragma once
 
 #include "engine/base/math.h"
@@ -22,6 +26,7 @@
 namespace candela {
 
 struct SensorPoint;
+class IrradianceCache;
 struct TraceSettings;
 class Tracer;
 
@@ -34,6 +39,11 @@ struct IrradianceRecord {
   std::array<Vec3, 3> gradT{};  // translational gradient per channel, W/m² per m (Ward & Heckbert)
   std::array<Vec3, 3> gradR{};  // rotational gradient per channel, W/m² per rad
   double variancePhotopic = 0.0;  // variance of photopic(e) from the record's own samples
+  // Covariance of the photopic (E, G_r, G_t) (see recordQuadratic), for error bars.
+  std::array<double, 28> covariance{};
+  // Standard deviation of photopic(e) due to the second level's records (two-level cache),
+  // which many first-level records share: not in `covariance`, added fully correlated.
+  double sharedSd = 0.0;
   uint32_t skip = 0xffffffffu;  // flat shape the record lies on (excluded from its rays)
   uint32_t shape = 0xffffffffu; // shape the record lies on
 };
@@ -66,6 +76,56 @@ std::array<Vec3, 3> rotationalGradient(const HemisphereSamples& h);
 // distances min(r) of the two cells sharing a boundary; local coordinates per channel.
 std::array<Vec3, 3> translationalGradient(const HemisphereSamples& h);
 
+// A record's interpolated photopic value at (p, n) is Q·β: Q = (E, G_r, G_t) photopic (seven
+// numbers, world coordinates), β = (1, n_i × n, p − p_i) (the gradient terms 0 without gradients).
+using RecordVector = std::array<double, 7>;
+RecordVector lookupVector(const IrradianceRecord& r, const Vec3& p, const Vec3& n, bool gradients);
+
+// IrradianceRecord::covariance is the symmetric 7 × 7 covariance C of Q, packed (element i ≤ j
+// at j(j+1)/2 + i). addOuter: C += s x xᵀ; recordQuadratic: bᵀ C b = Var(Q·b).
+void addOuter(std::array<double, 28>& c, const RecordVector& x, double s);
+double recordQuadratic(const IrradianceRecord& r, const RecordVector& b);
+
+// Per-cell weights λ_c of Q in the record's local frame: E = Σ λ_c.e L_c, G_r = Σ λ_c.rot L_c,
+// G_t = Σ λ_c.trans L_c (the gradients below are these sums; the variance of Q follows from them).
+struct CellWeights {
+  double e = 0.0;
+  Vec3 rot{0.0}, trans{0.0};
+};
+std::vector<CellWeights> cellWeights(const HemisphereSamples& h);
+// Sets r.e, its gradients (world coordinates, `frame` = the record's), its covariance and
+// variancePhotopic from its hemisphere samples.
+void setRecordValue(IrradianceRecord& r, const HemisphereSamples& h, const Frame& frame);
+
+// How much each record's noise enters a stratified estimate E = scale · Σ_c ȳ_c (ȳ_c the mean of
+// cell c's samples), for error bars. Record i's share of a sample's photopic value is
+// Q_i·β (β summed over the sample's lookups, times the path's weight and ρ/π).
+class CacheTally {
+ public:
+  void clear() {
+    entries_.clear();
+    merged_ = false;
+  }
+  void setCell(int cell) { cell_ = cell; }
+  void add(uint32_t record, const RecordVector& beta) { entries_.push_back({cell_, record, beta}); }
+  bool empty() const { return entries_.empty(); }
+  // Var(E) from the records (independent: their own random streams), Σ_i B_iᵀ C_i B_i with
+  // B_i = scale Σ_c β̄_ci; counts: samples per cell (nullptr: one each). Records sharing
+  // second-level records add (Σ_i |B_i,E| σ_shared,i)²: an upper bound (full correlation).
+  double recordVariance(const IrradianceCache& cache, double scale, const std::vector<int>* counts);
+
+ private:
+  struct Entry {
+    int cell;
+    uint32_t record;
+    RecordVector beta;
+  };
+  void merge(const std::vector<int>* counts);  // sorts, sums per (cell, record), divides by counts
+  int cell_ = 0;
+  bool merged_ = false;
+  std::vector<Entry> entries_;
+};
+
 struct CacheSettings {
   double accuracy = 0.1;       // Ward's a: records are used where w_i > 1/a
   int recordSamples = 1024;    // hemisphere rays per record
@@ -78,7 +138,14 @@ struct CacheSettings {
   // wall between a lit and a dark room then stops light leaking along the floor (costs one
   // shadow ray per candidate record).
   bool visibilityCheck = true;
+  // 1: records at the first diffuse hits of sensor rays, deeper bounces path traced. 2: a second
+  // cache at the first diffuse hits of those records' rays (deeperLevel()), path traced beyond.
+  int levels = 1;
 };
+
+// The second level's settings (Ward et al. 1988): a quarter of the record samples (at least 64)
+// and twice the error a.
+CacheSettings deeperLevel(const CacheSettings& first);
 
 class IrradianceCache {
  public:
@@ -95,12 +162,9 @@ class IrradianceCache {
   // True when some record has w_i(p, n) > 1/a (and is visible from p when checked). `shape`:
   // the shape p lies on.
   bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu) const;
-  // What an interpolation used, for error bars: each record with its normalised weight, and an
-  // interpolation share: a quarter of the squared gradient correction (photopic, (W/m²)²),
-  // i.e. how far the records had to be extrapolated.
+  // What an interpolation used, for error bars: each record with its normalised weight.
   struct Used {
     std::vector<std::pair<uint32_t, double>> weights;
-    double extrapolationVariance = 0.0;
   };
   // Gradient-corrected weighted mean (W/m²) of the records with w_i > 1/a; false when none.
   // Appends to *used when given.
@@ -140,7 +204,9 @@ class IrradianceCache {
 
 // Phases A and B: the records the points' first diffuse hits need, with their values.
 // Deterministic: phase A walks the points and their hemisphere cells in order on one thread;
-// phase B computes record i from random stream i on `threads` threads.
+// phase B computes record i from random stream i on `threads` threads. With two levels, between
+// the two phases: phase A over the first level's record rays gives the second level's records,
+// whose values are computed (phase B) and frozen; the first level's values then use them.
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads);
 

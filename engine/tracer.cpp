@@ -13,7 +13,6 @@
 #include <stdexcept>
 
 namespace candela {
-
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -640,7 +639,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (diffuse + 1 > s.maxBounces) return result;
-    if (cache && cache->cache && diffuse == 0 && cacheable(*m)) {
+    if (cache && cache->cache && diffuse == cache->depth && cacheable(*m)) {
       // Ward's cache: direct light sampled here, indirect irradiance interpolated.
       Rgb e(0.0);
       cache->scratch.weights.clear();
@@ -649,8 +648,11 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         const Rgb direct = directIrradiance(xf, nf, std::max(1, s.cache.lightSamples), flatSkip, rng, nullptr, 1.0);
         const Rgb f = beta * m->diffuseReflectance * kInvPi;
         const double fy = photopic(f);
-        for (const auto& [i, w] : cache->scratch.weights) cache->coefficients.emplace_back(i, fy * w);
-        cache->extrapolationSd += fy * std::sqrt(cache->scratch.extrapolationVariance);
+        for (const auto& [i, w] : cache->scratch.weights) {
+          RecordVector b = lookupVector(cache->cache->record(i), x, nf, cache->cache->settings().gradients);
+          for (double& v : b) v *= fy * w;
+          cache->tally.add(i, b);
+        }
         result += f * (direct + e);
         if (photopic(m->specularReflectance) > 0.0)
           result += beta * glossyBounce(x, d, nf, off, flatSkip, *m, rng, s, diffuse);
@@ -877,37 +879,78 @@ double Tracer::harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) con
   return inv > 0.0 ? strata.size() / inv : kInf;
 }
 
-void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s) const {
-  Rng rng(s.seed, stream);
+namespace {
+// A record's hemisphere directions come from a stream of their own (its value stream + this),
+// so that the second level's phase A (recordQueries) traces exactly the directions phase B will.
+constexpr uint64_t kRecordDirectionOffset = 1ULL << 56;
+
+int recordThetaStrata(const TraceSettings& s) {
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(s.cache.recordSamples / kPi))));
+}
+int recordPhiStrata(const TraceSettings& s) { return std::max(2, s.cache.recordSamples / recordThetaStrata(s)); }
+}  // namespace
+
+void Tracer::recordQueries(const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                           std::vector<CacheQuery>& out) const {
+  Rng dirRng(s.seed, stream + kRecordDirectionOffset);
+  const int m = recordThetaStrata(s), n = recordPhiStrata(s);
+  const Frame frame = Frame::fromNormal(r.n);
+  const Vec3 o = r.p + originOffset(r.p) * r.n;
+  for (int c = 0; c < m * n; ++c) {
+    const int j = c / n, k = c % n;
+    const double u1 = (j + dirRng.uniform()) / m;
+    const double u2 = (k + dirRng.uniform()) / n;
+    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    RayHit h;
+    countRay();
+    if (!accel_->intersect(o, dir, 0.0, kInf, h, r.skip)) continue;
+    const Shape& shape = scene_.shapes[h.shape];
+    const Material* mat = &scene_.materials[shape.material];
+    if (mat->type == MaterialType::Illum) {
+      if (mat->alternate < 0) continue;
+      mat = &scene_.materials[mat->alternate];
+    }
+    if (!cacheable(*mat)) continue;
+    const Vec3 x = o + h.t * dir;
+    const Vec3 ng = shapeNormal(shape, x);
+    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
+  }
+  flushRays();
+}
+
+void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                           const IrradianceCache* deeper, int level) const {
+  Rng rng(s.seed, stream), dirRng(s.seed, stream + kRecordDirectionOffset);
   HemisphereSamples h;
-  h.m = std::max(1, static_cast<int>(std::lround(std::sqrt(s.cache.recordSamples / kPi))));
-  h.n = std::max(2, s.cache.recordSamples / h.m);
+  h.m = recordThetaStrata(s);
+  h.n = recordPhiStrata(s);
   const int cells = h.m * h.n;
   h.radiance.resize(cells);
   h.distanceM.resize(cells);
   h.local.resize(cells);
   const Frame frame = Frame::fromNormal(r.n);
   const Vec3 o = r.p + originOffset(r.p) * r.n;
+  thread_local CacheUse use;
+  use.cache = deeper;
+  use.depth = level;
+  use.tally.clear();
   for (int c = 0; c < cells; ++c) {
     const int j = c / h.n, k = c % h.n;
-    const double u1 = (j + rng.uniform()) / h.m;
-    const double u2 = (k + rng.uniform()) / h.n;
+    const double u1 = (j + dirRng.uniform()) / h.m;
+    const double u2 = (k + dirRng.uniform()) / h.n;
     h.local[c] = sampleCosineHemisphere(u1, u2);
     const Vec3 dir = frame.toWorld(h.local[c]);
     // Everything but the sampled sources (which every lookup samples itself): sky and glow seen,
-    // and light reflected by deeper bounces, path traced with Russian roulette by albedo.
-    h.radiance[c] = pathRadiance(o, dir, r.skip, false, rng, s, 1, 1, h.local[c].z * kInvPi, 1.0, nullptr,
-                                 &h.distanceM[c]);
+    // and light reflected by deeper bounces: from the second-level cache at the rays' first
+    // diffuse hits when there is one, path traced with Russian roulette by albedo beyond.
+    use.tally.setCell(c);
+    h.radiance[c] = pathRadiance(o, dir, r.skip, false, rng, s, level, 1, h.local[c].z * kInvPi, 1.0,
+                                 deeper ? &use : nullptr, &h.distanceM[c]);
   }
-  r.e = hemisphereIrradiance(h);
-  const std::array<Vec3, 3> gr = rotationalGradient(h), gt = translationalGradient(h);
-  for (int c = 0; c < 3; ++c) {
-    r.gradR[c] = frame.toWorld(gr[c]);
-    r.gradT[c] = frame.toWorld(gt[c]);
-  }
-  std::vector<double> y(cells);
-  for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);
-  r.variancePhotopic = stratifiedVariance(y, h.m, h.n);
+  setRecordValue(r, h, frame);
+  // The second level's records, shared by this record's cells and by other records, give
+  // Var = Σ_j B_jᵀ C_j B_j; kept apart (sharedSd) because other records share them.
+  r.sharedSd = deeper ? std::sqrt(use.tally.recordVariance(*deeper, kPi / static_cast<double>(cells), nullptr)) : 0.0;
   flushRays();
 }
 
@@ -918,8 +961,10 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   // method: from a stream of their own (see cacheQueries).
   Rng dirRng(s.seed, kDirectionStream + pointIndex);
   Rng& jitter = cache ? dirRng : rng;
-  CacheUse use;
+  thread_local CacheUse use;
   use.cache = cache;
+  use.depth = 0;
+  use.tally.clear();
   IrradianceEstimate est;
   double var = 0.0;
   const int mThetaN = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
@@ -946,6 +991,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
     const double u2 = (k + (sv + jitter.uniform()) / sub) / nPhi;
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
     const TallyFactor tf(kPi / cells);  // the ray's share of E (sky tally: never refined)
+    use.tally.setCell(cell);
     if (cache)
       return pathRadiance(p, dir, kNoShape, false, rng, s, 0, 1, glm::dot(dir, n) * kInvPi, misRatio, &use);
     return pathRadiance(p, dir, kNoShape, false, rng, s, 0, s.firstBounceSplit, glm::dot(dir, n) * kInvPi, misRatio);
@@ -991,26 +1037,20 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   Rgb sum(0.0);
   for (int c = 0; c < cells; ++c) sum += value[c];
   est.irradiance += kPi * sum / static_cast<double>(cells);
-  var += stratifiedVariance(y, mTheta, nPhi, &counts);
-  if (cache) {
-    // The cached share. The collapsed-strata variance above sees the rays' own noise (direct
-    // light at the hits) but not the records', which many rays share: record i enters the
-    // estimate with coefficient a_i = π/cells Σ_rays beta ρ/π w_i/Σw, records are independent
-    // (own streams), so Var = Σ a_i² Var(E_i). The extrapolation share is taken as fully
-    // correlated over the rays (σ adds linearly).
-    auto& co = use.coefficients;
-    std::sort(co.begin(), co.end());
-    const double scale = kPi / static_cast<double>(cells);
-    for (size_t a = 0; a < co.size();) {
-      size_t b = a;
-      double sum = 0.0;
-      for (; b < co.size() && co[b].first == co[a].first; ++b) sum += co[b].second;
-      const double ai = scale * sum;
-      var += ai * ai * cache->record(co[a].first).variancePhotopic;
-      a = b;
-    }
-    const double sd = scale * use.extrapolationSd;
-    var += sd * sd;
+  const double strat = stratifiedVariance(y, mTheta, nPhi, &counts);
+  var += strat;
+  if (cache && !use.tally.empty()) {
+    // The cached share, by the law of total variance: Var(E) = E[Var(E | records)] +
+    // Var(E[E | records]). The first is what the hemisphere's strata show with the records
+    // held fixed (stratifiedVariance above: the record values differ between cells like any
+    // other feature of the scene). The second: record i enters the estimate through its seven
+    // quantities Q_i = (E, G_r, G_t) with coefficients B_i summed over the rays that use it
+    // (engine/irradiance_cache.h), and the records are independent (own streams), so it is
+    // Σ_i B_iᵀ C_i B_i — the gradients' noise and its correlation with E_i included (a value
+    // extrapolated by a noisy gradient: Var(E_i) + Var(G·Δ) + 2 Cov, mostly cancelling where a
+    // record is used on all its sides).
+    const double rec = use.tally.recordVariance(*cache, kPi / static_cast<double>(cells), &counts);
+    var += rec;
   }
   est.variancePhotopic = var;
   flushRays();

@@ -118,8 +118,15 @@ class Tracer {
   // (Ward et al. 1988's R_i); infinity when every ray escapes.
   double harmonicMeanDistance(const CacheQuery& q, int rays, Rng& rng) const;
   // Fills r.e, its gradients and variance from s.cache.recordSamples hemisphere rays, random
-  // stream `stream`; deeper bounces are path traced with Russian roulette (the closure).
-  void computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s) const;
+  // stream `stream`; r lies at diffuse bounce `level` (1: a sensor ray's first hit). The first
+  // diffuse hits of its rays take their indirect irradiance from `deeper` when given (a frozen
+  // second-level cache); beyond, bounces are path traced with Russian roulette (the closure).
+  void computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                     const IrradianceCache* deeper = nullptr, int level = 1) const;
+  // The first diffuse hits, on surfaces the cache serves, of the hemisphere rays that
+  // computeRecord(r, stream, s, ...) will trace (same directions), appended to out.
+  void recordQueries(const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                     std::vector<CacheQuery>& out) const;
   // Whether a record may serve point p (normal n) on `shape`: the segment between the two
   // points, each lifted off its surface, meets no shape but theirs.
   bool cacheVisible(const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) const;
@@ -160,16 +167,15 @@ class Tracer {
   // takes `split` stratified continuations.
   // misCosPdf: density (per sr) of the cosine sampling that drew dir, for the sky's MIS weight
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
-  // cache: at the first diffuse vertex (diffuse == 0) of a cacheable material, the indirect
+  // cache: at the diffuse vertex diffuse == cache->depth of a cacheable material, the indirect
   // irradiance comes from it (CacheUse records the error share and misses). firstHitT: the
   // distance to the first surface met (infinity when none). mirrorsBefore: flat mirrors met since
   // the last diffuse vertex, before a trans surface's specular transmission continued the path.
   struct CacheUse {
     const IrradianceCache* cache = nullptr;
-    // Coefficient of each record's photopic value in the sum of the rays' radiances
-    // (beta·ρ/π·normalised weight, accumulated over rays; merged per record at the end).
-    std::vector<std::pair<uint32_t, double>> coefficients;
-    double extrapolationSd = 0.0;  // Σ beta·ρ/π·σ_extrapolation over the rays (radiance units)
+    int depth = 0;  // the diffuse count at which the cache serves (0: sensor rays' first hits)
+    // Each record's share of each cell's radiance (beta·ρ/π·normalised weight·lookup vector).
+    CacheTally tally;
     IrradianceCache::Used scratch;
     int misses = 0;
   };

@@ -209,15 +209,19 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
   std::vector<SensorPoint> pts;
   for (Vec3 dir : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 0.6, 0.8), Vec3(0, 0, 1), Vec3(-0.6, 0, 0.8)})
     pts.push_back({d * dir, -dir});
-  const auto est = computeIrradiance(tracer, pts, cacheSettings(), 0);
   const double ew = analytic::sphereSource(L, r, 1.0, 1.0), ed = analytic::sphereSource(L, r, d, 1.0);
   // The black lamp takes a fraction r² of the light each wall point reflects: 1 − ρ(1 − r²).
   const double want = kLumensPerWatt * (ed + (1.0 - (r / d) * (r / d)) * rho * ew / (1.0 - rho * (1.0 - r * r)));
-  for (const auto& e : est) {
-    std::printf("[ measured ] integrating sphere: %.5g ± %.2g lux, closed form %.5g lux\n", e.illuminanceLux(),
-                e.standardErrorLux(), want);
-    EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
-    EXPECT_NEAR(e.illuminanceLux(), want, 0.02 * want);
+  // Two levels: the second bounce from a second cache, the rest still path traced (closure).
+  for (int levels : {1, 2}) {
+    TraceSettings s = cacheSettings();
+    s.cache.levels = levels;
+    for (const auto& e : computeIrradiance(tracer, pts, s, 0)) {
+      std::printf("[ measured ] integrating sphere, %d level(s): %.5g ± %.2g lux, closed form %.5g lux\n", levels,
+                  e.illuminanceLux(), e.standardErrorLux(), want);
+      EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux()) << levels;
+      EXPECT_NEAR(e.illuminanceLux(), want, 0.02 * want) << levels;
+    }
   }
 }
 
@@ -228,12 +232,15 @@ TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
   const Tracer tracer(sc);
   std::vector<SensorPoint> pts;
   for (int i = 0; i < 12; ++i) pts.push_back({Vec3(0.05 * i - 0.3, 0.0, -0.5), Vec3(0, 0, -1)});
-  const TraceSettings s = cacheSettings(256);
-  const auto one = computeIrradiance(tracer, pts, s, 1);
-  const auto two = computeIrradiance(tracer, pts, s, 2);
-  for (size_t i = 0; i < pts.size(); ++i) {
-    EXPECT_EQ(one[i].illuminanceLux(), two[i].illuminanceLux()) << i;
-    EXPECT_EQ(one[i].standardErrorLux(), two[i].standardErrorLux()) << i;
+  for (int levels : {1, 2}) {
+    TraceSettings s = cacheSettings(256);
+    s.cache.levels = levels;
+    const auto one = computeIrradiance(tracer, pts, s, 1);
+    const auto two = computeIrradiance(tracer, pts, s, 2);
+    for (size_t i = 0; i < pts.size(); ++i) {
+      EXPECT_EQ(one[i].illuminanceLux(), two[i].illuminanceLux()) << levels << " " << i;
+      EXPECT_EQ(one[i].standardErrorLux(), two[i].standardErrorLux()) << levels << " " << i;
+    }
   }
 }
 
@@ -260,8 +267,10 @@ TEST(IrradianceCacheMethod, NearContactAgreesWithThePathTracer) {
                                   {Vec3(1.2, 0, h), Vec3(-1, 0, 0)}, {Vec3(0.3, 0.3, h), Vec3(0, 0, 1)}};
   TraceSettings path = cacheSettings(2048);
   path.method = Method::kPath;
-  const auto c = computeIrradiance(tracer, pts, cacheSettings(2048), 0);
   const auto p = computeIrradiance(tracer, pts, path, 0);
+  // One level only: with two (levels = 2, not a preset's) two of these points disagree by 9 and
+  // 16 % (docs/accuracy.md, "Not done").
+  const auto c = computeIrradiance(tracer, pts, cacheSettings(2048), 0);
   for (size_t i = 0; i < pts.size(); ++i) expectAgree(c[i], p[i], 0.0, "near contact");
 }
 
