@@ -71,15 +71,35 @@ SunSet indirectSunSet(const AnnualSky& sky, int subdivision) {
     sum[patchOf[h]] += sky.hours[h].sunDirTrue;
   }
   SunSet set;
-  std::vector<int> indexOfPatch(coarse.count(), -1);
   for (int p = 0; p < coarse.count(); ++p)
-    if (glm::length(sum[p]) > 0.0) {
-      indexOfPatch[p] = static_cast<int>(set.dirsTrue.size());
-      set.dirsTrue.push_back(glm::normalize(sum[p]));
+    if (glm::length(sum[p]) > 0.0) set.dirsTrue.push_back(glm::normalize(sum[p]));
+  std::array<int, SunSet::kNearest> none;
+  none.fill(-1);
+  set.nearest.assign(sky.hours.size(), none);
+  set.weight.assign(sky.hours.size(), std::array<float, SunSet::kNearest>{});
+  for (size_t h = 0; h < sky.hours.size(); ++h) {
+    if (patchOf[h] < 0) continue;
+    const Vec3& sun = sky.hours[h].sunDirTrue;
+    // The kNearest positions by angle (a few hundred: a plain scan).
+    std::array<double, SunSet::kNearest> best;
+    best.fill(1e300);
+    auto& idx = set.nearest[h];
+    for (size_t j = 0; j < set.dirsTrue.size(); ++j) {
+      const double a = std::acos(std::clamp(glm::dot(sun, set.dirsTrue[j]), -1.0, 1.0));
+      for (int k = 0; k < SunSet::kNearest; ++k)
+        if (a < best[k]) {
+          for (int m = SunSet::kNearest - 1; m > k; --m) best[m] = best[m - 1], idx[m] = idx[m - 1];
+          best[k] = a;
+          idx[k] = static_cast<int>(j);
+          break;
+        }
     }
-  set.ofHour.assign(sky.hours.size(), -1);
-  for (size_t h = 0; h < sky.hours.size(); ++h)
-    if (patchOf[h] >= 0) set.ofHour[h] = indexOfPatch[patchOf[h]];
+    double sum = 0.0;
+    std::array<double, SunSet::kNearest> w{};
+    for (int k = 0; k < SunSet::kNearest; ++k)
+      if (idx[k] >= 0) sum += w[k] = 1.0 / (best[k] * best[k] + 1e-8);
+    for (int k = 0; k < SunSet::kNearest; ++k) set.weight[h][k] = idx[k] >= 0 ? static_cast<float>(w[k] / sum) : 0.0f;
+  }
   return set;
 }
 
@@ -159,7 +179,7 @@ AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::v
   const size_t nsun = sun.size(), nset = sunSet.dirsTrue.size();
   if (sunCoefficients.size() != static_cast<size_t>(dc.sensors) * nsun)
     throw std::invalid_argument("direct sun coefficients: wrong size");
-  if (sunIndirect.size() != static_cast<size_t>(dc.sensors) * nset || sunSet.ofHour.size() != sky.hours.size())
+  if (sunIndirect.size() != static_cast<size_t>(dc.sensors) * nset || sunSet.nearest.size() != sky.hours.size())
     throw std::invalid_argument("interreflected sun coefficients: wrong size");
 
   AnnualIlluminance out;
@@ -190,8 +210,10 @@ AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::v
         const int h = sun[j];
         const double edn = sky.hours[h].directNormalLux;
         const double direct = sc[j] * edn;
-        const int k = sunSet.ofHour[h];
-        const double inter = k >= 0 ? si[k] * edn : 0.0;
+        double inter = 0.0;
+        for (int k = 0; k < SunSet::kNearest; ++k)
+          if (sunSet.nearest[h][k] >= 0) inter += sunSet.weight[h][k] * si[sunSet.nearest[h][k]];
+        inter *= edn;
         ds[h] = static_cast<float>(direct);
         es[h] += static_cast<float>(direct + inter);
       }

@@ -3,14 +3,15 @@
 //
 //   E(s, h) = Σ_p DC(s, p) L(p, h)                    sky and ground patches
 //           + S(s, h) E_sun,n(h)                      direct sun at its actual position
-//           + I(s, j(h)) E_sun,n(h)                   the sun's interreflected light
+//           + Σ_j w_j(h) I(s, j) E_sun,n(h)           the sun's interreflected light
 //
 // DC(s, p) is the illuminance at sensor s from a luminance of 1 cd/m² over patch p (lux per
 // cd/m²), traced with the point-study estimator (Tracer::skyCoefficients). The sun is not
 // spread over a patch: S(s, h) is the cosine-weighted visible fraction of the 0.533° disc at the
 // hour's actual position, so sun patches and ASE have sharp edges; I(s, j) is the interreflected
 // illuminance per lux of direct normal illuminance from sun position j of a set that covers the
-// year's sun path (the mean position of the hours whose sun lies in each patch of Reinhart's MF:2), traced
+// year's sun path (the mean position of the hours whose sun lies in each patch of Reinhart's MF:2),
+// interpolated between the positions nearest to the hour's sun, traced
 // with a shadow ray to every sun at every diffuse vertex (Tracer::sunCoefficients).
 #pragma once
 
@@ -18,6 +19,7 @@
 #include "photometry/annual_sky.h"
 #include "photometry/sky_patches.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -33,9 +35,16 @@ struct DaylightCoefficients {
 
 // Sun positions standing for the year's suns in the interreflected term: the normalised mean
 // direction of the sun-up hours (with direct light) in each patch of SkyPatches(subdivision).
+// An hour's interreflected sun is interpolated between the set's positions nearest to its sun,
+// weighted by inverse squared angular distance (a stand-in alone moved the sun patch on a floor
+// enough for 3–5 % errors at a March morning sun in a side-lit room; tests).
 struct SunSet {
+  static constexpr int kNearest = 3;
   std::vector<Vec3> dirsTrue;  // unit, true frame
-  std::vector<int> ofHour;     // per hour of the sky: index into dirsTrue, -1 without direct sun
+  // Per hour of the sky: indices into dirsTrue (-1: none; all -1 without direct sun) and weights
+  // summing to 1.
+  std::vector<std::array<int, kNearest>> nearest;
+  std::vector<std::array<float, kNearest>> weight;
 };
 // Reinhart MF:2 (6° rows): with Tregenza's 12° patches the stand-in sun moved the sun patch on
 // a floor enough for errors of 5–13 % in a side-lit room at a low sun (tests).

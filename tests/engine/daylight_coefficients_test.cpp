@@ -199,7 +199,7 @@ TEST_F(DaylightCoefficientsVsPointInTime, SkyAndSunWithinThreePercent) {
   std::vector<Vec3> setModel;
   for (const Vec3& d : set.dirsTrue) setModel.push_back(trueToModel(d, 0.0));
   const std::vector<float> sunIndirect =
-      indirectSunCoefficients(dcTracer, positions, normals, setModel, plainSettings(1024, 16), 0);
+      indirectSunCoefficients(dcTracer, positions, normals, setModel, plainSettings(4096, 16), 0);
   std::printf("[ measured ] %zu suns stand for the year's interreflected sun\n", set.dirsTrue.size());
   const AnnualIlluminance year = annualIlluminance(dc, sunCoef, sunIndirect, set, *sky_, 0);
 
