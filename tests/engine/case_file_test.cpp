@@ -117,6 +117,44 @@ TEST(CaseFile, DefaultsOfAMinimalCase) {
   EXPECT_EQ(c.output.dir, (casesDir() / "out").lexically_normal());
 }
 
+TEST(CaseFile, AnnualKeysAndTheirDefaults) {
+  const fs::path path = casesDir() / "errors" / "annual.toml";  // relative paths resolve from here
+  const std::string head = "[sky]\ntype = \"annual\"\nweather = \"../../epw/synthetic_golden_2026.epw\"\n";
+  const CaseFile d = parseCaseFile(head, path);
+  EXPECT_EQ(d.sky.type, SkyType::kAnnual);
+  EXPECT_FALSE(d.annual.present);
+  EXPECT_EQ(d.annual.occupancyStartHour, 8.0);
+  EXPECT_EQ(d.annual.occupancyEndHour, 18.0);
+  EXPECT_EQ(d.annual.daThresholdLux, 300.0);
+  EXPECT_EQ(d.annual.udiLowLux, 100.0);
+  EXPECT_EQ(d.annual.udiHighLux, 3000.0);
+  EXPECT_EQ(d.annual.sdaFraction, 0.5);
+  EXPECT_EQ(d.annual.aseThresholdLux, 1000.0);
+  EXPECT_EQ(d.annual.aseHours, 250.0);
+  EXPECT_EQ(d.annual.skySubdivision, 1);
+  EXPECT_TRUE(d.annual.blinds);
+  EXPECT_FALSE(d.annual.reportSensor.has_value());
+  const CaseFile c = parseCaseFile(head + "[annual]\noccupancy_start = \"07:30\"\noccupancy_end = \"17:45\"\n"
+                                          "da_threshold = 500\nudi_low = 200\nudi_high = 2500\nsda_fraction = 0.6\n"
+                                          "ase_threshold = 1200\nase_hours = 100\nsky_subdivision = 2\nsun_samples = 9\n"
+                                          "blinds = false\nreport_sensor = 17\n",
+                                   path);
+  EXPECT_TRUE(c.annual.present);
+  EXPECT_EQ(c.annual.occupancyStartHour, 7.5);
+  EXPECT_EQ(c.annual.occupancyEndHour, 17.75);
+  EXPECT_EQ(c.annual.daThresholdLux, 500.0);
+  EXPECT_EQ(c.annual.udiLowLux, 200.0);
+  EXPECT_EQ(c.annual.udiHighLux, 2500.0);
+  EXPECT_EQ(c.annual.sdaFraction, 0.6);
+  EXPECT_EQ(c.annual.aseThresholdLux, 1200.0);
+  EXPECT_EQ(c.annual.aseHours, 100.0);
+  EXPECT_EQ(c.annual.skySubdivision, 2);
+  EXPECT_EQ(c.annual.sunSamples, 9);
+  EXPECT_FALSE(c.annual.blinds);
+  EXPECT_EQ(c.annual.reportSensor.value_or(-1), 17);
+  EXPECT_EQ(c.annual.reportSensorLoc.line, 16);  // the 16th line of the text
+}
+
 struct ErrorCase {
   const char* file;
   int line;
@@ -163,7 +201,11 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"bad_time.toml", 3, "'time' must read YYYY-MM-DDTHH:MM"},
                     ErrorCase{"border_eats_grid.toml", 3, "leaves no area"},
                     ErrorCase{"bad_latitude.toml", 2, "'latitude' must be between -90 and 90"},
-                    ErrorCase{"bad_uniformity.toml", 4, "'target_uniformity' must be between 0 and 1"}),
+                    ErrorCase{"bad_uniformity.toml", 4, "'target_uniformity' must be between 0 and 1"},
+                    ErrorCase{"annual_bad_clock.toml", 6, "'occupancy_start' must be a time of day"},
+                    ErrorCase{"annual_occupancy_order.toml", 5, "'occupancy_end' must be later than 'occupancy_start'"},
+                    ErrorCase{"annual_threshold_order.toml", 5, "udi_low < da_threshold < udi_high"},
+                    ErrorCase{"annual_subdivision.toml", 6, "'sky_subdivision' must be between 1 and 8"}),
     [](const testing::TestParamInfo<ErrorCase>& info) {
       std::string n = info.param.file;
       return n.substr(0, n.find('.'));
