@@ -10,6 +10,7 @@ std::vector<Case> daylightCases();
 std::vector<Case> luminaireCases();
 std::vector<Case> stabilityCases();
 std::vector<Case> indirectCases();
+std::vector<Case> annualCases();
 
 double CaseResult::maxRelativeError() const {
   double m = 0.0;
@@ -28,6 +29,7 @@ std::vector<Case> allCases() {
   std::vector<Case> all = engineCases();
   for (Case& c : luminaireCases()) all.push_back(std::move(c));
   for (Case& c : daylightCases()) all.push_back(std::move(c));
+  for (Case& c : annualCases()) all.push_back(std::move(c));
   for (Case& c : stabilityCases()) all.push_back(std::move(c));
   for (Case& c : indirectCases()) all.push_back(std::move(c));
   return all;
