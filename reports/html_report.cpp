@@ -228,7 +228,7 @@ std::string htmlReport(const ReportData& data) {
   for (std::size_t i = 0; i < data.grids.size(); ++i) {
     const GridReport& g = data.grids[i];
     const std::string u = unitText(g.unit);
-    h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << xmlEscape(g.name) << "</a></td><td class=\"num\">"
+    h << "<tr><td><a href=\"#" << (g.annual ? "annual-" : "grid-") << i + 1 << "\">" << xmlEscape(g.name) << "</a></td><td class=\"num\">"
       << g.stats.count << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
       << valueText(g.stats.minimumLux) << u << "</td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
       << "</td><td class=\"num\">" << formatFixed(g.stats.u0, 2) << "</td><td class=\"num\">"
@@ -241,6 +241,12 @@ std::string htmlReport(const ReportData& data) {
   // One section per grid: plan and metrics.
   for (std::size_t i = 0; i < data.grids.size(); ++i) {
     const GridReport& g = data.grids[i];
+    if (g.annual) {
+      // Annual grids: their own section carries the DA plan and every metric (an illuminance
+      // table of Emin, U0, ... would name the wrong quantities).
+      annualSection(h, g, i, run, data.northDeg);
+      continue;
+    }
     const std::string u = unitText(g.unit);
     h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
       << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << xmlEscape(g.quantity) << " in " << xmlEscape(g.unit);
@@ -279,7 +285,6 @@ std::string htmlReport(const ReportData& data) {
         << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
     h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
     h << "</tbody>\n</table>\n</div>\n</div>\n</section>\n";
-    if (g.annual) annualSection(h, g, i, run, data.northDeg);
   }
 
   // Calculation settings and timing.
