@@ -7,6 +7,7 @@
 //  - Hours and occupancy: 8760 records, 3650 occupied hours (08–18).
 //  - A sensor facing down over a black ground sees nothing at all, every hour.
 #include "engine/daylight_coefficients.h"
+#include "engine/rad_reader.h"
 #include "metrics/annual.h"
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"
@@ -112,6 +113,65 @@ TEST(AnnualPipeline, OpenSensorsOverTheTestYear) {
   // ASE looks at the direct sun alone, which the sky's patches do not touch.
   EXPECT_NEAR(got.aseHours, want.aseHours, 0.01 * want.aseHours);
   EXPECT_EQ(got.sunHours, want.sunHours);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(AnnualPipeline, SameNumbersForAnyThreadCount) {
+  // A side-lit room's coefficients and year, on 1 and 2 threads: identical bits.
+  Scene scene;
+  readRadianceText("void plastic w 0 0 5 0.5 0.5 0.5 0 0\nvoid glass g 0 0 3 0.9 0.9 0.9\n"
+                   "w polygon floor 0 0 12 0 0 0 0 3 0 3 3 0 3 0 0\n"
+                   "w polygon ceiling 0 0 12 0 0 2.5 3 0 2.5 3 3 2.5 0 3 2.5\n"
+                   "w polygon north 0 0 12 0 3 0 0 3 2.5 3 3 2.5 3 3 0\n"
+                   "w polygon west 0 0 12 0 0 0 0 0 2.5 0 3 2.5 0 3 0\n"
+                   "w polygon east 0 0 12 3 0 0 3 3 0 3 3 2.5 3 0 2.5\n"
+                   "w polygon south_low 0 0 12 0 0 0 3 0 0 3 0 1 0 0 1\n"
+                   "g polygon pane 0 0 12 0 0 1 3 0 1 3 0 2.5 0 0 2.5\n",
+                   "room.rad", scene);
+  const EpwFile epw = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
+  const Site site = makeSite(epw.location.latitudeDeg, epw.location.longitudeDeg, epw.location.elevationM,
+                             epw.location.timezoneHours, 30.0);
+  const AnnualSky sky = makeAnnualSky(epw, site, AnnualSkyOptions{});
+  SkyDome dome;
+  dome.model = yearSamplingGuide(sky);
+  dome.northDeg = 30.0;
+  scene.sky = dome;
+  const Tracer tracer(scene);
+  const SkyPatches patches(sky.subdivision);
+  TraceSettings s;
+  s.hemisphereSamples = 64;
+  s.lightSamples = 4;
+  s.maxBounces = kUnlimitedBounces;
+  std::vector<Vec3> pos, nrm;
+  for (int i = 0; i < 6; ++i) {
+    pos.emplace_back(0.4 + 0.4 * i, 0.3 + 0.4 * i, 0.8);
+    nrm.emplace_back(0, 0, 1);
+  }
+  const SunSet set = indirectSunSet(sky);
+  std::vector<Vec3> setModel;
+  for (const Vec3& d : set.dirsTrue) setModel.push_back(trueToModel(d, 30.0));
+  auto yearOn = [&](int threads) {
+    const DaylightCoefficients dc = computeDaylightCoefficients(tracer, pos, nrm, patches, s, threads);
+    const std::vector<float> direct =
+        directSunCoefficients(tracer, pos, nrm, sunDirectionsModel(sky, 30.0), 2, 5, threads);
+    const std::vector<float> inter = indirectSunCoefficients(tracer, pos, nrm, setModel, s, threads);
+    return annualIlluminance(dc, direct, inter, set, sky, threads).total;
+  };
+  const std::vector<float> one = yearOn(1), two = yearOn(2);
+  ASSERT_EQ(one.size(), two.size());
+  size_t differ = 0;
+  double sum = 0.0;
+  for (size_t i = 0; i < one.size(); ++i) {
+    differ += one[i] != two[i];
+    sum += one[i];
+  }
+  EXPECT_GT(sum, 0.0);
+  EXPECT_EQ(differ, 0u);
 }
 
 }  // namespace
