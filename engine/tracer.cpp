@@ -111,28 +111,41 @@ void thinGlass(const Material& m, double cosI, Rgb& trans, Rgb& refl) {
   }
 }
 
-// Variance of E = π/(MN) Σ y over M × N strata with one sample each (y photopic radiance, cell
-// j·N + k). One sample per stratum gives no direct variance estimate; with three or more φ
-// strata per row, the second differences along φ (wrapping) are used: for y_k = μ_k + ε_k,
-// E[(y_k−1 − 2y_k + y_k+1)²] = (curvature of μ)² + σ²_k−1 + 4σ²_k + σ²_k+1, so Σ d²/6 bounds
-// Σ σ² from above, and unlike collapsed pairs (Cochran, "Sampling Techniques", 5A.12) a smooth
-// linear trend adds nothing. Fewer φ strata: collapsed pairs, Σ (y_a − y_b)²/2 per pair.
-// counts (optional): samples averaged in each cell (adaptive super-sampling); a cell's share is
-// divided by its count, the variance of a mean of that many samples from the cell.
-double stratifiedVariance(const std::vector<double>& y, int m, int n, const std::vector<int>* counts = nullptr) {
+// Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k). One sample
+// per stratum gives no direct variance estimate; with three or more φ strata per row, the second
+// differences along φ (wrapping) are used: for y_k = μ_k + ε_k, E[(y_k−1 − 2y_k + y_k+1)²] =
+// (curvature of μ)² + σ²_k−1 + 4σ²_k + σ²_k+1, so Σ d²/6 bounds Σ σ² from above, and unlike
+// collapsed pairs (Cochran, "Sampling Techniques", 5A.12) a smooth linear trend adds nothing.
+// Fewer φ strata: collapsed pairs, Σ (y_a − y_b)²/2 per pair.
+// Cells refined by adaptive super-sampling (ownBetween not NaN) take their own estimate of the
+// variance of their mean instead (Tracer::irradiance): ownBetween ≥ 0 and ownWithin, unbiased but
+// of either sign, whose sum is clamped at 0 (it estimates a sum of variances). Their second
+// differences would not do: these cells lie where the radiance steps (that is why they were
+// refined), so the curvature term, which refinement does not shrink, would dominate the small
+// variance of their means (3.5× the measured variance under a roof opening), and dividing it by
+// the cell's count, as was done, undercounted cells where the edge runs along φ (¼ of it).
+double stratifiedVariance(const std::vector<double>& y, int m, int n, const std::vector<double>* ownBetween = nullptr,
+                          const std::vector<double>* ownWithin = nullptr) {
   const double cells = static_cast<double>(y.size());
   if (y.empty()) return 0.0;
-  double sumVar = 0.0;
+  double sumVar = 0.0, sumWithin = 0.0;
+  auto refined = [&](size_t c) { return ownBetween && !std::isnan((*ownBetween)[c]); };
   if (n >= 3 && static_cast<size_t>(m) * n == y.size()) {
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < n; ++k) {
-        const double d = y[j * n + (k + n - 1) % n] - 2.0 * y[j * n + k] + y[j * n + (k + 1) % n];
-        sumVar += d * d / 6.0 / (counts ? (*counts)[j * n + k] : 1);
+        const int c = j * n + k;
+        if (refined(c)) {
+          sumVar += (*ownBetween)[c];
+          sumWithin += (*ownWithin)[c];
+          continue;
+        }
+        const double d = y[j * n + (k + n - 1) % n] - 2.0 * y[c] + y[j * n + (k + 1) % n];
+        sumVar += d * d / 6.0;
       }
   } else {
     for (size_t c = 0; c + 1 < y.size(); c += 2) sumVar += (y[c] - y[c + 1]) * (y[c] - y[c + 1]);
   }
-  return kPi * kPi * sumVar / (cells * cells);
+  return kPi * kPi * (sumVar + std::max(0.0, sumWithin)) / (cells * cells);
 }
 
 }  // namespace
@@ -979,11 +992,13 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   const int cells = mTheta * nPhi;
   const Frame frame = Frame::fromNormal(n);
   thread_local std::vector<Rgb> value;
-  thread_local std::vector<double> y, diff;
+  thread_local std::vector<double> y, diff, ownBetween, ownWithin;
   thread_local std::vector<int> order, counts;
   value.assign(cells, Rgb(0.0));
   y.assign(cells, 0.0);
   counts.assign(cells, 1);
+  ownBetween.assign(cells, std::numeric_limits<double>::quiet_NaN());
+  ownWithin.assign(cells, 0.0);
   auto sampleCell = [&](int cell, double su, double sv, int sub) {
     // Jittered sample of sub-stratum (su, sv) of `sub`×`sub` inside the cell.
     const int j = cell / nPhi, k = cell % nPhi;
@@ -1027,8 +1042,26 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
     for (int r = 0; r < refine; ++r) {
       const int c = order[r];
       if (diff[c] <= 0.0) break;
+      // The variance of this cell's mean ȳ = (y0 + Σ y_q)/(1 + m) of its first sample y0 (over
+      // the whole cell: mean μ, variance σ²) and one sample y_q in each of its m sub-strata
+      // (means μ_q, variances σ_q²), all independent: Var(ȳ) = (σ² + W)/(1 + m)², W = Σ σ_q².
+      // With ȳ_s the sub-samples' mean, S = Σ (y_q − ȳ_s)² and A = (y0 − ȳ_s)²:
+      // E[S] = B + (1 − 1/m) W, B = Σ (μ_q − μ)², and E[A] = σ² + W/m², σ² = (W + B)/m; so
+      // Ŵ = m (m A − S)/2 is unbiased for W, and Var(ȳ) = (S/m + (1 + 1/m²) Ŵ)/(1 + m)² in
+      // expectation. The S part is kept apart, Ŵ's (of either sign) summed over cells first.
       Rgb acc = value[c];
-      for (int q = 0; q < sub * sub; ++q) acc += sampleCell(c, q / sub, q % sub, sub);
+      double ySub[sub * sub], mean = 0.0;
+      for (int q = 0; q < sub * sub; ++q) {
+        const Rgb v = sampleCell(c, q / sub, q % sub, sub);
+        acc += v;
+        ySub[q] = photopic(v);
+        mean += ySub[q] / (sub * sub);
+      }
+      const double mm = sub * sub, a = (y[c] - mean) * (y[c] - mean), norm = (1.0 + mm) * (1.0 + mm);
+      double sq = 0.0;
+      for (int q = 0; q < sub * sub; ++q) sq += (ySub[q] - mean) * (ySub[q] - mean);
+      ownBetween[c] = sq / mm / norm;
+      ownWithin[c] = mm * (mm * a - sq) / 2.0 * (1.0 + 1.0 / (mm * mm)) / norm;
       value[c] = acc / static_cast<double>(1 + sub * sub);
       counts[c] = 1 + sub * sub;
       y[c] = photopic(value[c]);
@@ -1037,7 +1070,7 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   Rgb sum(0.0);
   for (int c = 0; c < cells; ++c) sum += value[c];
   est.irradiance += kPi * sum / static_cast<double>(cells);
-  const double strat = stratifiedVariance(y, mTheta, nPhi, &counts);
+  const double strat = stratifiedVariance(y, mTheta, nPhi, &ownBetween, &ownWithin);
   var += strat;
   if (cache && !use.tally.empty()) {
     // The cached share, by the law of total variance: Var(E) = E[Var(E | records)] +
