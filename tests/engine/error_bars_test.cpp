@@ -5,9 +5,13 @@
 // bound is 4 of those below 68 % (error bars too small: the dangerous side). Stratified
 // sampling has no unbiased variance estimate, so the path tracer's are upper bounds
 // (engine/tracer.cpp, stratifiedVariance); its upper bound, 90 %, says they are not grossly
-// inflated (a bar 1.6× too wide covers 95 %). The cache's bars are held to 68 % ± 3 binomial
-// standard deviations both ways (61–75 %): a bar 20 % too wide covers 77 %, 20 % too narrow
-// 59 %. Measured shares are printed and listed in docs/accuracy.md.
+// inflated (a bar 1.6× too wide covers 95 %). Estimates whose variance is unbiasedly estimated
+// (the cache's records; strata refined by adaptive super-sampling, which carry the variance
+// under small sky openings) are held to 68 % ± 3 binomial standard deviations both ways
+// (61–75 %): a bar 20 % too wide covers 77 %, 20 % too narrow 59 %. Measured shares are printed
+// and listed in docs/accuracy.md.
+#include "engine/daylight.h"
+#include "engine/rad_reader.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"
@@ -16,6 +20,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -25,9 +30,9 @@ namespace {
 
 constexpr int kSeeds = 400;
 constexpr double kLo = 0.68 - 4 * 0.0233, kHi = 0.90;
-// The cache: 68 % ± 3 binomial standard deviations of a share over kSeeds results.
-const double kCacheSd = std::sqrt(0.68 * 0.32 / kSeeds);
-const double kCacheLo = 0.68 - 3 * kCacheSd, kCacheHi = 0.68 + 3 * kCacheSd;
+// Calibrated bars: 68 % ± 3 binomial standard deviations of a share over kSeeds results.
+const double kBandSd = std::sqrt(0.68 * 0.32 / kSeeds);
+const double kBandLo = 0.68 - 3 * kBandSd, kBandHi = 0.68 + 3 * kBandSd;
 
 uint32_t addMat(Scene& sc, MaterialType t, double v) {
   Material m;
@@ -156,8 +161,8 @@ TEST(ErrorBars, IrradianceCacheCoversItsShare) {
       t.seed = seed;
       return computeIrradiance(ts, pts, t, 1)[0];
     }, sphereExact(rho), what.c_str());
-    EXPECT_GE(a, kCacheLo) << rho;
-    EXPECT_LE(a, kCacheHi) << rho;
+    EXPECT_GE(a, kBandLo) << rho;
+    EXPECT_LE(a, kBandHi) << rho;
   }
 }
 
@@ -181,6 +186,75 @@ TEST(ErrorBars, TargetErrorReachesItsTargetAndCoversItsShare) {
   EXPECT_LE(worst, 0.01);
   EXPECT_GE(a, kLo);
   EXPECT_LE(a, kHi);
+}
+
+
+// An infinite black roof 3 m up with a 1 m × 1.5 m opening over [−0.5, 0.5] × [−0.75, 0.75]
+// (validation case roof-opening-uniform-sky) under a uniform sky of 10000 lux, or (window) a
+// 2 m × 1 m window (z 1–2 m) in an infinite black wall x = 0 with a black ceiling at its head
+// under the CIE overcast sky (side-window-overcast-sky). Every hemisphere ray that sees the sky
+// carries L or 0, so the variance sits in the few strata cut by the aperture's edge, which are
+// the ones adaptive super-sampling refines.
+Scene apertureScene(const char* rad, const char* sky) {
+  Scene scene;
+  readRadianceText(rad, "<aperture>", scene);
+  DaylightSpec d;
+  d.skyType = sky;
+  d.sunAltitudeDeg = 35.0;
+  d.sunAzimuthDeg = 200.0;
+  d.diffuseHorizontalLux = 10000.0;
+  d.groundReflectance = 0.0;
+  addDaylight(scene, d);
+  return scene;
+}
+constexpr const char* kRoof =
+    "void plastic black 0 0 5 0 0 0 0 0\n"
+    "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
+    "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
+    "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
+    "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n";
+constexpr const char* kWindow =
+    "void plastic black 0 0 5 0 0 0 0 0\n"
+    "black polygon w1 0 0 12 0 -1e4 -1e4  0 1e4 -1e4  0 1e4 1  0 -1e4 1\n"
+    "black polygon w2 0 0 12 0 -1e4 2  0 1e4 2  0 1e4 1e4  0 -1e4 1e4\n"
+    "black polygon w3 0 0 12 0 -1e4 1  0 -1 1  0 -1 2  0 -1e4 2\n"
+    "black polygon w4 0 0 12 0 1 1  0 1e4 1  0 1e4 2  0 1 2\n"
+    "black polygon ceiling 0 0 12 0 -1e4 2  1e4 -1e4 2  1e4 1e4 2  0 1e4 2\n";
+
+TEST(ErrorBars, SmallSkyOpeningsCoverTheirShareAtNormalQuality) {
+  // Normal quality's settings (2048 hemisphere samples, 64 sky samples, adaptive fraction 0.5).
+  // Under the roof opening nearly all the variance is in refined strata, whose bars come from
+  // their own samples (an unbiased estimate): held to 68 % ± 3 binomial σ both ways (61–75 %).
+  // Before, their second differences of means divided by the count covered 41 % at (0, 0).
+  // Through the side window the sky samples and unrefined strata matter too (upper bounds):
+  // the path tracer's band (59–90 %).
+  const Scene roof = apertureScene(kRoof, "uniform"), window = apertureScene(kWindow, "cie-overcast");
+  const Tracer tr(roof), tw(window);
+  const TraceSettings s = settingsForQuality(Quality::kNormal);
+  auto at = [&](const Tracer& t, const Vec3& p) {
+    return [&t, p, &s](uint64_t seed) {
+      TraceSettings u = s;
+      u.seed = seed;
+      return t.irradiance(p, Vec3(0, 0, 1), 0, u);
+    };
+  };
+  const double L = 10000.0 / kPi;  // a uniform sky of 10000 lux on the open horizontal plane
+  for (auto [x, y] : {std::pair{0.0, 0.0}, {0.5, 0.75}, {2.0, 1.0}}) {
+    const std::string what = "normal, under the roof opening at (" + std::to_string(x).substr(0, 3) + ", " +
+                             std::to_string(y).substr(0, 4) + ")";
+    const double exact = analytic::rectangleAbove(L, -0.5, -0.75, 0.5, 0.75, 3.0, x, y);
+    const double a = coverage(at(tr, Vec3(x, y, 0)), exact, what.c_str());
+    EXPECT_GE(a, kBandLo) << what;
+    EXPECT_LE(a, kBandHi) << what;
+  }
+  for (double x : {1.0, 4.0}) {
+    const double p[3] = {x, 0.3, 0.8}, up[3] = {0, 0, 1}, c[3] = {0, -1, 1}, u[3] = {0, 2, 0}, v[3] = {0, 0, 1};
+    const std::string what = "normal, side window, " + std::to_string(x).substr(0, 3) + " m in";
+    const double a = coverage(at(tw, Vec3(x, 0.3, 0.8)), analytic::overcastAperture(p, up, c, u, v, 10000.0, 1500),
+                              what.c_str());
+    EXPECT_GE(a, kLo) << what;
+    EXPECT_LE(a, kHi) << what;
+  }
 }
 
 }  // namespace
