@@ -190,6 +190,80 @@ void CacheTally::merge(const std::vector<int>* counts) {
   merged_ = true;
 }
 
+void CacheTally::secondDifferenceVariance(const IrradianceCache& cache, size_t end, int m, int n,
+                                          std::vector<double>& out) const {
+  out.assign(static_cast<size_t>(m * n), 0.0);
+  if (n < 3) return;
+  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  keys.clear();
+  for (size_t e = 0; e < end; ++e) keys.emplace_back(entries_[e].record, e);
+  std::sort(keys.begin(), keys.end());
+  thread_local std::vector<std::pair<int, RecordVector>> cellBeta;  // (cell, β summed)
+  for (size_t a = 0; a < keys.size();) {
+    size_t b = a;
+    cellBeta.clear();
+    for (; b < keys.size() && keys[b].first == keys[a].first; ++b) cellBeta.emplace_back(entries_[keys[b].second].cell, entries_[keys[b].second].beta);
+    std::sort(cellBeta.begin(), cellBeta.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    auto betaAt = [&](int cell) {
+      RecordVector v{};
+      auto it = std::lower_bound(cellBeta.begin(), cellBeta.end(), cell, [](const auto& x, int c) { return x.first < c; });
+      for (; it != cellBeta.end() && it->first == cell; ++it)
+        for (int k = 0; k < 7; ++k) v[k] += it->second[k];
+      return v;
+    };
+    const IrradianceRecord& r = cache.record(keys[a].first);
+    thread_local std::vector<int> centres;
+    centres.clear();
+    for (const auto& [cell, beta] : cellBeta) {
+      const int j = cell / n, k = cell % n;
+      for (int dk = -1; dk <= 1; ++dk) centres.push_back(j * n + (k + dk + n) % n);
+    }
+    std::sort(centres.begin(), centres.end());
+    centres.erase(std::unique(centres.begin(), centres.end()), centres.end());
+    for (int c : centres) {
+      const int j = c / n, k = c % n;
+      const RecordVector lo = betaAt(j * n + (k + n - 1) % n), mid = betaAt(c), hi = betaAt(j * n + (k + 1) % n);
+      RecordVector d;
+      for (int q = 0; q < 7; ++q) d[q] = lo[q] - 2.0 * mid[q] + hi[q];
+      out[c] += recordQuadratic(r, d);
+    }
+    a = b;
+  }
+}
+
+double CacheTally::spreadVariance(const IrradianceCache& cache, const std::vector<size_t>& marks) const {
+  const size_t m = marks.size() - 1;
+  if (m < 2) return 0.0;
+  // β_qi per (record, sample), summed over a sample's lookups of the same record.
+  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  keys.clear();
+  for (size_t q = 0; q < m; ++q)
+    for (size_t e = marks[q]; e < marks[q + 1]; ++e) keys.emplace_back(entries_[e].record, e);
+  std::sort(keys.begin(), keys.end());
+  double s = 0.0;
+  std::vector<RecordVector> perSample(m);
+  for (size_t a = 0; a < keys.size();) {
+    size_t b = a;
+    for (RecordVector& v : perSample) v.fill(0.0);
+    for (; b < keys.size() && keys[b].first == keys[a].first; ++b) {
+      const size_t e = keys[b].second;
+      const size_t q = static_cast<size_t>(std::upper_bound(marks.begin(), marks.end(), e) - marks.begin()) - 1;
+      for (int k = 0; k < 7; ++k) perSample[q][k] += entries_[e].beta[k];
+    }
+    RecordVector mean{};
+    for (const RecordVector& v : perSample)
+      for (int k = 0; k < 7; ++k) mean[k] += v[k] / static_cast<double>(m);
+    const IrradianceRecord& r = cache.record(keys[a].first);
+    for (const RecordVector& v : perSample) {
+      RecordVector d;
+      for (int k = 0; k < 7; ++k) d[k] = v[k] - mean[k];
+      s += recordQuadratic(r, d);
+    }
+    a = b;
+  }
+  return s;
+}
+
 double CacheTally::recordVariance(const IrradianceCache& cache, double scale, const std::vector<int>* counts) {
   if (!merged_) merge(counts);
   thread_local std::vector<std::pair<uint32_t, RecordVector>> perRecord;

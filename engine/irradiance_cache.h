@@ -104,11 +104,31 @@ class CacheTally {
  public:
   void clear() {
     entries_.clear();
+    cached_.clear();
     merged_ = false;
   }
   void setCell(int cell) { cell_ = cell; }
   void add(uint32_t record, const RecordVector& beta) { entries_.push_back({cell_, record, beta}); }
+  // The photopic radiance the current cell's samples took from the records (interpolated
+  // irradiance times the path's weight and ρ/π), summed per cell; cachedValue(c): 0 if none.
+  // Adaptive super-sampling chooses its strata without it (Tracer::irradiance).
+  void addCachedValue(double photopicRadiance) {
+    if (cell_ >= static_cast<int>(cached_.size())) cached_.resize(cell_ + 1, 0.0);
+    cached_[cell_] += photopicRadiance;
+  }
+  double cachedValue(int cell) const { return cell < static_cast<int>(cached_.size()) ? cached_[cell] : 0.0; }
   bool empty() const { return entries_.empty(); }
+  // Entries so far (before recordVariance merges them): marks where a sample's lookups begin.
+  size_t mark() const { return entries_.size(); }
+  // The records' expected share of S = Σ_q (x_q − x̄)² over m samples (sample q's entries from
+  // marks[q] to marks[q + 1], x_q the photopic radiance it took from the records):
+  // E[S_rec] = Σ_i Σ_q (β_qi − β̄_i)ᵀ C_i (β_qi − β̄_i), the records independent.
+  // The records' expected share of each cell's squared second difference along φ over the
+  // entries before `end` (cells j·n + k, φ wrapping): out[c] = Σ_i d_ciᵀ C_i d_ci with
+  // d_ci = β_c−1,i − 2β_ci + β_c+1,i (n ≥ 3).
+  void secondDifferenceVariance(const IrradianceCache& cache, size_t end, int m, int n,
+                                std::vector<double>& out) const;
+  double spreadVariance(const IrradianceCache& cache, const std::vector<size_t>& marks) const;
   // Var(E) from the records (independent: their own random streams), Σ_i B_iᵀ C_i B_i with
   // B_i = scale Σ_c β̄_ci; counts: samples per cell (nullptr: one each). Records sharing
   // second-level records add (Σ_i |B_i,E| σ_shared,i)²: an upper bound (full correlation).
@@ -124,6 +144,7 @@ class CacheTally {
   int cell_ = 0;
   bool merged_ = false;
   std::vector<Entry> entries_;
+  std::vector<double> cached_;
 };
 
 struct CacheSettings {
