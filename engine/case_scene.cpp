@@ -67,7 +67,8 @@ DaylightSpec daylightFromCase(const CaseFile& c) {
   DaylightSpec d;
   if (!c.sky.present || c.sky.type == SkyType::kNone) return d;
   if (c.sky.type == SkyType::kAnnual)
-    throw InputError(c.sky.loc, "sky type 'annual' (climate-based annual metrics) is not supported yet");
+    throw InputError(c.sky.loc, "an annual sky is a whole year: `candela run` computes it (docs/annual.md); "
+                                "point and view commands need a point-in-time sky");
   d.skyType = skyTypeName(c.sky.type, c.sky.cieType);
   d.skyLoc = c.sky.loc;
   d.time = c.sky.time;

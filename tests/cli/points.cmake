@@ -24,3 +24,6 @@ candela_cli_test(points.bad_line 2 "points/bad_line.pts:3: a sensor point needs 
 candela_cli_test(points.bad_scene 2 "bad.rad:4: polygon 'panel' needs at least 3 vertices, got 2" ${PTS} points/bad.rad)
 candela_cli_test(points.missing_scene 2 "points/no_such.rad" ${PTS} points/no_such.rad)
 candela_cli_test(points.missing_points 2 "points/no_such.pts" points points/room.rad --points points/no_such.pts)
+# An annual case is a whole year: `points` refuses it at the [sky] line and points to `run`.
+candela_cli_test(points.annual_case 2 "annual/case.toml:8: an annual sky is a whole year: `candela run` computes it"
+                 ${PTS} --case ${PROJECT_SOURCE_DIR}/tests/cli/run/annual/case.toml)
