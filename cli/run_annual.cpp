@@ -60,6 +60,7 @@ int closeBlinds(Scene& scene) {
 struct YearRun {
   AnnualIlluminance year;
   double coefficientsS = 0.0;
+  uint64_t rays = 0;  // rays cast for the coefficients
 };
 
 YearRun traceYear(const Scene& scene, const std::vector<Vec3>& positions, const std::vector<Vec3>& normals,
@@ -93,6 +94,7 @@ YearRun traceYear(const Scene& scene, const std::vector<Vec3>& positions, const 
   }
   YearRun r;
   r.coefficientsS = secondsSince(t0);
+  r.rays = tracer.raysTraced();
   r.year = annualIlluminance(dc, direct, inter, sunSet, sky, threads);
   return r;
 }
@@ -219,6 +221,9 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
       {"threads", threads > 0 ? std::to_string(threads) : "all (" + std::to_string(usedThreads) + ")"},
       {"calculation points", std::to_string(positions.size())},
       {"sky vectors time", formatFixed(skyVectorsS, 2) + " s"},
+      {"rays for the coefficients", formatFixed((open.rays + (closed ? closed->rays : 0)) / 1e6, 1) + " M (" +
+                                        formatFixed((open.rays + (closed ? closed->rays : 0)) / 1e6 / coefficientsS, 2) +
+                                        " M rays/s)"},
   };
 
   std::vector<std::vector<ReportPoint>> csvPoints(grids.size());
