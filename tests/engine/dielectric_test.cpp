@@ -11,13 +11,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 namespace candela {
 namespace {
 
-namespace fs = std::filesystem;
 
 // ---------------------------------------------------------------- Fresnel and Snell
 
@@ -242,48 +240,6 @@ TEST(Dielectric, ShadowRaysDoNotPass) {
   const Tracer tracer(sc);
   EXPECT_EQ(photopic(tracer.transmittance(Vec3(0, 0, 0), Vec3(0, 0, 1), 2.0, kNoShape, kNoShape)), 0.0);
   EXPECT_EQ(photopic(tracer.transmittance(Vec3(0, 0, 0), Vec3(0, 0, 1), 0.5, kNoShape, kNoShape)), 1.0);
-}
-
-// ---------------------------------------------------------------- reading
-
-fs::path radDir() { return fs::path(CANDELA_TEST_DATA) / "rad"; }
-
-TEST(Dielectric, ReadsRadiancesPrimitive) {
-  Scene sc;
-  readRadianceText("void dielectric water\n0\n0\n5 0.9 0.95 0.98 1.33 0.01\n", "water.rad", sc);
-  ASSERT_EQ(sc.materials.size(), 1u);
-  const Material& m = sc.materials[0];
-  EXPECT_EQ(m.type, MaterialType::Dielectric);
-  EXPECT_STREQ(materialTypeName(m.type), "dielectric");
-  EXPECT_EQ(m.color, Rgb(0.9, 0.95, 0.98));
-  EXPECT_EQ(m.refractiveIndex, 1.33);
-  EXPECT_EQ(m.hartmannConstant, 0.01);
-}
-
-void expectFixtureError(const std::string& file, int line, const std::string& text) {
-  Scene sc;
-  const fs::path path = radDir() / file;
-  ASSERT_TRUE(fs::exists(path)) << path;
-  try {
-    readRadianceFile(path, sc);
-    ADD_FAILURE() << file << ": no error";
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(e.loc().line, line) << what;
-    EXPECT_EQ(what.rfind(path.string() + ":" + std::to_string(line) + ": ", 0), 0u) << what;
-    EXPECT_NE(what.find(text), std::string::npos) << "'" << what << "' lacks '" << text << "'";
-  }
-}
-
-TEST(Dielectric, ReaderErrors) {
-  expectFixtureError("dielectric_four_reals.rad", 1, "dielectric 'water' needs 5 real arguments, got 4");
-  expectFixtureError("dielectric_zero_index.rad", 2, "dielectric 'vacuum' needs a refractive index > 0");
-  expectFixtureError("dielectric_bad_transmission.rad", 7,
-                     "dielectric 'bright' needs a transmission per metre in (0, 1] for each channel");
-  // Zero transmission (opaque) is refused as well: the range is open at 0.
-  Scene sc;
-  EXPECT_THROW(readRadianceText("void dielectric black 0 0 5 0 1 1 1.5 0\n", "t.rad", sc), InputError);
-  EXPECT_THROW(readRadianceText("void dielectric neg 0 0 5 1 1 1 -1.5 0\n", "t.rad", sc), InputError);
 }
 
 }  // namespace

@@ -239,5 +239,29 @@ TEST(RadReader, TextErrorsCarryTheGivenName) {
   }
 }
 
+// The dielectric material (traced in tests/engine/dielectric_test.cpp).
+TEST(RadReader, DielectricPrimitive) {
+  Scene sc;
+  readRadianceText("void dielectric water\n0\n0\n5 0.9 0.95 0.98 1.33 0.01\n", "water.rad", sc);
+  ASSERT_EQ(sc.materials.size(), 1u);
+  const Material& m = sc.materials[0];
+  EXPECT_EQ(m.type, MaterialType::Dielectric);
+  EXPECT_STREQ(materialTypeName(m.type), "dielectric");
+  EXPECT_EQ(m.color, Rgb(0.9, 0.95, 0.98));
+  EXPECT_EQ(m.refractiveIndex, 1.33);
+  EXPECT_EQ(m.hartmannConstant, 0.01);
+}
+
+TEST(RadReader, DielectricErrors) {
+  expectError("dielectric_four_reals.rad", 1, "dielectric 'water' needs 5 real arguments, got 4");
+  expectError("dielectric_zero_index.rad", 2, "dielectric 'vacuum' needs a refractive index > 0");
+  expectError("dielectric_bad_transmission.rad", 7,
+              "dielectric 'bright' needs a transmission per metre in (0, 1] for each channel");
+  // Zero transmission (opaque) is refused as well: the range is open at 0.
+  Scene sc;
+  EXPECT_THROW(readRadianceText("void dielectric black 0 0 5 0 1 1 1.5 0\n", "t.rad", sc), InputError);
+  EXPECT_THROW(readRadianceText("void dielectric neg 0 0 5 1 1 1 -1.5 0\n", "t.rad", sc), InputError);
+}
+
 }  // namespace
 }  // namespace candela
