@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -118,23 +117,7 @@ TemporalMap temporalMap(const std::vector<double>& lux, const std::vector<HourSt
 
 std::string sdaAsePlanSvg(const PlanLayout& L, const std::vector<bool>& sdaPass, const std::vector<bool>& aseExceeded,
                           const PlanOptions& opt) {
-  Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  auto extend = [&](const Vec2& p) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  };
-  for (const Vec2& p : L.outline) extend(p);
-  for (const Vec2& p : L.planPositions) extend(p);
-  if (L.regular) {
-    extend(L.originM);
-    extend(L.originM + Vec2(L.columns, L.rows) * L.spacingM);
-  }
-  if (!(hi.x >= lo.x)) {
-    lo = Vec2(0.0);
-    hi = Vec2(1.0);
-  }
-  if (hi.x - lo.x < 1e-6) { lo.x -= 0.5; hi.x += 0.5; }
-  if (hi.y - lo.y < 1e-6) { lo.y -= 0.5; hi.y += 0.5; }
+  const auto [lo, hi] = planExtent(L);
   const Vec2 ext = hi - lo;
   const double k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);  // px per m
   const double planW = ext.x * k, planH = ext.y * k, left = 10, top = 10;

@@ -139,9 +139,7 @@ std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<do
   return lines;
 }
 
-std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
-  const PlanLayout& L = grid.layout;
-  // Extent of the drawing in plan coordinates: the outline, lattice and points.
+PlanExtent planExtent(const PlanLayout& L) {
   Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   auto extend = [&](const Vec2& p) {
     lo = glm::min(lo, p);
@@ -153,12 +151,15 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
     extend(L.originM);
     extend(L.originM + Vec2(L.columns, L.rows) * L.spacingM);
   }
-  if (!(hi.x >= lo.x)) {
-    lo = Vec2(0.0);
-    hi = Vec2(1.0);
-  }
+  if (!(hi.x >= lo.x)) return {};
   if (hi.x - lo.x < 1e-6) { lo.x -= 0.5; hi.x += 0.5; }
   if (hi.y - lo.y < 1e-6) { lo.y -= 0.5; hi.y += 0.5; }
+  return {lo, hi};
+}
+
+std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
+  const PlanLayout& L = grid.layout;
+  const auto [lo, hi] = planExtent(L);
   const Vec2 ext = hi - lo;
   const double k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);  // px per m
   const double planW = ext.x * k, planH = ext.y * k;

@@ -22,6 +22,13 @@ struct PlanOptions {
   bool standalone = false;            // add the SVG namespace (files); HTML5 inline SVG needs none
 };
 
+// What a plan of `layout` shows, in plan coordinates (m): its outline, lattice and points, from
+// lo to hi; at least 1 m wide in each direction where they are not (a single row, a point).
+struct PlanExtent {
+  Vec2 lo{0.0}, hi{1.0};
+};
+PlanExtent planExtent(const PlanLayout& layout);
+
 // One isoline: the polyline where the interpolated field equals `level` (plan coordinates, m).
 struct ContourLine {
   double level = 0.0;
