@@ -248,8 +248,7 @@ int runCase(const RunOptions& o) {
   data.run.runTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // 5. Write. Each file goes through a temporary and a rename.
-  try {
-    fs::create_directories(outDir);
+  writeRunOutputs(outDir, [&] {
     for (std::size_t gi = 0; gi < grids.size(); ++gi)
       if (grids[gi].spec->daylightFactor)
         writeGridCsv(outDir, grids[gi].spec->name, csvPoints[gi], luxValues[gi],
@@ -262,11 +261,7 @@ int runCase(const RunOptions& o) {
     writeSummaryCsv(outDir, data);
     writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
     writeHtmlReport(outDir / "report.html", data);
-  } catch (const fs::filesystem_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  }
+  });
 
   if (!o.quiet) {
     std::ostringstream s;

@@ -277,8 +277,7 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
 
   // 4. Write, each file through a temporary and a rename.
   const fs::path outDir = o.outDir;
-  try {
-    fs::create_directories(outDir);
+  writeRunOutputs(outDir, [&] {
     first = 0;
     for (size_t gi = 0; gi < grids.size(); ++gi) {
       const int n = static_cast<int>(grids[gi].grid.size());
@@ -295,11 +294,7 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
     writeSummaryCsv(outDir, data);
     writeSummaryJson(outDir, data);
     writeHtmlReport(outDir / "report.html", data);
-  } catch (const fs::filesystem_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  }
+  });
 
   if (!o.quiet) {
     std::ostringstream s;

@@ -88,6 +88,17 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   return grids;
 }
 
+void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write) {
+  try {
+    std::filesystem::create_directories(outDir);
+    write();
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+  }
+}
+
 Box gridBounds(const Scene& scene) {
   Box bounds = scene.bounds();
   if (scene.sky) {

@@ -8,6 +8,8 @@
 #include "engine/sensor_grid.h"
 #include "reports/report_data.h"
 
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,11 @@ PlanLayout planLayout(const PreparedGrid& g);
 
 // The local time now, "YYYY-MM-DD HH:MM".
 std::string localTimeNow();
+
+// Creates `outDir` and calls write(); a file-system or write failure becomes InputError at
+// outDir, "cannot write the results: ...". Each writer writes atomically, so a failure leaves no
+// half file.
+void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write);
 
 // The bounds grids must lie in: the scene's, unbounded in z under a sky (an open scene).
 Box gridBounds(const Scene& scene);
