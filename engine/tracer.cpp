@@ -847,7 +847,11 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
   Rng dirRng(s.seed, kDirectionStream + pointIndex);
   const int mTheta = std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
   const int nPhi = std::max(1, s.hemisphereSamples / mTheta);
-  const Frame frame = Frame::fromNormal(n);
+  hemisphereCacheQueries(p, Frame::fromNormal(n), mTheta, nPhi, kNoShape, dirRng, out);
+}
+
+void Tracer::hemisphereCacheQueries(const Vec3& o, const Frame& frame, int mTheta, int nPhi, uint32_t skip,
+                                    Rng& dirRng, std::vector<CacheQuery>& out) const {
   for (int c = 0; c < mTheta * nPhi; ++c) {
     const int j = c / nPhi, k = c % nPhi;
     const double u1 = (j + dirRng.uniform()) / mTheta;
@@ -855,7 +859,7 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
     const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
     RayHit h;
     countRay();
-    if (!accel_->intersect(p, dir, 0.0, kInf, h, kNoShape)) continue;
+    if (!accel_->intersect(o, dir, 0.0, kInf, h, skip)) continue;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
     if (m->type == MaterialType::Illum) {
@@ -863,7 +867,7 @@ void Tracer::cacheQueries(const Vec3& p, const Vec3& n, uint64_t pointIndex, con
       m = &scene_.materials[m->alternate];
     }
     if (!cacheable(*m)) continue;
-    const Vec3 x = p + h.t * dir;
+    const Vec3 x = o + h.t * dir;
     const Vec3 ng = shapeNormal(shape, x);
     out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
   }
@@ -910,29 +914,8 @@ int recordPhiStrata(const TraceSettings& s) { return std::max(2, s.cache.recordS
 void Tracer::recordQueries(const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
                            std::vector<CacheQuery>& out) const {
   Rng dirRng(s.seed, stream + kRecordDirectionOffset);
-  const int m = recordThetaStrata(s), n = recordPhiStrata(s);
-  const Frame frame = Frame::fromNormal(r.n);
-  const Vec3 o = r.p + originOffset(r.p) * r.n;
-  for (int c = 0; c < m * n; ++c) {
-    const int j = c / n, k = c % n;
-    const double u1 = (j + dirRng.uniform()) / m;
-    const double u2 = (k + dirRng.uniform()) / n;
-    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
-    RayHit h;
-    countRay();
-    if (!accel_->intersect(o, dir, 0.0, kInf, h, r.skip)) continue;
-    const Shape& shape = scene_.shapes[h.shape];
-    const Material* mat = &scene_.materials[shape.material];
-    if (mat->type == MaterialType::Illum) {
-      if (mat->alternate < 0) continue;
-      mat = &scene_.materials[mat->alternate];
-    }
-    if (!cacheable(*mat)) continue;
-    const Vec3 x = o + h.t * dir;
-    const Vec3 ng = shapeNormal(shape, x);
-    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
-  }
-  flushRays();
+  hemisphereCacheQueries(r.p + originOffset(r.p) * r.n, Frame::fromNormal(r.n), recordThetaStrata(s),
+                         recordPhiStrata(s), r.skip, dirRng, out);
 }
 
 void Tracer::computeRecord(IrradianceRecord& r, uint64_t stream, const TraceSettings& s,

@@ -199,6 +199,10 @@ class Tracer {
   // One sample of the glossy (Ward) lobe of m leaving x: its reflected radiance estimate.
   Rgb glossyBounce(const Vec3& x, const Vec3& inDir, const Vec3& nf, double off, uint32_t flatSkip,
                    const Material& m, Rng& rng, const TraceSettings& s, int diffuse) const;
+  // The cacheable first hits of mTheta × nPhi stratified cosine rays from o (the strata in
+  // order, jittered by dirRng), appended to out; shared by cacheQueries and recordQueries.
+  void hemisphereCacheQueries(const Vec3& o, const Frame& frame, int mTheta, int nPhi, uint32_t skip, Rng& dirRng,
+                              std::vector<CacheQuery>& out) const;
   // Radiance of the sky/distant sources seen along an escaping ray.
   Rgb distantRadiance(const Vec3& dir, bool countSources, double misCosPdf, double misRatio) const;
 
