@@ -7,6 +7,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"
+#include "tests/engine/test_materials.h"
 
 #include <gtest/gtest.h>
 
@@ -166,13 +167,7 @@ TEST(IrradianceCache, NeighbourClampingAndSpacing) {
 
 // ---------------------------------------------------------------- the cache method end to end
 
-uint32_t addMat(Scene& sc, MaterialType t, double v) {
-  Material m;
-  m.type = t;
-  m.name = "m";
-  m.color = Rgb(v);
-  return sc.addMaterial(m);
-}
+using test_support::addMaterial;
 
 TraceSettings cacheSettings(int samples = 1024) {
   TraceSettings s;
@@ -203,8 +198,8 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
   // roulette, so the series is not truncated.
   const double L = 1000.0, r = 0.02, rho = 0.8, d = 0.9;
   Scene sc;
-  sc.addSphere(Vec3(0.0), r, addMat(sc, MaterialType::Light, L));
-  sc.addSphere(Vec3(0.0), 1.0, addMat(sc, MaterialType::Plastic, rho), true);
+  sc.addSphere(Vec3(0.0), r, addMaterial(sc, MaterialType::Light, L));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::Plastic, rho), true);
   const Tracer tracer(sc);
   std::vector<SensorPoint> pts;
   for (Vec3 dir : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 0.6, 0.8), Vec3(0, 0, 1), Vec3(-0.6, 0, 0.8)})
@@ -227,8 +222,8 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
 
 TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
   Scene sc;
-  sc.addSphere(Vec3(0.0), 0.05, addMat(sc, MaterialType::Light, 100.0));
-  sc.addSphere(Vec3(0.0), 1.0, addMat(sc, MaterialType::Plastic, 0.5), true);
+  sc.addSphere(Vec3(0.0), 0.05, addMaterial(sc, MaterialType::Light, 100.0));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::Plastic, 0.5), true);
   const Tracer tracer(sc);
   std::vector<SensorPoint> pts;
   for (int i = 0; i < 12; ++i) pts.push_back({Vec3(0.05 * i - 0.3, 0.0, -0.5), Vec3(0, 0, -1)});
@@ -247,9 +242,9 @@ TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
 // A floor and a sphere of radius 1 m resting on it, both grey (ρ = 0.5), under a uniform sky.
 Scene sphereOnGreyFloor() {
   Scene sc;
-  const uint32_t sky = addMat(sc, MaterialType::Glow, 1.0);
+  const uint32_t sky = addMaterial(sc, MaterialType::Glow, 1.0);
   sc.addDistant(Vec3(0, 0, 1), 360.0, sky, "sky");
-  const uint32_t grey = addMat(sc, MaterialType::Plastic, 0.5);
+  const uint32_t grey = addMaterial(sc, MaterialType::Plastic, 0.5);
   sc.addPolygon({{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}}, grey);
   sc.addSphere(Vec3(0, 0, 1), 1.0, grey);
   return sc;
@@ -279,8 +274,8 @@ TEST(IrradianceCacheMethod, ShadowBoundaryAndCornersAgreeWithThePathTracer) {
   // the floor casting a shadow: sensors across the shadow edge, 1 cm from the walls' corner
   // and 1 cm under the ceiling corner.
   Scene sc;
-  const uint32_t wall = addMat(sc, MaterialType::Plastic, 0.6), floor = addMat(sc, MaterialType::Plastic, 0.3);
-  const uint32_t lamp = addMat(sc, MaterialType::Light, 30.0);
+  const uint32_t wall = addMaterial(sc, MaterialType::Plastic, 0.6), floor = addMaterial(sc, MaterialType::Plastic, 0.3);
+  const uint32_t lamp = addMaterial(sc, MaterialType::Light, 30.0);
   const double X = 4, Y = 3, Z = 2.5;
   // Inward-facing room (front faces inside: counter-clockwise seen from inside).
   sc.addPolygon({{0, 0, 0}, {X, 0, 0}, {X, Y, 0}, {0, Y, 0}}, floor);

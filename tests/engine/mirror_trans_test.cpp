@@ -8,6 +8,7 @@
 // has probability ~6e-5; seeds are fixed), plus a loose relative bound.
 #include "engine/tracer.h"
 #include "photometry/sky_model.h"
+#include "tests/engine/test_materials.h"
 
 #include <gtest/gtest.h>
 
@@ -19,13 +20,7 @@
 namespace candela {
 namespace {
 
-uint32_t addMaterial(Scene& sc, MaterialType type, double value, const std::string& name) {
-  Material m;
-  m.type = type;
-  m.name = name;
-  m.color = Rgb(value);
-  return sc.addMaterial(m);
-}
+using test_support::addMaterial;
 
 // A clear sheet: trans with colour tau, no specularity, all light transmitted specularly, so its
 // specular transmittance is tau and it neither reflects nor scatters.

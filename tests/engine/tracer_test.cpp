@@ -7,6 +7,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"
+#include "tests/engine/test_materials.h"
 
 
 #include <gtest/gtest.h>
@@ -20,13 +21,7 @@ namespace {
 
 constexpr double kExactRel = 1e-9;  // closed form vs closed form by another route
 
-uint32_t addMaterial(Scene& sc, MaterialType type, double value, const std::string& name) {
-  Material m;
-  m.type = type;
-  m.name = name;
-  m.color = Rgb(value);
-  return sc.addMaterial(m);
-}
+using test_support::addMaterial;
 uint32_t addLight(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::Light, radiance, "lamp"); }
 uint32_t addPlastic(Scene& sc, double rho) { return addMaterial(sc, MaterialType::Plastic, rho, "grey"); }
 uint32_t addGlow(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::Glow, radiance, "sky"); }
