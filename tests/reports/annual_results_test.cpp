@@ -8,27 +8,17 @@
 #include <sstream>
 
 #include "engine/base/error.h"
+#include "sample_report.h"
 
 namespace candela {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A year of hour stamps, built from the month lengths (not from any candela code).
-std::vector<HourStamp> yearStamps(bool leap) {
-  const int days[12] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  std::vector<HourStamp> out;
-  for (int m = 1; m <= 12; ++m)
-    for (int d = 1; d <= days[m - 1]; ++d)
-      for (int h = 1; h <= 24; ++h)
-        out.push_back({static_cast<uint8_t>(m), static_cast<uint8_t>(d), static_cast<uint8_t>(h)});
-  return out;
-}
-
 AnnualResults sample(int sensors, bool leap) {
   AnnualResults r;
   r.sensors = sensors;
-  r.hours = yearStamps(leap);
+  r.hours = testing_sample::sampleYearStamps(leap);
   const std::size_t n = r.hours.size();
   for (int s = 0; s < sensors; ++s)
     for (std::size_t h = 0; h < n; ++h) r.lux.push_back(static_cast<float>(s * 1000.0 + h * 0.25));  // exact in float32

@@ -76,8 +76,9 @@ inline ReportData sampleReport() {
 // plus 8 klx of direct sun from 10:00 to 14:00 on two days out of three when y is less than
 // 1 m + 1.5 m × winter factor (low winter sun reaches deeper). Metrics over the occupied hours
 // 08:00–18:00 are computed here with plain loops (the reports only print what they are given).
-inline std::vector<HourStamp> sampleYearStamps() {
-  const int days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+// Hour stamps of a year from the month lengths (not from any candela code).
+inline std::vector<HourStamp> sampleYearStamps(bool leap = false) {
+  const int days[12] = {31, leap ? 29 : 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   std::vector<HourStamp> out;
   for (int m = 1; m <= 12; ++m)
     for (int d = 1; d <= days[m - 1]; ++d)
