@@ -6,6 +6,7 @@
 #include "engine/base/error.h"
 #include "engine/case_scene.h"
 #include "engine/daylight_coefficients.h"
+#include "engine/fresnel.h"
 #include "metrics/annual.h"
 #include "metrics/grid_stats.h"
 #include "photometry/annual_sky.h"
@@ -42,10 +43,8 @@ int closeBlinds(Scene& scene) {
   int changed = 0;
   for (Material& m : scene.materials) {
     if (m.type != MaterialType::Glass) continue;
-    // Thin glass at normal incidence: T = (1 − R)² τ / (1 − R² τ²), R = ((n − 1)/(n + 1))².
-    const double r = std::pow((m.refractiveIndex - 1.0) / (m.refractiveIndex + 1.0), 2.0);
-    Rgb t(0.0);
-    for (int c = 0; c < 3; ++c) t[c] = (1.0 - r) * (1.0 - r) * m.color[c] / (1.0 - r * r * m.color[c] * m.color[c]);
+    Rgb t, reflected;
+    thinGlass(m.color, m.refractiveIndex, 1.0, t, reflected);  // the glass's normal transmittance
     m.type = MaterialType::Trans;
     m.diffuseReflectance = Rgb(0.0);
     m.specularReflectance = Rgb(0.0);

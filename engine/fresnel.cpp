@@ -32,4 +32,18 @@ Vec3 refractDirection(const Vec3& d, const Vec3& nf, double eta, double cosT) {
   return glm::normalize(d / eta + (cosI / eta - cosT) * nf);
 }
 
+void thinGlass(const Rgb& transmissivity, double refractiveIndex, double cosI, Rgb& trans, Rgb& refl) {
+  const Fresnel f = fresnel(std::clamp(std::abs(cosI), 1e-6, 1.0), refractiveIndex);
+  trans = Rgb(0.0);
+  refl = Rgb(0.0);
+  for (double r : {f.rs, f.rp}) {
+    for (int c = 0; c < 3; ++c) {
+      const double tau = std::pow(transmissivity[c], 1.0 / f.cosT);
+      const double den = 1.0 - r * r * tau * tau;
+      trans[c] += 0.5 * (1.0 - r) * (1.0 - r) * tau / den;
+      refl[c] += 0.5 * (r + (1.0 - r) * (1.0 - r) * r * tau * tau / den);
+    }
+  }
+}
+
 }  // namespace candela

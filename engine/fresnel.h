@@ -1,8 +1,9 @@
-// Fresnel reflection at a smooth boundary between two non-absorbing media, and Snell refraction
-// (used by the `dielectric` material, engine/tracer.cpp).
+// Fresnel reflection at a smooth boundary between two non-absorbing media, Snell refraction
+// (the `dielectric` material, engine/tracer.cpp) and thin glass (the `glass` material).
 #pragma once
 
 #include "engine/base/math.h"
+#include "engine/base/units.h"
 
 namespace candela {
 
@@ -25,5 +26,12 @@ double fresnelReflectance(double cosI, double eta);
 // Refracted direction of unit direction d arriving at a boundary whose unit normal nf faces the
 // incoming ray (dot(d, nf) < 0), with relative index eta and cosT from fresnel(); a unit vector.
 Vec3 refractDirection(const Vec3& d, const Vec3& nf, double eta, double cosT);
+
+// Thin glass (Radiance's `glass`) with incoherent multiple reflections, for light arriving at
+// cosine ±cosI: per polarisation, single-surface Fresnel reflectance R and internal
+// transmittance τ = tn^(1/cos θt) give T = (1−R)² τ / (1 − R² τ²) and
+// R_total = R + (1−R)² R τ² / (1 − R² τ²), averaged over s and p. tn is the glass's
+// "transmissivity" per channel, n its refractive index.
+void thinGlass(const Rgb& transmissivity, double refractiveIndex, double cosI, Rgb& trans, Rgb& refl);
 
 }  // namespace candela

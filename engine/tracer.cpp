@@ -88,29 +88,6 @@ bool isFlat(const Shape& s) {
   return s.type == ShapeType::Triangle || s.type == ShapeType::Polygon || s.type == ShapeType::Ring;
 }
 
-// Thin glass with incoherent multiple reflections: per polarisation, single-surface Fresnel
-// reflectance R and internal transmittance τ = tn^(1/cos θt) give
-// T = (1−R)² τ / (1 − R² τ²) and R_total = R + (1−R)² R τ² / (1 − R² τ²), averaged over s and p.
-// tn is Radiance's glass "transmissivity" argument.
-void thinGlass(const Material& m, double cosI, Rgb& trans, Rgb& refl) {
-  const double n = m.refractiveIndex;
-  cosI = std::clamp(std::abs(cosI), 1e-6, 1.0);
-  const double sin2T = (1.0 - cosI * cosI) / (n * n);
-  const double cosT = std::sqrt(std::max(0.0, 1.0 - sin2T));
-  const double rs = (cosI - n * cosT) / (cosI + n * cosT);
-  const double rp = (cosT - n * cosI) / (cosT + n * cosI);
-  trans = Rgb(0.0);
-  refl = Rgb(0.0);
-  for (double r : {rs * rs, rp * rp}) {
-    for (int c = 0; c < 3; ++c) {
-      const double tau = std::pow(m.color[c], 1.0 / cosT);
-      const double den = 1.0 - r * r * tau * tau;
-      trans[c] += 0.5 * (1.0 - r) * (1.0 - r) * tau / den;
-      refl[c] += 0.5 * (r + (1.0 - r) * (1.0 - r) * r * tau * tau / den);
-    }
-  }
-}
-
 // Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k). One sample
 // per stratum gives no direct variance estimate; with three or more φ strata per row, the second
 // differences along φ (wrapping) are used: for y_k = μ_k + ε_k, E[(y_k−1 − 2y_k + y_k+1)²] =
@@ -285,7 +262,7 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     const Vec3 x = o + h.t * dir;
     if (m.type == MaterialType::Glass) {
       Rgb tr, rf;
-      thinGlass(m, glm::dot(dir, shapeNormal(s, x)), tr, rf);
+      thinGlass(m.color, m.refractiveIndex, glm::dot(dir, shapeNormal(s, x)), tr, rf);
       t *= tr;
     } else if (m.type == MaterialType::Trans) {
       t *= m.specularTransmittance;
@@ -603,7 +580,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         continue;
       case MaterialType::Glass: {
         Rgb tr, rf;
-        thinGlass(*m, glm::dot(d, ng), tr, rf);
+        thinGlass(m->color, m->refractiveIndex, glm::dot(d, ng), tr, rf);
         const double pt = photopic(tr), pr = photopic(rf);
         if (pt + pr <= 0.0) return result;
         if (rng.uniform() * (pt + pr) < pt) {
