@@ -36,14 +36,7 @@ struct Segment {
   EdgeKey a, b;
 };
 
-std::string px(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  std::string s = buf;
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
-}
+std::string px(double v) { return svgNumber(v); }
 
 // A 1-2-5 × 10^n length close to `target`, for scale bars.
 double niceLength(double target) {
@@ -137,6 +130,15 @@ std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<do
     lines.push_back(std::move(line));
   }
   return lines;
+}
+
+std::string svgNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
 }
 
 PlanExtent planExtent(const PlanLayout& L) {

@@ -49,6 +49,9 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
 void writePlanSvg(const std::filesystem::path& path, const GridReport& grid, const ColorScale& scale,
                   const PlanOptions& options = {});
 
+// An SVG coordinate or length: two decimals, trailing zeros dropped ("12.5", "3", never "-0").
+std::string svgNumber(double v);
+
 // Escapes & < > " ' for XML/HTML text and attributes.
 std::string xmlEscape(const std::string& text);
 

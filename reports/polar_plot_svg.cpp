@@ -1,4 +1,5 @@
 #include "reports/polar_plot_svg.h"
+#include "reports/plan_svg.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,18 +15,6 @@ std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", v);
   return buf;
-}
-
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '&') o += "&amp;";
-    else if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
-  }
-  return o;
 }
 
 std::string cdLabel(double v) {
@@ -69,7 +58,7 @@ std::string polarPlotSvg(const std::vector<PolarCurve>& curves, const PolarPlotO
   s += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   if (!options.title.empty())
     s += "<text x=\"" + num(cx) + "\" y=\"20\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">" +
-         escape(options.title) + "</text>\n";
+         xmlEscape(options.title) + "</text>\n";
   s += "<g transform=\"translate(" + num(cx) + "," + num(cy) + ")\">\n";
   // Radial lines every 30 deg, labelled from nadir (bottom) to zenith (top) on both sides.
   s += "<g stroke=\"#b8b8b8\" stroke-width=\"0.8\">\n";
@@ -115,7 +104,7 @@ std::string polarPlotSvg(const std::vector<PolarCurve>& curves, const PolarPlotO
     const std::string colour = c.colour.empty() ? kPalette[i % 4] : c.colour;
     s += "<line x1=\"" + num(margin) + "\" y1=\"" + num(y) + "\" x2=\"" + num(margin + 34) + "\" y2=\"" + num(y) +
          "\" stroke=\"" + colour + "\" stroke-width=\"2\"" + (c.dashed ? " stroke-dasharray=\"7 4\"" : "") + "/>\n";
-    s += "<text x=\"" + num(margin + 44) + "\" y=\"" + num(y + 4) + "\" font-size=\"12\">" + escape(c.label) +
+    s += "<text x=\"" + num(margin + 44) + "\" y=\"" + num(y + 4) + "\" font-size=\"12\">" + xmlEscape(c.label) +
          "</text>\n";
   }
   s += "</svg>\n";
