@@ -2,7 +2,7 @@
 // of 10³ … 10⁶ small random triangles filling a 10 m cube (issue "Engine core"; results in
 // docs/performance.md).
 // Run: build/bench/octree_bench [--benchmark_filter=...]
-#include "engine/base/rng.h"
+#include "base/rng.h"
 #include "engine/embree_accelerator.h"
 #include "engine/octree.h"
 #include "engine/sampling.h"
@@ -36,7 +36,7 @@ Fixture& fixture(int count, int setSize) {
   if (f) return *f;
   f = std::make_unique<Fixture>();
   Rng rng(42, static_cast<uint64_t>(count));
-  const uint32_t mat = f->scene.addMaterial(Material{MaterialType::Plastic, "grey", {}, Rgb(0.5)});
+  const uint32_t mat = f->scene.addMaterial(Material{MaterialType::kPlastic, "grey", {}, Rgb(0.5)});
   for (int i = 0; i < count; ++i) {
     const Vec3 c(rng.uniform() * kCubeM, rng.uniform() * kCubeM, rng.uniform() * kCubeM);
     std::vector<Vec3> v;

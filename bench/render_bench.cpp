@@ -19,7 +19,7 @@ uint32_t material(Scene& sc, MaterialType type, double value) {
 // A 4 × 3 × 2.8 m room seen from inside (all faces face inward).
 Scene room() {
   Scene sc;
-  const uint32_t grey = material(sc, MaterialType::Plastic, 0.5);
+  const uint32_t grey = material(sc, MaterialType::kPlastic, 0.5);
   const double x = 4, y = 3, z = 2.8;
   sc.addPolygon({{0, 0, 0}, {x, 0, 0}, {x, y, 0}, {0, y, 0}}, grey);  // floor, up
   sc.addPolygon({{0, 0, z}, {0, y, z}, {x, y, z}, {x, 0, z}}, grey);  // ceiling, down
@@ -27,7 +27,7 @@ Scene room() {
   sc.addPolygon({{0, y, 0}, {x, y, 0}, {x, y, z}, {0, y, z}}, grey);  // y = 3, −y
   sc.addPolygon({{0, 0, 0}, {0, y, 0}, {0, y, z}, {0, 0, z}}, grey);  // x = 0, +x
   sc.addPolygon({{x, 0, 0}, {x, 0, z}, {x, y, z}, {x, y, 0}}, grey);  // x = 4, −x
-  sc.addSphere({2.0, 1.5, 2.4}, 0.1, material(sc, MaterialType::Light, 200.0));
+  sc.addSphere({2.0, 1.5, 2.4}, 0.1, material(sc, MaterialType::kLight, 200.0));
   return sc;
 }
 
@@ -60,8 +60,8 @@ BENCHMARK(BM_RenderRoom)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 
 void BM_RenderSmoothPlane(benchmark::State& state) {
   Scene sc;
-  sc.addPolygon({{-1e3, -1e3, 0}, {1e3, -1e3, 0}, {1e3, 1e3, 0}, {-1e3, 1e3, 0}}, material(sc, MaterialType::Plastic, 0.5));
-  sc.addDistant({0.3, -0.5, 0.8}, 0.533, material(sc, MaterialType::Light, 6e6));
+  sc.addPolygon({{-1e3, -1e3, 0}, {1e3, -1e3, 0}, {1e3, 1e3, 0}, {-1e3, 1e3, 0}}, material(sc, MaterialType::kPlastic, 0.5));
+  sc.addDistant({0.3, -0.5, 0.8}, 0.533, material(sc, MaterialType::kLight, 6e6));
   const Tracer tracer(sc);
   ViewSpec v = roomView();
   v.resolution = {128, 96};

@@ -3,7 +3,7 @@
 // current directory, written atomically).
 #include "cli/commands.h"
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 #include "photometry/luminaire_summary.h"
 #include "photometry/photometric_web.h"
 #include "reports/polar_plot_svg.h"

@@ -2,7 +2,7 @@
 // points read from a file or stdin; CSV on stdout, printed only once every point is done.
 #include "cli/commands.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "engine/case_file.h"
 #include "engine/case_scene.h"
 #include "engine/daylight.h"

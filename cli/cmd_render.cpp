@@ -8,7 +8,7 @@
 #include "cli/view_glare.h"
 #include "cli/progress.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "engine/case_file.h"
 #include "engine/case_scene.h"
 #include "engine/render.h"

@@ -12,8 +12,8 @@
 #include "cli/run_annual.h"
 #include "cli/run_grids.h"
 
-#include "engine/base/atomic_file.h"
-#include "engine/base/error.h"
+#include "base/atomic_file.h"
+#include "base/error.h"
 #include "engine/case_file.h"
 #include "engine/case_scene.h"
 #include "engine/sensor_grid.h"

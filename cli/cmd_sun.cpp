@@ -1,7 +1,7 @@
 // candela sun: solar position (NREL SPA) and the day's sunrise/sunset at a site and time.
 #include "cli/commands.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "photometry/site.h"
 #include "photometry/sun_spa.h"
 

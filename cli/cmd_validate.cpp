@@ -3,7 +3,7 @@
 // validation.csv and validation.html. Exit code 1 when any case fails.
 #include "cli/commands.h"
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 #include "validation/case_registry.h"
 #include "validation/validation_html.h"
 #include "validation/speed_accuracy.h"

@@ -1,7 +1,7 @@
 // candela: wiring only. Picks the subcommand, maps errors to exit codes (architecture.md):
 // 0 success, 2 bad input (one line "file:line: message" on stderr), 1 internal failure.
 #include "cli/commands.h"
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <exception>
 #include <iostream>

@@ -2,8 +2,8 @@
 
 #include "cli/progress.h"
 #include "cli/run_grids.h"
-#include "engine/base/atomic_file.h"
-#include "engine/base/error.h"
+#include "base/atomic_file.h"
+#include "base/error.h"
 #include "engine/case_scene.h"
 #include "engine/daylight_coefficients.h"
 #include "engine/fresnel.h"
@@ -42,10 +42,10 @@ constexpr double kBlindsTransmittance = 0.2;
 int closeBlinds(Scene& scene) {
   int changed = 0;
   for (Material& m : scene.materials) {
-    if (m.type != MaterialType::Glass) continue;
+    if (m.type != MaterialType::kGlass) continue;
     Rgb t, reflected;
     thinGlass(m.color, m.refractiveIndex, 1.0, t, reflected);  // the glass's normal transmittance
-    m.type = MaterialType::Trans;
+    m.type = MaterialType::kTrans;
     m.diffuseReflectance = Rgb(0.0);
     m.specularReflectance = Rgb(0.0);
     m.specularTransmittance = Rgb(0.0);

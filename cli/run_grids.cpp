@@ -1,6 +1,6 @@
 #include "cli/run_grids.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "reports/csv_writer.h"
 #include "reports/plan_svg.h"
 

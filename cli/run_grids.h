@@ -2,7 +2,7 @@
 // their points, how they are described and laid out in plans, and the time stamp of a run.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "engine/case_file.h"
 #include "engine/scene.h"
 #include "engine/sensor_grid.h"

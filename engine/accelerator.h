@@ -2,7 +2,7 @@
 // other structures may too, where they are measurably faster (docs/performance.md).
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 #include <cstdint>
 #include <limits>

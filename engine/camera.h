@@ -2,7 +2,7 @@
 // solid angle of each pixel (docs/views.md documents both projections).
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "engine/case_file.h"
 
 #include <optional>

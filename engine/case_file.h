@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "engine/quality.h"
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "engine/sensor_grid.h"
 
 namespace candela {

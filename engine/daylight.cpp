@@ -84,7 +84,7 @@ void addDaylight(Scene& scene, const DaylightSpec& spec) {
     const double halfAngle = degToRad(0.5 * kSunDiameterDeg);
     const double omega = kTwoPi * (1.0 - std::cos(halfAngle));
     Material m;
-    m.type = MaterialType::Light;
+    m.type = MaterialType::kLight;
     m.name = "sun";
     m.color = Rgb(dnLux / omega / kLumensPerWatt);
     scene.addDistant(dome.sunDirModel, kSunDiameterDeg, scene.addMaterial(m), "sun");

@@ -3,7 +3,7 @@
 // `north` (the geometry is never rotated).
 #pragma once
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "engine/scene.h"
 #include "photometry/sky_model.h"
 

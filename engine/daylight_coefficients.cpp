@@ -1,7 +1,7 @@
 #include "engine/daylight_coefficients.h"
 
 #include "engine/daylight.h"
-#include "engine/parallel.h"
+#include "base/parallel.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
 

@@ -135,7 +135,7 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
 
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& s = scene.shapes[i];
-    if (s.type != ShapeType::Triangle) {
+    if (s.type != ShapeType::kTriangle) {
       userShapes_.push_back(i);
       continue;
     }

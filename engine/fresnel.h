@@ -2,8 +2,8 @@
 // (the `dielectric` material, engine/tracer.cpp) and thin glass (the `glass` material).
 #pragma once
 
-#include "engine/base/math.h"
-#include "engine/base/units.h"
+#include "base/math.h"
+#include "base/units.h"
 
 namespace candela {
 

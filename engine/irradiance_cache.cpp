@@ -1,7 +1,7 @@
 #include "engine/irradiance_cache.h"
 
-#include "engine/base/rng.h"
-#include "engine/parallel.h"
+#include "base/rng.h"
+#include "base/parallel.h"
 #include "engine/sensor_grid.h"
 #include "engine/tracer.h"
 

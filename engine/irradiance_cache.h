@@ -15,8 +15,8 @@
 // and frozen before the first level's values are computed.
 #pragma once
 
-#include "engine/base/math.h"
-#include "engine/base/units.h"
+#include "base/math.h"
+#include "base/units.h"
 
 #include <array>
 #include <cstdint>

@@ -103,12 +103,12 @@ std::vector<Light> collectLights(const Scene& scene) {
     const Material& m = scene.materials[s.material];
     if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
     Light l;
-    l.kind = Light::Kind::Area;
+    l.kind = Light::Kind::kArea;
     l.shape = i;
     l.radiance = m.color;
     l.areaM2 = shapeArea(s, scene.vertices);
-    if (s.type == ShapeType::Triangle || s.type == ShapeType::Polygon) {
-      if (s.type == ShapeType::Triangle) {
+    if (s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon) {
+      if (s.type == ShapeType::kTriangle) {
         l.outline = {s.a, s.a + s.b, s.a + s.c};
       } else {
         l.outline.assign(scene.vertices.points.begin() + s.firstVertex,
@@ -126,7 +126,7 @@ std::vector<Light> collectLights(const Scene& scene) {
   }
   for (uint32_t i = 0; i < scene.luminaires.size(); ++i) {
     Light l;
-    l.kind = Light::Kind::Luminaire;
+    l.kind = Light::Kind::kLuminaire;
     l.luminaire = i;
     lights.push_back(std::move(l));
   }
@@ -134,7 +134,7 @@ std::vector<Light> collectLights(const Scene& scene) {
     const Material& m = scene.materials[scene.distant[i].material];
     if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
     Light l;
-    l.kind = Light::Kind::Distant;
+    l.kind = Light::Kind::kDistant;
     l.distant = i;
     l.radiance = m.color;
     lights.push_back(std::move(l));
@@ -173,8 +173,8 @@ bool sampleLuminaire(const LuminaireSource& lum, const Vec3& p, double u1, doubl
 }  // namespace
 
 bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out) {
-  if (light.kind == Light::Kind::Luminaire) return sampleLuminaire(scene.luminaires[light.luminaire], p, u1, u2, out);
-  if (light.kind == Light::Kind::Distant) {
+  if (light.kind == Light::Kind::kLuminaire) return sampleLuminaire(scene.luminaires[light.luminaire], p, u1, u2, out);
+  if (light.kind == Light::Kind::kDistant) {
     const DistantSource& d = scene.distant[light.distant];
     const Frame f = Frame::fromNormal(d.direction);
     out.dir = f.toWorld(sampleUniformCone(u1, u2, d.cosHalfAngle));
@@ -185,14 +185,14 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
   const Shape& s = scene.shapes[light.shape];
   Vec3 y, ny;
   switch (s.type) {
-    case ShapeType::Triangle:
-    case ShapeType::Polygon: {
+    case ShapeType::kTriangle:
+    case ShapeType::kPolygon: {
       size_t k;
       y = pointOnTriangles(light.triangles, light.cumulativeArea, u1, u2, k);
       ny = s.n;
       break;
     }
-    case ShapeType::Sphere: {
+    case ShapeType::kSphere: {
       // Uniform over the cone of directions the sphere subtends (pdf 1/Ω): weight L·Ω.
       const Vec3 toC = s.a - p;
       const double d2 = glm::dot(toC, toC);
@@ -209,14 +209,14 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       out.weight = light.radiance * (kTwoPi * (1.0 - cosMax));
       return true;
     }
-    case ShapeType::Ring: {
+    case ShapeType::kRing: {
       const Frame f = Frame::fromNormal(s.n);
       const Vec2 q = sampleAnnulus(s.r0, s.r1, u1, u2);
       y = s.a + q.x * f.t + q.y * f.b;
       ny = s.n;
       break;
     }
-    case ShapeType::Cone: {
+    case ShapeType::kCone: {
       // Uniform in area: the slant position z has density ∝ r(z); invert the quadratic CDF.
       const double r0 = s.r0, r1 = s.r1;
       double frac;
@@ -271,7 +271,7 @@ bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3,
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
                           std::vector<Vec3>* clipped) {
-  if (light.kind == Light::Kind::Luminaire) {
+  if (light.kind == Light::Kind::kLuminaire) {
     // Far field: the point-source law is exact for the estimator above (one point).
     const LuminaireSource& lum = scene.luminaires[light.luminaire];
     const Vec3 e = p - lum.position;
@@ -281,7 +281,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     out = Rgb(cosI > 0.0 ? lum.intensityCd(e / d) * cosI / (kLumensPerWatt * d * d) : 0.0);
     return true;
   }
-  if (light.kind == Light::Kind::Distant) {
+  if (light.kind == Light::Kind::kDistant) {
     const DistantSource& d = scene.distant[light.distant];
     double psa;
     if (!capProjectedSolidAngle(d.direction, std::sin(d.halfAngleRad), n, psa)) return false;
@@ -289,7 +289,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     return true;
   }
   const Shape& s = scene.shapes[light.shape];
-  if (s.type == ShapeType::Sphere) {
+  if (s.type == ShapeType::kSphere) {
     const Vec3 toC = s.a - p;
     const double d = glm::length(toC);
     if (d <= s.r0 || s.inward) return false;
@@ -298,7 +298,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     out = light.radiance * psa;
     return true;
   }
-  if (s.type == ShapeType::Ring) {
+  if (s.type == ShapeType::kRing) {
     const Vec3 rel = p - s.a;
     const double h = glm::dot(rel, s.n);
     if (h <= 0.0) {  // behind the one-sided source
@@ -338,7 +338,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
 namespace candela {
 
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n) {
-  if (light.kind == Light::Kind::Luminaire) {
+  if (light.kind == Light::Kind::kLuminaire) {
     const LuminaireSource& lum = scene.luminaires[light.luminaire];
     const Vec3 e = p - lum.position;
     const double d2 = std::max(glm::dot(e, e), 0.25 * lum.sizeM() * lum.sizeM() + 1e-6);
@@ -347,23 +347,23 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
     return lum.peakIntensityCd(d > 0.0 ? e / d : -lum.axisZ) * (cosI + 0.05) / (kLumensPerWatt * d2);
   }
   const double y = photopic(light.radiance);
-  if (light.kind == Light::Kind::Distant) {
+  if (light.kind == Light::Kind::kDistant) {
     const DistantSource& d = scene.distant[light.distant];
     return y * d.solidAngleSr * (std::max(0.0, glm::dot(n, d.direction)) + 0.05);
   }
   const Shape& s = scene.shapes[light.shape];
   Vec3 centre, normal(0.0);
   switch (s.type) {
-    case ShapeType::Sphere: {
+    case ShapeType::kSphere: {
       const Vec3 e = s.a - p;
       const double d2 = std::max(glm::dot(e, e), s.r0 * s.r0);
       return y * kPi * s.r0 * s.r0 / d2 * (std::max(0.0, glm::dot(n, e) / std::sqrt(d2)) + 0.05);
     }
-    case ShapeType::Ring:
+    case ShapeType::kRing:
       centre = s.a;
       normal = s.n;
       break;
-    case ShapeType::Cone:
+    case ShapeType::kCone:
       centre = 0.5 * (s.a + s.b);
       break;
     default: {

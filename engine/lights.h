@@ -11,8 +11,8 @@
 namespace candela {
 
 struct Light {
-  enum class Kind { Area, Distant, Luminaire };
-  Kind kind = Kind::Area;
+  enum class Kind { kArea, kDistant, kLuminaire };
+  Kind kind = Kind::kArea;
   uint32_t shape = 0;    // Area: index into Scene::shapes
   uint32_t distant = 0;  // Distant: index into Scene::distant
   uint32_t luminaire = 0;  // Luminaire: index into Scene::luminaires

@@ -33,12 +33,12 @@ void tabulatePeakIntensity(LuminaireSource& l) {
 void setOpeningFromWeb(LuminaireSource& l) {
   const double w = std::abs(l.web->openingWidthM()), len = std::abs(l.web->openingLengthM());
   switch (l.web->openingShape()) {
-    case OpeningShape::Point:
+    case OpeningShape::kPoint:
       l.widthM = l.lengthM = 0.0;
       break;
-    case OpeningShape::Circular:
-    case OpeningShape::Sphere:
-    case OpeningShape::VerticalCylinder:
+    case OpeningShape::kCircular:
+    case OpeningShape::kSphere:
+    case OpeningShape::kVerticalCylinder:
       l.widthM = l.lengthM = w;
       l.circular = true;
       break;

@@ -4,7 +4,7 @@
 // point of the opening carrying I/A so that the opening as a whole reproduces I.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "photometry/photometric_web.h"
 
 #include <algorithm>

@@ -117,7 +117,7 @@ Octree::Octree(const Scene& scene, OctreeOptions options) : scene_(&scene) {
   isTriangle_.resize(localToShape_.size());
   for (size_t i = 0; i < localToShape_.size(); ++i) {
     const Shape& sh = scene.shapes[localToShape_[i]];
-    isTriangle_[i] = sh.type == ShapeType::Triangle;
+    isTriangle_[i] = sh.type == ShapeType::kTriangle;
     if (isTriangle_[i]) triangles_[i] = Triangle{sh.a, sh.b, sh.c};
   }
 }

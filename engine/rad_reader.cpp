@@ -155,15 +155,15 @@ class Reader {
     m.name = p.name;
     m.loc = FileLoc{tok_.file(), p.line, 0};
     switch (type) {
-      case MaterialType::Plastic:
-      case MaterialType::Metal:
+      case MaterialType::kPlastic:
+      case MaterialType::kMetal:
         expectStrings(p, 0);
         expectReals(p, 5);
         m.color = vec(p, 0);
         m.specularity = p.reals[3];
         m.roughness = p.reals[4];
         break;
-      case MaterialType::Trans:
+      case MaterialType::kTrans:
         expectStrings(p, 0);
         expectReals(p, 7);
         m.color = vec(p, 0);
@@ -172,10 +172,10 @@ class Reader {
         m.transmissivity = p.reals[5];
         m.transmittedSpecular = p.reals[6];
         break;
-      case MaterialType::Mirror:
-      case MaterialType::Illum:
-      case MaterialType::Light:
-        expectStrings(p, type == MaterialType::Light ? 0 : 1);
+      case MaterialType::kMirror:
+      case MaterialType::kIllum:
+      case MaterialType::kLight:
+        expectStrings(p, type == MaterialType::kLight ? 0 : 1);
         expectReals(p, 3);
         m.color = vec(p, 0);
         if (!p.strings.empty() && p.strings[0] != "void") {
@@ -186,14 +186,14 @@ class Reader {
           m.alternate = it->second;
         }
         break;
-      case MaterialType::Glass:
+      case MaterialType::kGlass:
         expectStrings(p, 0);
         if (p.reals.size() != 3 && p.reals.size() != 4)
           fail(p.line, "glass '" + p.name + "' needs 3 or 4 real arguments, got " + std::to_string(p.reals.size()));
         m.color = vec(p, 0);
         if (p.reals.size() == 4) m.refractiveIndex = p.reals[3];
         break;
-      case MaterialType::Dielectric:
+      case MaterialType::kDielectric:
         // Radiance reference manual: "mod dielectric id 0 0 5 rtn gtn btn n hc", transmission
         // per unit length (scene units: metres), refractive index, Hartmann constant.
         expectStrings(p, 0);
@@ -207,13 +207,13 @@ class Reader {
         if (!(m.refractiveIndex > 0.0))
           fail(p.line, "dielectric '" + p.name + "' needs a refractive index > 0");
         break;
-      case MaterialType::Glow:
+      case MaterialType::kGlow:
         expectStrings(p, 0);
         expectReals(p, 4);
         m.color = vec(p, 0);
         m.glowRadiusM = p.reals[3];
         break;
-      case MaterialType::Void:
+      case MaterialType::kVoid:
         break;
     }
     for (int c = 0; c < 3; ++c)
@@ -259,15 +259,15 @@ class Reader {
 
   void add(const Primitive& p) {
     const std::string& t = p.type;
-    if (t == "plastic") return addMaterial(p, MaterialType::Plastic);
-    if (t == "metal") return addMaterial(p, MaterialType::Metal);
-    if (t == "trans") return addMaterial(p, MaterialType::Trans);
-    if (t == "mirror") return addMaterial(p, MaterialType::Mirror);
-    if (t == "glass") return addMaterial(p, MaterialType::Glass);
-    if (t == "dielectric") return addMaterial(p, MaterialType::Dielectric);
-    if (t == "light") return addMaterial(p, MaterialType::Light);
-    if (t == "illum") return addMaterial(p, MaterialType::Illum);
-    if (t == "glow") return addMaterial(p, MaterialType::Glow);
+    if (t == "plastic") return addMaterial(p, MaterialType::kPlastic);
+    if (t == "metal") return addMaterial(p, MaterialType::kMetal);
+    if (t == "trans") return addMaterial(p, MaterialType::kTrans);
+    if (t == "mirror") return addMaterial(p, MaterialType::kMirror);
+    if (t == "glass") return addMaterial(p, MaterialType::kGlass);
+    if (t == "dielectric") return addMaterial(p, MaterialType::kDielectric);
+    if (t == "light") return addMaterial(p, MaterialType::kLight);
+    if (t == "illum") return addMaterial(p, MaterialType::kIllum);
+    if (t == "glow") return addMaterial(p, MaterialType::kGlow);
     const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
                            t == "cup" || t == "cylinder" || t == "tube" || t == "source";
     if (!isSurface) fail(p.line, "primitive type '" + t + "' is not supported (" + kSupported + ")");
@@ -281,7 +281,7 @@ class Reader {
         fail(p.line, "source '" + p.name + "' needs an angle in (0, 360] degrees");
       if (mod < 0) return;  // void: invisible, as in Radiance
       const MaterialType mt = scene_.materials[mod].type;
-      if (mt != MaterialType::Light && mt != MaterialType::Glow && mt != MaterialType::Illum)
+      if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
         fail(p.line, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
       scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
       return;

@@ -1,7 +1,7 @@
 #include "engine/render.h"
 
-#include "engine/base/rng.h"
-#include "engine/parallel.h"
+#include "base/rng.h"
+#include "base/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -19,7 +19,7 @@ constexpr uint64_t kIrradianceStreamBase = 1ULL << 56;
 // Opaque and purely diffuse: all its reflected light is ρ E / π (no specular lobe, nothing
 // transmitted), so the irradiance estimate may stand in for a path.
 bool isMatteOpaque(const Material& m) {
-  return (m.type == MaterialType::Plastic || m.type == MaterialType::Metal) && photopic(m.specularReflectance) <= 0.0 &&
+  return (m.type == MaterialType::kPlastic || m.type == MaterialType::kMetal) && photopic(m.specularReflectance) <= 0.0 &&
          photopic(m.diffuseTransmittance) <= 0.0 && photopic(m.specularTransmittance) <= 0.0;
 }
 
@@ -399,7 +399,7 @@ Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keep
     ref.shapeNames.push_back(i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string());
   }
   Material sphere;
-  sphere.type = MaterialType::Glow;
+  sphere.type = MaterialType::kGlow;
   sphere.name = "reference_sphere";
   sphere.color = Rgb(luminanceCdM2 / kLumensPerWatt);
   ref.addDistant({0.0, 0.0, 1.0}, 360.0, ref.addMaterial(sphere), "reference_sphere");

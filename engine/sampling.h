@@ -2,8 +2,8 @@
 // caller passing jittered (u1, u2) from strata (see Strata2D).
 #pragma once
 
-#include "engine/base/math.h"
-#include "engine/base/rng.h"
+#include "base/math.h"
+#include "base/rng.h"
 
 #include <algorithm>
 #include <cmath>

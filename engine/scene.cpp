@@ -6,16 +6,16 @@ namespace candela {
 
 const char* materialTypeName(MaterialType t) {
   switch (t) {
-    case MaterialType::Void: return "void";
-    case MaterialType::Plastic: return "plastic";
-    case MaterialType::Metal: return "metal";
-    case MaterialType::Trans: return "trans";
-    case MaterialType::Mirror: return "mirror";
-    case MaterialType::Glass: return "glass";
-    case MaterialType::Dielectric: return "dielectric";
-    case MaterialType::Light: return "light";
-    case MaterialType::Illum: return "illum";
-    case MaterialType::Glow: return "glow";
+    case MaterialType::kVoid: return "void";
+    case MaterialType::kPlastic: return "plastic";
+    case MaterialType::kMetal: return "metal";
+    case MaterialType::kTrans: return "trans";
+    case MaterialType::kMirror: return "mirror";
+    case MaterialType::kGlass: return "glass";
+    case MaterialType::kDielectric: return "dielectric";
+    case MaterialType::kLight: return "light";
+    case MaterialType::kIllum: return "illum";
+    case MaterialType::kGlow: return "glow";
   }
   return "?";
 }
@@ -27,15 +27,15 @@ void deriveMaterial(Material& m) {
   // specularly transmitted trans·tspec.
   const double s = m.specularity;
   switch (m.type) {
-    case MaterialType::Plastic:
+    case MaterialType::kPlastic:
       m.diffuseReflectance = m.color * (1.0 - s);
       m.specularReflectance = Rgb(s);
       break;
-    case MaterialType::Metal:
+    case MaterialType::kMetal:
       m.diffuseReflectance = m.color * (1.0 - s);
       m.specularReflectance = m.color * s;
       break;
-    case MaterialType::Trans: {
+    case MaterialType::kTrans: {
       const Rgb nonSpec = m.color * (1.0 - s);
       m.diffuseReflectance = nonSpec * (1.0 - m.transmissivity);
       m.diffuseTransmittance = nonSpec * m.transmissivity * (1.0 - m.transmittedSpecular);
@@ -43,7 +43,7 @@ void deriveMaterial(Material& m) {
       m.specularReflectance = Rgb(s);
       break;
     }
-    case MaterialType::Mirror:
+    case MaterialType::kMirror:
       m.specularReflectance = m.color;
       break;
     default:
@@ -74,12 +74,12 @@ uint32_t Scene::addPolygon(const std::vector<Vec3>& pts, uint32_t material, cons
   s.material = material;
   s.n = glm::normalize(newellNormal(pts));
   if (pts.size() == 3) {
-    s.type = ShapeType::Triangle;
+    s.type = ShapeType::kTriangle;
     s.a = pts[0];
     s.b = pts[1] - pts[0];
     s.c = pts[2] - pts[0];
   } else {
-    s.type = ShapeType::Polygon;
+    s.type = ShapeType::kPolygon;
     // Plane offset from the centroid: the best plane for slightly non-planar input.
     Vec3 centroid(0.0);
     for (const Vec3& p : pts) centroid += p;
@@ -106,7 +106,7 @@ uint32_t Scene::addPolygon(const std::vector<Vec3>& pts, uint32_t material, cons
 uint32_t Scene::addSphere(const Vec3& centre, double radiusM, uint32_t material, bool inward,
                           const std::string& name) {
   Shape s;
-  s.type = ShapeType::Sphere;
+  s.type = ShapeType::kSphere;
   s.material = material;
   s.inward = inward;
   s.a = centre;
@@ -119,7 +119,7 @@ uint32_t Scene::addSphere(const Vec3& centre, double radiusM, uint32_t material,
 uint32_t Scene::addRing(const Vec3& centre, const Vec3& normal, double innerM, double outerM, uint32_t material,
                         const std::string& name) {
   Shape s;
-  s.type = ShapeType::Ring;
+  s.type = ShapeType::kRing;
   s.material = material;
   s.a = centre;
   s.n = glm::normalize(normal);
@@ -133,7 +133,7 @@ uint32_t Scene::addRing(const Vec3& centre, const Vec3& normal, double innerM, d
 uint32_t Scene::addCone(const Vec3& a, const Vec3& b, double ra, double rb, uint32_t material, bool inward,
                         const std::string& name) {
   Shape s;
-  s.type = ShapeType::Cone;
+  s.type = ShapeType::kCone;
   s.material = material;
   s.inward = inward;
   s.a = a;

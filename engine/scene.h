@@ -1,8 +1,8 @@
 // A scene: materials, surfaces (in the octree) and distant sources (at infinity).
 #pragma once
 
-#include "engine/base/error.h"
-#include "engine/base/units.h"
+#include "base/error.h"
+#include "base/units.h"
 #include "engine/luminaire_source.h"
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
@@ -14,14 +14,14 @@
 
 namespace candela {
 
-enum class MaterialType { Void, Plastic, Metal, Trans, Mirror, Glass, Dielectric, Light, Illum, Glow };
+enum class MaterialType { kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow };
 
 const char* materialTypeName(MaterialType t);
 
 // A material as read from the scene, with the derived reflectances the integrators use.
 // Colours are Radiance RGB; emission is a radiance in W/sr/m² (179 lm/W).
 struct Material {
-  MaterialType type = MaterialType::Void;
+  MaterialType type = MaterialType::kVoid;
   std::string name;
   FileLoc loc;
   Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
@@ -41,10 +41,10 @@ struct Material {
   Rgb specularReflectance{0.0};
 
   bool isEmitter() const {
-    return type == MaterialType::Light || type == MaterialType::Illum || type == MaterialType::Glow;
+    return type == MaterialType::kLight || type == MaterialType::kIllum || type == MaterialType::kGlow;
   }
   // Light sources sampled explicitly (light, illum); glow is found by hemisphere sampling.
-  bool isSampledSource() const { return type == MaterialType::Light || type == MaterialType::Illum; }
+  bool isSampledSource() const { return type == MaterialType::kLight || type == MaterialType::kIllum; }
 };
 
 // A source at infinity: Radiance's `source` primitive (a cone of directions).

@@ -1,4 +1,4 @@
-// Sensor grids: where illuminance is computed. Pure geometry over engine/base; the case-file
+// Sensor grids: where illuminance is computed. Pure geometry over base/; the case-file
 // reader fills a PlaneGridSpec, this file turns it into points.
 #pragma once
 
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/base/error.h"
-#include "engine/base/math.h"
+#include "base/error.h"
+#include "base/math.h"
 
 namespace candela {
 

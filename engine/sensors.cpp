@@ -1,7 +1,7 @@
 #include "engine/sensors.h"
 
 #include "engine/irradiance_cache.h"
-#include "engine/parallel.h"
+#include "base/parallel.h"
 
 #include <algorithm>
 #include <atomic>

@@ -174,9 +174,9 @@ bool coneOverlapsBox(const Shape& s, const Vec3& lo, const Vec3& hi) {
 bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const Vec3& dir, double tMin,
                     double tMax, double& t) {
   switch (s.type) {
-    case ShapeType::Triangle:
+    case ShapeType::kTriangle:
       return intersectTriangle(s.a, s.b, s.c, o, dir, tMin, tMax, t);
-    case ShapeType::Polygon: {
+    case ShapeType::kPolygon: {
       const double denom = glm::dot(s.n, dir);
       if (denom == 0.0) return false;
       const double tt = (s.d - glm::dot(s.n, o)) / denom;
@@ -186,12 +186,12 @@ bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const 
       t = tt;
       return true;
     }
-    case ShapeType::Sphere: {
+    case ShapeType::kSphere: {
       const Vec3 oc = o - s.a;
       return nearestQuadraticRoot(glm::dot(dir, dir), glm::dot(oc, dir), glm::dot(oc, oc) - s.r0 * s.r0, tMin,
                                   tMax, t);
     }
-    case ShapeType::Ring: {
+    case ShapeType::kRing: {
       const double denom = glm::dot(s.n, dir);
       if (denom == 0.0) return false;
       const double tt = glm::dot(s.n, s.a - o) / denom;
@@ -202,7 +202,7 @@ bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const 
       t = tt;
       return true;
     }
-    case ShapeType::Cone:
+    case ShapeType::kCone:
       return intersectCone(s, o, dir, tMin, tMax, t);
   }
   return false;
@@ -211,15 +211,15 @@ bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const 
 Vec3 shapeNormal(const Shape& s, const Vec3& p) {
   Vec3 n;
   switch (s.type) {
-    case ShapeType::Triangle:
-    case ShapeType::Polygon:
-    case ShapeType::Ring:
+    case ShapeType::kTriangle:
+    case ShapeType::kPolygon:
+    case ShapeType::kRing:
       n = s.n;
       break;
-    case ShapeType::Sphere:
+    case ShapeType::kSphere:
       n = glm::normalize(p - s.a);
       break;
-    case ShapeType::Cone: {
+    case ShapeType::kCone: {
       const Vec3 rel = p - s.a;
       const double z = glm::dot(rel, s.n);
       const Vec3 radial = rel - z * s.n;
@@ -236,26 +236,26 @@ Vec3 shapeNormal(const Shape& s, const Vec3& p) {
 Box shapeBounds(const Shape& s, const VertexStore& vs) {
   Box b;
   switch (s.type) {
-    case ShapeType::Triangle:
+    case ShapeType::kTriangle:
       b.extend(s.a);
       b.extend(s.a + s.b);
       b.extend(s.a + s.c);
       break;
-    case ShapeType::Polygon:
+    case ShapeType::kPolygon:
       for (uint32_t i = 0; i < s.vertexCount; ++i) b.extend(vs.points[s.firstVertex + i]);
       break;
-    case ShapeType::Sphere:
+    case ShapeType::kSphere:
       b.extend(s.a - Vec3(s.r0));
       b.extend(s.a + Vec3(s.r0));
       break;
-    case ShapeType::Ring: {
+    case ShapeType::kRing: {
       // Extent of a disk of radius r with normal n along axis i is r·sqrt(1 − n_i²).
       const Vec3 e = s.r1 * glm::sqrt(glm::max(Vec3(0.0), Vec3(1.0) - s.n * s.n));
       b.extend(s.a - e);
       b.extend(s.a + e);
       break;
     }
-    case ShapeType::Cone: {
+    case ShapeType::kCone: {
       const Vec3 e = glm::sqrt(glm::max(Vec3(0.0), Vec3(1.0) - s.n * s.n));
       b.extend(s.a - s.r0 * e);
       b.extend(s.a + s.r0 * e);
@@ -275,19 +275,19 @@ bool shapeOverlapsBox(const Shape& s, const VertexStore& vs, const Vec3& lo, dou
   if (bb.lo.x > h.x || bb.lo.y > h.y || bb.lo.z > h.z || bb.hi.x < l.x || bb.hi.y < l.y || bb.hi.z < l.z)
     return false;
   switch (s.type) {
-    case ShapeType::Triangle:
+    case ShapeType::kTriangle:
       return polygonOverlapsBox({s.a, s.a + s.b, s.a + s.c}, l, h);
-    case ShapeType::Polygon:
+    case ShapeType::kPolygon:
       return polygonOverlapsBox(
           std::vector<Vec3>(vs.points.begin() + s.firstVertex, vs.points.begin() + s.firstVertex + s.vertexCount),
           l, h);
-    case ShapeType::Sphere: {
+    case ShapeType::kSphere: {
       const double r2 = s.r0 * s.r0;
       return pointBoxDistance2(s.a, l, h) <= r2 && pointBoxMaxDistance2(s.a, l, h) >= r2;
     }
-    case ShapeType::Ring:
+    case ShapeType::kRing:
       return ringOverlapsBox(s, l, h);
-    case ShapeType::Cone:
+    case ShapeType::kCone:
       return coneOverlapsBox(s, l, h);
   }
   return true;
@@ -295,9 +295,9 @@ bool shapeOverlapsBox(const Shape& s, const VertexStore& vs, const Vec3& lo, dou
 
 double shapeArea(const Shape& s, const VertexStore& vs) {
   switch (s.type) {
-    case ShapeType::Triangle:
+    case ShapeType::kTriangle:
       return 0.5 * glm::length(glm::cross(s.b, s.c));
-    case ShapeType::Polygon: {
+    case ShapeType::kPolygon: {
       Vec3 sum(0.0);
       for (uint32_t i = 0; i < s.vertexCount; ++i) {
         const Vec3& p = vs.points[s.firstVertex + i];
@@ -306,11 +306,11 @@ double shapeArea(const Shape& s, const VertexStore& vs) {
       }
       return 0.5 * std::abs(glm::dot(sum, s.n));
     }
-    case ShapeType::Sphere:
+    case ShapeType::kSphere:
       return 4.0 * kPi * s.r0 * s.r0;
-    case ShapeType::Ring:
+    case ShapeType::kRing:
       return kPi * (s.r1 * s.r1 - s.r0 * s.r0);
-    case ShapeType::Cone: {
+    case ShapeType::kCone: {
       const double slant = std::sqrt(s.d * s.d + (s.r1 - s.r0) * (s.r1 - s.r0));
       return kPi * (s.r0 + s.r1) * slant;
     }

@@ -3,17 +3,17 @@
 // counter-clockwise; spheres, cones and cylinders face outward; bubble, cup and tube face inward.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace candela {
 
-enum class ShapeType : uint8_t { Triangle, Polygon, Sphere, Ring, Cone };
+enum class ShapeType : uint8_t { kTriangle, kPolygon, kSphere, kRing, kCone };
 
 struct Shape {
-  ShapeType type = ShapeType::Polygon;
+  ShapeType type = ShapeType::kPolygon;
   bool inward = false;         // bubble, cup, tube: normal points to the inside
   uint32_t material = 0;       // index into Scene::materials
   uint32_t firstVertex = 0;    // polygon: first vertex in Scene::vertices / projected 2D coords

@@ -85,7 +85,7 @@ void tallySky(const Vec3& d, const Rgb& weight, bool direct) {
 }
 
 bool isFlat(const Shape& s) {
-  return s.type == ShapeType::Triangle || s.type == ShapeType::Polygon || s.type == ShapeType::Ring;
+  return s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon || s.type == ShapeType::kRing;
 }
 
 // Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k). One sample
@@ -235,13 +235,13 @@ Tracer::Tracer(const Scene& scene, OctreeOptions octree) : Tracer(scene, std::ma
 Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
     : scene_(scene), accel_(std::move(accelerator)), lights_(collectLights(scene)) {
   for (const Material& m : scene.materials)
-    if (m.type == MaterialType::Glass || m.type == MaterialType::Illum ||
-        (m.type == MaterialType::Trans && photopic(m.specularTransmittance) > 0.0))
+    if (m.type == MaterialType::kGlass || m.type == MaterialType::kIllum ||
+        (m.type == MaterialType::kTrans && photopic(m.specularTransmittance) > 0.0))
       hasTransmitters_ = true;
   // Flat mirrors get virtual light sources (images of every sampled source).
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& sh = scene.shapes[i];
-    if (isFlat(sh) && scene.materials[sh.material].type == MaterialType::Mirror) mirrors_.push_back(i);
+    if (isFlat(sh) && scene.materials[sh.material].type == MaterialType::kMirror) mirrors_.push_back(i);
   }
   isMirrorImage_.assign(scene.shapes.size(), 0);
   for (uint32_t i : mirrors_) isMirrorImage_[i] = 1;
@@ -260,13 +260,13 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     const Shape& s = scene_.shapes[h.shape];
     const Material& m = scene_.materials[s.material];
     const Vec3 x = o + h.t * dir;
-    if (m.type == MaterialType::Glass) {
+    if (m.type == MaterialType::kGlass) {
       Rgb tr, rf;
       thinGlass(m.color, m.refractiveIndex, glm::dot(dir, shapeNormal(s, x)), tr, rf);
       t *= tr;
-    } else if (m.type == MaterialType::Trans) {
+    } else if (m.type == MaterialType::kTrans) {
       t *= m.specularTransmittance;
-    } else if (!(m.type == MaterialType::Illum && m.alternate < 0)) {
+    } else if (!(m.type == MaterialType::kIllum && m.alternate < 0)) {
       // Opaque (an illum with no alternate is invisible to all but its own rays). A dielectric
       // is opaque here too: it bends light, so no straight shadow ray passes it (as Radiance's
       // source rays); paths find what lies behind it (pathRadiance).
@@ -286,7 +286,7 @@ Rgb Tracer::distantRadiance(const Vec3& dir, bool countSources, double misCosPdf
     if (glm::dot(dir, d.direction) >= d.cosHalfAngle && (!seen || d.solidAngleSr < seen->solidAngleSr)) seen = &d;
   if (seen) {
     const Material& m = scene_.materials[seen->material];
-    if (m.type == MaterialType::Glow) return m.color;
+    if (m.type == MaterialType::kGlow) return m.color;
     return countSources ? m.color : Rgb(0.0);
   }
   if (!scene_.sky) return Rgb(0.0);
@@ -316,7 +316,7 @@ Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int 
   if (haveExact && photopic(exact) <= 0.0) return Rgb(0.0);  // the source cannot reach this side
   // Polygon sources are sampled over their part above the receiver's horizon, so that every
   // sample tells about visibility.
-  const bool clippedPolygon = haveExact && light.kind == Light::Kind::Area && !light.outline.empty();
+  const bool clippedPolygon = haveExact && light.kind == Light::Kind::kArea && !light.outline.empty();
   if (clippedPolygon) {
     tris = triangulatePolygon(clipped, scene_.shapes[light.shape].n);
     cumulative.clear();
@@ -332,9 +332,9 @@ Rgb Tracer::lightEstimate(const Light& light, const Vec3& p, const Vec3& n, int 
   // Without a closed form: E = mean(f V).
   Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
   double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
-  const uint32_t lightShape = light.kind == Light::Kind::Area ? light.shape : kNoShape;
+  const uint32_t lightShape = light.kind == Light::Kind::kArea ? light.shape : kNoShape;
   // A far-field luminaire is one point: one shadow ray says all there is.
-  const bool point = light.kind == Light::Kind::Luminaire && haveExact;
+  const bool point = light.kind == Light::Kind::kLuminaire && haveExact;
   const int kk = point ? 1 : k;
   // Per-stratum terms for the variance (zero where a sample tells nothing).
   thread_local std::vector<double> zRatio, zRest;
@@ -421,7 +421,7 @@ Rgb Tracer::mirrorIrradiance(const Vec3& p, const Vec3& n, int k, uint32_t skip,
     const Rgb colour = scene_.materials[mirror.material].color;
     const Vec3 side = dp > 0.0 ? nm : -nm;
     for (const Light& light : lights_) {
-      if (light.kind == Light::Kind::Area && light.shape == ms) continue;
+      if (light.kind == Light::Kind::kArea && light.shape == ms) continue;
       total += colour * lightEstimate(light, pi, ni, k, rng, variance, [&](const LightSample& ls, uint32_t lightShape) {
         const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
         // Both legs pass transmitting surfaces (glass, trans, illum without alternate) as shadow
@@ -547,7 +547,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
     const Vec3 nf = front ? ng : -ng;  // faces the incoming ray
     const double off = originOffset(x);
     const uint32_t flatSkip = isFlat(shape) ? h.shape : kNoShape;
-    if (m->type == MaterialType::Illum) {
+    if (m->type == MaterialType::kIllum) {
       if (m->alternate < 0) {  // invisible to non-shadow rays: pass straight through
         o = x - off * nf;
         skip = flatSkip;
@@ -556,14 +556,14 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
       m = &scene_.materials[m->alternate];
     }
     switch (m->type) {
-      case MaterialType::Light:
-      case MaterialType::Illum:
+      case MaterialType::kLight:
+      case MaterialType::kIllum:
         return (countSources && front) ? result + beta * m->color : result;
-      case MaterialType::Glow:
+      case MaterialType::kGlow:
         return front ? result + beta * m->color : result;
-      case MaterialType::Void:
+      case MaterialType::kVoid:
         return result;
-      case MaterialType::Mirror:
+      case MaterialType::kMirror:
         misCosPdf = 0.0;  // the sky seen in a mirror is not sampled directly
         reflected = true;
         beta *= m->color;
@@ -578,7 +578,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         }
         ++mirrorsMet;
         continue;
-      case MaterialType::Glass: {
+      case MaterialType::kGlass: {
         Rgb tr, rf;
         thinGlass(m->color, m->refractiveIndex, glm::dot(d, ng), tr, rf);
         const double pt = photopic(tr), pr = photopic(rf);
@@ -600,7 +600,7 @@ Rgb Tracer::pathRadiance(const Vec3& origin, const Vec3& direction, uint32_t ski
         skip = flatSkip;
         continue;
       }
-      case MaterialType::Dielectric: {
+      case MaterialType::kDielectric: {
         // A smooth boundary into (front face) or out of (back face) a medium of index n: the ray
         // reflects with probability R (Fresnel, unpolarised; 1 beyond the critical angle) or
         // refracts (Snell), so each event carries weight 1 and the estimator is unbiased. A ray
@@ -683,7 +683,7 @@ Rgb Tracer::diffuseVertex(const Vec3& x, const Vec3& inDir, const Vec3& nf, doub
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
   // with probability 1 − albedo).
   const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
-  const double pSp = m.type == MaterialType::Mirror ? 0.0 : photopic(m.specularReflectance);
+  const double pSp = m.type == MaterialType::kMirror ? 0.0 : photopic(m.specularReflectance);
   const double norm = std::max(1.0, pRho + pTd + pTs + pSp);
   if (pRho + pTd + pTs + pSp <= 0.0) return out;
   const Strata2D strata(k, 1.0 / kPi);
@@ -812,8 +812,8 @@ void Tracer::sunCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, 
 }
 
 bool Tracer::cacheable(const Material& m) {
-  return (m.type == MaterialType::Plastic || m.type == MaterialType::Metal ||
-          m.type == MaterialType::Trans) &&
+  return (m.type == MaterialType::kPlastic || m.type == MaterialType::kMetal ||
+          m.type == MaterialType::kTrans) &&
          photopic(m.diffuseReflectance) > 0.0 && photopic(m.diffuseTransmittance) <= 0.0 &&
          photopic(m.specularTransmittance) <= 0.0;
 }
@@ -839,7 +839,7 @@ void Tracer::hemisphereCacheQueries(const Vec3& o, const Frame& frame, int mThet
     if (!accel_->intersect(o, dir, 0.0, kInf, h, skip)) continue;
     const Shape& shape = scene_.shapes[h.shape];
     const Material* m = &scene_.materials[shape.material];
-    if (m->type == MaterialType::Illum) {
+    if (m->type == MaterialType::kIllum) {
       if (m->alternate < 0) continue;
       m = &scene_.materials[m->alternate];
     }

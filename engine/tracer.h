@@ -3,7 +3,7 @@
 // with path-traced interreflection up to a bounce limit).
 #pragma once
 
-#include "engine/base/rng.h"
+#include "base/rng.h"
 #include "engine/case_file.h"
 #include "engine/irradiance_cache.h"
 #include "engine/lights.h"

@@ -3,7 +3,7 @@
 // z along the line of sight (forward).
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 #include <cstddef>
 #include <vector>

@@ -1,10 +1,11 @@
 #include "photometry/annual_sky.h"
 
+#include "base/parallel.h"
+
 #include "photometry/sky_patches.h"
 #include "photometry/sky_perez.h"
 #include "photometry/sun_spa.h"
 
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
@@ -190,7 +191,7 @@ AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOpt
 
   // Each hour writes only its own slots, so the result does not depend on the thread count.
   std::atomic<int> missingValues{0}, missingHours{0}, degenerateHours{0};
-  tbb::parallel_for(size_t(0), nHours, [&](size_t h) {
+  parallelFor(nHours, options.threads, [&](size_t h) {
     const EpwRecord& rec = epw.records[h];
     AnnualHour& hour = out.hours[h];
     hour.month = rec.month;

@@ -18,7 +18,7 @@
 // diffuse light is kept. See docs/annual-sky.md.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
 #include "photometry/sky_model.h"
@@ -66,6 +66,7 @@ struct AnnualSkyOptions {
   int subdivision = 1;               // Reinhart MF >= 1 (1 = Tregenza's 145 sky patches)
   double groundReflectance = 0.2;    // rho_g in [0, 1]
   int subSamples = 4;                // Gauss-Legendre points per side per patch for the patch mean
+  int threads = 0;                   // threads for the hours (0 = all cores); results do not depend on it
 };
 
 // site gives latitude/longitude/elevation/timezone (true frame; the model's north rotation is the

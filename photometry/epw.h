@@ -5,7 +5,7 @@
 // COMMENTS 2, DATA PERIODS), then one comma-separated record per hour with 35 fields.
 #pragma once
 
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <istream>
 #include <string>

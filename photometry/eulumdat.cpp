@@ -9,7 +9,7 @@
 #include "photometry/eulumdat.h"
 #include "photometry/text_lines.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <charconv>
@@ -120,12 +120,12 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   info.openingWidthM = lb;
   info.openingHeightM = lh;
   if (la == 0.0 && lb == 0.0) {
-    info.openingShape = OpeningShape::Point;
+    info.openingShape = OpeningShape::kPoint;
   } else if (lb == 0.0) {  // width 0: circular, diameter = length
     info.openingWidthM = la;
-    info.openingShape = lh > 0.0 ? OpeningShape::VerticalCylinder : OpeningShape::Circular;
+    info.openingShape = lh > 0.0 ? OpeningShape::kVerticalCylinder : OpeningShape::kCircular;
   } else {
-    info.openingShape = lh > 0.0 ? OpeningShape::RectangularWithSides : OpeningShape::Rectangular;
+    info.openingShape = lh > 0.0 ? OpeningShape::kRectangularWithSides : OpeningShape::kRectangular;
   }
   info.declaredDownwardFluxPercent = in.number("downward flux fraction DFF");
   info.declaredLorPercent = in.number("light output ratio LORL");
@@ -169,7 +169,7 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   // Stored planes Mc1..Mc2 (1-based, wrapping past Mc for Isym 3) and the checks that they
   // are the planes the symmetry needs.
   std::vector<double> planes;
-  PlaneSymmetry sym = PlaneSymmetry::None;
+  PlaneSymmetry sym = PlaneSymmetry::kNone;
   const auto need = [&](size_t k, double deg) {
     if (std::fabs(c[k] - deg) > 1e-6)
       throw InputError(FileLoc{fileName, cEndLine - mc + 1 + int(k), 0},
@@ -179,23 +179,23 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   need(0, 0.0);
   switch (isym) {
     case 0: planes = c; break;
-    case 1: planes = {0.0}; sym = PlaneSymmetry::Rotational; break;
+    case 1: planes = {0.0}; sym = PlaneSymmetry::kRotational; break;
     case 2:
       need(size_t(mc / 2), 180.0);
       planes.assign(c.begin(), c.begin() + mc / 2 + 1);
-      sym = PlaneSymmetry::MirrorC0C180;
+      sym = PlaneSymmetry::kMirrorC0C180;
       break;
     case 3:
       need(size_t(3 * mc / 4), 270.0);
       need(size_t(mc / 4), 90.0);
       for (int k = 3 * mc / 4; k < mc; ++k) planes.push_back(c[size_t(k)] - 360.0);  // C270..C345 as -90..-15
       for (int k = 0; k <= mc / 4; ++k) planes.push_back(c[size_t(k)]);
-      sym = PlaneSymmetry::MirrorC90C270;
+      sym = PlaneSymmetry::kMirrorC90C270;
       break;
     case 4:
       need(size_t(mc / 4), 90.0);
       planes.assign(c.begin(), c.begin() + mc / 4 + 1);
-      sym = PlaneSymmetry::Quadrant;
+      sym = PlaneSymmetry::kQuadrant;
       break;
   }
 
@@ -223,7 +223,7 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
     in.text("end of file");
     throw InputError(in.loc(), "unexpected line after the intensity table (check Mc, Ng and Isym)");
   }
-  return PhotometricWeb(std::move(info), PhotometricType::C, sym, std::move(planes), std::move(g), std::move(cd));
+  return PhotometricWeb(std::move(info), PhotometricType::kC, sym, std::move(planes), std::move(g), std::move(cd));
 }
 
 }  // namespace candela

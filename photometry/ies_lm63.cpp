@@ -11,7 +11,7 @@
 #include "photometry/ies_lm63.h"
 #include "photometry/text_lines.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <algorithm>
 #include <cctype>
@@ -147,21 +147,21 @@ OpeningShape iesOpeningShape(double w, double l, double h) {
   const auto same = [](double a, double b) {
     return std::fabs(a - b) <= 1e-9 + 1e-6 * std::max(std::fabs(a), std::fabs(b));
   };
-  if (w == 0 && l == 0 && h == 0) return OpeningShape::Point;
-  if (w > 0 && l > 0) return h == 0 ? OpeningShape::Rectangular
-                            : h > 0 ? OpeningShape::RectangularWithSides
-                                    : OpeningShape::Other;
+  if (w == 0 && l == 0 && h == 0) return OpeningShape::kPoint;
+  if (w > 0 && l > 0) return h == 0 ? OpeningShape::kRectangular
+                            : h > 0 ? OpeningShape::kRectangularWithSides
+                                    : OpeningShape::kOther;
   if (w < 0 && l < 0) {
-    if (h == 0) return same(w, l) ? OpeningShape::Circular : OpeningShape::Ellipse;
-    if (h > 0) return same(w, l) ? OpeningShape::VerticalCylinder : OpeningShape::VerticalEllipticalCylinder;
-    return same(w, l) && same(w, h) ? OpeningShape::Sphere : OpeningShape::Ellipsoid;
+    if (h == 0) return same(w, l) ? OpeningShape::kCircular : OpeningShape::kEllipse;
+    if (h > 0) return same(w, l) ? OpeningShape::kVerticalCylinder : OpeningShape::kVerticalEllipticalCylinder;
+    return same(w, l) && same(w, h) ? OpeningShape::kSphere : OpeningShape::kEllipsoid;
   }
-  if (w < 0 && l > 0 && h < 0) return OpeningShape::HorizontalCylinderAlongLength;
-  if (w > 0 && l < 0 && h < 0) return OpeningShape::HorizontalCylinderAlongWidth;
-  if ((w < 0 && l == 0 && h < 0)) return same(w, h) ? OpeningShape::VerticalCircle : OpeningShape::VerticalEllipse;
-  if ((w == 0 && l < 0 && h < 0)) return same(l, h) ? OpeningShape::VerticalCircle : OpeningShape::VerticalEllipse;
-  if (w < 0 && l == 0 && h == 0) return OpeningShape::Circular;  // pre-2019: negative width = round
-  return OpeningShape::Other;
+  if (w < 0 && l > 0 && h < 0) return OpeningShape::kHorizontalCylinderAlongLength;
+  if (w > 0 && l < 0 && h < 0) return OpeningShape::kHorizontalCylinderAlongWidth;
+  if ((w < 0 && l == 0 && h < 0)) return same(w, h) ? OpeningShape::kVerticalCircle : OpeningShape::kVerticalEllipse;
+  if ((w == 0 && l < 0 && h < 0)) return same(l, h) ? OpeningShape::kVerticalCircle : OpeningShape::kVerticalEllipse;
+  if (w < 0 && l == 0 && h == 0) return OpeningShape::kCircular;  // pre-2019: negative width = round
+  return OpeningShape::kOther;
 }
 
 PhotometricWeb readIes(const std::filesystem::path& path, const IesOptions& options) {
@@ -276,7 +276,7 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   info.openingWidthM = std::fabs(w) * toM;
   info.openingLengthM = std::fabs(l) * toM;
   info.openingHeightM = std::fabs(h) * toM;
-  if (info.openingShape == OpeningShape::Circular && l == 0.0) info.openingLengthM = info.openingWidthM;
+  if (info.openingShape == OpeningShape::kCircular && l == 0.0) info.openingLengthM = info.openingWidthM;
 
   info.ballastFactor = t.number("ballast factor");
   if (!(info.ballastFactor > 0.0))
@@ -297,23 +297,23 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   std::vector<double> hAngles = t.angles(nh, "horizontal angles");
   const FileLoc hLoc = t.loc();
 
-  PlaneSymmetry sym = PlaneSymmetry::None;
-  const PhotometricType type = ptype == 1 ? PhotometricType::C : PhotometricType::B;
-  if (type == PhotometricType::C) {
+  PlaneSymmetry sym = PlaneSymmetry::kNone;
+  const PhotometricType type = ptype == 1 ? PhotometricType::kC : PhotometricType::kB;
+  if (type == PhotometricType::kC) {
     if (vAngles.front() < 0.0 || vAngles.back() > 180.0)
       throw InputError(vLoc, "type C vertical angles must lie in 0-180, got " + Tokens::fmt(vAngles.front()) +
                                  "-" + Tokens::fmt(vAngles.back()));
     const double h0 = hAngles.front(), h1 = hAngles.back();
     if (nh == 1) {
-      sym = PlaneSymmetry::Rotational;
+      sym = PlaneSymmetry::kRotational;
     } else if (h0 == 0.0 && h1 == 90.0) {
-      sym = PlaneSymmetry::Quadrant;
+      sym = PlaneSymmetry::kQuadrant;
     } else if (h0 == 0.0 && h1 == 180.0) {
-      sym = PlaneSymmetry::MirrorC0C180;
+      sym = PlaneSymmetry::kMirrorC0C180;
     } else if (h0 == 0.0 && h1 > 180.0 && h1 <= 360.0) {
-      sym = PlaneSymmetry::None;
+      sym = PlaneSymmetry::kNone;
     } else if (h0 == 90.0 && h1 == 270.0) {
-      sym = PlaneSymmetry::MirrorC90C270;  // legacy: symmetric about the 90-270 plane
+      sym = PlaneSymmetry::kMirrorC90C270;  // legacy: symmetric about the 90-270 plane
     } else {
       throw InputError(hLoc, "type C horizontal angles " + Tokens::fmt(h0) + "-" + Tokens::fmt(h1) +
                                  " are not a known symmetry (0; 0-90; 0-180; 0-360; 90-270)");

@@ -96,7 +96,7 @@ std::string formatSummary(const LuminaireSummary& s) {
     o += l + value + "\n";
   };
   line("File", s.fileName);
-  line("Format", s.format + (s.type == PhotometricType::B ? " (type B)" : " (type C)"));
+  line("Format", s.format + (s.type == PhotometricType::kB ? " (type B)" : " (type C)"));
   if (!s.luminaire.empty()) line("Luminaire", s.luminaire);
   if (!s.manufacturer.empty()) line("Manufacturer", s.manufacturer);
   line("Luminous flux", printf1("%.1f lm", s.totalLumens));

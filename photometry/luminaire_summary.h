@@ -25,7 +25,7 @@ double spreadAngleDeg(const PhotometricWeb& web, double cDeg, double fraction);
 
 struct LuminaireSummary {
   std::string fileName, format, luminaire, manufacturer;
-  PhotometricType type = PhotometricType::C;
+  PhotometricType type = PhotometricType::kC;
   double totalLumens = 0.0;       // lm, integrated from the web
   double lampLumens = -1.0;       // lm, rated; <= 0 for absolute photometry
   double lightOutputRatio = 0.0;  // fraction; NaN when absolute
@@ -38,7 +38,7 @@ struct LuminaireSummary {
   double inputWatts = 0.0;                     // W; 0 when unknown
   double efficacyLmPerW = 0.0;                 // luminaire lm/W; NaN when watts unknown
   double openingWidthM = 0.0, openingLengthM = 0.0, openingHeightM = 0.0;
-  OpeningShape openingShape = OpeningShape::Point;
+  OpeningShape openingShape = OpeningShape::kPoint;
 };
 
 LuminaireSummary summarizeLuminaire(const PhotometricWeb& web);

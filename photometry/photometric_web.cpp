@@ -1,6 +1,6 @@
 #include "photometry/photometric_web.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "photometry/eulumdat.h"
 #include "photometry/ies_lm63.h"
 
@@ -52,20 +52,20 @@ void mirrorAboutZero(std::vector<double>& angles, std::vector<std::vector<double
 
 const char* openingShapeName(OpeningShape shape) {
   switch (shape) {
-    case OpeningShape::Point: return "point";
-    case OpeningShape::Rectangular: return "rectangular";
-    case OpeningShape::RectangularWithSides: return "rectangular with luminous sides";
-    case OpeningShape::Circular: return "circular";
-    case OpeningShape::Ellipse: return "ellipse";
-    case OpeningShape::VerticalCylinder: return "vertical cylinder";
-    case OpeningShape::VerticalEllipticalCylinder: return "vertical elliptical cylinder";
-    case OpeningShape::Sphere: return "sphere";
-    case OpeningShape::Ellipsoid: return "ellipsoid";
-    case OpeningShape::HorizontalCylinderAlongWidth: return "horizontal cylinder along C0-C180";
-    case OpeningShape::HorizontalCylinderAlongLength: return "horizontal cylinder along C90-C270";
-    case OpeningShape::VerticalCircle: return "vertical circle";
-    case OpeningShape::VerticalEllipse: return "vertical ellipse";
-    case OpeningShape::Other: return "other";
+    case OpeningShape::kPoint: return "point";
+    case OpeningShape::kRectangular: return "rectangular";
+    case OpeningShape::kRectangularWithSides: return "rectangular with luminous sides";
+    case OpeningShape::kCircular: return "circular";
+    case OpeningShape::kEllipse: return "ellipse";
+    case OpeningShape::kVerticalCylinder: return "vertical cylinder";
+    case OpeningShape::kVerticalEllipticalCylinder: return "vertical elliptical cylinder";
+    case OpeningShape::kSphere: return "sphere";
+    case OpeningShape::kEllipsoid: return "ellipsoid";
+    case OpeningShape::kHorizontalCylinderAlongWidth: return "horizontal cylinder along C0-C180";
+    case OpeningShape::kHorizontalCylinderAlongLength: return "horizontal cylinder along C90-C270";
+    case OpeningShape::kVerticalCircle: return "vertical circle";
+    case OpeningShape::kVerticalEllipse: return "vertical ellipse";
+    case OpeningShape::kOther: return "other";
   }
   return "other";
 }
@@ -81,18 +81,18 @@ PhotometricWeb::PhotometricWeb(PhotometricInfo info, PhotometricType type, Plane
   for (size_t i = 0; i < np; ++i)
     rows[i].assign(candelaCd.begin() + long(i * nq), candelaCd.begin() + long((i + 1) * nq));
 
-  if (type == PhotometricType::C) {
+  if (type == PhotometricType::kC) {
     std::vector<std::pair<double, size_t>> planes;  // (C in [0,360), source row)
-    if (symmetry == PlaneSymmetry::Rotational || np == 1) {
+    if (symmetry == PlaneSymmetry::kRotational || np == 1) {
       for (double c : {0.0, 90.0, 180.0, 270.0}) planes.push_back({c, 0});
     } else {
       // The symmetry group of the stored half or quadrant (CIE 121 / LM-63 symmetries).
       std::vector<double (*)(double)> ops = {[](double c) { return c; }};
-      if (symmetry == PlaneSymmetry::MirrorC0C180 || symmetry == PlaneSymmetry::Quadrant)
+      if (symmetry == PlaneSymmetry::kMirrorC0C180 || symmetry == PlaneSymmetry::kQuadrant)
         ops.push_back([](double c) { return -c; });
-      if (symmetry == PlaneSymmetry::MirrorC90C270 || symmetry == PlaneSymmetry::Quadrant)
+      if (symmetry == PlaneSymmetry::kMirrorC90C270 || symmetry == PlaneSymmetry::kQuadrant)
         ops.push_back([](double c) { return 180.0 - c; });
-      if (symmetry == PlaneSymmetry::Quadrant) ops.push_back([](double c) { return 180.0 + c; });
+      if (symmetry == PlaneSymmetry::kQuadrant) ops.push_back([](double c) { return 180.0 + c; });
       for (auto op : ops)
         for (size_t i = 0; i < np; ++i) planes.push_back({wrap360(op(planeAnglesDeg[i])), i});
     }
@@ -142,7 +142,7 @@ PhotometricWeb::PhotometricWeb(PhotometricInfo info, PhotometricType type, Plane
     for (size_t j = 0; j < polar_.size(); ++j)
       if (gridCd(i, j) > maxCd_) {
         maxCd_ = gridCd(i, j);
-        if (type_ == PhotometricType::C) {
+        if (type_ == PhotometricType::kC) {
           maxDir_ = {planes_[i], polar_[j]};
         } else {
           const double h = degToRad(planes_[i]), v = degToRad(polar_[j]);
@@ -167,7 +167,7 @@ CGamma PhotometricWeb::cGammaOf(const Vec3& dirLocal) {
 double PhotometricWeb::gridInterp(double planeDeg, double polarDeg) const {
   if (cd_.empty()) return 0.0;
   if (polarDeg < polar_.front() - kAngleEps || polarDeg > polar_.back() + kAngleEps) return 0.0;
-  if (type_ == PhotometricType::C) {
+  if (type_ == PhotometricType::kC) {
     planeDeg = wrap360(planeDeg);
   } else if (planeDeg < planes_.front() - kAngleEps || planeDeg > planes_.back() + kAngleEps) {
     return 0.0;
@@ -180,14 +180,14 @@ double PhotometricWeb::gridInterp(double planeDeg, double polarDeg) const {
 }
 
 double PhotometricWeb::intensityCd(double cDeg, double gammaDeg) const {
-  if (type_ == PhotometricType::C) return gridInterp(cDeg, gammaDeg);
+  if (type_ == PhotometricType::kC) return gridInterp(cDeg, gammaDeg);
   return intensityCd(directionOf(cDeg, gammaDeg));
 }
 
 double PhotometricWeb::intensityCd(const Vec3& dirLocal) const {
   const double len = glm::length(dirLocal);
   if (!(len > 0.0)) return 0.0;
-  if (type_ == PhotometricType::C) {
+  if (type_ == PhotometricType::kC) {
     const CGamma cg = cGammaOf(dirLocal);
     return gridInterp(cg.cDeg, cg.gammaDeg);
   }
@@ -199,7 +199,7 @@ double PhotometricWeb::intensityCd(const Vec3& dirLocal) const {
 
 double PhotometricWeb::lumensBetween(double gamma0Deg, double gamma1Deg) const {
   if (cd_.empty() || gamma1Deg <= gamma0Deg) return 0.0;
-  if (type_ == PhotometricType::C) {
+  if (type_ == PhotometricType::kC) {
     // Exact integral of the bilinear interpolant: over C each cell is linear, so its integral is
     // the trapezoid S(gamma_j); over gamma the linear weights are integrated against sin(gamma)
     // in closed form: int v sin g dg = [-(g - g0) cos g + sin g] / dg, v = (g - g0) / dg.
@@ -241,7 +241,7 @@ double PhotometricWeb::lumensBetween(double gamma0Deg, double gamma1Deg) const {
 }
 
 double PhotometricWeb::totalLumens() const {
-  if (type_ == PhotometricType::C) return lumensBetween(0.0, 180.0);
+  if (type_ == PhotometricType::kC) return lumensBetween(0.0, 180.0);
   // Exact integral in the native (H, V) web: d(omega) = cos H dH dV (H is the latitude from
   // the plane through the beam axis); int v cos H dH = [(H - H0) sin H + cos H] / dH.
   const size_t nq = polar_.size();

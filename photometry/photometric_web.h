@@ -10,7 +10,7 @@
 //   latitude from the plane through the beam axis and X) turns it towards +Y.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 #include <filesystem>
 #include <map>
@@ -19,33 +19,33 @@
 
 namespace candela {
 
-enum class PhotometricType { C, B };
+enum class PhotometricType { kC, kB };
 
 // Which part of C 0-360 a type C file stores; the rest follows by mirror symmetry.
 enum class PlaneSymmetry {
-  None,          // full 0-360 (the last plane may stop short of 360; C wraps periodically)
-  Rotational,    // one plane, the same in every C
-  MirrorC0C180,  // planes 0-180 stored; I(C) = I(360 - C)
-  MirrorC90C270, // planes 90-270 (or -90..90) stored; I(C) = I(180 - C)
-  Quadrant,      // planes 0-90 stored; symmetric about both planes
+  kNone,          // full 0-360 (the last plane may stop short of 360; C wraps periodically)
+  kRotational,    // one plane, the same in every C
+  kMirrorC0C180,  // planes 0-180 stored; I(C) = I(360 - C)
+  kMirrorC90C270, // planes 90-270 (or -90..90) stored; I(C) = I(180 - C)
+  kQuadrant,      // planes 0-90 stored; symmetric about both planes
 };
 
 // Shape of the luminous opening (LM-63-2019 table 1 sign conventions; see ies_lm63.cpp).
 enum class OpeningShape {
-  Point,
-  Rectangular,               // flat rectangle width x length
-  RectangularWithSides,      // box: rectangle with luminous sides of the given height
-  Circular,                  // flat disc, diameter = width
-  Ellipse,                   // flat ellipse width x length
-  VerticalCylinder,          // diameter = width, height
-  VerticalEllipticalCylinder,
-  Sphere,                    // diameter = width
-  Ellipsoid,
-  HorizontalCylinderAlongWidth,   // axis along C0-C180 (X)
-  HorizontalCylinderAlongLength,  // axis along C90-C270 (Y)
-  VerticalCircle,                 // disc in a vertical plane
-  VerticalEllipse,
-  Other,                          // a sign combination not in the table
+  kPoint,
+  kRectangular,               // flat rectangle width x length
+  kRectangularWithSides,      // box: rectangle with luminous sides of the given height
+  kCircular,                  // flat disc, diameter = width
+  kEllipse,                   // flat ellipse width x length
+  kVerticalCylinder,          // diameter = width, height
+  kVerticalEllipticalCylinder,
+  kSphere,                    // diameter = width
+  kEllipsoid,
+  kHorizontalCylinderAlongWidth,   // axis along C0-C180 (X)
+  kHorizontalCylinderAlongLength,  // axis along C90-C270 (Y)
+  kVerticalCircle,                 // disc in a vertical plane
+  kVerticalEllipse,
+  kOther,                          // a sign combination not in the table
 };
 const char* openingShapeName(OpeningShape shape);
 
@@ -86,7 +86,7 @@ struct PhotometricInfo {
   double openingWidthM = 0.0;                  // along C0-C180 (X); diameter for round shapes
   double openingLengthM = 0.0;                 // along C90-C270 (Y)
   double openingHeightM = 0.0;                 // along Z
-  OpeningShape openingShape = OpeningShape::Point;
+  OpeningShape openingShape = OpeningShape::kPoint;
   double luminaireLengthM = 0.0;               // EULUMDAT lines 13-15 (outer dimensions); 0 if unknown
   double luminaireWidthM = 0.0;
   double luminaireHeightM = 0.0;
@@ -157,7 +157,7 @@ class PhotometricWeb {
   double gridInterp(double planeDeg, double polarDeg) const;
 
   PhotometricInfo info_;
-  PhotometricType type_ = PhotometricType::C;
+  PhotometricType type_ = PhotometricType::kC;
   std::vector<double> planes_, polar_, cd_;
   double maxCd_ = 0.0;
   CGamma maxDir_;

@@ -6,8 +6,8 @@
 // trueToModel(); the geometry is never moved.
 #pragma once
 
-#include "engine/base/error.h"
-#include "engine/base/math.h"
+#include "base/error.h"
+#include "base/math.h"
 
 #include <optional>
 #include <string>

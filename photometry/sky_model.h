@@ -10,8 +10,8 @@
 // a piecewise-constant 2D distribution over (azimuth, altitude) cells for importance sampling.
 #pragma once
 
-#include "engine/base/error.h"
-#include "engine/base/math.h"
+#include "base/error.h"
+#include "base/math.h"
 
 #include <memory>
 #include <optional>

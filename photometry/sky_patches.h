@@ -10,7 +10,7 @@
 // Tregenza is n = 1 (alpha = 12 deg, cap 84..90 deg). Directions are in the true frame.
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 #include <vector>
 

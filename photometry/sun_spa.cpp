@@ -1,7 +1,7 @@
 #include "photometry/sun_spa.h"
 
-#include "engine/base/error.h"
-#include "engine/base/math.h"
+#include "base/error.h"
+#include "base/math.h"
 
 #include <algorithm>
 #include <cmath>

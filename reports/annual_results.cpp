@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "engine/base/atomic_file.h"
-#include "engine/base/error.h"
+#include "base/atomic_file.h"
+#include "base/error.h"
 
 namespace candela {
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 
 namespace candela {
 

@@ -1,5 +1,5 @@
 // CSV outputs: one file per grid (the `candela points` columns plus extras) and summary.csv with
-// one row per grid. Written atomically (engine/base/atomic_file.h).
+// one row per grid. Written atomically (base/atomic_file.h).
 #pragma once
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 // the luminance of the sun, of bare lamps and of sunlit sky), written atomically.
 #pragma once
 
-#include "engine/base/units.h"
+#include "base/units.h"
 
 #include <filesystem>
 #include <string>

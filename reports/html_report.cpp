@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 #include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
 #include "reports/plan_svg.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 #include "reports/csv_writer.h"
 
 namespace candela {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 
 namespace candela {
 

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "engine/base/atomic_file.h"
+#include "base/atomic_file.h"
 #include "reports/report_data.h"
 
 namespace candela {

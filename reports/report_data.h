@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/base/math.h"
+#include "base/math.h"
 #include "metrics/grid_stats.h"
 #include "metrics/targets.h"
 

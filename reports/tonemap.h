@@ -2,7 +2,7 @@
 // false-colour map of luminance with its legend.
 #pragma once
 
-#include "engine/base/units.h"
+#include "base/units.h"
 #include "reports/png_writer.h"
 
 #include <cstdint>

@@ -147,14 +147,14 @@ TEST(Dielectric, SlabUnderTheSkyTransmitsItsHemisphericalTransmittance) {
       open = cond.diffuseHorizontalLux;
     } else {
       Material glow;
-      glow.type = MaterialType::Glow;
+      glow.type = MaterialType::kGlow;
       glow.name = "sky";
       glow.color = Rgb(1.0);
       sc.addDistant(Vec3(0, 0, 1), 180.0, sc.addMaterial(glow), "sky");
       open = kLumensPerWatt * kPi * 1.0;
     }
     Material m;
-    m.type = MaterialType::Dielectric;
+    m.type = MaterialType::kDielectric;
     m.name = "slab";
     m.color = Rgb(tau);
     m.refractiveIndex = n;
@@ -183,13 +183,13 @@ TEST(Dielectric, AbsorbsPerChannelAlongThePathInside) {
   const Rgb tau(0.2, 0.5, 0.9);
   Scene sc;
   Material glow;
-  glow.type = MaterialType::Glow;
+  glow.type = MaterialType::kGlow;
   glow.name = "disk";
   glow.color = Rgb(1.0);
   const double fullDeg = 60.0;
   sc.addDistant(Vec3(0, 0, 1), fullDeg, sc.addMaterial(glow), "disk");
   Material m;
-  m.type = MaterialType::Dielectric;
+  m.type = MaterialType::kDielectric;
   m.name = "slab";
   m.color = tau;
   m.refractiveIndex = n;
@@ -231,7 +231,7 @@ TEST(Dielectric, AbsorbsPerChannelAlongThePathInside) {
 TEST(Dielectric, ShadowRaysDoNotPass) {
   Scene sc;
   Material m;
-  m.type = MaterialType::Dielectric;
+  m.type = MaterialType::kDielectric;
   m.name = "slab";
   m.color = Rgb(1.0);
   m.refractiveIndex = 1.5;

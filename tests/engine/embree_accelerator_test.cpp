@@ -52,7 +52,7 @@ double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
 bool floatAmbiguous(const Scene& sc, const Ray& r, const BruteHit& h, double other) {
   if (std::abs(h.t - other) <= kFloatTolM || h.t - r.tMin <= kFloatTolM) return true;
   const Shape& s = sc.shapes[h.shape];
-  if (s.type != ShapeType::Triangle) return false;
+  if (s.type != ShapeType::kTriangle) return false;
   const Vec3 p = r.o + h.t * r.d, v0 = s.a, v1 = s.a + s.b, v2 = s.a + s.c;
   return std::min({segmentDistance(p, v0, v1), segmentDistance(p, v1, v2), segmentDistance(p, v2, v0)}) <= kFloatTolM;
 }
@@ -376,7 +376,7 @@ TEST(EmbreeAccelerator, ConcurrentQueriesAgree) {
 // accelerator, within 4 standard errors of the difference of two independent estimates.
 TEST(EmbreeAccelerator, TracerAgreesWithOctreeInARoom) {
   Scene sc;
-  Material grey{MaterialType::Plastic, "grey", {}, Rgb(0.5)}, lamp{MaterialType::Light, "lamp", {}, Rgb(100.0)};
+  Material grey{MaterialType::kPlastic, "grey", {}, Rgb(0.5)}, lamp{MaterialType::kLight, "lamp", {}, Rgb(100.0)};
   const uint32_t wall = sc.addMaterial(grey), light = sc.addMaterial(lamp);
   const double W = 4.0, D = 5.0, H = 3.0;
   // Floor as 2·20·25 triangles (Embree triangles), walls and ceiling as quads (user geometry),

@@ -55,17 +55,17 @@ double coverage(const std::function<IrradianceEstimate(uint64_t seed)>& run, dou
 
 Scene skyOverGround() {
   Scene sc;
-  const uint32_t sky = addMaterial(sc, MaterialType::Glow, 1.0);
+  const uint32_t sky = addMaterial(sc, MaterialType::kGlow, 1.0);
   sc.addDistant(Vec3(0, 0, 1), 180.0, sky, "sky");
-  const uint32_t grey = addMaterial(sc, MaterialType::Plastic, 0.3);
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.3);
   sc.addPolygon({{-1e4, -1e4, 0}, {1e4, -1e4, 0}, {1e4, 1e4, 0}, {-1e4, 1e4, 0}}, grey);
   return sc;
 }
 
 Scene integratingSphere(double rho) {
   Scene sc;
-  sc.addSphere(Vec3(0.0), 0.02, addMaterial(sc, MaterialType::Light, 1000.0));
-  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::Plastic, rho), true);
+  sc.addSphere(Vec3(0.0), 0.02, addMaterial(sc, MaterialType::kLight, 1000.0));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::kPlastic, rho), true);
   return sc;
 }
 
@@ -119,7 +119,7 @@ TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
   // the panel's x < 0 half is hidden, E = the x > 0 half's configuration factor (corner
   // rectangles). The ratio estimator's samples then carry V = 0 or 1 by whole strata columns.
   Scene sc;
-  const uint32_t lamp = addMaterial(sc, MaterialType::Light, 100.0), black = addMaterial(sc, MaterialType::Plastic, 0.0);
+  const uint32_t lamp = addMaterial(sc, MaterialType::kLight, 100.0), black = addMaterial(sc, MaterialType::kPlastic, 0.0);
   sc.addPolygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2}, {0.5, -0.5, 2}}, lamp);
   sc.addPolygon({{-5, -5, 1}, {-5, 5, 1}, {0, 5, 1}, {0, -5, 1}}, black);
   const Tracer tracer(sc);

@@ -198,8 +198,8 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
   // roulette, so the series is not truncated.
   const double L = 1000.0, r = 0.02, rho = 0.8, d = 0.9;
   Scene sc;
-  sc.addSphere(Vec3(0.0), r, addMaterial(sc, MaterialType::Light, L));
-  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::Plastic, rho), true);
+  sc.addSphere(Vec3(0.0), r, addMaterial(sc, MaterialType::kLight, L));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::kPlastic, rho), true);
   const Tracer tracer(sc);
   std::vector<SensorPoint> pts;
   for (Vec3 dir : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(0, 0.6, 0.8), Vec3(0, 0, 1), Vec3(-0.6, 0, 0.8)})
@@ -222,8 +222,8 @@ TEST(IrradianceCacheMethod, IntegratingSphereReachesTheClosedForm) {
 
 TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
   Scene sc;
-  sc.addSphere(Vec3(0.0), 0.05, addMaterial(sc, MaterialType::Light, 100.0));
-  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::Plastic, 0.5), true);
+  sc.addSphere(Vec3(0.0), 0.05, addMaterial(sc, MaterialType::kLight, 100.0));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::kPlastic, 0.5), true);
   const Tracer tracer(sc);
   std::vector<SensorPoint> pts;
   for (int i = 0; i < 12; ++i) pts.push_back({Vec3(0.05 * i - 0.3, 0.0, -0.5), Vec3(0, 0, -1)});
@@ -242,9 +242,9 @@ TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
 // A floor and a sphere of radius 1 m resting on it, both grey (ρ = 0.5), under a uniform sky.
 Scene sphereOnGreyFloor() {
   Scene sc;
-  const uint32_t sky = addMaterial(sc, MaterialType::Glow, 1.0);
+  const uint32_t sky = addMaterial(sc, MaterialType::kGlow, 1.0);
   sc.addDistant(Vec3(0, 0, 1), 360.0, sky, "sky");
-  const uint32_t grey = addMaterial(sc, MaterialType::Plastic, 0.5);
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.5);
   sc.addPolygon({{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}}, grey);
   sc.addSphere(Vec3(0, 0, 1), 1.0, grey);
   return sc;
@@ -274,8 +274,8 @@ TEST(IrradianceCacheMethod, ShadowBoundaryAndCornersAgreeWithThePathTracer) {
   // the floor casting a shadow: sensors across the shadow edge, 1 cm from the walls' corner
   // and 1 cm under the ceiling corner.
   Scene sc;
-  const uint32_t wall = addMaterial(sc, MaterialType::Plastic, 0.6), floor = addMaterial(sc, MaterialType::Plastic, 0.3);
-  const uint32_t lamp = addMaterial(sc, MaterialType::Light, 30.0);
+  const uint32_t wall = addMaterial(sc, MaterialType::kPlastic, 0.6), floor = addMaterial(sc, MaterialType::kPlastic, 0.3);
+  const uint32_t lamp = addMaterial(sc, MaterialType::kLight, 30.0);
   const double X = 4, Y = 3, Z = 2.5;
   // Inward-facing room (front faces inside: counter-clockwise seen from inside).
   sc.addPolygon({{0, 0, 0}, {X, 0, 0}, {X, Y, 0}, {0, Y, 0}}, floor);

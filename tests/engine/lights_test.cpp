@@ -28,7 +28,7 @@ TEST(Lights, DiskVectorIrradianceMatchesLambertOnAFinePolygonOffAxis) {
       if (glm::dot(-p, n) < R * std::sqrt(1.0 - n.z * n.z)) continue;
       Scene sc;
       Material m;
-      m.type = MaterialType::Light;
+      m.type = MaterialType::kLight;
       m.color = Rgb(1.0);
       sc.addRing({0, 0, 0}, {0, 0, -1}, 0.0, R, sc.addMaterial(m));
       const std::vector<Light> lights = collectLights(sc);
@@ -43,7 +43,7 @@ TEST(Lights, DiskVectorIrradianceMatchesLambertOnAFinePolygonOffAxis) {
 TEST(Lights, AnnulusIsOuterDiskMinusInnerDisk) {
   Scene sc;
   Material m;
-  m.type = MaterialType::Light;
+  m.type = MaterialType::kLight;
   m.color = Rgb(2.0);
   sc.addRing({0, 0, 0}, {0, 0, -1}, 0.2, 0.5, sc.addMaterial(m));
   const std::vector<Light> lights = collectLights(sc);
@@ -57,7 +57,7 @@ TEST(Lights, AnnulusIsOuterDiskMinusInnerDisk) {
 TEST(Lights, NoClosedFormForADiskAcrossTheHorizon) {
   Scene sc;
   Material m;
-  m.type = MaterialType::Light;
+  m.type = MaterialType::kLight;
   m.color = Rgb(1.0);
   sc.addRing({0, 0, 0}, {0, 0, -1}, 0.0, 0.5, sc.addMaterial(m));
   const std::vector<Light> lights = collectLights(sc);

@@ -109,7 +109,7 @@ TEST(LuminaireSource, ShadowsApplyInBothRegimes) {
   for (double h : {0.3, 3.0}) {
     Scene sc = sceneWith("asym_c.ies", {0, 0, h}, {0, 0, -1}, 0.0);
     Material black;
-    black.type = MaterialType::Plastic;
+    black.type = MaterialType::kPlastic;
     const uint32_t m = sc.addMaterial(black);
     sc.addPolygon({{-1, -1, h / 2}, {1, -1, h / 2}, {1, 1, h / 2}, {-1, 1, h / 2}}, m);
     const Tracer tracer(sc);

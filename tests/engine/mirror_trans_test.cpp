@@ -26,7 +26,7 @@ using test_support::addMaterial;
 // specular transmittance is tau and it neither reflects nor scatters.
 uint32_t addClearTrans(Scene& sc, double tau) {
   Material m;
-  m.type = MaterialType::Trans;
+  m.type = MaterialType::kTrans;
   m.name = "clear";
   m.color = Rgb(tau);
   m.transmissivity = 1.0;
@@ -51,8 +51,8 @@ void addWallX(Scene& sc, double x, double y0, double y1, double z0, double z1, u
 // Unfolded: no mirror; floor, lamp and sheet reflected in the plane x = 1 are added.
 Scene mirrorTransScene(bool unfolded, bool sheetNearLamp) {
   Scene sc;
-  const uint32_t lamp = addMaterial(sc, MaterialType::Light, 2e4, "lamp");
-  const uint32_t grey = addMaterial(sc, MaterialType::Plastic, 0.5, "grey");
+  const uint32_t lamp = addMaterial(sc, MaterialType::kLight, 2e4, "lamp");
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.5, "grey");
   const uint32_t clear = addClearTrans(sc, 0.6);
   sc.addSphere(Vec3(0.5, 0, 1), 0.01, lamp);
   if (sheetNearLamp) {
@@ -70,7 +70,7 @@ Scene mirrorTransScene(bool unfolded, bool sheetNearLamp) {
     }
   } else {
     addUpRect(sc, -1, -1, 1, 1, 0, grey);
-    const uint32_t mirror = addMaterial(sc, MaterialType::Mirror, 1.0, "mirror");
+    const uint32_t mirror = addMaterial(sc, MaterialType::kMirror, 1.0, "mirror");
     addWallX(sc, 1.0, -1.5, 1.5, 0.0, 3.0, mirror);
   }
   return sc;

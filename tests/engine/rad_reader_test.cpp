@@ -42,42 +42,42 @@ TEST(RadReader, ReadsEveryPrimitiveAndMaterial) {
   // Radiance reference manual, "Materials": plastic's diffuse reflectance is colour·(1 − spec),
   // its specular part uncoloured spec.
   const Material& wall = material(sc, "wall");
-  EXPECT_EQ(wall.type, MaterialType::Plastic);
+  EXPECT_EQ(wall.type, MaterialType::kPlastic);
   EXPECT_EQ(wall.loc.line, 4);
   EXPECT_DOUBLE_EQ(wall.roughness, 0.02);
   expectRgb(wall.diffuseReflectance, Rgb(0.5, 0.6, 0.7) * 0.95);
   expectRgb(wall.specularReflectance, Rgb(0.05));
   // Metal: the specular part takes the colour.
   const Material& metal = material(sc, "brushed");
-  EXPECT_EQ(metal.type, MaterialType::Metal);
+  EXPECT_EQ(metal.type, MaterialType::kMetal);
   expectRgb(metal.diffuseReflectance, Rgb(0.8, 0.7, 0.6) * 0.1);
   expectRgb(metal.specularReflectance, Rgb(0.8, 0.7, 0.6) * 0.9);
   // Trans (colour c, spec s, transmissivity t, transmitted specular ts): reflected diffuse
   // c(1−s)(1−t), transmitted diffuse c(1−s)t(1−ts), transmitted specular c(1−s)t·ts.
   const Material& tr = material(sc, "frosted");
-  EXPECT_EQ(tr.type, MaterialType::Trans);
+  EXPECT_EQ(tr.type, MaterialType::kTrans);
   expectRgb(tr.diffuseReflectance, Rgb(0.6 * 0.96 * 0.5));
   expectRgb(tr.diffuseTransmittance, Rgb(0.6 * 0.96 * 0.5 * 0.2));
   expectRgb(tr.specularTransmittance, Rgb(0.6 * 0.96 * 0.5 * 0.8));
   expectRgb(tr.specularReflectance, Rgb(0.04));
   const Material& mirror = material(sc, "silver");
-  EXPECT_EQ(mirror.type, MaterialType::Mirror);
+  EXPECT_EQ(mirror.type, MaterialType::kMirror);
   expectRgb(mirror.specularReflectance, Rgb(0.9));
   expectRgb(mirror.diffuseReflectance, Rgb(0.0));
-  EXPECT_EQ(material(sc, "pane").type, MaterialType::Glass);
+  EXPECT_EQ(material(sc, "pane").type, MaterialType::kGlass);
   EXPECT_DOUBLE_EQ(material(sc, "pane").refractiveIndex, 1.52);  // Radiance's default
   EXPECT_DOUBLE_EQ(material(sc, "crystal").refractiveIndex, 1.6);
   expectRgb(material(sc, "crystal").color, Rgb(0.9));
   const Material& lamp = material(sc, "lamp");
-  EXPECT_EQ(lamp.type, MaterialType::Light);
+  EXPECT_EQ(lamp.type, MaterialType::kLight);
   expectRgb(lamp.color, Rgb(100.0));
   EXPECT_TRUE(lamp.isSampledSource());
   const Material& window = material(sc, "window");
-  EXPECT_EQ(window.type, MaterialType::Illum);
+  EXPECT_EQ(window.type, MaterialType::kIllum);
   ASSERT_GE(window.alternate, 0);
   EXPECT_EQ(sc.materials[static_cast<size_t>(window.alternate)].name, "wall");
   const Material& sky = material(sc, "sky");
-  EXPECT_EQ(sky.type, MaterialType::Glow);
+  EXPECT_EQ(sky.type, MaterialType::kGlow);
   EXPECT_TRUE(sky.isEmitter());
   EXPECT_FALSE(sky.isSampledSource());
   expectRgb(material(sc, "sun").color, Rgb(6e6));
@@ -85,33 +85,33 @@ TEST(RadReader, ReadsEveryPrimitiveAndMaterial) {
   // Surfaces (the void ones are dropped).
   ASSERT_EQ(sc.shapes.size(), 11u);
   const Shape& floor = sc.shapes[shapeIndex(sc, "floor")];
-  EXPECT_EQ(floor.type, ShapeType::Polygon);
+  EXPECT_EQ(floor.type, ShapeType::kPolygon);
   EXPECT_EQ(floor.vertexCount, 4u);
   EXPECT_EQ(floor.n, Vec3(0, 0, 1));
   EXPECT_EQ(sc.materials[floor.material].name, "wall");
   EXPECT_EQ(sc.vertices.points[floor.firstVertex + 2], Vec3(4, 3, 0));
-  EXPECT_EQ(sc.shapes[shapeIndex(sc, "tri")].type, ShapeType::Triangle);
+  EXPECT_EQ(sc.shapes[shapeIndex(sc, "tri")].type, ShapeType::kTriangle);
   const Shape& ball = sc.shapes[shapeIndex(sc, "ball")];
-  EXPECT_EQ(ball.type, ShapeType::Sphere);
+  EXPECT_EQ(ball.type, ShapeType::kSphere);
   EXPECT_FALSE(ball.inward);
   EXPECT_EQ(ball.a, Vec3(1, 1, 0.5));
   EXPECT_DOUBLE_EQ(ball.r0, 0.25);  // written "+2.5e-1"
   EXPECT_EQ(sc.materials[ball.material].name, "brushed");
   EXPECT_TRUE(sc.shapes[shapeIndex(sc, "inside")].inward);  // bubble
   const Shape& disk = sc.shapes[shapeIndex(sc, "disk")];
-  EXPECT_EQ(disk.type, ShapeType::Ring);
+  EXPECT_EQ(disk.type, ShapeType::kRing);
   EXPECT_EQ(disk.n, Vec3(0, 0, -1));
   EXPECT_DOUBLE_EQ(disk.r0, 0.1);
   EXPECT_DOUBLE_EQ(disk.r1, 0.3);
   const Shape& cone = sc.shapes[shapeIndex(sc, "funnel")];
-  EXPECT_EQ(cone.type, ShapeType::Cone);
+  EXPECT_EQ(cone.type, ShapeType::kCone);
   EXPECT_FALSE(cone.inward);
   EXPECT_DOUBLE_EQ(cone.r0, 0.5);
   EXPECT_DOUBLE_EQ(cone.r1, 0.2);
   EXPECT_DOUBLE_EQ(cone.d, 1.0);
   EXPECT_TRUE(sc.shapes[shapeIndex(sc, "funnel_in")].inward);  // cup
   const Shape& pipe = sc.shapes[shapeIndex(sc, "pipe")];
-  EXPECT_EQ(pipe.type, ShapeType::Cone);
+  EXPECT_EQ(pipe.type, ShapeType::kCone);
   EXPECT_DOUBLE_EQ(pipe.r0, 0.1);
   EXPECT_DOUBLE_EQ(pipe.r1, 0.1);
   EXPECT_DOUBLE_EQ(pipe.d, 2.0);
@@ -245,7 +245,7 @@ TEST(RadReader, DielectricPrimitive) {
   readRadianceText("void dielectric water\n0\n0\n5 0.9 0.95 0.98 1.33 0.01\n", "water.rad", sc);
   ASSERT_EQ(sc.materials.size(), 1u);
   const Material& m = sc.materials[0];
-  EXPECT_EQ(m.type, MaterialType::Dielectric);
+  EXPECT_EQ(m.type, MaterialType::kDielectric);
   EXPECT_STREQ(materialTypeName(m.type), "dielectric");
   EXPECT_EQ(m.color, Rgb(0.9, 0.95, 0.98));
   EXPECT_EQ(m.refractiveIndex, 1.33);

@@ -24,7 +24,7 @@ namespace {
 uint32_t addMaterial(Scene& sc, MaterialType type, double value) {
   Material m;
   m.type = type;
-  m.name = type == MaterialType::Light ? "lamp" : "grey";
+  m.name = type == MaterialType::kLight ? "lamp" : "grey";
   m.color = Rgb(value);
   return sc.addMaterial(m);
 }
@@ -52,8 +52,8 @@ struct SunlitPlane {
   Scene sc;
   Vec3 sunDir = glm::normalize(Vec3(0.3, -0.5, 0.8));
   SunlitPlane() {
-    addUpRect(sc, -1e4, -1e4, 1e4, 1e4, 0.0, addMaterial(sc, MaterialType::Plastic, kRho));
-    sc.addDistant(sunDir, kFullDeg, addMaterial(sc, MaterialType::Light, kL));
+    addUpRect(sc, -1e4, -1e4, 1e4, 1e4, 0.0, addMaterial(sc, MaterialType::kPlastic, kRho));
+    sc.addDistant(sunDir, kFullDeg, addMaterial(sc, MaterialType::kLight, kL));
   }
   double luminanceCdM2() const {
     const double sinA = std::sin(degToRad(kFullDeg / 2));
@@ -130,7 +130,7 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
     Scene sc;
     const Vec3 eye(0.0, 0.0, 1.0);
     const Vec3 centre = eye + 5.0 * glm::normalize(Vec3(0.9, 1.0, 0.45));  // off-axis, up and right
-    sc.addSphere(centre, 0.3, addMaterial(sc, MaterialType::Light, 100.0));  // 6.9° across
+    sc.addSphere(centre, 0.3, addMaterial(sc, MaterialType::kLight, 100.0));  // 6.9° across
     const Tracer tracer(sc);
     const ViewSpec v = type == ViewType::kPerspective
                            ? view(type, eye, {0, 1, 0}, {0, 0, 1}, {120, 90}, 60, 45)
@@ -196,7 +196,7 @@ TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
 // uniform parts interpolated; the edge pixels are exact, not smeared.
 TEST(Render, AdaptiveSamplingRefinesOnlyWhereLuminanceChanges) {
   SunlitPlane p;
-  addUpRect(p.sc, 0.0, -1e4, 1e4, 1e4, 1e-3, addMaterial(p.sc, MaterialType::Plastic, 0.0));
+  addUpRect(p.sc, 0.0, -1e4, 1e4, 1e4, 1e-3, addMaterial(p.sc, MaterialType::kPlastic, 0.0));
   const Tracer tracer(p.sc);
   const ViewSpec v = view(ViewType::kPerspective, {0.013, 0, 3}, {0, 0, -1}, {0, 1, 0}, {60, 60}, 65, 65);
   TraceSettings s;
@@ -226,10 +226,10 @@ TEST(Render, AdaptiveSamplingRefinesOnlyWhereLuminanceChanges) {
 // Indirect light makes pixels noisy; the image is nevertheless the same for 1 and 2 threads.
 TEST(Render, SameImageForAnyThreadCount) {
   Scene sc;
-  const uint32_t grey = addMaterial(sc, MaterialType::Plastic, 0.6);
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
   addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
   sc.addPolygon({{-2, -2, 0}, {-2, -2, 2}, {2, -2, 2}, {2, -2, 0}}, grey);  // a wall at y = -2
-  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::Light, 50.0));
+  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
   const Tracer tracer(sc);
   const ViewSpec v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 24, 16);
   TraceSettings s;
@@ -247,7 +247,7 @@ TEST(Render, SameImageForAnyThreadCount) {
 TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
   SunlitPlane p;
   const double rt = 0.1;
-  addUpRect(p.sc, -0.5, 1.0, 0.5, 2.0, 1e-3, addMaterial(p.sc, MaterialType::Plastic, rt));  // 1 m card
+  addUpRect(p.sc, -0.5, 1.0, 0.5, 2.0, 1e-3, addMaterial(p.sc, MaterialType::kPlastic, rt));  // 1 m card
   const Tracer tracer(p.sc);
   const Vec3 eye(0.0, 0.0, 1.2);
   const ViewSpec v = view(ViewType::kPerspective, eye, {0, 1.5, -1.2}, {0, 0, 1}, {60, 60}, 41, 41);
@@ -306,7 +306,7 @@ TEST(Render, EyeLightSeparatesDirectFromIndirect) {
 TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   Scene sc;
   const double radiance = 2.0;
-  sc.addDistant({0, 0, 1}, 360.0, addMaterial(sc, MaterialType::Glow, radiance));
+  sc.addDistant({0, 0, 1}, 360.0, addMaterial(sc, MaterialType::kGlow, radiance));
   const Tracer tracer(sc);
   const ViewSpec v = view(ViewType::kFisheye, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {180, 180}, 96, 96);
   const Image img = renderView(tracer, v, TraceSettings{}, 2);
@@ -329,14 +329,14 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
 TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   Scene sc;
   const double rb = 0.5, rt = 0.1;
-  addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::Plastic, rb));
-  addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::Plastic, rt));
+  addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::kPlastic, rb));
+  addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::kPlastic, rt));
   LuminairePlacement lp;
   lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
   sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the
   // sphere out, so the reference keeps only the two surfaces seen.
-  sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::Plastic, 0.7));
+  sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::kPlastic, 0.7));
   const Tracer tracer(sc);
   TraceSettings s;
   s.maxBounces = 0;

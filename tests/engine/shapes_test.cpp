@@ -76,7 +76,7 @@ double distToSegment2(const Vec2& p, const Vec2& a, const Vec2& b) {
 TEST(Shapes, TriangleHitInsideMissOutside) {
   Scene sc;
   const uint32_t tri = sc.addPolygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 0);
-  ASSERT_EQ(sc.shapes[tri].type, ShapeType::Triangle);
+  ASSERT_EQ(sc.shapes[tri].type, ShapeType::kTriangle);
   expectT(hitT(sc, tri, {0.2, 0.3, 1.0}, {0, 0, -1}), 1.0);
   expectT(hitT(sc, tri, {0.2, 0.3, -2.5}, {0, 0, 1}), 2.5);  // from behind: two-sided hit
   EXPECT_FALSE(hitT(sc, tri, {0.8, 0.8, 1.0}, {0, 0, -1}));   // beyond the hypotenuse
@@ -132,7 +132,7 @@ TEST(Shapes, TriangleRandomRaysMatchPlaneAndBarycentrics) {
 TEST(Shapes, ConvexPolygonHitAndMiss) {
   Scene sc;
   const uint32_t q = sc.addPolygon({{0, 0, 2}, {2, 0, 2}, {2, 1, 2}, {0, 1, 2}}, 0);
-  ASSERT_EQ(sc.shapes[q].type, ShapeType::Polygon);
+  ASSERT_EQ(sc.shapes[q].type, ShapeType::kPolygon);
   expectT(hitT(sc, q, {1.0, 0.5, 0.0}, {0, 0, 1}), 2.0);
   expectT(hitT(sc, q, {1.9, 0.9, 5.0}, {0, 0, -1}), 3.0);
   EXPECT_FALSE(hitT(sc, q, {2.1, 0.5, 0.0}, {0, 0, 1}));
@@ -437,14 +437,14 @@ std::vector<Vec3> surfaceSamples(const Scene& sc, uint32_t i, int n, std::mt1993
   const Shape& s = sc.shapes[i];
   std::vector<Vec3> pts;
   switch (s.type) {
-    case ShapeType::Triangle:
+    case ShapeType::kTriangle:
       while (static_cast<int>(pts.size()) < n) {
         double u = U(g), v = U(g);
         if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
         pts.push_back(s.a + u * s.b + v * s.c);
       }
       break;
-    case ShapeType::Polygon: {
+    case ShapeType::kPolygon: {
       const std::vector<Vec3> poly(sc.vertices.points.begin() + s.firstVertex,
                                    sc.vertices.points.begin() + s.firstVertex + s.vertexCount);
       Vec3 eu, ev;
@@ -462,10 +462,10 @@ std::vector<Vec3> surfaceSamples(const Scene& sc, uint32_t i, int n, std::mt1993
       }
       break;
     }
-    case ShapeType::Sphere:
+    case ShapeType::kSphere:
       for (int k = 0; k < n; ++k) pts.push_back(s.a + s.r0 * randomUnit(g));
       break;
-    case ShapeType::Ring: {
+    case ShapeType::kRing: {
       Vec3 eu, ev;
       basis(s.n, eu, ev);
       for (int k = 0; k < n; ++k) {
@@ -474,7 +474,7 @@ std::vector<Vec3> surfaceSamples(const Scene& sc, uint32_t i, int n, std::mt1993
       }
       break;
     }
-    case ShapeType::Cone: {
+    case ShapeType::kCone: {
       Vec3 eu, ev;
       basis(s.n, eu, ev);
       for (int k = 0; k < n; ++k) {

@@ -22,9 +22,9 @@ namespace {
 constexpr double kExactRel = 1e-9;  // closed form vs closed form by another route
 
 using test_support::addMaterial;
-uint32_t addLight(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::Light, radiance, "lamp"); }
-uint32_t addPlastic(Scene& sc, double rho) { return addMaterial(sc, MaterialType::Plastic, rho, "grey"); }
-uint32_t addGlow(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::Glow, radiance, "sky"); }
+uint32_t addLight(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::kLight, radiance, "lamp"); }
+uint32_t addPlastic(Scene& sc, double rho) { return addMaterial(sc, MaterialType::kPlastic, rho, "grey"); }
+uint32_t addGlow(Scene& sc, double radiance) { return addMaterial(sc, MaterialType::kGlow, radiance, "sky"); }
 
 // A rectangle [x0,x1]×[y0,y1] at height z, its front facing down (vertices clockwise seen from
 // above), as a luminaire or ceiling is modelled.
@@ -323,13 +323,13 @@ TEST(Tracer, LightTightBoxIsDarkInside) {
 TEST(Tracer, TransmittanceThroughGlassTransAndOpaque) {
   Scene sc;
   Material glass;
-  glass.type = MaterialType::Glass;
+  glass.type = MaterialType::kGlass;
   glass.name = "glass";
   glass.color = Rgb(0.9, 0.8, 0.7);
   glass.refractiveIndex = 1.5;
   addUpRect(sc, -1, -1, 1, 1, 1.0, sc.addMaterial(glass));
   Material tr;
-  tr.type = MaterialType::Trans;
+  tr.type = MaterialType::kTrans;
   tr.name = "frosted";
   tr.color = Rgb(0.8);
   tr.specularity = 0.0;
@@ -385,7 +385,7 @@ Scene mirrorWallScene(bool unfolded) {
     sc.addSphere(Vec3(1.5, 0, 1), 0.01, lamp);
   } else {
     addUpRect(sc, -1, -1, 1, 1, 0, grey);
-    const uint32_t mirror = addMaterial(sc, MaterialType::Mirror, 1.0, "mirror");
+    const uint32_t mirror = addMaterial(sc, MaterialType::kMirror, 1.0, "mirror");
     sc.addPolygon({{1, -1.5, 0}, {1, -1.5, 3}, {1, 1.5, 3}, {1, 1.5, 0}}, mirror);
   }
   return sc;
@@ -439,7 +439,7 @@ TEST(Tracer, GlossyPlasticReflectsItsSpecularEnergy) {
     const uint32_t sky = addGlow(sc, 1.0);
     sc.addDistant(Vec3(0, 0, 1), 180.0, sky, "sky");
     Material m;
-    m.type = MaterialType::Plastic;
+    m.type = MaterialType::kPlastic;
     m.name = "gloss";
     m.color = Rgb(0.4);
     m.specularity = 0.1;

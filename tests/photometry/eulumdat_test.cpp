@@ -1,6 +1,6 @@
 #include "photometry/eulumdat.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "photometry/ies_lm63.h"
 
 #include <gtest/gtest.h>
@@ -33,7 +33,7 @@ TEST(Eulumdat, HeaderAndScaling) {
   EXPECT_NEAR(web.lightOutputRatio(), web.totalLumens() / 2000.0, 1e-12);
   EXPECT_NEAR(web.openingWidthM(), 0.6, 1e-12);
   EXPECT_NEAR(web.openingLengthM(), 0.6, 1e-12);
-  EXPECT_EQ(web.openingShape(), OpeningShape::Rectangular);
+  EXPECT_EQ(web.openingShape(), OpeningShape::kRectangular);
   EXPECT_NEAR(web.info().luminaireLengthM, 0.62, 1e-12);
   EXPECT_DOUBLE_EQ(web.info().declaredLorPercent, 78.5);
   EXPECT_DOUBLE_EQ(web.info().declaredDownwardFluxPercent, 100.0);

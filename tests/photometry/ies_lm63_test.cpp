@@ -1,6 +1,6 @@
 #include "photometry/ies_lm63.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <gtest/gtest.h>
 
@@ -66,20 +66,20 @@ TEST(IesLm63, OpeningUnitsAndShapes) {
   EXPECT_NEAR(ft.openingWidthM(), 2.0 * 0.3048, 1e-12);
   EXPECT_NEAR(ft.openingLengthM(), 4.0 * 0.3048, 1e-12);
   EXPECT_DOUBLE_EQ(ft.openingHeightM(), 0.0);
-  EXPECT_EQ(ft.openingShape(), OpeningShape::Rectangular);
+  EXPECT_EQ(ft.openingShape(), OpeningShape::kRectangular);
   const PhotometricWeb circ = readIes(kIes + "metres_circle.ies");  // -0.2 -0.2 0
-  EXPECT_EQ(circ.openingShape(), OpeningShape::Circular);
+  EXPECT_EQ(circ.openingShape(), OpeningShape::kCircular);
   EXPECT_NEAR(circ.openingWidthM(), 0.2, 1e-12);
-  EXPECT_EQ(readIes(kIes + "lambert_rot.ies").openingShape(), OpeningShape::Point);
+  EXPECT_EQ(readIes(kIes + "lambert_rot.ies").openingShape(), OpeningShape::kPoint);
   // LM-63-2019 table 1 sign conventions.
-  EXPECT_EQ(iesOpeningShape(-1, -1, -1), OpeningShape::Sphere);
-  EXPECT_EQ(iesOpeningShape(-1, -1, 2), OpeningShape::VerticalCylinder);
-  EXPECT_EQ(iesOpeningShape(-1, 3, -1), OpeningShape::HorizontalCylinderAlongLength);
-  EXPECT_EQ(iesOpeningShape(3, -1, -1), OpeningShape::HorizontalCylinderAlongWidth);
-  EXPECT_EQ(iesOpeningShape(-1, -2, 0), OpeningShape::Ellipse);
-  EXPECT_EQ(iesOpeningShape(1, 2, 0.5), OpeningShape::RectangularWithSides);
-  EXPECT_EQ(iesOpeningShape(-1, 0, -1), OpeningShape::VerticalCircle);
-  EXPECT_EQ(iesOpeningShape(-0.3, 0, 0), OpeningShape::Circular);  // pre-2019 round
+  EXPECT_EQ(iesOpeningShape(-1, -1, -1), OpeningShape::kSphere);
+  EXPECT_EQ(iesOpeningShape(-1, -1, 2), OpeningShape::kVerticalCylinder);
+  EXPECT_EQ(iesOpeningShape(-1, 3, -1), OpeningShape::kHorizontalCylinderAlongLength);
+  EXPECT_EQ(iesOpeningShape(3, -1, -1), OpeningShape::kHorizontalCylinderAlongWidth);
+  EXPECT_EQ(iesOpeningShape(-1, -2, 0), OpeningShape::kEllipse);
+  EXPECT_EQ(iesOpeningShape(1, 2, 0.5), OpeningShape::kRectangularWithSides);
+  EXPECT_EQ(iesOpeningShape(-1, 0, -1), OpeningShape::kVerticalCircle);
+  EXPECT_EQ(iesOpeningShape(-0.3, 0, 0), OpeningShape::kCircular);  // pre-2019 round
 }
 
 struct BadFile {

@@ -124,7 +124,7 @@ TEST(PhotometricWeb, TypeBAxesAndFlux) {
   // I = I0 cosH cosV (1 + 0.5 sinV): cosH cosV is the cosine to the beam axis (-Z), so the
   // flux is pi I0; the factor (1 + 0.5 sinV) makes the +V side (towards +X) brighter.
   const PhotometricWeb web = readIes(kIes + "typeb.ies");
-  ASSERT_EQ(web.type(), PhotometricType::B);
+  ASSERT_EQ(web.type(), PhotometricType::kB);
   const auto f = [](double hDeg, double vDeg) {
     const double h = degToRad(hDeg), v = degToRad(vDeg);
     return kI0 * std::cos(h) * std::cos(v) * (1.0 + 0.5 * std::sin(v));

@@ -1,6 +1,6 @@
 #include "photometry/sky_cie.h"
 
-#include "engine/base/rng.h"
+#include "base/rng.h"
 #include "photometry/site.h"
 #include "sky_test_support.h"
 

@@ -1,6 +1,6 @@
 #include "photometry/sky_patches.h"
 
-#include "engine/base/rng.h"
+#include "base/rng.h"
 
 #include <gtest/gtest.h>
 

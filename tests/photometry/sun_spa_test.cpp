@@ -1,6 +1,6 @@
 #include "photometry/sun_spa.h"
 
-#include "engine/base/error.h"
+#include "base/error.h"
 
 #include <gtest/gtest.h>
 

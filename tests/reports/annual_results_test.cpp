@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/base/error.h"
+#include "base/error.h"
 #include "sample_report.h"
 
 namespace candela {

@@ -1,7 +1,7 @@
 // Photometric units and colour conventions (architecture.md, "Photometry").
 #pragma once
 
-#include "engine/base/math.h"
+#include "base/math.h"
 
 namespace candela {
 
