@@ -31,8 +31,8 @@ Scene room() {
   return sc;
 }
 
-ViewSpec roomView() {
-  ViewSpec v;
+View roomView() {
+  View v;
   v.positionM = {0.3, 0.3, 1.5};
   v.direction = {1.0, 0.8, -0.2};
   v.fovDeg = {80.0, 60.0};
@@ -63,7 +63,7 @@ void BM_RenderSmoothPlane(benchmark::State& state) {
   sc.addPolygon({{-1e3, -1e3, 0}, {1e3, -1e3, 0}, {1e3, 1e3, 0}, {-1e3, 1e3, 0}}, material(sc, MaterialType::kPlastic, 0.5));
   sc.addDistant({0.3, -0.5, 0.8}, 0.533, material(sc, MaterialType::kLight, 6e6));
   const Tracer tracer(sc);
-  ViewSpec v = roomView();
+  View v = roomView();
   v.resolution = {128, 96};
   TraceSettings s;
   s.maxBounces = 0;

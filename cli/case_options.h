@@ -2,7 +2,7 @@
 // then what the command line says.
 #pragma once
 
-#include "engine/case_file.h"
+#include "study/case_file.h"
 #include "engine/tracer.h"
 
 #include <CLI/CLI.hpp>

@@ -3,12 +3,12 @@
 #include "cli/commands.h"
 
 #include "base/error.h"
-#include "engine/case_file.h"
-#include "engine/case_scene.h"
+#include "study/case_file.h"
+#include "study/case_scene.h"
 #include "engine/daylight.h"
 #include "photometry/site.h"
 #include "engine/rad_reader.h"
-#include "engine/sensor_grid.h"
+#include "study/sensor_grid.h"
 #include "engine/sensors.h"
 
 #include <cstdio>

@@ -9,8 +9,8 @@
 #include "cli/progress.h"
 
 #include "base/error.h"
-#include "engine/case_file.h"
-#include "engine/case_scene.h"
+#include "study/case_file.h"
+#include "study/case_scene.h"
 #include "engine/render.h"
 #include "metrics/contrast.h"
 #include "metrics/glare.h"

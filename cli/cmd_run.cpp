@@ -14,9 +14,9 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "engine/case_file.h"
-#include "engine/case_scene.h"
-#include "engine/sensor_grid.h"
+#include "study/case_file.h"
+#include "study/case_scene.h"
+#include "study/sensor_grid.h"
 #include "engine/sensors.h"
 #include "metrics/grid_stats.h"
 #include "metrics/targets.h"

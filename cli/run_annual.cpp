@@ -4,7 +4,7 @@
 #include "cli/run_grids.h"
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "engine/case_scene.h"
+#include "study/case_scene.h"
 #include "engine/daylight_coefficients.h"
 #include "engine/fresnel.h"
 #include "metrics/annual.h"

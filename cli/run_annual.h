@@ -4,7 +4,7 @@
 #pragma once
 
 #include "cli/case_options.h"
-#include "engine/case_file.h"
+#include "study/case_file.h"
 
 #include <chrono>
 #include <filesystem>

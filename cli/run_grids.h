@@ -3,9 +3,9 @@
 #pragma once
 
 #include "base/math.h"
-#include "engine/case_file.h"
+#include "study/case_file.h"
 #include "engine/scene.h"
-#include "engine/sensor_grid.h"
+#include "study/sensor_grid.h"
 #include "reports/report_data.h"
 
 #include <filesystem>

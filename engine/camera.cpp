@@ -5,7 +5,7 @@
 
 namespace candela {
 
-Camera::Camera(const ViewSpec& view)
+Camera::Camera(const View& view)
     : type_(view.type),
       position_(view.positionM),
       width_(std::max(1, view.resolution.x)),

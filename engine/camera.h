@@ -3,11 +3,22 @@
 #pragma once
 
 #include "base/math.h"
-#include "engine/case_file.h"
 
 #include <optional>
 
 namespace candela {
+
+enum class ViewType { kPerspective, kFisheye };
+
+// Where a camera stands and what it sees.
+struct View {
+  ViewType type = ViewType::kPerspective;
+  Vec3 positionM{0.0};
+  Vec3 direction{0.0, 1.0, 0.0};        // unit
+  Vec3 up{0.0, 0.0, 1.0};               // unit
+  Vec2 fovDeg{60.0, 45.0};              // horizontal, vertical full angles
+  glm::ivec2 resolution{800, 600};      // pixels, width × height
+};
 
 // A pinhole camera at `position` looking along `forward`, with image x to `right` and image y
 // (rows, top to bottom) against `up`.
@@ -24,7 +35,7 @@ namespace candela {
 //   in its inscribed circle. Positions outside the ellipse sx² + sy² ≤ 1 have no ray.
 class Camera {
  public:
-  explicit Camera(const ViewSpec& view);
+  explicit Camera(const View& view);
 
   // Unit ray direction through image position (px, py) in pixels; nothing outside a fisheye's
   // circle.

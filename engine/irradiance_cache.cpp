@@ -2,7 +2,7 @@
 
 #include "base/rng.h"
 #include "base/parallel.h"
-#include "engine/sensor_grid.h"
+#include "engine/sensors.h"
 #include "engine/tracer.h"
 
 #include <algorithm>

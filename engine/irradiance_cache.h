@@ -17,6 +17,7 @@
 
 #include "base/math.h"
 #include "base/units.h"
+#include "engine/trace_settings.h"
 
 #include <array>
 #include <cstdint>
@@ -27,7 +28,6 @@ namespace candela {
 
 struct SensorPoint;
 class IrradianceCache;
-struct TraceSettings;
 class Tracer;
 
 // One cached value: indirect irradiance (W/m², RGB) at point p on a surface of unit normal n.
@@ -147,22 +147,6 @@ class CacheTally {
   std::vector<double> cached_;
 };
 
-struct CacheSettings {
-  double accuracy = 0.1;       // Ward's a: records are used where w_i > 1/a
-  int recordSamples = 1024;    // hemisphere rays per record
-  int radiusSamples = 128;     // rays per record for its harmonic mean distance (phase A)
-  int lightSamples = 4;        // light samples at a sensor ray's hit (direct light there is not cached)
-  double minSpacingM = 0.005;  // bounds on a record's valid radius a·R_i (m)
-  double maxSpacingM = 1.0;
-  bool gradients = true;
-  // Use a record only where a ray joins it to the point without meeting a third surface: a thin
-  // wall between a lit and a dark room then stops light leaking along the floor (costs one
-  // shadow ray per candidate record).
-  bool visibilityCheck = true;
-  // 1: records at the first diffuse hits of sensor rays, deeper bounces path traced. 2: a second
-  // cache at the first diffuse hits of those records' rays (deeperLevel()), path traced beyond.
-  int levels = 1;
-};
 
 // The second level's settings (Ward et al. 1988): a quarter of the record samples (at least 64)
 // and twice the error a.

@@ -49,4 +49,16 @@ void setOpeningFromWeb(LuminaireSource& l) {
   }
 }
 
+LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminaireMounting& m) {
+  LuminaireSource l;
+  l.web = std::move(web);
+  l.name = m.name;
+  l.position = m.positionM;
+  l.scale = m.scale;
+  orientLuminaire(l, m.aim, m.spinDeg);
+  setOpeningFromWeb(l);
+  tabulatePeakIntensity(l);
+  return l;
+}
+
 }  // namespace candela

@@ -58,6 +58,19 @@ void orientLuminaire(LuminaireSource& l, const Vec3& aim, double spinDeg);
 // cos γ band).
 void tabulatePeakIntensity(LuminaireSource& l);
 
+// How a luminaire is mounted in a scene.
+struct LuminaireMounting {
+  std::string name;
+  Vec3 positionM{0.0};       // photometric centre, m
+  Vec3 aim{0.0, 0.0, -1.0};  // unit direction of the photometric nadir
+  double spinDeg = 0.0;      // about the aim (orientLuminaire); 0: C0 plane towards +X
+  double scale = 1.0;        // multiplies every intensity
+};
+
+// A luminaire of photometric web `web` mounted as `m`: oriented, its opening set from the web and
+// its peak intensities tabulated.
+LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminaireMounting& m);
+
 // Sets the opening from the photometric file's luminous opening: flat rectangles and discs as
 // given; other shapes by their plan (width × length) footprint; a point when both are zero.
 void setOpeningFromWeb(LuminaireSource& l);

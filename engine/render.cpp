@@ -145,7 +145,7 @@ bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(li
 
 }  // namespace
 
-Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
+Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render, const RenderProgress& progress) {
   const Camera cam(view);
   // The tracer counts diffuse reflections along a path, and the surface a camera ray meets is the
@@ -272,7 +272,7 @@ Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings
   return img;
 }
 
-ViewGeometry viewGeometry(const ViewSpec& view) {
+ViewGeometry viewGeometry(const View& view) {
   const Camera cam(view);
   ViewGeometry g;
   const std::size_t n = static_cast<std::size_t>(cam.width()) * cam.height();
@@ -344,7 +344,7 @@ std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye,
 
 double EyeLight::backgroundLuminanceCdM2() const { return std::max(verticalLux - directLuminaireLux, 0.0) / kPi; }
 
-EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, uint64_t stream) {
+EyeLight eyeLight(const Tracer& tracer, const View& view, const TraceSettings& settings, uint64_t stream) {
   const Camera cam(view);
   EyeLight e;
   e.luminaires = seenLuminaires(tracer, cam.position(), cam.forward());

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "engine/camera.h"
-#include "engine/case_file.h"
 #include "engine/tracer.h"
 
 #include <cstddef>
@@ -60,7 +59,7 @@ using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
 // surfaces seen (the same light a sensor grid gets with those settings). Every pixel's luminance depends only on (seed, pixel) and the refinement
 // decisions, which depend only on traced values, so the image is identical for any `threads`
 // (0 = all cores).
-Image renderView(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, int threads,
+Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render = {}, const RenderProgress& progress = {});
 
 // Direction (view frame: x right, y up, z forward) and solid angle (sr) of every pixel centre of
@@ -69,7 +68,7 @@ struct ViewGeometry {
   std::vector<Vec3> directionView;
   std::vector<double> solidAngleSr;
 };
-ViewGeometry viewGeometry(const ViewSpec& view);
+ViewGeometry viewGeometry(const View& view);
 
 // A photometric luminaire as the eye at `eye` sees it: the luminous opening's mean luminance
 // towards the eye, I(dir to eye) / projected area, and its solid angle (projected area / d²).
@@ -101,7 +100,7 @@ struct EyeLight {
   // indirect part being everything but the luminaires' direct light.
   double backgroundLuminanceCdM2() const;
 };
-EyeLight eyeLight(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings, uint64_t stream = 0);
+EyeLight eyeLight(const Tracer& tracer, const View& view, const TraceSettings& settings, uint64_t stream = 0);
 
 // Luminance in cd/m² of the surface point `target` seen from `eye` (contrast of a task against
 // its background, metrics/contrast.h): a matte opaque surface gives ρ E / π with E the sensor

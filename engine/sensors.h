@@ -1,7 +1,6 @@
 // Illuminance at many sensor points, in parallel, reproducibly.
 #pragma once
 
-#include "engine/sensor_grid.h"
 #include "engine/tracer.h"
 
 #include <cstddef>
@@ -9,6 +8,12 @@
 #include <vector>
 
 namespace candela {
+
+// One sensor: a point and the unit normal of the surface it measures illuminance on.
+struct SensorPoint {
+  Vec3 position;  // m
+  Vec3 normal;    // unit vector
+};
 
 // Estimates irradiance at every sensor (point i uses random stream i), on `threads` threads
 // (0 = all cores).

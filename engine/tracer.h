@@ -4,11 +4,10 @@
 #pragma once
 
 #include "base/rng.h"
-#include "engine/case_file.h"
 #include "engine/irradiance_cache.h"
 #include "engine/lights.h"
 #include "engine/octree.h"
-#include "engine/quality.h"
+#include "engine/trace_settings.h"
 #include "engine/scene.h"
 #include "photometry/sky_patches.h"
 
@@ -19,35 +18,6 @@
 
 namespace candela {
 
-// How interreflection is computed (Method, engine/case_file.h): an unbiased path tracer (the
-// reference) or Ward's irradiance cache at the first diffuse bounce of sensor rays, deeper
-// bounces path traced (docs/accuracy.md). Parses "path" or "cache"; throws
-// std::invalid_argument otherwise.
-Method parseMethod(const std::string& s);
-
-// The presets' bounce limit: a safety cap only; Russian roulette ends paths long before
-// (expected length 1/(1 − albedo)).
-inline constexpr int kUnlimitedBounces = 1000;
-
-// Sample counts and limits of one run. Passed explicitly; no global options.
-struct TraceSettings {
-  int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
-  int lightSamples = 64;         // stratified samples per sampled light source per sensor point
-  int maxBounces = 32;           // diffuse reflections followed (0: direct light and glow only)
-  int firstBounceSplit = 16;     // continuations at the first diffuse vertex of each sensor ray
-  double adaptiveFraction = 0.5; // extra hemisphere samples spent on the most varying strata
-  uint64_t seed = 1;
-  Method method = Method::kPath;
-  CacheSettings cache;           // used by Method::kCache
-  // --target-error: when > 0, each point takes further independent batches of samples (each
-  // as above, its own random stream) until its standard error is at most this fraction of its
-  // value, or maxBatches are spent.
-  double targetRelativeError = 0.0;
-  int maxBatches = 256;
-};
-
-// The sample counts a preset stands for (see docs/engine.md for why).
-TraceSettings settingsForQuality(Quality q);
 
 // Irradiance estimate at a point: RGB irradiance in W/m² and the variance of its photopic value
 // (from the estimator's own sample variance; stratification makes it an upper bound).

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Behaviour snapshot for refactors (DEVELOPERS.md: "Refactors keep behaviour"): runs the demo
 # cases, `points` and `validate --quick` at their fixed seeds on 1 and 2 threads with the
-# executable in BUILD, into OUT. Compare two snapshots with scripts/snapshot_diff.sh.
+# executable in BUILD, into OUT. Compare two snapshots with scripts/snapshot_diff.py.
 #
 #   scripts/snapshot.sh BUILD_DIR OUT_DIR
 set -euo pipefail

@@ -1,6 +1,6 @@
 // Luminaire validation: a photometric file traced as a point source (inverse-square and cosine
 // laws on a plane and a wall) and a Lambertian panel in its near field (an area source).
-#include "engine/case_scene.h"
+#include "engine/luminaire_source.h"
 #include "engine/sensors.h"
 #include "photometry/ies_lm63.h"
 #include "validation/analytic.h"
@@ -41,7 +41,7 @@ CaseResult runLuminaire(const std::string& ies, const Vec3& pos, const std::vect
                         const std::vector<std::string>& labels, const std::vector<double>& refs,
                         const RunConfig& cfg, std::string reference, double tol, int lightSamples = 0) {
   Scene scene;
-  LuminairePlacement p;
+  LuminaireMounting p;
   p.positionM = pos;
   scene.luminaires.push_back(
       placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(ies, "<validation>.ies", ".")), p));

@@ -3,7 +3,7 @@
 // against a reference, wall time; written as CSV and a log–log SVG chart.
 #pragma once
 
-#include "engine/sensor_grid.h"
+#include "engine/sensors.h"
 #include "engine/tracer.h"
 
 #include <string>

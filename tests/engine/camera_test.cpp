@@ -9,8 +9,8 @@
 namespace candela {
 namespace {
 
-ViewSpec makeView(ViewType type, Vec3 dir, Vec3 up, Vec2 fovDeg, int w, int h) {
-  ViewSpec v;
+View makeView(ViewType type, Vec3 dir, Vec3 up, Vec2 fovDeg, int w, int h) {
+  View v;
   v.type = type;
   v.positionM = {1.0, 2.0, 1.5};
   v.direction = dir;

@@ -1,6 +1,6 @@
 // Luminaires traced as light sources: the inverse-square and cosine laws in the far field, the
 // documented aim/spin conventions, and the area-source answer in the near field.
-#include "engine/case_scene.h"
+#include "engine/luminaire_source.h"
 #include "engine/tracer.h"
 #include "photometry/ies_lm63.h"
 #include "validation/analytic.h"
@@ -24,11 +24,11 @@ double asymIntensity(double cDeg, double gammaDeg) {
 
 Scene sceneWith(const std::string& file, const Vec3& pos, const Vec3& aim, double spinDeg, double mult = 1.0) {
   Scene sc;
-  LuminairePlacement p;
+  LuminaireMounting p;
   p.positionM = pos;
   p.aim = aim;
   p.spinDeg = spinDeg;
-  p.multiplier = mult;
+  p.scale = mult;
   sc.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(readIes(kIes + file)), p));
   return sc;
 }
@@ -87,7 +87,7 @@ TEST(LuminaireSource, MultiplierAndMaintenanceFactorScale) {
 // answer I0/h² would overstate it.
 TEST(LuminaireSource, NearFieldPanelGivesTheAreaSourceAnswer) {
   Scene sc;
-  LuminairePlacement p;
+  LuminaireMounting p;
   p.positionM = {0, 0, 0.3};
   sc.luminaires.push_back(
       placeLuminaire(test_support::lambertianPanel(), p));

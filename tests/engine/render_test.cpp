@@ -3,7 +3,7 @@
 // closed form, so the check is to 1e-9); a light seen directly lands on the pixel the projection
 // names; a Lambertian luminaire opening shows I/(A cos γ); the adaptive sampler refines only
 // where the luminance changes, and images do not depend on the thread count.
-#include "engine/case_scene.h"
+#include "engine/luminaire_source.h"
 #include "engine/render.h"
 #include "metrics/contrast.h"
 #include "metrics/glare.h"
@@ -33,9 +33,8 @@ void addUpRect(Scene& sc, double x0, double y0, double x1, double y1, double z, 
   sc.addPolygon({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}}, mat);
 }
 
-ViewSpec view(ViewType type, Vec3 pos, Vec3 dir, Vec3 up, Vec2 fov, int w, int h) {
-  ViewSpec v;
-  v.name = "test";
+View view(ViewType type, Vec3 pos, Vec3 dir, Vec3 up, Vec2 fov, int w, int h) {
+  View v;
   v.type = type;
   v.positionM = pos;
   v.direction = dir;
@@ -96,7 +95,7 @@ TEST(Render, LambertianPlaneHasLuminanceRhoEOverPiInEveryPixel) {
   };
   // Perspective, looking obliquely down at the plane.
   {
-    const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.6}, {0, 1, -1}, {0, 0, 1}, {60, 40}, 33, 21);
+    const View v = view(ViewType::kPerspective, {0, 0, 1.6}, {0, 1, -1}, {0, 0, 1}, {60, 40}, 33, 21);
     const Image img = renderView(tracer, v, s, 2);
     check(img, [](int, int) { return true; }, "perspective");
     // A uniform image: only the coarse lattice is traced (9 × 6 of 33 × 21 with a step of 4).
@@ -105,7 +104,7 @@ TEST(Render, LambertianPlaneHasLuminanceRhoEOverPiInEveryPixel) {
   // With the irradiance estimate at matte surfaces the sun's ratio estimator is exact (wholly
   // visible source with a closed form), so every pixel is ρE/π to rounding.
   {
-    const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.6}, {0, 1, -1}, {0, 0, 1}, {60, 40}, 33, 21);
+    const View v = view(ViewType::kPerspective, {0, 0, 1.6}, {0, 1, -1}, {0, 0, 1}, {60, 40}, 33, 21);
     RenderSettings r;
     r.irradianceSamples = 16;
     const Image img = renderView(tracer, v, s, 2, r);
@@ -115,7 +114,7 @@ TEST(Render, LambertianPlaneHasLuminanceRhoEOverPiInEveryPixel) {
   // sees the plane (rays at the rim run to the horizon, beyond the 10 km plane).
   {
     const int n = 32;
-    const ViewSpec v = view(ViewType::kFisheye, {0, 0, 1.6}, {0, 0, -1}, {0, 1, 0}, {180, 180}, n, n);
+    const View v = view(ViewType::kFisheye, {0, 0, 1.6}, {0, 0, -1}, {0, 1, 0}, {180, 180}, n, n);
     const Image img = renderView(tracer, v, s, 2);
     const int checked = check(img, [&](int x, int y) {
       return std::hypot(x + 0.5 - n / 2.0, y + 0.5 - n / 2.0) <= n / 2.0 - 1.5; }, "fisheye");
@@ -132,7 +131,7 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
     const Vec3 centre = eye + 5.0 * glm::normalize(Vec3(0.9, 1.0, 0.45));  // off-axis, up and right
     sc.addSphere(centre, 0.3, addMaterial(sc, MaterialType::kLight, 100.0));  // 6.9° across
     const Tracer tracer(sc);
-    const ViewSpec v = type == ViewType::kPerspective
+    const View v = type == ViewType::kPerspective
                            ? view(type, eye, {0, 1, 0}, {0, 0, 1}, {120, 90}, 60, 45)
                            : view(type, eye, {0, 1, 0}, {0, 0, 1}, {180, 180}, 61, 61);
     RenderSettings r;
@@ -163,7 +162,7 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
 // I/(A cos γ) = 1000/0.36 cd/m² from every direction, in the image and for glare ratings.
 TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
   Scene sc;
-  LuminairePlacement lp;
+  LuminaireMounting lp;
   lp.name = "panel";
   lp.positionM = {0, 2, 2.8};
   sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
@@ -175,7 +174,7 @@ TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
   // puts it 0.07 % below 1000/0.36 here; the formula, not the web, is under test).
   const double want = sc.luminaires[0].intensityCd(-d / dist) / (0.36 * cosG);
   EXPECT_NEAR(want, 1000.0 / 0.36, 1e-3 * want);
-  const ViewSpec v = view(ViewType::kPerspective, eye, {0, 1, 0.8}, {0, 0, 1}, {60, 60}, 41, 41);
+  const View v = view(ViewType::kPerspective, eye, {0, 1, 0.8}, {0, 0, 1}, {60, 60}, 41, 41);
   RenderSettings r;
   r.coarseStep = 1;
   const Image img = renderView(tracer, v, TraceSettings{}, 2, r);
@@ -198,7 +197,7 @@ TEST(Render, AdaptiveSamplingRefinesOnlyWhereLuminanceChanges) {
   SunlitPlane p;
   addUpRect(p.sc, 0.0, -1e4, 1e4, 1e4, 1e-3, addMaterial(p.sc, MaterialType::kPlastic, 0.0));
   const Tracer tracer(p.sc);
-  const ViewSpec v = view(ViewType::kPerspective, {0.013, 0, 3}, {0, 0, -1}, {0, 1, 0}, {60, 60}, 65, 65);
+  const View v = view(ViewType::kPerspective, {0.013, 0, 3}, {0, 0, -1}, {0, 1, 0}, {60, 60}, 65, 65);
   TraceSettings s;
   s.maxBounces = 0;
   RenderSettings r;
@@ -231,7 +230,7 @@ TEST(Render, SameImageForAnyThreadCount) {
   sc.addPolygon({{-2, -2, 0}, {-2, -2, 2}, {2, -2, 2}, {2, -2, 0}}, grey);  // a wall at y = -2
   sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
   const Tracer tracer(sc);
-  const ViewSpec v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 24, 16);
+  const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 24, 16);
   TraceSettings s;
   s.maxBounces = 2;
   const Image a = renderView(tracer, v, s, 1), b = renderView(tracer, v, s, 2);
@@ -250,7 +249,7 @@ TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
   addUpRect(p.sc, -0.5, 1.0, 0.5, 2.0, 1e-3, addMaterial(p.sc, MaterialType::kPlastic, rt));  // 1 m card
   const Tracer tracer(p.sc);
   const Vec3 eye(0.0, 0.0, 1.2);
-  const ViewSpec v = view(ViewType::kPerspective, eye, {0, 1.5, -1.2}, {0, 0, 1}, {60, 60}, 41, 41);
+  const View v = view(ViewType::kPerspective, eye, {0, 1.5, -1.2}, {0, 0, 1}, {60, 60}, 41, 41);
   TraceSettings s;
   s.maxBounces = 0;
   const Image img = renderView(tracer, v, s, 2);
@@ -275,11 +274,11 @@ TEST(Render, MatteTaskHasContrastRenditionFactorOne) {
 // sampled over the opening), so UGR's background, the rest over π, is 0 to its Monte Carlo error.
 TEST(Render, EyeLightSeparatesDirectFromIndirect) {
   Scene sc;
-  LuminairePlacement lp;
+  LuminaireMounting lp;
   lp.positionM = {0.3, 0.5, 2.8};
   sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   const Tracer tracer(sc);
-  const ViewSpec v = view(ViewType::kPerspective, {0, 0, 1.2}, {0, 0, 1}, {0, 1, 0}, {60, 45}, 8, 6);
+  const View v = view(ViewType::kPerspective, {0, 0, 1.2}, {0, 0, 1}, {0, 1, 0}, {60, 45}, 8, 6);
   TraceSettings s;
   s.lightSamples = 1024;
   const EyeLight e = eyeLight(tracer, v, s);
@@ -308,7 +307,7 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   const double radiance = 2.0;
   sc.addDistant({0, 0, 1}, 360.0, addMaterial(sc, MaterialType::kGlow, radiance));
   const Tracer tracer(sc);
-  const ViewSpec v = view(ViewType::kFisheye, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {180, 180}, 96, 96);
+  const View v = view(ViewType::kFisheye, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {180, 180}, 96, 96);
   const Image img = renderView(tracer, v, TraceSettings{}, 2);
   const double l = kLumensPerWatt * radiance;
   for (std::size_t i = 0; i < img.luminance.size(); ++i)
@@ -331,7 +330,7 @@ TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   const double rb = 0.5, rt = 0.1;
   addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::kPlastic, rb));
   addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::kPlastic, rt));
-  LuminairePlacement lp;
+  LuminaireMounting lp;
   lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
   sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
   // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the

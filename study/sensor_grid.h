@@ -11,14 +11,9 @@
 
 #include "base/error.h"
 #include "base/math.h"
+#include "engine/sensors.h"
 
 namespace candela {
-
-// One sensor: a point and the unit normal of the surface it measures illuminance on.
-struct SensorPoint {
-  Vec3 position;  // m
-  Vec3 normal;    // unit vector
-};
 
 // A planar calculation area. Plane coordinates (u, v) in metres map to the world as
 // origin + u·uAxis + v·vAxis. A horizontal work plane at height h is origin (0, 0, h) with the

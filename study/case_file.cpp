@@ -1,4 +1,4 @@
-#include "engine/case_file.h"
+#include "study/case_file.h"
 
 #include <toml++/toml.h>
 
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace candela {
 
@@ -25,8 +26,6 @@ std::string skyTypeName(SkyType type, int cieType) {
   return "none";
 }
 
-
-const char* methodName(Method m) { return m == Method::kPath ? "path" : "cache"; }
 
 namespace {
 
@@ -504,10 +503,11 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
   Table tab(t, c, "[settings]");
   if (const toml::node* n = tab.get("quality")) {
     const std::string q = asString(c, *n, "quality");
-    if (q == "draft") s.quality = Quality::kDraft;
-    else if (q == "normal") s.quality = Quality::kNormal;
-    else if (q == "high") s.quality = Quality::kHigh;
-    else c.fail(*n, "unknown quality '" + q + "' (expected draft, normal or high)");
+    try {
+      s.quality = parseQuality(q);
+    } catch (const std::invalid_argument&) {
+      c.fail(*n, "unknown quality '" + q + "' (expected draft, normal or high)");
+    }
   }
   if (const toml::node* n = tab.get("seed")) {
     const int64_t v = asInteger(c, *n, "seed");
@@ -528,9 +528,11 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
   s.threads = count("threads", 0, 4096).value_or(0);
   if (const toml::node* n = tab.get("method")) {
     const std::string m = asString(c, *n, "method");
-    if (m == "cache") s.method = Method::kCache;
-    else if (m == "path") s.method = Method::kPath;
-    else c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
+    try {
+      s.method = parseMethod(m);
+    } catch (const std::invalid_argument&) {
+      c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
+    }
   }
   tab.finish();
 }

@@ -1,4 +1,4 @@
-#include "engine/sensor_grid.h"
+#include "study/sensor_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "base/error.h"
-#include "engine/quality.h"
+#include "engine/trace_settings.h"
 #include "base/math.h"
-#include "engine/sensor_grid.h"
+#include "engine/camera.h"
+#include "engine/luminaire_source.h"
+#include "study/sensor_grid.h"
 
 namespace candela {
 
@@ -33,6 +35,7 @@ struct LuminairePlacement {
   int entry = 0;                        // index of the [[luminaire]] entry (0-based)
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
+  LuminaireMounting mounting() const { return {name, positionM, aim, spinDeg, multiplier * maintenanceFactor}; }
 };
 
 struct SiteSpec {
@@ -85,25 +88,14 @@ struct GridSpec {
   FileLoc loc;                          // the [[grid]] entry
 };
 
-enum class ViewType { kPerspective, kFisheye };
-
-struct ViewSpec {
+// A [[view]]: the camera (engine/camera.h) with its name and contrast points.
+struct ViewSpec : View {
   std::string name;
-  ViewType type = ViewType::kPerspective;
-  Vec3 positionM{0.0};
-  Vec3 direction{0.0, 1.0, 0.0};        // unit
-  Vec3 up{0.0, 0.0, 1.0};               // unit
-  Vec2 fovDeg{60.0, 45.0};              // horizontal, vertical full angles
-  glm::ivec2 resolution{800, 600};      // pixels, width × height
   // Contrast: a task point and a background point (m) seen from the view position; both or
   // neither. The run reports C = (Lt − Lb)/Lb and CRF = C / C_ref (docs/views.md).
   std::optional<Vec3> taskM, backgroundM;
   FileLoc loc;
 };
-
-enum class Method { kCache, kPath };
-
-const char* methodName(Method m);
 
 // Unset optionals take the quality preset's value (chosen by the engine).
 struct Settings {

@@ -1,4 +1,4 @@
-#include "engine/case_scene.h"
+#include "study/case_scene.h"
 
 #include "engine/rad_reader.h"
 #include "photometry/epw.h"
@@ -11,18 +11,6 @@
 
 namespace candela {
 
-LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminairePlacement& p) {
-  LuminaireSource l;
-  l.web = std::move(web);
-  l.name = p.name;
-  l.position = p.positionM;
-  l.scale = p.multiplier * p.maintenanceFactor;
-  orientLuminaire(l, p.aim, p.spinDeg);
-  setOpeningFromWeb(l);
-  tabulatePeakIntensity(l);
-  return l;
-}
-
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
   for (const ScenePath& s : c.scenes) readRadianceFile(s.file, *scene);
@@ -30,7 +18,7 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   for (const LuminairePlacement& p : c.luminaires) {
     auto& web = webs[p.file];
     if (!web) web = std::make_shared<const PhotometricWeb>(readPhotometricFile(p.file));
-    scene->luminaires.push_back(placeLuminaire(web, p));
+    scene->luminaires.push_back(placeLuminaire(web, p.mounting()));
   }
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));
   return scene;

@@ -1,4 +1,4 @@
-#include "engine/case_file.h"
+#include "study/case_file.h"
 
 #include <gtest/gtest.h>
 

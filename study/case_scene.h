@@ -2,7 +2,7 @@
 // `candela points --case` and `candela run`.
 #pragma once
 
-#include "engine/case_file.h"
+#include "study/case_file.h"
 #include "engine/daylight.h"
 #include "engine/scene.h"
 #include "photometry/epw.h"
@@ -31,7 +31,5 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather = nullptr);
 // (Tracer::skyCoefficients). Luminaires are left out: annual metrics are of daylight alone.
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg);
 
-// Places one luminaire from its photometric web.
-LuminaireSource placeLuminaire(std::shared_ptr<const PhotometricWeb> web, const LuminairePlacement& p);
 
 }  // namespace candela
