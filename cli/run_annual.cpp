@@ -242,20 +242,8 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
         sensorAnnualMetrics(total, direct, n, nh, occupied, th, shaded, closed ? &blindsClosed : nullptr);
     const GridAnnualSummary sum = summarizeAnnual(m, occupiedCount);
     AnnualGridReport ar;
-    for (const SensorAnnualMetrics& s : m) {
-      ar.daPct.push_back(s.da);
-      ar.cdaPct.push_back(s.cda);
-      ar.udiFellShortPct.push_back(s.udiFellShort);
-      ar.udiSupplementaryPct.push_back(s.udiSupplementary);
-      ar.udiAutonomousPct.push_back(s.udiAutonomous);
-      ar.udiExceededPct.push_back(s.udiExceeded);
-      ar.aseHours.push_back(s.aseHours);
-      ar.sunHours.push_back(s.sunHours);
-      ar.sdaPass.push_back(s.sdaPass);
-      ar.aseExceeded.push_back(s.aseExceeded);
-    }
-    ar.summary = {sum.DA300, sum.cDA300, sum.UDI_fell_short, sum.UDI_supplementary, sum.UDI_autonomous,
-                  sum.UDI_exceeded, sum.sDA300_50, sum.ASE1000_250, sum.sunHoursMean, sum.sensors, sum.occupiedHours};
+    ar.sensors = m;
+    ar.summary = sum;
     ar.chosenSensor = a.reportSensor ? *a.reportSensor : centralSensor(g.grid);
     for (int h = 0; h < nh; ++h) ar.chosenSensorLux.push_back(total[static_cast<size_t>(ar.chosenSensor) * nh + h]);
     ar.hours = stamps;
@@ -264,7 +252,7 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
     r.description = gridDescription(g) + "; temporal map of sensor " + std::to_string(ar.chosenSensor);
     r.quantity = "Daylight autonomy DA" + formatFixed(th.daLux, 0);
     r.unit = "%";
-    r.values = ar.daPct;
+    r.values = annualColumn(ar, &SensorAnnualMetrics::da);
     r.stats = computeGridStats(r.values);
     r.layout = planLayout(g);
     r.annual = std::move(ar);
@@ -298,12 +286,11 @@ int runAnnualCase(const CaseFile& c, const AnnualRunOptions& o) {
   if (!o.quiet) {
     std::ostringstream s;
     for (const GridReport& r : data.grids) {
-      const AnnualSummary& m = r.annual->summary;
+      const GridAnnualSummary& m = r.annual->summary;
       std::snprintf(buf, sizeof buf,
                     "%-20s %6d points  DA300 %5.1f %%  cDA300 %5.1f %%  UDI_autonomous %5.1f %%  sDA300_50 %5.1f %%  "
                     "ASE1000_250 %5.1f %%\n",
-                    r.name.c_str(), m.sensors, m.da300Pct, m.cda300Pct, m.udiAutonomousPct, m.sda300_50Pct,
-                    m.ase1000_250Pct);
+                    r.name.c_str(), m.sensors, m.DA300, m.cDA300, m.UDI_autonomous, m.sDA300_50, m.ASE1000_250);
       s << buf;
     }
     s << "coefficients " << formatFixed(coefficientsS, 1) << " s, " << nh << "-hour product "

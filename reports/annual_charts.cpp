@@ -26,16 +26,14 @@ int dayOfYear(const HourStamp& s, bool leap) {
 }  // namespace
 
 std::vector<bool> sdaPassPerSensor(const AnnualGridReport& a) {
-  if (!a.sdaPass.empty()) return a.sdaPass;
   std::vector<bool> out;
-  for (double da : a.daPct) out.push_back(da >= kSdaDaThresholdPct);
+  for (const SensorAnnualMetrics& s : a.sensors) out.push_back(s.sdaPass);
   return out;
 }
 
 std::vector<bool> aseExceededPerSensor(const AnnualGridReport& a) {
-  if (!a.aseExceeded.empty()) return a.aseExceeded;
   std::vector<bool> out;
-  for (double h : a.aseHours) out.push_back(h > kAseHoursLimit);
+  for (const SensorAnnualMetrics& s : a.sensors) out.push_back(s.aseExceeded);
   return out;
 }
 

@@ -12,11 +12,7 @@
 
 namespace candela {
 
-// LM-83-12 thresholds used when AnnualGridReport leaves the per-sensor verdicts empty.
-inline constexpr double kSdaDaThresholdPct = 50.0;   // a sensor counts for sDA300/50% at DA300 ≥ 50 %
-inline constexpr double kAseHoursLimit = 250.0;      // and for ASE1000,250 above 250 h
-
-// Per-sensor verdicts: annual.sdaPass / aseExceeded when given, else daPct ≥ 50 and aseHours > 250.
+// Per-sensor verdicts of the sDA/ASE plan (metrics/annual.h decides them).
 std::vector<bool> sdaPassPerSensor(const AnnualGridReport& annual);
 std::vector<bool> aseExceededPerSensor(const AnnualGridReport& annual);
 

@@ -49,14 +49,15 @@ std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<do
 }
 
 std::string annualGridCsv(const std::vector<ReportPoint>& points, const AnnualGridReport& a) {
-  return pointsCsv(points, {{"DA300", a.daPct},
-                            {"cDA300", a.cdaPct},
-                            {"UDI_fell_short", a.udiFellShortPct},
-                            {"UDI_supplementary", a.udiSupplementaryPct},
-                            {"UDI_autonomous", a.udiAutonomousPct},
-                            {"UDI_exceeded", a.udiExceededPct},
-                            {"ASE_hours", a.aseHours},
-                            {"sun_hours", a.sunHours}});
+  using M = SensorAnnualMetrics;
+  return pointsCsv(points, {{"DA300", annualColumn(a, &M::da)},
+                            {"cDA300", annualColumn(a, &M::cda)},
+                            {"UDI_fell_short", annualColumn(a, &M::udiFellShort)},
+                            {"UDI_supplementary", annualColumn(a, &M::udiSupplementary)},
+                            {"UDI_autonomous", annualColumn(a, &M::udiAutonomous)},
+                            {"UDI_exceeded", annualColumn(a, &M::udiExceeded)},
+                            {"ASE_hours", annualColumn(a, &M::aseHours)},
+                            {"sun_hours", annualColumn(a, &M::sunHours)}});
 }
 
 fs::path writeAnnualGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
@@ -77,7 +78,7 @@ fs::path writeGridCsv(const fs::path& dir, const std::string& gridName, const st
   return path;
 }
 
-std::string summaryCsv(const SummaryData& data) {
+std::string summaryCsv(const ReportData& data) {
   std::string settings;
   for (const auto& [k, v] : data.run.settings) settings += (settings.empty() ? "" : ";") + k + "=" + v;
   std::string out =
@@ -112,9 +113,9 @@ std::string summaryCsv(const SummaryData& data) {
                                   formatNumber(data.run.runTimeS, 6),
                                   csvField(settings)};
     if (anyAnnual && g.annual) {
-      const AnnualSummary& a = g.annual->summary;
-      for (double v : {a.da300Pct, a.cda300Pct, a.udiFellShortPct, a.udiSupplementaryPct, a.udiAutonomousPct,
-                       a.udiExceededPct, a.sda300_50Pct, a.ase1000_250Pct})
+      const GridAnnualSummary& a = g.annual->summary;
+      for (double v : {a.DA300, a.cDA300, a.UDI_fell_short, a.UDI_supplementary, a.UDI_autonomous, a.UDI_exceeded,
+                       a.sDA300_50, a.ASE1000_250})
         f.push_back(formatNumber(v));
       f.push_back(std::to_string(a.occupiedHours));
       f.push_back(optionalTime(data.run.coefficientsTimeS));
@@ -128,7 +129,7 @@ std::string summaryCsv(const SummaryData& data) {
   return out;
 }
 
-fs::path writeSummaryCsv(const fs::path& dir, const SummaryData& data) {
+fs::path writeSummaryCsv(const fs::path& dir, const ReportData& data) {
   fs::create_directories(dir);
   const fs::path path = dir / "summary.csv";
   writeFileAtomic(path, summaryCsv(data));

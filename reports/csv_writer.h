@@ -42,10 +42,10 @@ std::filesystem::path writeAnnualGridCsv(const std::filesystem::path& dir, const
 //   occupied hours),sDA300_50,ASE1000_250 (% of sensors),occupied_hours,coefficients_time_s,
 //   product_time_s (s)
 // `settings` is "key=value;key=value". Fields are quoted as RFC 4180 when needed.
-std::string summaryCsv(const SummaryData& data);
+std::string summaryCsv(const ReportData& data);
 
 // Writes <dir>/summary.csv and returns its path.
-std::filesystem::path writeSummaryCsv(const std::filesystem::path& dir, const SummaryData& data);
+std::filesystem::path writeSummaryCsv(const std::filesystem::path& dir, const ReportData& data);
 
 // One CSV field, quoted when it holds a comma, quote or line break (RFC 4180).
 std::string csvField(const std::string& text);

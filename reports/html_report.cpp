@@ -111,7 +111,8 @@ std::string metricPlan(const GridReport& g, const std::string& quantity, const s
 // small multiples, the sDA/ASE plan and the temporal map of the chosen sensor.
 void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index, const RunInfo& run, double northDeg) {
   const AnnualGridReport& a = *g.annual;
-  const AnnualSummary& s = a.summary;
+  const GridAnnualSummary& s = a.summary;
+  using M = SensorAnnualMetrics;
   const std::string id = "annual" + std::to_string(index + 1);
   h << "<section class=\"grid annual\" id=\"annual-" << index + 1 << "\">\n<h2><span class=\"n\">" << index + 1
     << "</span>Annual daylight: " << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">Climate-based daylight over "
@@ -119,12 +120,12 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
     << " sensors. Percentages of occupied hours are means over the sensors; sDA and ASE are shares of "
        "sensors (IES LM-83-12). UDI bins after Nabil &amp; Mardaljevic (2005): fell short &lt; 100 lx, "
        "supplementary 100–300 lx, autonomous 300–3000 lx, exceeded &gt; 3000 lx.</p>\n<div class=\"grid-body\">\n";
-  if (!a.daPct.empty()) {
+  if (!a.sensors.empty()) {
     PlanOptions opt;
     opt.northDeg = northDeg;
     opt.idPrefix = id + "-da";
     opt.contourLevels = {25.0, 50.0, 75.0};
-    h << "<figure>\n" << metricPlan(g, "Daylight autonomy DA300", a.daPct, opt)
+    h << "<figure>\n" << metricPlan(g, "Daylight autonomy DA300", annualColumn(a, &M::da), opt)
       << "<figcaption>DA300 per sensor: share of occupied hours with at least 300 lx from daylight, 0–100 %; "
          "lines at 25, 50 and 75 %.</figcaption>\n</figure>\n";
   }
@@ -133,14 +134,14 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
   auto row = [&](const char* name, const std::string& value, const char* meaning) {
     h << "<tr><td>" << name << "</td><td class=\"num\">" << value << "</td><td>" << meaning << "</td></tr>\n";
   };
-  row("DA300", pctText(s.da300Pct), "occupied hours with E ≥ 300 lx (mean over sensors)");
-  row("cDA300", pctText(s.cda300Pct), "as DA300 with partial credit E/300 below 300 lx");
-  row("UDI_fell_short", pctText(s.udiFellShortPct), "occupied hours with E &lt; 100 lx");
-  row("UDI_supplementary", pctText(s.udiSupplementaryPct), "100 ≤ E &lt; 300 lx");
-  row("UDI_autonomous", pctText(s.udiAutonomousPct), "300 ≤ E ≤ 3000 lx");
-  row("UDI_exceeded", pctText(s.udiExceededPct), "E &gt; 3000 lx");
-  row("sDA300_50", pctText(s.sda300_50Pct), "sensors with DA300 ≥ 50 %");
-  row("ASE1000_250", pctText(s.ase1000_250Pct), "sensors with more than 250 h of direct sun ≥ 1000 lx");
+  row("DA300", pctText(s.DA300), "occupied hours with E ≥ 300 lx (mean over sensors)");
+  row("cDA300", pctText(s.cDA300), "as DA300 with partial credit E/300 below 300 lx");
+  row("UDI_fell_short", pctText(s.UDI_fell_short), "occupied hours with E &lt; 100 lx");
+  row("UDI_supplementary", pctText(s.UDI_supplementary), "100 ≤ E &lt; 300 lx");
+  row("UDI_autonomous", pctText(s.UDI_autonomous), "300 ≤ E ≤ 3000 lx");
+  row("UDI_exceeded", pctText(s.UDI_exceeded), "E &gt; 3000 lx");
+  row("sDA300_50", pctText(s.sDA300_50), "sensors with DA300 ≥ 50 %");
+  row("ASE1000_250", pctText(s.ASE1000_250), "sensors with more than 250 h of direct sun ≥ 1000 lx");
   row("sun hours", formatFixed(s.sunHoursMean, 0) + " h", "hours of the year with direct sun on the sensor (mean over sensors)");
   row("occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
   if (run.coefficientsTimeS) row("coefficients_time_s", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
@@ -149,16 +150,16 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
 
   struct Bin {
     const char* name;
-    const std::vector<double>* values;
+    double M::*perSensor;
     double meanPct;
   };
-  const Bin bins[] = {{"UDI_fell_short", &a.udiFellShortPct, s.udiFellShortPct},
-                      {"UDI_supplementary", &a.udiSupplementaryPct, s.udiSupplementaryPct},
-                      {"UDI_autonomous", &a.udiAutonomousPct, s.udiAutonomousPct},
-                      {"UDI_exceeded", &a.udiExceededPct, s.udiExceededPct}};
+  const Bin bins[] = {{"UDI_fell_short", &M::udiFellShort, s.UDI_fell_short},
+                      {"UDI_supplementary", &M::udiSupplementary, s.UDI_supplementary},
+                      {"UDI_autonomous", &M::udiAutonomous, s.UDI_autonomous},
+                      {"UDI_exceeded", &M::udiExceeded, s.UDI_exceeded}};
   h << "<h3>Useful daylight illuminance</h3>\n<div class=\"multiples\">\n";
-  for (const auto& [name, values, meanPct] : bins) {
-    if (values->empty()) continue;
+  for (const auto& [name, perSensor, meanPct] : bins) {
+    if (a.sensors.empty()) continue;
     PlanOptions opt;
     opt.northDeg = northDeg;
     opt.idPrefix = id + "-" + name;
@@ -166,7 +167,7 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
     opt.maxPlanHeightPx = 170.0;
     opt.contours = false;
     opt.cellValues = false;
-    h << "<figure>\n" << metricPlan(g, name, *values, opt) << "<figcaption>" << name << ", % of occupied hours ("
+    h << "<figure>\n" << metricPlan(g, name, annualColumn(a, perSensor), opt) << "<figcaption>" << name << ", % of occupied hours ("
       << pctText(meanPct) << " mean)</figcaption>\n</figure>\n";
   }
   h << "</div>\n";
@@ -176,8 +177,8 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
     PlanOptions opt;
     opt.idPrefix = id + "-sda";
     h << "<h3>Spatial daylight autonomy and annual sunlight exposure</h3>\n<figure class=\"temporal\">\n"
-      << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA300_50 = " << pctText(s.sda300_50Pct)
-      << " of sensors, ASE1000_250 = " << pctText(s.ase1000_250Pct) << " of sensors.</figcaption>\n</figure>\n";
+      << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA300_50 = " << pctText(s.sDA300_50)
+      << " of sensors, ASE1000_250 = " << pctText(s.ASE1000_250) << " of sensors.</figcaption>\n</figure>\n";
   }
 
   if (a.chosenSensor >= 0 && !a.chosenSensorLux.empty()) {

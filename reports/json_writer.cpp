@@ -21,7 +21,7 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 
 }  // namespace
 
-std::string summaryJson(const SummaryData& data) {
+std::string summaryJson(const ReportData& data) {
   using nlohmann::json;
   json j;
   j["case"] = {{"name", data.run.caseName}, {"description", data.run.description}, {"file", data.run.caseFile}};
@@ -53,15 +53,15 @@ std::string summaryJson(const SummaryData& data) {
              {"verdict_uniformity", verdictName(g.check.uniformity)},
              {"verdict", verdictName(g.check.overall)}};
     if (g.annual) {
-      const AnnualSummary& a = g.annual->summary;
-      o["DA300"] = number(a.da300Pct);
-      o["cDA300"] = number(a.cda300Pct);
-      o["UDI_fell_short"] = number(a.udiFellShortPct);
-      o["UDI_supplementary"] = number(a.udiSupplementaryPct);
-      o["UDI_autonomous"] = number(a.udiAutonomousPct);
-      o["UDI_exceeded"] = number(a.udiExceededPct);
-      o["sDA300_50"] = number(a.sda300_50Pct);
-      o["ASE1000_250"] = number(a.ase1000_250Pct);
+      const GridAnnualSummary& a = g.annual->summary;
+      o["DA300"] = number(a.DA300);
+      o["cDA300"] = number(a.cDA300);
+      o["UDI_fell_short"] = number(a.UDI_fell_short);
+      o["UDI_supplementary"] = number(a.UDI_supplementary);
+      o["UDI_autonomous"] = number(a.UDI_autonomous);
+      o["UDI_exceeded"] = number(a.UDI_exceeded);
+      o["sDA300_50"] = number(a.sDA300_50);
+      o["ASE1000_250"] = number(a.ASE1000_250);
       o["sun_hours_mean"] = number(a.sunHoursMean);
       o["sensors"] = a.sensors;
       o["occupied_hours"] = a.occupiedHours;
@@ -74,14 +74,14 @@ std::string summaryJson(const SummaryData& data) {
   return j.dump(2) + "\n";
 }
 
-fs::path writeSummaryJson(const fs::path& dir, const SummaryData& data) {
+fs::path writeSummaryJson(const fs::path& dir, const ReportData& data) {
   fs::create_directories(dir);
   const fs::path path = dir / "summary.json";
   writeFileAtomic(path, summaryJson(data));
   return path;
 }
 
-void writeSummary(const fs::path& dir, const SummaryData& data) {
+void writeSummary(const fs::path& dir, const ReportData& data) {
   writeSummaryCsv(dir, data);
   writeSummaryJson(dir, data);
 }

@@ -22,12 +22,12 @@ namespace candela {
 // }
 // Values are in each grid's unit (lux, or % for daylight-factor grids); verdicts "pass",
 // "fail" or "n/a".
-std::string summaryJson(const SummaryData& data);
+std::string summaryJson(const ReportData& data);
 
 // Writes <dir>/summary.json and returns its path.
-std::filesystem::path writeSummaryJson(const std::filesystem::path& dir, const SummaryData& data);
+std::filesystem::path writeSummaryJson(const std::filesystem::path& dir, const ReportData& data);
 
 // summary.csv and summary.json together.
-void writeSummary(const std::filesystem::path& dir, const SummaryData& data);
+void writeSummary(const std::filesystem::path& dir, const ReportData& data);
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 // Plain data the report writers take: no engine types, so reports/ depends on base and metrics
-// only. cli/cmd_run.cpp fills these from the case file and the computed grids.
+// only; metrics' result types are held as they are. study/ fills these from the case file and the
+// computed grids.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "base/math.h"
+#include "metrics/annual.h"
 #include "metrics/grid_stats.h"
 #include "metrics/targets.h"
 
@@ -48,38 +50,11 @@ struct HourStamp {
   bool operator==(const HourStamp&) const = default;
 };
 
-// Grid means of the annual metrics (metrics/annual.h computes them). Names follow IES LM-83-12
-// and the UDI bins of Nabil & Mardaljevic (2005): 100 lx and 3000 lx bounds.
-struct AnnualSummary {
-  double da300Pct = 0.0;             // DA300: mean daylight autonomy, % of occupied hours
-  double cda300Pct = 0.0;            // cDA300: continuous DA (partial credit below 300 lx), %
-  double udiFellShortPct = 0.0;      // UDI_fell_short: E < 100 lx, % of occupied hours
-  double udiSupplementaryPct = 0.0;  // UDI_supplementary: 100 ≤ E < 300 lx, %
-  double udiAutonomousPct = 0.0;     // UDI_autonomous: 300 ≤ E ≤ 3000 lx, %
-  double udiExceededPct = 0.0;       // UDI_exceeded: E > 3000 lx, %
-  double sda300_50Pct = 0.0;         // sDA300/50%: % of sensors with DA300 ≥ 50 %
-  double ase1000_250Pct = 0.0;       // ASE1000,250: % of sensors with > 250 h of direct sun ≥ 1000 lx
-  double sunHoursMean = 0.0;         // mean over sensors of the hours with direct sun, h
-  int sensors = 0;
-  int occupiedHours = 0;             // hours counted in the percentages
-};
-
 // The annual results of one grid, for the annual CSV, the summary and the HTML section. The
 // per-sensor vectors have one entry per point of the grid, in the grid's point order.
 struct AnnualGridReport {
-  std::vector<double> daPct;                 // DA300 per sensor, % of occupied hours
-  std::vector<double> cdaPct;                // cDA300 per sensor, %
-  std::vector<double> udiFellShortPct;       // per sensor, % of occupied hours
-  std::vector<double> udiSupplementaryPct;
-  std::vector<double> udiAutonomousPct;
-  std::vector<double> udiExceededPct;
-  std::vector<double> aseHours;              // occupied hours with direct sun ≥ 1000 lx, h
-  std::vector<double> sunHours;              // hours of the year (occupied or not) with direct sun on the sensor, h
-  // Per-sensor verdicts for the sDA/ASE plan; when left empty they are derived as
-  // daPct ≥ 50 and aseHours > 250 (LM-83-12 thresholds).
-  std::vector<bool> sdaPass;
-  std::vector<bool> aseExceeded;
-  AnnualSummary summary;
+  std::vector<SensorAnnualMetrics> sensors;  // per sensor (metrics/annual.h)
+  GridAnnualSummary summary;                 // grid means and shares, as summary.json names them
   // Temporal map of one sensor: its index in the grid, and its illuminance in lux for every
   // time step of the year (`hours` labels them; both have the same length, 8760 or 8784).
   int chosenSensor = -1;                     // < 0: no temporal map
@@ -133,7 +108,6 @@ struct ReportData {
   std::vector<ViewReport> views;
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
 };
-using SummaryData = ReportData;
 
 // Shortest text that reads back to `v` within `significant` digits ("%.*g"); "nan"/"inf" kept.
 std::string formatNumber(double v, int significant = 8);
@@ -143,5 +117,14 @@ std::string formatFixed(double v, int decimals);
 
 // A grid name made safe as a file name: [A-Za-z0-9_-] kept, anything else becomes '_'.
 std::string safeFileName(const std::string& name);
+
+// One field of every sensor's annual metrics, e.g. annualColumn(a, &SensorAnnualMetrics::da).
+template <class T>
+std::vector<double> annualColumn(const AnnualGridReport& a, T SensorAnnualMetrics::*field) {
+  std::vector<double> out;
+  out.reserve(a.sensors.size());
+  for (const SensorAnnualMetrics& s : a.sensors) out.push_back(static_cast<double>(s.*field));
+  return out;
+}
 
 }  // namespace candela

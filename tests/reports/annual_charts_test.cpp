@@ -88,14 +88,15 @@ TEST(SdaAsePlan, MarksPassingSensorsAndAseExceedances) {
   EXPECT_NE(svg.find("(ASE): 2"), std::string::npos);
 }
 
-TEST(SdaAsePlan, VerdictsDerivedFromThresholdsWhenNotGiven) {
+TEST(SdaAsePlan, VerdictsAreTheSensorsOwn) {
   AnnualGridReport a;
-  a.daPct = {49.9, 50.0, 80.0};
-  a.aseHours = {250.0, 251.0, 0.0};
-  EXPECT_EQ(sdaPassPerSensor(a), (std::vector<bool>{false, true, true}));
-  EXPECT_EQ(aseExceededPerSensor(a), (std::vector<bool>{false, true, false}));
-  a.sdaPass = {true, false, false};
-  EXPECT_EQ(sdaPassPerSensor(a), a.sdaPass);
+  a.sensors.resize(3);
+  a.sensors[0].sdaPass = true;
+  a.sensors[1].aseExceeded = true;
+  a.sensors[2].sdaPass = true;
+  a.sensors[2].aseExceeded = true;
+  EXPECT_EQ(sdaPassPerSensor(a), (std::vector<bool>{true, false, true}));
+  EXPECT_EQ(aseExceededPerSensor(a), (std::vector<bool>{false, true, true}));
 }
 
 std::string annualReportHtml() {
@@ -112,7 +113,7 @@ std::string annualReportHtml() {
 TEST(HtmlReport, AnnualSectionHasTheMetricsPlansAndTemporalMap) {
   const ReportData data = testing_sample::sampleAnnualReport();
   const std::size_t i = data.grids.size() - 1;
-  const AnnualSummary& s = data.grids[i].annual->summary;
+  const GridAnnualSummary& s = data.grids[i].annual->summary;
   const std::string html = annualReportHtml();
   const std::string id = "id=\"annual-" + std::to_string(i + 1) + "\"";
   const std::size_t at = html.find(id);
@@ -120,9 +121,9 @@ TEST(HtmlReport, AnnualSectionHasTheMetricsPlansAndTemporalMap) {
   const std::string section = html.substr(at, html.find("</section>", at) - at);
   EXPECT_NE(section.find("Annual daylight: Daylit office"), std::string::npos);
   for (const auto& [name, v] : std::vector<std::pair<std::string, double>>{
-           {"DA300", s.da300Pct}, {"cDA300", s.cda300Pct}, {"UDI_fell_short", s.udiFellShortPct},
-           {"UDI_supplementary", s.udiSupplementaryPct}, {"UDI_autonomous", s.udiAutonomousPct},
-           {"UDI_exceeded", s.udiExceededPct}, {"sDA300_50", s.sda300_50Pct}, {"ASE1000_250", s.ase1000_250Pct}})
+           {"DA300", s.DA300}, {"cDA300", s.cDA300}, {"UDI_fell_short", s.UDI_fell_short},
+           {"UDI_supplementary", s.UDI_supplementary}, {"UDI_autonomous", s.UDI_autonomous},
+           {"UDI_exceeded", s.UDI_exceeded}, {"sDA300_50", s.sDA300_50}, {"ASE1000_250", s.ASE1000_250}})
     EXPECT_NE(section.find("<td>" + name + "</td><td class=\"num\">" + formatFixed(v, 1) + " %</td>"),
               std::string::npos)
         << name << " " << v;
@@ -133,9 +134,9 @@ TEST(HtmlReport, AnnualSectionHasTheMetricsPlansAndTemporalMap) {
   EXPECT_EQ(count(section, "<svg "), 6u);
   EXPECT_EQ(count(section, "class=\"plan sda-ase\""), 1u);
   // The sample's window-side sensors get sun, so some are crossed; the data has both verdicts.
-  EXPECT_GT(s.ase1000_250Pct, 0.0);
-  EXPECT_GT(s.sda300_50Pct, 0.0);
-  EXPECT_LT(s.sda300_50Pct, 100.0);
+  EXPECT_GT(s.ASE1000_250, 0.0);
+  EXPECT_GT(s.sDA300_50, 0.0);
+  EXPECT_LT(s.sDA300_50, 100.0);
   EXPECT_GT(count(section, "class=\"ase\""), 0u);
   // The temporal map is an embedded PNG of the documented size.
   const TemporalMap m = temporalMap(data.grids[i].annual->chosenSensorLux, data.grids[i].annual->hours);

@@ -55,21 +55,22 @@ TEST(AnnualGridCsv, HasTheMetricColumnsPerSensor) {
     const auto& r = rows[i + 1];
     ASSERT_EQ(r.size(), 14u);
     EXPECT_DOUBLE_EQ(std::stod(r[1]), pts[i].position.y);
-    EXPECT_NEAR(std::stod(r[6]), a.daPct[i], 1e-7 * a.daPct[i]);  // 8 significant digits
-    EXPECT_NEAR(std::stod(r[10]), a.udiAutonomousPct[i], 1e-7 * a.udiAutonomousPct[i]);
-    EXPECT_EQ(std::stod(r[12]), a.aseHours[i]);  // whole hours print exactly
+    const SensorAnnualMetrics& m = a.sensors[i];
+    EXPECT_NEAR(std::stod(r[6]), m.da, 1e-7 * m.da);  // 8 significant digits
+    EXPECT_NEAR(std::stod(r[10]), m.udiAutonomous, 1e-7 * m.udiAutonomous);
+    EXPECT_EQ(std::stod(r[12]), m.aseHours);  // whole hours print exactly
     // The four UDI bins partition the occupied hours.
     EXPECT_NEAR(std::stod(r[8]) + std::stod(r[9]) + std::stod(r[10]) + std::stod(r[11]), 100.0, 4e-6);
   }
   AnnualGridReport bad = a;
-  bad.cdaPct.pop_back();
+  bad.sensors.pop_back();
   EXPECT_THROW(annualGridCsv(pts, bad), std::invalid_argument);
 }
 
 TEST(AnnualSummary, CsvAndJsonCarryTheExactNames) {
   const ReportData data = testing_sample::sampleAnnualReport();
   const std::size_t annualIndex = data.grids.size() - 1;
-  const AnnualSummary& s = data.grids[annualIndex].annual->summary;
+  const GridAnnualSummary& s = data.grids[annualIndex].annual->summary;
   const fs::path dir = fs::path(testing::TempDir()) / "candela_annual_summary";
   fs::remove_all(dir);
   writeSummary(dir, data);
@@ -83,10 +84,10 @@ TEST(AnnualSummary, CsvAndJsonCarryTheExactNames) {
     return static_cast<std::size_t>(it - header.begin());
   };
   const std::vector<std::pair<std::string, double>> expected = {
-      {"DA300", s.da300Pct},           {"cDA300", s.cda300Pct},
-      {"UDI_fell_short", s.udiFellShortPct}, {"UDI_supplementary", s.udiSupplementaryPct},
-      {"UDI_autonomous", s.udiAutonomousPct}, {"UDI_exceeded", s.udiExceededPct},
-      {"sDA300_50", s.sda300_50Pct},   {"ASE1000_250", s.ase1000_250Pct}};
+      {"DA300", s.DA300},           {"cDA300", s.cDA300},
+      {"UDI_fell_short", s.UDI_fell_short}, {"UDI_supplementary", s.UDI_supplementary},
+      {"UDI_autonomous", s.UDI_autonomous}, {"UDI_exceeded", s.UDI_exceeded},
+      {"sDA300_50", s.sDA300_50},   {"ASE1000_250", s.ASE1000_250}};
   const auto& r = rows[annualIndex + 1];
   ASSERT_EQ(r.size(), header.size());
   for (const auto& [name, v] : expected) EXPECT_NEAR(std::stod(r[col(name)]), v, 1e-7 * std::abs(v) + 1e-12) << name;

@@ -112,7 +112,8 @@ inline AnnualGridReport sampleAnnual(const GridReport& grid) {
   double sda = 0.0, ase = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double y = grid.layout.planPositions[i].y;
-    double da = 0, cda = 0, fell = 0, sup = 0, aut = 0, exc = 0, aseH = 0, sunH = 0;
+    double da = 0, cda = 0, fell = 0, sup = 0, aut = 0, exc = 0;
+    int aseH = 0, sunH = 0;
     occupied = 0;
     for (std::size_t h = 0; h < a.hours.size(); ++h) {
       const int hourEnding = a.hours[h].hourEnding;
@@ -129,31 +130,36 @@ inline AnnualGridReport sampleAnnual(const GridReport& grid) {
       aseH += s.directSun;  // the sun patch is 8 klx >= 1000 lx
     }
     auto pct = [&](double hours) { return 100.0 * hours / occupied; };
-    a.daPct.push_back(pct(da));
-    a.cdaPct.push_back(pct(cda));
-    a.udiFellShortPct.push_back(pct(fell));
-    a.udiSupplementaryPct.push_back(pct(sup));
-    a.udiAutonomousPct.push_back(pct(aut));
-    a.udiExceededPct.push_back(pct(exc));
-    a.aseHours.push_back(aseH);
-    a.sunHours.push_back(sunH);
-    sda += pct(da) >= 50.0;
-    ase += aseH > 250.0;
+    SensorAnnualMetrics m;
+    m.da = pct(da);
+    m.cda = pct(cda);
+    m.udiFellShort = pct(fell);
+    m.udiSupplementary = pct(sup);
+    m.udiAutonomous = pct(aut);
+    m.udiExceeded = pct(exc);
+    m.aseHours = aseH;
+    m.sunHours = sunH;
+    m.sdaPass = m.da >= 50.0;
+    m.aseExceeded = aseH > 250;
+    a.sensors.push_back(m);
+    sda += m.sdaPass;
+    ase += m.aseExceeded;
   }
-  auto mean = [&](const std::vector<double>& v) {
+  using M = SensorAnnualMetrics;
+  auto mean = [&](auto field) {
     double sum = 0.0;
-    for (double x : v) sum += x;
-    return sum / static_cast<double>(v.size());
+    for (double x : annualColumn(a, field)) sum += x;
+    return sum / static_cast<double>(n);
   };
-  a.summary.da300Pct = mean(a.daPct);
-  a.summary.cda300Pct = mean(a.cdaPct);
-  a.summary.udiFellShortPct = mean(a.udiFellShortPct);
-  a.summary.udiSupplementaryPct = mean(a.udiSupplementaryPct);
-  a.summary.udiAutonomousPct = mean(a.udiAutonomousPct);
-  a.summary.udiExceededPct = mean(a.udiExceededPct);
-  a.summary.sda300_50Pct = 100.0 * sda / static_cast<double>(n);
-  a.summary.ase1000_250Pct = 100.0 * ase / static_cast<double>(n);
-  a.summary.sunHoursMean = mean(a.sunHours);
+  a.summary.DA300 = mean(&M::da);
+  a.summary.cDA300 = mean(&M::cda);
+  a.summary.UDI_fell_short = mean(&M::udiFellShort);
+  a.summary.UDI_supplementary = mean(&M::udiSupplementary);
+  a.summary.UDI_autonomous = mean(&M::udiAutonomous);
+  a.summary.UDI_exceeded = mean(&M::udiExceeded);
+  a.summary.sDA300_50 = 100.0 * sda / static_cast<double>(n);
+  a.summary.ASE1000_250 = 100.0 * ase / static_cast<double>(n);
+  a.summary.sunHoursMean = mean(&M::sunHours);
   a.summary.sensors = static_cast<int>(n);
   a.summary.occupiedHours = occupied;
   // The lead picks the grid's centre sensor; so does the sample.
@@ -172,7 +178,7 @@ inline ReportData sampleAnnualReport() {
   g.annual = sampleAnnual(g);
   g.quantity = "Daylight autonomy DA300";
   g.unit = "%";
-  g.values = g.annual->daPct;
+  g.values = annualColumn(*g.annual, &SensorAnnualMetrics::da);
   g.stats = computeGridStats(g.values);
   g.targets = {};
   g.check = checkTargets(g.stats, g.targets);
