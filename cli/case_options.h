@@ -1,9 +1,8 @@
-// The trace options every case-based command shares (run, render): the case's [settings] first,
-// then what the command line says.
+// The trace options every command shares (points, run, render), parsed into the study layer's
+// TraceOverrides (study/trace_options.h resolves them over the case and the preset).
 #pragma once
 
-#include "study/case_file.h"
-#include "engine/tracer.h"
+#include "study/trace_options.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,19 +18,12 @@ struct CaseTraceOptions {
   int64_t seed = -1;    // < 0: the case's
   int threads = -1;     // < 0: the case's
   std::string method;   // empty: the case's, else the command's default
+  TraceOverrides overrides() const;
 };
 
-// Adds --quality, --bounces, --samples (with `samplesHelp`), --seed, --method and --threads.
-void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp);
-
-struct ResolvedTrace {
-  Quality quality = Quality::kNormal;
-  TraceSettings settings;
-  int threads = 0;  // 0 = all cores
-};
-
-// `defaultMethod` applies when neither the case nor the command line names one: the irradiance
-// cache for grids (`run`), the path tracer for single views (`render`).
-ResolvedTrace resolveTrace(const CaseFile& c, const CaseTraceOptions& o, Method defaultMethod);
+// Adds --quality, --bounces, --samples (with `samplesHelp`), --seed, --method and --threads;
+// `defaults` ends the help text of --quality and --method ("the case's, else ...").
+void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp,
+                         const std::string& methodDefault = "cache");
 
 }  // namespace candela::cli

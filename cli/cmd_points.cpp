@@ -1,15 +1,15 @@
 // candela points [SCENE.rad ...] [--points FILE] [options]: illuminance at Radiance-style sensor
-// points read from a file or stdin; CSV on stdout, printed only once every point is done.
+// points read from a file or stdin (study/points_study.h traces them); CSV on stdout, printed only
+// once every point is done.
+#include "cli/case_options.h"
 #include "cli/commands.h"
 
 #include "base/error.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
 #include "engine/daylight.h"
 #include "photometry/site.h"
-#include "engine/rad_reader.h"
+#include "photometry/sky_type.h"
+#include "study/points_study.h"
 #include "study/sensor_grid.h"
-#include "engine/sensors.h"
 
 #include <cstdio>
 #include <fstream>
@@ -26,16 +26,11 @@ struct PointsOptions {
   std::vector<std::string> scenes;
   std::string caseFile;
   std::string pointsFile;
-  std::string quality;  // empty: the case's, else normal
-  int bounces = -1;
-  int samples = -1;
-  int64_t seed = -1;
-  int threads = -1;
-  std::string method = "path";
+  CaseTraceOptions trace;
   std::string accelerator = "embree";
   bool error = false;
   double targetErrorPct = 0.0;
-  // Daylight (issue "Daylight"): used when --sky is given; else the case's [sky] applies.
+  // Daylight: used when --sky is given; else the case's [sky] applies.
   std::string sky;
   std::optional<double> sunAltitude, sunAzimuth, timezone, elevation, north;
   std::string lat, lon, time;
@@ -45,7 +40,12 @@ struct PointsOptions {
 
 DaylightSpec daylightFromOptions(const PointsOptions& o, DaylightSpec d) {
   const FileLoc cli{"command line", 0, 0};
-  d.skyType = o.sky;
+  std::string why;
+  const std::optional<SkyType> type = parseSkyType(o.sky, &why);
+  if (!type) throw InputError(cli, why);
+  if (type->kind == SkyKind::kAnnual)
+    throw InputError(cli, "an annual sky is a whole year: `candela run` computes it from a case");
+  d.skyType = *type;
   d.skyLoc = cli;
   d.timeLoc = cli;
   if (o.sunAltitude) d.sunAltitudeDeg = o.sunAltitude;
@@ -66,38 +66,14 @@ DaylightSpec daylightFromOptions(const PointsOptions& o, DaylightSpec d) {
 }
 
 int runPoints(const PointsOptions& o) {
-  // The case's scene, luminaires and settings first; options given on the command line win.
-  std::unique_ptr<Scene> scene;
-  Quality quality = Quality::kNormal;
-  int threads = 0;
-  uint64_t seed = 1;
-  std::optional<int> bounces, samples;
-  DaylightSpec daylight;
-  if (!o.caseFile.empty()) {
-    const CaseFile c = readCaseFile(o.caseFile);
-    scene = loadCaseScene(c, o.sky.empty());
-    if (!o.sky.empty()) daylight = daylightFromCase(c);
-    quality = c.settings.quality;
-    seed = c.settings.seed;
-    threads = c.settings.threads;
-    bounces = c.settings.bounces;
-    samples = c.settings.samples;
-  } else {
-    scene = std::make_unique<Scene>();
-  }
-  for (const std::string& f : o.scenes) readRadianceFile(f, *scene);
-  if (!o.sky.empty()) addDaylight(*scene, daylightFromOptions(o, daylight));
-  if (!o.quality.empty()) quality = parseQuality(o.quality);
-  if (o.bounces >= 0) bounces = o.bounces;
-  if (o.samples > 0) samples = o.samples;
-  if (o.seed >= 0) seed = static_cast<uint64_t>(o.seed);
-  if (o.threads >= 0) threads = o.threads;
-  TraceSettings settings = settingsForQuality(quality);
-  if (bounces) settings.maxBounces = *bounces;
-  if (samples) settings.hemisphereSamples = *samples;
-  settings.seed = seed;
-  settings.method = parseMethod(o.method);
-  settings.targetRelativeError = o.targetErrorPct / 100.0;
+  PointsJob job;
+  job.caseFile = o.caseFile;
+  job.scenes.assign(o.scenes.begin(), o.scenes.end());
+  if (!o.sky.empty()) job.sky = [&o](DaylightSpec caseDaylight) { return daylightFromOptions(o, caseDaylight); };
+  job.trace = o.trace.overrides();
+  job.trace.targetRelativeError = o.targetErrorPct / 100.0;
+  job.accelerator = parseAccelerator(o.accelerator);
+  const PointsScene scene = loadPointsScene(job);
 
   std::vector<SensorPoint> points;
   if (o.pointsFile.empty() || o.pointsFile == "-") {
@@ -107,9 +83,7 @@ int runPoints(const PointsOptions& o) {
     if (!in) throw InputError(FileLoc{o.pointsFile, 0, 0}, "cannot open points file");
     points = readPoints(in, o.pointsFile);
   }
-
-  const Tracer tracer(*scene, parseAccelerator(o.accelerator));
-  const std::vector<IrradianceEstimate> est = computeIrradiance(tracer, points, settings, threads);
+  const std::vector<IrradianceEstimate> est = computePoints(scene, job.accelerator, points).estimates;
 
   std::ostringstream csv;
   csv << "x,y,z,dx,dy,dz,illuminance_lux" << (o.error ? ",error_lux" : "") << "\n";
@@ -139,17 +113,7 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--case", opts->caseFile, "case file: its scenes, luminaires and settings apply")
       ->check(CLI::ExistingFile);
   cmd->add_option("--points", opts->pointsFile, "sensor points file (default: stdin)");
-  cmd->add_option("--quality", opts->quality, "draft | normal | high (default: the case's, else normal: accurate)")
-      ->check(CLI::IsMember({"draft", "normal", "high"}));
-  cmd->add_option("--bounces", opts->bounces, "diffuse interreflections followed (default by quality)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--samples", opts->samples, "hemisphere samples per point (default by quality)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--seed", opts->seed, "random seed (same seed, same numbers; default 1)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--method", opts->method, "path (unbiased path tracer) | cache (Ward's irradiance cache)")
-      ->check(CLI::IsMember({"path", "cache"}));
+  addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point", "path");
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(CLI::IsMember({"embree", "octree"}));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");

@@ -1,37 +1,27 @@
-// candela render CASE.toml --view NAME [--out DIR]: renders one [[view]] of a case into
-// <out>/<name>.exr (luminance in cd/m², float), <name>.png (false colour with legend) and
-// <name>_preview.png (tone mapped), and prints the view's glare ratings: UGR from the luminaires
-// (CIE 117) for every view, DGP from the image (Wienold & Christoffersen 2006) for fisheye views.
-// Everything is read and checked before tracing; each file is written atomically.
+// candela render CASE.toml --view NAME [--out DIR]: one [[view]] of a case through the view
+// pipeline `candela run` uses (study/view_study.h): <out>/<name>.exr (luminance in cd/m², float),
+// <name>.png (false colour with legend) and <name>_preview.png (tone mapped). This file parses
+// the options and prints the view's luminance, glare ratings (UGR, CIE 117; DGP for fisheye
+// views, Wienold & Christoffersen 2006) and contrast.
 #include "cli/case_options.h"
 #include "cli/commands.h"
-#include "cli/view_glare.h"
 #include "cli/progress.h"
 
 #include "base/error.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
-#include "engine/render.h"
-#include "metrics/contrast.h"
 #include "metrics/glare.h"
-#include "reports/report_data.h"
-#include "reports/tonemap.h"
+#include "study/run_case.h"
+#include "study/view_study.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <sstream>
 
 namespace candela::cli {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 struct RenderOptions {
   std::string caseFile;
@@ -40,7 +30,7 @@ struct RenderOptions {
   CaseTraceOptions trace;
   int pixelSamples = 4;
   int coarseStep = 4;
-  int irradianceSamples = -1;  // < 0: automatic (64 with daylight, else 0)
+  int irradianceSamples = 64;
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
@@ -54,126 +44,73 @@ std::string num(double v, int decimals) {
   return buf;
 }
 
-int renderCase(const RenderOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  const CaseFile c = readCaseFile(o.caseFile);
-  const ViewSpec* view = nullptr;
-  for (const ViewSpec& v : c.views)
-    if (v.name == o.view) view = &v;
-  if (!view) {
-    std::string names;
-    for (const ViewSpec& v : c.views) names += (names.empty() ? "" : ", ") + v.name;
-    throw InputError(FileLoc{c.path.string(), 0, 0},
-                     "no [[view]] named '" + o.view + "' (" + (names.empty() ? "the case has no views" : "views: " + names) + ")");
-  }
-  if (o.scale == "log" && o.minCdM2 == 0.0)
-    throw InputError(FileLoc{c.path.string(), 0, 0}, "--min must be above 0 cd/m2 on a log scale");
-  if (o.minCdM2 >= 0.0 && o.maxCdM2 > 0.0 && o.maxCdM2 <= o.minCdM2)
-    throw InputError(FileLoc{c.path.string(), 0, 0}, "--max must be above --min");
-  const std::unique_ptr<Scene> scene = loadCaseScene(c);
-
-  const ResolvedTrace resolved = resolveTrace(c, o.trace, Method::kPath);
-  const TraceSettings& settings = resolved.settings;
-  const int threads = resolved.threads;
-  const fs::path outDir = o.outDir.empty() ? c.output.dir : fs::path(o.outDir);
-
-  RenderSettings rs;
-  rs.samplesPerPixel = o.pixelSamples;
-  rs.coarseStep = o.coarseStep;
-  // Daylight enters rooms through windows, which a path's single sky sample rarely finds: camera
-  // paths alone leave salt-and-pepper noise (docs/views.md); the stratified irradiance estimate at
-  // the surfaces seen does not.
-  rs.irradianceSamples = o.irradianceSamples >= 0 ? o.irradianceSamples : (scene->sky ? 64 : 0);
-  const Tracer tracer(*scene);
-  Image img;
-  {
-    ProgressBar bar("rendering " + view->name, static_cast<std::size_t>(view->resolution.x) * view->resolution.y,
-                    ProgressBar::wanted(o.quiet));
-    img = renderView(tracer, *view, settings, threads, rs, [&bar](std::size_t done, std::size_t) { bar.update(done); });
-    bar.finish();
-  }
-
-  // Glare: UGR from the luminaires seen, DGP from a fisheye image (cli/view_glare.h).
-  const Camera cam(*view);
-  const ViewGlare glare = computeViewGlare(tracer, *view, settings, img, o.glareThresholdCdM2);
-  const std::vector<GlareSource>& ugrSources = glare.sources;
-  const double evLux = glare.verticalLux;
-  const double backgroundCdM2 = glare.backgroundCdM2;
-  const std::optional<ImageGlare>& dgp = glare.dgp;
-
-  // Contrast of a task point against a background point seen from the view point, under the
-  // case's lighting and under the reference uniform sphere (CRF).
-  // From the command line, else from the view's `task`/`background` keys.
-  std::optional<ViewContrast> contrast;
-  std::optional<Vec3> task = view->taskM, background = view->backgroundM;
+RenderRequest requestOf(const RenderOptions& o) {
+  RenderRequest r;
+  r.view = o.view;
+  r.outDir = o.outDir;
+  r.trace = o.trace.overrides();
+  ViewOptions& v = r.options;
+  v.pixelSamples = o.pixelSamples;
+  v.coarseStep = o.coarseStep;
+  v.irradianceSamples = o.irradianceSamples;
+  v.logScale = o.scale == "log";
+  if (o.minCdM2 >= 0.0) v.minCdM2 = o.minCdM2;
+  if (o.maxCdM2 > 0.0) v.maxCdM2 = o.maxCdM2;
+  v.glareThresholdCdM2 = o.glareThresholdCdM2;
   if (o.task.size() == 3 && o.background.size() == 3) {
-    task = Vec3(o.task[0], o.task[1], o.task[2]);
-    background = Vec3(o.background[0], o.background[1], o.background[2]);
+    v.task = Vec3(o.task[0], o.task[1], o.task[2]);
+    v.background = Vec3(o.background[0], o.background[1], o.background[2]);
+    v.contrastLoc = FileLoc{o.caseFile, 0, 0};
   }
-  if (task && background)
-    contrast = computeViewContrast(*scene, tracer, cam.position(), *task, *background, settings,
-                                   o.task.size() == 3 ? FileLoc{c.path.string(), 0, 0} : view->loc);
+  return r;
+}
 
-  // Pictures.
-  std::vector<Rgb> rgbCdM2(img.radiance.size());
-  for (std::size_t i = 0; i < rgbCdM2.size(); ++i) rgbCdM2[i] = kLumensPerWatt * img.radiance[i];
-  const bool logScale = o.scale == "log";
-  const ColorScale scale = luminanceScale(img.luminance, logScale, o.minCdM2 >= 0.0 ? std::optional(o.minCdM2) : std::nullopt,
-                                          o.maxCdM2 > 0.0 ? std::optional(o.maxCdM2) : std::nullopt);
-  const std::string stem = safeFileName(view->name);
-  ViewImagePaths paths;
-  try {
-    paths = writeViewImages(outDir, stem, img.width, img.height, img.luminance, rgbCdM2, img.inside, scale,
-                            "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
-  } catch (const fs::filesystem_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
+void printGlare(std::ostringstream& s, const ViewResult& r) {
+  const ViewGlare& g = r.glare;
+  if (g.sources.empty()) {
+    s << "UGR: no luminaire with a luminous area in front of the observer\n";
+  } else {
+    // CIE 117's formula holds for sources of 0.0003 to 0.1 sr; say so when some are outside.
+    std::size_t outside = 0;
+    for (const GlareSource& src : g.sources) outside += src.solidAngleSr < 3e-4 || src.solidAngleSr > 0.1;
+    s << "UGR " << num(g.ugr, 1) << " (" << g.sources.size() << " luminaires, background " << num(g.backgroundCdM2, 1)
+      << " cd/m2";
+    if (outside > 0) s << "; " << outside << " outside CIE 117's 0.0003-0.1 sr";
+    s << ")\n";
   }
+  if (g.dgp && std::min(r.view.fovDeg.x, r.view.fovDeg.y) < 180.0)
+    s << "note: DGP wants the whole forward hemisphere (a 180 x 180 degree fisheye); this view sees less\n";
+  if (g.dgp)
+    s << "DGP " << num(g.dgp->dgp, 3) << " (Ev from the image " << num(g.dgp->verticalIlluminanceLux, 1) << " lx, "
+      << g.dgp->sources.size() << " glare sources above " << num(g.dgp->thresholdCdM2, 0) << " cd/m2)\n";
+}
 
-  if (!o.quiet) {
-    double sum = 0.0, omega = 0.0, peak = 0.0;
-    for (int y = 0; y < img.height; ++y)
-      for (int x = 0; x < img.width; ++x) {
-        const std::size_t i = img.index(x, y);
-        const double w = cam.pixelSolidAngleSr(x, y);
-        sum += img.luminance[i] * w;
-        omega += w;
-        peak = std::max(peak, img.luminance[i]);
-      }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::ostringstream s;
-    s << "view " << view->name << ": " << img.width << " x " << img.height << " "
-      << (view->type == ViewType::kFisheye ? "fisheye" : "perspective") << ", " << img.tracedPixels << " of "
-      << img.width * img.height << " pixels traced (" << rs.samplesPerPixel << " rays each"
-      << (rs.irradianceSamples > 0 ? ", irradiance from " + std::to_string(rs.irradianceSamples) + " samples at matte surfaces" : "")
-      << ")\n";
-    s << "luminance: mean " << num(omega > 0.0 ? sum / omega : 0.0, 1) << " cd/m2, max " << num(peak, 1) << " cd/m2\n";
-    s << "vertical illuminance at the eye " << num(evLux, 1) << " lx\n";
-    if (ugrSources.empty())
-      s << "UGR: no luminaire with a luminous area in front of the observer\n";
-    else {
-      // CIE 117's formula holds for sources of 0.0003 to 0.1 sr; say so when some are outside.
-      std::size_t outside = 0;
-      for (const GlareSource& g : ugrSources) outside += g.solidAngleSr < 3e-4 || g.solidAngleSr > 0.1;
-      s << "UGR " << num(unifiedGlareRating(backgroundCdM2, ugrSources), 1) << " (" << ugrSources.size()
-        << " luminaires, background " << num(backgroundCdM2, 1) << " cd/m2";
-      if (outside > 0) s << "; " << outside << " outside CIE 117's 0.0003-0.1 sr";
-      s << ")\n";
-    }
-    if (dgp && std::min(view->fovDeg.x, view->fovDeg.y) < 180.0)
-      s << "note: DGP wants the whole forward hemisphere (a 180 x 180 degree fisheye); this view sees less\n";
-    if (dgp)
-      s << "DGP " << num(dgp->dgp, 3) << " (Ev from the image " << num(dgp->verticalIlluminanceLux, 1) << " lx, "
-        << dgp->sources.size() << " glare sources above " << num(dgp->thresholdCdM2, 0) << " cd/m2)\n";
-    if (contrast)
-      s << "contrast: task " << num(contrast->taskCdM2, 2) << " cd/m2, background " << num(contrast->backgroundCdM2, 2)
-        << " cd/m2, C " << num(contrast->contrast, 3) << ", under the reference sphere "
-        << num(contrast->referenceContrast, 3) << ", CRF " << num(contrast->crf(), 3) << "\n";
-    s << "wrote " << paths.exr.string() << ", " << paths.falseColor.string() << ", " << paths.preview.string() << " in "
-      << num(seconds, 1) << " s\n";
-    std::cout << s.str() << std::flush;
-  }
+int renderCommand(const RenderOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  ProgressObserver progress(o.quiet);
+  const RenderResult r = renderCaseView(o.caseFile, requestOf(o), progress);
+  if (o.quiet) return 0;
+  const ViewResult& v = r.view;
+  const Image& img = v.image;
+  const ViewLuminance lum = viewLuminance(v);
+  std::ostringstream s;
+  s << "view " << v.view.name << ": " << img.width << " x " << img.height << " "
+    << (v.view.type == ViewType::kFisheye ? "fisheye" : "perspective") << ", " << img.tracedPixels << " of "
+    << img.width * img.height << " pixels traced (" << v.render.samplesPerPixel << " rays each"
+    << (v.render.irradianceSamples > 0
+            ? ", irradiance from " + std::to_string(v.render.irradianceSamples) + " samples at matte surfaces"
+            : "")
+    << ")\n";
+  s << "luminance: mean " << num(lum.meanCdM2, 1) << " cd/m2, max " << num(lum.maxCdM2, 1) << " cd/m2\n";
+  s << "vertical illuminance at the eye " << num(v.glare.verticalLux, 1) << " lx\n";
+  printGlare(s, v);
+  if (v.contrast)
+    s << "contrast: task " << num(v.contrast->taskCdM2, 2) << " cd/m2, background " << num(v.contrast->backgroundCdM2, 2)
+      << " cd/m2, C " << num(v.contrast->contrast, 3) << ", under the reference sphere "
+      << num(v.contrast->referenceContrast, 3) << ", CRF " << num(v.contrast->crf(), 3) << "\n";
+  s << "wrote " << r.paths.exr.string() << ", " << r.paths.falseColor.string() << ", " << r.paths.preview.string()
+    << " in " << num(secondsSince(start), 1) << " s\n";
+  std::cout << s.str() << std::flush;
   return 0;
 }
 
@@ -192,7 +129,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
       ->check(CLI::Range(1, 64));
   cmd->add_option("--irradiance-samples", opts->irradianceSamples,
                   "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray "
-                  "(0 = off; default 64 with daylight, else 0)")
+                  "(0 = off; default 64, as candela run)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--scale", opts->scale, "false-colour scale: log | linear (default log)")
       ->check(CLI::IsMember({"log", "linear"}));
@@ -207,7 +144,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
       ->expected(3);
   cmd->add_option("--background", opts->background, "background point X Y Z (m) next to the task")->expected(3);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors only)");
-  cmd->callback([opts, &action] { action = [opts] { return renderCase(*opts); }; });
+  cmd->callback([opts, &action] { action = [opts] { return renderCommand(*opts); }; });
 }
 
 }  // namespace candela::cli

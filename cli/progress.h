@@ -6,8 +6,11 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <string>
+
+#include "study/observer.h"
 
 namespace candela::cli {
 
@@ -46,6 +49,26 @@ class ProgressBar {
   std::atomic<int64_t> nextDrawNs_{0};  // steady-clock time (ns since start_) of the next redraw
   std::mutex drawMutex_;
   bool finished_ = false;
+};
+
+// A study's steps as progress bars (none when not wanted).
+class ProgressObserver : public StudyObserver {
+ public:
+  explicit ProgressObserver(bool quiet) : enabled_(ProgressBar::wanted(quiet)) {}
+  void begin(const std::string& label, std::size_t total) override {
+    bar_ = std::make_unique<ProgressBar>(label, total, enabled_);
+  }
+  void progress(std::size_t done) override {
+    if (bar_) bar_->update(done);
+  }
+  void end() override {
+    if (bar_) bar_->finish();
+    bar_.reset();
+  }
+
+ private:
+  bool enabled_;
+  std::unique_ptr<ProgressBar> bar_;
 };
 
 }  // namespace candela::cli

@@ -8,26 +8,13 @@
 
 namespace candela {
 
-namespace {
-
-bool skyHasSun(const std::string& type) {
-  // ISO 15469 types 7–15 are partly cloudy to clear skies with a visible sun; perez always
-  // carries the measured beam; uniform and overcast have none.
-  if (type == "perez" || type == "cie-clear") return true;
-  if (type.rfind("cie:", 0) == 0) return std::atoi(type.c_str() + 4) >= 7;
-  return false;
-}
-
-}  // namespace
-
 void addDaylight(Scene& scene, const DaylightSpec& spec) {
-  if (spec.skyType == "none" || spec.skyType.empty()) return;
+  if (spec.skyType.kind == SkyKind::kNone) return;
 
   // Sun position (true frame): explicit, else from the site and time by the NREL SPA.
   double altitude = 90.0, azimuth = 180.0;
   int dayOfYear = 172;
-  const bool needSunPosition = skyHasSun(spec.skyType) || spec.skyType.rfind("cie:", 0) == 0 ||
-                               spec.skyType == "perez" || spec.directNormalLux.has_value();
+  const bool needSunPosition = spec.skyType.dependsOnSun() || spec.directNormalLux.has_value();
   if (spec.sunAltitudeDeg && spec.sunAzimuthDeg) {
     altitude = *spec.sunAltitudeDeg;
     azimuth = *spec.sunAzimuthDeg;
@@ -49,7 +36,7 @@ void addDaylight(Scene& scene, const DaylightSpec& spec) {
     azimuth = r.azimuthDeg;
     dayOfYear = t.dayOfYear();
   } else if (needSunPosition) {
-    throw InputError(spec.skyLoc, "sky '" + spec.skyType +
+    throw InputError(spec.skyLoc, "sky '" + skyTypeName(spec.skyType) +
                                       "' needs the sun's position: sun altitude and azimuth, or latitude, "
                                       "longitude and time");
   }
@@ -58,7 +45,7 @@ void addDaylight(Scene& scene, const DaylightSpec& spec) {
   cond.sunDirTrue = directionFromAzAlt(azimuth, std::max(altitude, 0.0), 0.0);
   cond.dayOfYear = dayOfYear;
   cond.diffuseHorizontalLux = spec.diffuseHorizontalLux.value_or(10000.0);
-  if (spec.skyType == "perez") {
+  if (spec.skyType.kind == SkyKind::kPerez) {
     if (!spec.directNormalWm2 || !spec.diffuseHorizontalWm2)
       throw InputError(spec.skyLoc, "sky 'perez' needs the direct normal and diffuse horizontal irradiance (W/m2)");
     cond.directNormalWm2 = *spec.directNormalWm2;
@@ -76,7 +63,7 @@ void addDaylight(Scene& scene, const DaylightSpec& spec) {
 
   // The sun: direct normal illuminance given, or Perez's beam through its efficacy model.
   double dnLux = spec.directNormalLux.value_or(0.0);
-  if (spec.skyType == "perez" && !spec.directNormalLux) {
+  if (spec.skyType.kind == SkyKind::kPerez && !spec.directNormalLux) {
     if (const auto* perez = dynamic_cast<const PerezSky*>(model.get())) dnLux = perez->directNormalIlluminanceLux();
   }
   if (spec.sun && dnLux > 0.0 && altitude > 0.0) {

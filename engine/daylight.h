@@ -6,6 +6,7 @@
 #include "base/error.h"
 #include "engine/scene.h"
 #include "photometry/sky_model.h"
+#include "photometry/sky_type.h"
 
 #include <memory>
 #include <optional>
@@ -18,7 +19,7 @@ inline constexpr double kSunDiameterDeg = 0.533;
 
 // What the command line or the case file say about the sky.
 struct DaylightSpec {
-  std::string skyType = "none";  // uniform | cie-overcast | cie-clear | cie:1..15 | perez | none
+  SkyType skyType;               // kNone: no daylight (kAnnual is not a point-in-time sky)
   FileLoc skyLoc;                // where the type was given (errors point here)
   // Sun position: given directly, or from site and time (NREL SPA).
   std::optional<double> sunAltitudeDeg, sunAzimuthDeg;  // azimuth clockwise from north
@@ -37,7 +38,7 @@ struct DaylightSpec {
 
 // Builds the sky, adds the sun as a distant `light` source and sets scene.sky. Throws
 // InputError at spec.skyLoc/timeLoc for impossible combinations (a sun position with no way to
-// get it, Perez without irradiances, ...). Does nothing for skyType "none".
+// get it, Perez without irradiances, ...). Does nothing for SkyKind::kNone.
 void addDaylight(Scene& scene, const DaylightSpec& spec);
 
 }  // namespace candela

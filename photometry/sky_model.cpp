@@ -160,35 +160,34 @@ double SkyModel::pdf(const Vec3& d) const {
   return cellPdf_[size_t(r) * kSampleAz + c];
 }
 
-std::unique_ptr<SkyModel> makeSky(const std::string& type, const SkyConditions& cond, const FileLoc& loc) {
+std::unique_ptr<SkyModel> makeSky(const SkyType& type, const SkyConditions& cond, const FileLoc& loc) {
   const double sunLen = glm::length(cond.sunDirTrue);
   if (!(sunLen > 0.0) || !std::isfinite(sunLen)) throw InputError(loc, "sky: the sun direction is not a direction");
   const Vec3 sun = cond.sunDirTrue / sunLen;
-  const bool needsLux = type != "perez";
+  const bool needsLux = type.kind != SkyKind::kPerez;
   if (needsLux && !(cond.diffuseHorizontalLux >= 0.0 && std::isfinite(cond.diffuseHorizontalLux)))
     throw InputError(loc, "sky: diffuse_horizontal_illuminance must be >= 0 lux");
-  if (type == "uniform") return std::make_unique<UniformSky>(cond.diffuseHorizontalLux);
-  if (type == "cie-overcast") return std::make_unique<CieOvercastSky>(cond.diffuseHorizontalLux);
-  if (type == "cie-clear") return std::make_unique<CieGeneralSky>(12, sun, cond.diffuseHorizontalLux);
-  if (type.rfind("cie:", 0) == 0) {
-    const std::string num = type.substr(4);
-    char* end = nullptr;
-    const long n = std::strtol(num.c_str(), &end, 10);
-    if (num.empty() || *end != '\0' || n < 1 || n > 15)
-      throw InputError(loc, "sky type '" + type + "': the CIE general sky number must be 1..15");
-    return std::make_unique<CieGeneralSky>(int(n), sun, cond.diffuseHorizontalLux);
+  switch (type.kind) {
+    case SkyKind::kUniform: return std::make_unique<UniformSky>(cond.diffuseHorizontalLux);
+    case SkyKind::kCieOvercast: return std::make_unique<CieOvercastSky>(cond.diffuseHorizontalLux);
+    case SkyKind::kCieClear: return std::make_unique<CieGeneralSky>(12, sun, cond.diffuseHorizontalLux);
+    case SkyKind::kCieGeneral:
+      if (type.cieType < 1 || type.cieType > 15)
+        throw InputError(loc, "sky type '" + skyTypeName(type) + "': the CIE general sky number must be 1..15");
+      return std::make_unique<CieGeneralSky>(type.cieType, sun, cond.diffuseHorizontalLux);
+    case SkyKind::kPerez: {
+      PerezInput in;
+      in.directNormalWm2 = cond.directNormalWm2;
+      in.diffuseHorizontalWm2 = cond.diffuseHorizontalWm2;
+      in.sunDirTrue = sun;
+      in.dayOfYear = cond.dayOfYear;
+      in.dewPointC = cond.dewPointC;
+      return std::make_unique<PerezSky>(in, loc);
+    }
+    case SkyKind::kNone:
+    case SkyKind::kAnnual: break;
   }
-  if (type == "perez") {
-    PerezInput in;
-    in.directNormalWm2 = cond.directNormalWm2;
-    in.diffuseHorizontalWm2 = cond.diffuseHorizontalWm2;
-    in.sunDirTrue = sun;
-    in.dayOfYear = cond.dayOfYear;
-    in.dewPointC = cond.dewPointC;
-    return std::make_unique<PerezSky>(in, loc);
-  }
-  throw InputError(loc, "unknown sky type '" + type +
-                            "' (expected uniform, cie-overcast, cie-clear, cie:1..cie:15 or perez)");
+  throw InputError(loc, "sky type '" + skyTypeName(type) + "' has no point-in-time sky model");
 }
 
 }  // namespace candela

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "base/error.h"
+#include "photometry/sky_type.h"
 #include "base/math.h"
 
 #include <memory>
@@ -82,9 +83,8 @@ struct SkyConditions {
   std::optional<double> dewPointC;      // Perez efficacy: surface dew point, deg C (default W = 2 cm)
 };
 
-// type: "uniform" | "cie-overcast" | "cie-clear" (= cie:12) | "cie:1" .. "cie:15" | "perez".
-// Throws InputError at `loc` for an unknown type or bad conditions.
-std::unique_ptr<SkyModel> makeSky(const std::string& type, const SkyConditions& conditions,
-                                  const FileLoc& loc = {});
+// The sky of a type (cie-clear is cie:12). Throws InputError at `loc` for bad conditions or a
+// type without a point-in-time model (none, annual).
+std::unique_ptr<SkyModel> makeSky(const SkyType& type, const SkyConditions& conditions, const FileLoc& loc = {});
 
 }  // namespace candela

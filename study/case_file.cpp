@@ -13,19 +13,6 @@ namespace candela {
 
 namespace fs = std::filesystem;
 
-std::string skyTypeName(SkyType type, int cieType) {
-  switch (type) {
-    case SkyType::kNone: return "none";
-    case SkyType::kUniform: return "uniform";
-    case SkyType::kCieOvercast: return "cie-overcast";
-    case SkyType::kCieGeneral: return "cie:" + std::to_string(cieType);
-    case SkyType::kCieClear: return "cie-clear";
-    case SkyType::kPerez: return "perez";
-    case SkyType::kAnnual: return "annual";
-  }
-  return "none";
-}
-
 
 namespace {
 
@@ -330,23 +317,10 @@ void readSky(const Context& c, const toml::table& t, SkySpec& s) {
   s.loc = tab.loc();
   const toml::node& tn = tab.require("type");
   const std::string type = asString(c, tn, "type");
-  if (type == "none") s.type = SkyType::kNone;
-  else if (type == "uniform") s.type = SkyType::kUniform;
-  else if (type == "cie-overcast") s.type = SkyType::kCieOvercast;
-  else if (type == "cie-clear") s.type = SkyType::kCieClear;
-  else if (type == "perez") s.type = SkyType::kPerez;
-  else if (type == "annual") s.type = SkyType::kAnnual;
-  else if (type.rfind("cie:", 0) == 0) {
-    int n = 0, used = 0;
-    if (std::sscanf(type.c_str() + 4, "%d%n", &n, &used) != 1 || static_cast<std::size_t>(4 + used) != type.size() ||
-        n < 1 || n > 15)
-      c.fail(tn, "CIE general sky type must be cie:1 .. cie:15, got '" + type + "'");
-    s.type = SkyType::kCieGeneral;
-    s.cieType = n;
-  } else {
-    c.fail(tn, "unknown sky type '" + type +
-                   "' (expected uniform, cie-overcast, cie:1..cie:15, cie-clear, perez, annual or none)");
-  }
+  std::string why;
+  const std::optional<SkyType> parsed = parseSkyType(type, &why);
+  if (!parsed) c.fail(tn, why);
+  s.type = *parsed;
   if (auto n = tab.get("time")) {
     s.time = readTime(c, *n);
     s.timeLoc = c.at(*n);
@@ -369,7 +343,7 @@ void readSky(const Context& c, const toml::table& t, SkySpec& s) {
   if (s.sunAzimuthDeg) checkRange(tab, "sun_azimuth", *s.sunAzimuthDeg, -360.0, 360.0, " deg");
   if (s.sunAltitudeDeg.has_value() != s.sunAzimuthDeg.has_value())
     throw InputError(s.loc, "give both 'sun_altitude' and 'sun_azimuth', or neither");
-  if (s.type == SkyType::kAnnual && s.weather.empty())
+  if (s.type.kind == SkyKind::kAnnual && s.weather.empty())
     throw InputError(s.loc, "an annual sky needs a 'weather' file (EPW)");
   tab.finish();
 }
@@ -646,7 +620,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
   if (auto t = singleTable(c, root, "annual")) {
     readAnnual(c, *t, out.annual);
-    if (out.sky.type != SkyType::kAnnual)
+    if (out.sky.type.kind != SkyKind::kAnnual)
       throw InputError(out.annual.loc, "an [annual] table needs [sky] type = \"annual\"");
   }
   if (auto t = singleTable(c, root, "output")) readOutput(c, *t, out.output);

@@ -13,6 +13,7 @@
 #include "base/math.h"
 #include "engine/camera.h"
 #include "engine/luminaire_source.h"
+#include "photometry/sky_type.h"
 #include "study/sensor_grid.h"
 
 namespace candela {
@@ -52,15 +53,11 @@ struct SiteSpec {
   FileLoc loc;
 };
 
-enum class SkyType { kNone, kUniform, kCieOvercast, kCieGeneral, kCieClear, kPerez, kAnnual };
 
-// "none", "uniform", "cie-overcast", "cie:N", "cie-clear", "perez", "annual".
-std::string skyTypeName(SkyType type, int cieType = 0);
 
 struct SkySpec {
   bool present = false;
-  SkyType type = SkyType::kNone;
-  int cieType = 0;                      // 1..15 for "cie:N" (CIE S 011/E:2003 general sky)
+  SkyType type;                         // photometry/sky_type.h
   std::string time;                     // local standard time "YYYY-MM-DDTHH:MM[:SS]", as written
   FileLoc timeLoc;
   std::optional<double> diffuseHorizontalIlluminanceLux;

@@ -44,7 +44,7 @@ std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
   SkyDome dome;
-  dome.model = makeSky("uniform", uniform, c.sky.loc);
+  dome.model = makeSky({SkyKind::kUniform}, uniform, c.sky.loc);
   dome.northDeg = northDeg;
   dome.horizontalSkyLux = uniform.diffuseHorizontalLux;
   scene->sky = dome;
@@ -53,11 +53,11 @@ std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
 
 DaylightSpec daylightFromCase(const CaseFile& c) {
   DaylightSpec d;
-  if (!c.sky.present || c.sky.type == SkyType::kNone) return d;
-  if (c.sky.type == SkyType::kAnnual)
+  if (!c.sky.present || c.sky.type.kind == SkyKind::kNone) return d;
+  if (c.sky.type.kind == SkyKind::kAnnual)
     throw InputError(c.sky.loc, "an annual sky is a whole year: `candela run` computes it (docs/annual.md); "
                                 "point and view commands need a point-in-time sky");
-  d.skyType = skyTypeName(c.sky.type, c.sky.cieType);
+  d.skyType = c.sky.type;
   d.skyLoc = c.sky.loc;
   d.time = c.sky.time;
   d.timeLoc = c.sky.timeLoc;
@@ -89,7 +89,7 @@ DaylightSpec daylightFromCase(const CaseFile& c) {
     if (!rec) throw InputError(d.timeLoc, "the weather file has no hour " + std::to_string(hour) + " on " + d.time);
     if (!d.directNormalWm2) d.directNormalWm2 = rec->directNormalWhm2;
     if (!d.diffuseHorizontalWm2) d.diffuseHorizontalWm2 = rec->diffuseHorizontalWhm2;
-    if (d.skyType != "perez") {
+    if (d.skyType.kind != SkyKind::kPerez) {
       if (!d.diffuseHorizontalLux) d.diffuseHorizontalLux = rec->diffuseHorizontalLux;
       if (!d.directNormalLux) d.directNormalLux = rec->directNormalLux;
     }

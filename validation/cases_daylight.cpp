@@ -34,7 +34,7 @@ CaseResult run(Scene& scene, const std::vector<std::pair<std::string, SensorPoin
 
 DaylightSpec skySpec(const std::string& type) {
   DaylightSpec d;
-  d.skyType = type;
+  d.skyType = parseSkyType(type).value();
   d.sunAltitudeDeg = 35.0;
   d.sunAzimuthDeg = 200.0;
   d.diffuseHorizontalLux = 10000.0;

@@ -49,7 +49,7 @@ SkyDome uniformDome(double luminanceCdM2, double groundCdM2, double northDeg) {
   SkyConditions c;
   c.diffuseHorizontalLux = kPi * luminanceCdM2;
   SkyDome d;
-  d.model = makeSky("uniform", c);
+  d.model = makeSky({SkyKind::kUniform}, c);
   d.northDeg = northDeg;
   d.groundLuminanceCdM2 = groundCdM2;
   d.horizontalSkyLux = c.diffuseHorizontalLux;
@@ -213,7 +213,7 @@ TEST_F(DaylightCoefficientsVsPointInTime, SkyAndSunWithinThreePercent) {
       Scene pit;
       addRoom(pit);
       DaylightSpec d;
-      d.skyType = "perez";
+      d.skyType = {SkyKind::kPerez};
       char time[40];
       std::snprintf(time, sizeof time, "2026-%02d-%02dT%02d:30", hc.month, hc.day, hc.hour - 1);
       d.time = time;

@@ -141,7 +141,7 @@ TEST(Dielectric, SlabUnderTheSkyTransmitsItsHemisphericalTransmittance) {
       SkyConditions cond;
       cond.diffuseHorizontalLux = 10000.0;
       SkyDome d;
-      d.model = makeSky("uniform", cond);
+      d.model = makeSky({SkyKind::kUniform}, cond);
       d.horizontalSkyLux = cond.diffuseHorizontalLux;
       sc.sky = d;
       open = cond.diffuseHorizontalLux;

@@ -218,7 +218,7 @@ Scene apertureScene(const char* rad, const char* sky) {
   Scene scene;
   readRadianceText(rad, "<aperture>", scene);
   DaylightSpec d;
-  d.skyType = sky;
+  d.skyType = parseSkyType(sky).value();
   d.sunAltitudeDeg = 35.0;
   d.sunAzimuthDeg = 200.0;
   d.diffuseHorizontalLux = 10000.0;

@@ -117,7 +117,7 @@ TEST(MirrorTrans, SkyThroughASheetIsCountedOnce) {
   SkyConditions cond;
   cond.diffuseHorizontalLux = 10000.0;
   SkyDome dome;
-  dome.model = makeSky("uniform", cond);
+  dome.model = makeSky({SkyKind::kUniform}, cond);
   dome.horizontalSkyLux = cond.diffuseHorizontalLux;
   sc.sky = dome;
   const double tau = 0.6;

@@ -39,7 +39,7 @@ std::unique_ptr<SkyModel> pointInTimeSky(const EpwRecord& rec, const AnnualHour&
   cond.dayOfYear = hour.dayOfYear;
   cond.directNormalWm2 = rec.directNormalWhm2;
   cond.diffuseHorizontalWm2 = rec.diffuseHorizontalWhm2;
-  return makeSky("perez", cond);
+  return makeSky({SkyKind::kPerez}, cond);
 }
 
 // Patch bounds in (sin altitude, azimuth) from SkyPatches alone: the row from the centre's

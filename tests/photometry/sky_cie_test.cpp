@@ -74,10 +74,10 @@ TEST(SkyModels, HorizontalIlluminanceMatchesIndependentQuadrature) {
   SkyConditions c;
   c.sunDirTrue = kSun;
   c.diffuseHorizontalLux = 12000.0;
-  for (const char* t : {"uniform", "cie-overcast", "cie-clear"}) skies.push_back(makeSky(t, c));
-  for (int t = 1; t <= 15; ++t) skies.push_back(makeSky("cie:" + std::to_string(t), c));
+  for (SkyKind k : {SkyKind::kUniform, SkyKind::kCieOvercast, SkyKind::kCieClear}) skies.push_back(makeSky({k}, c));
+  for (int t = 1; t <= 15; ++t) skies.push_back(makeSky({SkyKind::kCieGeneral, t}, c));
   c.sunDirTrue = directionFromAzAlt(100.0, 8.0, 0.0);  // low sun: sharp, near-horizon corona
-  skies.push_back(makeSky("cie:15", c));
+  skies.push_back(makeSky({SkyKind::kCieGeneral, 15}, c));
   for (const auto& sky : skies) {
     EXPECT_NEAR(sky->horizontalIlluminanceLux(), 12000.0, 1e-9 * 12000.0) << sky->name();
     EXPECT_NEAR(test::independentIlluminance(*sky, Vec3(0, 0, 1)), 12000.0, 1e-4 * 12000.0) << sky->name();
@@ -86,17 +86,27 @@ TEST(SkyModels, HorizontalIlluminanceMatchesIndependentQuadrature) {
   }
 }
 
-TEST(SkyModels, FactoryRejectsUnknownTypes) {
-  const FileLoc loc{"case.toml", 9, 0};
+TEST(SkyTypes, NamesParseBackAndBadNamesAreRefused) {
+  for (const char* name : {"none", "uniform", "cie-overcast", "cie-clear", "perez", "annual", "cie:1", "cie:15"})
+    EXPECT_EQ(skyTypeName(parseSkyType(name).value()), name);
   for (const char* bad : {"cie:0", "cie:16", "cie:", "cie:3x", "clear", ""}) {
+    std::string why;
+    EXPECT_FALSE(parseSkyType(bad, &why)) << bad;
+    EXPECT_NE(why.find(std::string("'") + bad + "'"), std::string::npos) << why;
+  }
+}
+
+TEST(SkyModels, FactoryRejectsTypesWithoutAModel) {
+  const FileLoc loc{"case.toml", 9, 0};
+  for (const SkyType bad : {SkyType{SkyKind::kNone}, SkyType{SkyKind::kAnnual}, SkyType{SkyKind::kCieGeneral, 16}}) {
     try {
       makeSky(bad, SkyConditions{}, loc);
-      ADD_FAILURE() << bad;
+      ADD_FAILURE() << skyTypeName(bad);
     } catch (const InputError& e) {
       EXPECT_EQ(e.loc().line, 9);
     }
   }
-  EXPECT_EQ(makeSky("cie-clear", SkyConditions{})->name(), "cie:12");
+  EXPECT_EQ(makeSky({SkyKind::kCieClear}, SkyConditions{})->name(), "cie:12");
 }
 
 TEST(SkySampling, PdfIntegratesToOneAndMatchesSample) {

@@ -49,9 +49,9 @@ TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   EXPECT_DOUBLE_EQ(c.site.northDeg, 10.0);
   EXPECT_EQ(c.site.grid, "local");
 
-  EXPECT_EQ(c.sky.type, SkyType::kCieGeneral);
-  EXPECT_EQ(c.sky.cieType, 12);
-  EXPECT_EQ(skyTypeName(c.sky.type, c.sky.cieType), "cie:12");
+  EXPECT_EQ(c.sky.type.kind, SkyKind::kCieGeneral);
+  EXPECT_EQ(c.sky.type.cieType, 12);
+  EXPECT_EQ(skyTypeName(c.sky.type), "cie:12");
   EXPECT_EQ(c.sky.time, "2026-03-21T12:00:00");  // a TOML date-time, written out
   EXPECT_DOUBLE_EQ(c.sky.diffuseHorizontalIlluminanceLux.value(), 10000.0);
   EXPECT_DOUBLE_EQ(c.sky.groundReflectance, 0.25);
@@ -105,7 +105,7 @@ TEST(CaseFile, DefaultsOfAMinimalCase) {
   EXPECT_EQ(c.name, "minimal");
   EXPECT_FALSE(c.site.present);
   EXPECT_FALSE(c.sky.present);
-  EXPECT_EQ(c.sky.type, SkyType::kNone);
+  EXPECT_EQ(c.sky.type.kind, SkyKind::kNone);
   ASSERT_EQ(c.grids.size(), 1u);
   EXPECT_EQ(c.grids[0].name, "grid1");
   EXPECT_FALSE(c.grids[0].plane.spacingM.has_value());
@@ -121,7 +121,7 @@ TEST(CaseFile, AnnualKeysAndTheirDefaults) {
   const fs::path path = casesDir() / "errors" / "annual.toml";  // relative paths resolve from here
   const std::string head = "[sky]\ntype = \"annual\"\nweather = \"../../epw/synthetic_golden_2026.epw\"\n";
   const CaseFile d = parseCaseFile(head, path);
-  EXPECT_EQ(d.sky.type, SkyType::kAnnual);
+  EXPECT_EQ(d.sky.type.kind, SkyKind::kAnnual);
   EXPECT_FALSE(d.annual.present);
   EXPECT_EQ(d.annual.occupancyStartHour, 8.0);
   EXPECT_EQ(d.annual.occupancyEndHour, 18.0);

@@ -1,13 +1,12 @@
-#include "cli/run_grids.h"
+#include "study/prepared_grid.h"
 
 #include "base/error.h"
 #include "reports/csv_writer.h"
 #include "reports/plan_svg.h"
 
-#include <ctime>
 #include <map>
 
-namespace candela::cli {
+namespace candela {
 
 namespace {
 
@@ -60,15 +59,6 @@ PlanLayout planLayout(const PreparedGrid& g) {
   return l;
 }
 
-std::string localTimeNow() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
-  return buf;
-}
-
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   std::vector<PreparedGrid> grids;
   std::map<std::string, std::string> stems;  // file stem -> grid name, to refuse collisions
@@ -88,17 +78,6 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   return grids;
 }
 
-void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write) {
-  try {
-    std::filesystem::create_directories(outDir);
-    write();
-  } catch (const std::filesystem::filesystem_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  }
-}
-
 Box gridBounds(const Scene& scene) {
   Box bounds = scene.bounds();
   if (scene.sky) {
@@ -110,4 +89,4 @@ Box gridBounds(const Scene& scene) {
   return bounds;
 }
 
-}  // namespace candela::cli
+}  // namespace candela

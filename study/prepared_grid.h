@@ -1,19 +1,17 @@
-// Pieces `candela run` shares between its point-in-time and annual paths: the case's grids with
-// their points, how they are described and laid out in plans, and the time stamp of a run.
+// The case's grids with their points, as every study traces them: checked, named for their
+// files, described and laid out for the report.
 #pragma once
 
 #include "base/math.h"
-#include "study/case_file.h"
 #include "engine/scene.h"
+#include "study/case_file.h"
 #include "study/sensor_grid.h"
 #include "reports/report_data.h"
 
-#include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
-namespace candela::cli {
+namespace candela {
 
 // A grid of the case with its points, ready to trace.
 struct PreparedGrid {
@@ -31,15 +29,7 @@ std::string gridDescription(const PreparedGrid& g);
 
 PlanLayout planLayout(const PreparedGrid& g);
 
-// The local time now, "YYYY-MM-DD HH:MM".
-std::string localTimeNow();
-
-// Creates `outDir` and calls write(); a file-system or write failure becomes InputError at
-// outDir, "cannot write the results: ...". Each writer writes atomically, so a failure leaves no
-// half file.
-void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write);
-
 // The bounds grids must lie in: the scene's, unbounded in z under a sky (an open scene).
 Box gridBounds(const Scene& scene);
 
-}  // namespace candela::cli
+}  // namespace candela

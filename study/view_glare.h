@@ -10,7 +10,7 @@
 
 #include <optional>
 
-namespace candela::cli {
+namespace candela {
 
 struct ViewGlare {
   double ugr = 0.0;                 // CIE 117 unified glare rating
@@ -37,4 +37,4 @@ struct ViewContrast {
 ViewContrast computeViewContrast(const Scene& scene, const Tracer& tracer, const Vec3& eye, const Vec3& task,
                                  const Vec3& background, const TraceSettings& settings, const FileLoc& loc);
 
-}  // namespace candela::cli
+}  // namespace candela

@@ -1,9 +1,9 @@
-#include "cli/view_glare.h"
+#include "study/view_glare.h"
 
 #include "engine/camera.h"
 #include "metrics/contrast.h"
 
-namespace candela::cli {
+namespace candela {
 
 ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
                            const Image& img, double glareThresholdCdM2) {
@@ -44,4 +44,4 @@ ViewContrast computeViewContrast(const Scene& scene, const Tracer& tracer, const
   return v;
 }
 
-}  // namespace candela::cli
+}  // namespace candela

@@ -1,0 +1,23 @@
+#include "study/blinds.h"
+
+#include "engine/fresnel.h"
+
+namespace candela {
+
+int closeBlinds(Scene& scene) {
+  int changed = 0;
+  for (Material& m : scene.materials) {
+    if (m.type != MaterialType::kGlass) continue;
+    Rgb t, reflected;
+    thinGlass(m.color, m.refractiveIndex, 1.0, t, reflected);  // the glass's normal transmittance
+    m.type = MaterialType::kTrans;
+    m.diffuseReflectance = Rgb(0.0);
+    m.specularReflectance = Rgb(0.0);
+    m.specularTransmittance = Rgb(0.0);
+    m.diffuseTransmittance = kBlindsTransmittance * t;
+    ++changed;
+  }
+  return changed;
+}
+
+}  // namespace candela

@@ -1,0 +1,170 @@
+#include "study/grid_study.h"
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "engine/sensors.h"
+#include "metrics/grid_stats.h"
+#include "metrics/targets.h"
+#include "reports/csv_writer.h"
+#include "reports/html_report.h"
+#include "reports/json_writer.h"
+#include "study/case_scene.h"
+#include "study/prepared_grid.h"
+#include "study/run_outputs.h"
+#include "study/view_study.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <memory>
+
+namespace candela {
+
+namespace {
+
+// summary.json as the reports writer makes it, plus what only the run knows per grid: the
+// actual spacing (m) and the number of lattice columns and rows.
+std::string summaryJsonWithSpacing(const ReportData& data, const std::vector<PreparedGrid>& grids) {
+  nlohmann::json j = nlohmann::json::parse(summaryJson(data));
+  for (std::size_t i = 0; i < grids.size(); ++i) {
+    nlohmann::json& g = j["grids"][i];
+    const SensorGrid& s = grids[i].grid;
+    g["file"] = grids[i].fileStem + ".csv";
+    if (s.regular) {
+      g["spacing_m"] = {s.spacingM.x, s.spacingM.y};
+      g["columns"] = s.columns;
+      g["rows"] = s.rows;
+    } else {
+      g["spacing_m"] = nullptr;
+    }
+  }
+  return j.dump(2) + "\n";
+}
+
+// The settings table of the report, in the order a reader scans it.
+void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, const ResolvedTrace& trace,
+                      std::size_t points) {
+  const TraceSettings& s = trace.settings;
+  data.run.settings = {
+      {"quality", qualityName(trace.quality)},
+      {"method", s.method == Method::kCache ? "cache (Ward's irradiance cache, path-traced closure)"
+                                            : "path (Monte Carlo path tracing)"},
+      {"diffuse bounces", std::to_string(s.maxBounces)},
+      {"hemisphere samples per point", std::to_string(s.hemisphereSamples)},
+      {"light samples per source", std::to_string(s.lightSamples)},
+      {"first-bounce split", std::to_string(s.firstBounceSplit)},
+      {"threads", trace.threads > 0 ? std::to_string(trace.threads)
+                                    : "all (" + std::to_string(threadsUsed(trace.threads)) + ")"},
+      {"luminaires", std::to_string(c.luminaires.size())},
+      {"calculation points", std::to_string(points)},
+  };
+  if (scene.sky) {
+    const SkyDome& sky = *scene.sky;
+    char buf[160];
+    data.run.settings.emplace_back("sky", skyTypeName(c.sky.type));
+    std::snprintf(buf, sizeof buf, "altitude %.2f deg, azimuth %.2f deg", sky.sunAltitudeDeg, sky.sunAzimuthDeg);
+    data.run.settings.emplace_back("sun position", buf);
+    std::snprintf(buf, sizeof buf, "%.0f lx (sky %.0f lx, sun %.0f lx)", sky.outsideHorizontalLux(),
+                  sky.horizontalSkyLux, sky.horizontalSunLux);
+    data.run.settings.emplace_back("outside horizontal illuminance", buf);
+    std::snprintf(buf, sizeof buf, "%.2f", c.sky.groundReflectance);
+    data.run.settings.emplace_back("ground reflectance", buf);
+  }
+  if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()));
+}
+
+// A grid's values as the CSV and the report carry them.
+struct GridValues {
+  std::vector<ReportPoint> points;
+  std::vector<double> lux, errorLux;
+};
+
+// The grids' reports (metrics and verdicts) from the estimates of all points, grids in case
+// order; daylight-factor grids in % of the outside horizontal illuminance.
+std::vector<GridValues> gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const Scene& scene,
+                                    const std::vector<IrradianceEstimate>& est) {
+  std::vector<GridValues> out(grids.size());
+  std::size_t k = 0;
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    const PreparedGrid& g = grids[gi];
+    GridReport r;
+    r.name = g.spec->name;
+    r.description = gridDescription(g);
+    const bool df = g.spec->daylightFactor;
+    const double outside = scene.sky ? scene.sky->outsideHorizontalLux() : 0.0;
+    for (const SensorPoint& s : g.grid.points) {
+      out[gi].points.push_back({s.position, s.normal});
+      out[gi].lux.push_back(est[k].illuminanceLux());
+      out[gi].errorLux.push_back(est[k].standardErrorLux());
+      r.values.push_back(df ? 100.0 * est[k].illuminanceLux() / outside : est[k].illuminanceLux());
+      ++k;
+    }
+    if (df) {
+      r.quantity = "Daylight factor";
+      r.unit = "%";
+    }
+    r.stats = computeGridStats(r.values);
+    r.targets = {g.spec->targetAverageLux, g.spec->targetUniformity};
+    r.check = checkTargets(r.stats, r.targets);
+    r.layout = planLayout(g);
+    data.grids.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer) {
+  // 1. Everything that can be wrong with the input is found here, before any tracing.
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent).
+  for (const GridSpec& spec : c.grids)
+    if (spec.daylightFactor && !(scene->sky && c.sky.type.kind == SkyKind::kCieOvercast))
+      throw InputError(spec.loc, "grid '" + spec.name +
+                                     "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it)");
+  const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
+  const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kCache);
+
+  // 2. All grids as one list (grids in case order): point k of the run uses random stream k, so
+  // the numbers depend on the seed only, never on threads.
+  std::vector<SensorPoint> all;
+  for (const PreparedGrid& g : grids) all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
+  const Tracer tracer(*scene);
+  std::vector<IrradianceEstimate> est;
+  {
+    const ObservedStep step(observer, "tracing", all.size());
+    est = computeIrradiance(tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); });
+  }
+
+  // 3. Metrics, verdicts and views, all before anything is written.
+  RunResult result;
+  result.outDir = run.outDir;
+  ReportData& data = result.data;
+  data = reportDataFor(c, run, trace.settings.seed);
+  describeSettings(data, c, *scene, trace, all.size());
+  const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
+  std::vector<ViewResult> views;
+  for (const ViewSpec& view : c.views) {
+    views.push_back(computeView(*scene, tracer, view, trace.settings, trace.threads, ViewOptions{}, observer));
+    data.views.push_back(viewReport(views.back()));
+  }
+  data.run.runTimeS = secondsSince(run.start);
+
+  // 4. Write. Each file goes through a temporary and a rename.
+  const std::filesystem::path& outDir = run.outDir;
+  writeRunOutputs(outDir, [&] {
+    for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+      std::vector<ExtraColumn> extra = {{"error_lux", values[gi].errorLux}};
+      if (grids[gi].spec->daylightFactor) extra.push_back({"daylight_factor_pct", data.grids[gi].values});
+      writeGridCsv(outDir, grids[gi].spec->name, values[gi].points, values[gi].lux, extra);
+    }
+    for (const ViewResult& v : views)
+      writeViewResult(outDir, v, "candela " + std::string(CANDELA_VERSION) + ", case " + c.name);
+    writeSummaryCsv(outDir, data);
+    writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
+    writeHtmlReport(outDir / "report.html", data);
+  });
+  return result;
+}
+
+}  // namespace candela

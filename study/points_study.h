@@ -1,0 +1,45 @@
+// `candela points` as a library call: illuminance at sensor points in a scene made of a case
+// (its scene files, luminaires and daylight), further Radiance files and a sky, with the one
+// settings resolution of every command (study/trace_options.h).
+#pragma once
+
+#include "engine/daylight.h"
+#include "engine/sensors.h"
+#include "engine/tracer.h"
+#include "study/observer.h"
+#include "study/trace_options.h"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace candela {
+
+struct PointsJob {
+  std::filesystem::path caseFile;             // empty: no case
+  std::vector<std::filesystem::path> scenes;  // Radiance files read after the case's, in order
+  // A sky asked for by the caller: called with the case's daylight (or the default without a
+  // case) and returns the daylight to use instead of it. Unset: the case's daylight.
+  std::function<DaylightSpec(DaylightSpec)> sky;
+  TraceOverrides trace;
+  AcceleratorKind accelerator = AcceleratorKind::kEmbree;
+};
+
+struct PointsResult {
+  ResolvedTrace trace;
+  std::vector<IrradianceEstimate> estimates;  // one per point, in input order
+};
+
+// The scene and settings a job describes (throws InputError naming the bad file and line).
+struct PointsScene {
+  std::unique_ptr<Scene> scene;
+  ResolvedTrace trace;
+};
+PointsScene loadPointsScene(const PointsJob& job);
+
+// Traces `points` in a loaded scene.
+PointsResult computePoints(const PointsScene& scene, AcceleratorKind accelerator,
+                           const std::vector<SensorPoint>& points, StudyObserver& observer = silentObserver());
+
+}  // namespace candela

@@ -1,0 +1,27 @@
+#include "study/trace_options.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace candela {
+
+ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o, Method defaultMethod) {
+  const Settings none;
+  const Settings& c = caseSettings ? *caseSettings : none;
+  ResolvedTrace r;
+  r.quality = o.quality.value_or(c.quality);
+  r.settings = settingsForQuality(r.quality);
+  if (const std::optional<int> b = o.bounces ? o.bounces : c.bounces) r.settings.maxBounces = *b;
+  if (const std::optional<int> n = o.samples ? o.samples : c.samples) r.settings.hemisphereSamples = *n;
+  r.settings.seed = o.seed.value_or(c.seed);
+  r.settings.method = o.method.value_or(c.method.value_or(defaultMethod));
+  r.settings.targetRelativeError = o.targetRelativeError;
+  r.threads = o.threads.value_or(c.threads);
+  return r;
+}
+
+unsigned threadsUsed(int threads) {
+  return threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace candela

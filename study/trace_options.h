@@ -1,0 +1,37 @@
+// The one settings resolution of every command that traces (points, run, render): what the
+// caller asks (command line, script) over the case's [settings] over the quality preset.
+#pragma once
+
+#include "engine/trace_settings.h"
+#include "study/case_file.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace candela {
+
+// What the caller asks; unset: the case's, else the preset's.
+struct TraceOverrides {
+  std::optional<Quality> quality;
+  std::optional<int> bounces;     // diffuse interreflections followed
+  std::optional<int> samples;     // hemisphere samples per point
+  std::optional<uint64_t> seed;
+  std::optional<int> threads;     // 0 = all cores
+  std::optional<Method> method;
+  double targetRelativeError = 0.0;  // > 0: sample each point until its standard error is below this fraction
+};
+
+struct ResolvedTrace {
+  Quality quality = Quality::kNormal;
+  TraceSettings settings;
+  int threads = 0;  // 0 = all cores
+};
+
+// `caseSettings` may be null (no case). `defaultMethod` applies when neither the caller nor the
+// case names one: the irradiance cache for a case's grids (run), the path tracer for points.
+ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o, Method defaultMethod);
+
+// The number of threads `threads` stands for (0: the machine's cores).
+unsigned threadsUsed(int threads);
+
+}  // namespace candela

@@ -1,0 +1,131 @@
+#include "study/view_study.h"
+
+#include "engine/camera.h"
+#include "reports/png_writer.h"
+#include "study/case_scene.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace candela {
+
+namespace {
+
+std::string fixed(double v, int decimals) { return formatFixed(v, decimals); }
+
+}  // namespace
+
+ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
+                       int threads, const ViewOptions& options, StudyObserver& observer) {
+  ViewResult v;
+  v.view = view;
+  v.render.samplesPerPixel = options.pixelSamples;
+  v.render.coarseStep = options.coarseStep;
+  v.render.irradianceSamples = options.irradianceSamples;
+  {
+    const ObservedStep step(observer, "rendering " + view.name,
+                            static_cast<std::size_t>(view.resolution.x) * view.resolution.y);
+    v.image = renderView(tracer, view, settings, threads, v.render, [&step](std::size_t done, std::size_t) { step(done); });
+  }
+  v.glare = computeViewGlare(tracer, view, settings, v.image, options.glareThresholdCdM2);
+  const bool overridden = options.task && options.background;
+  const std::optional<Vec3> task = overridden ? options.task : view.taskM;
+  const std::optional<Vec3> background = overridden ? options.background : view.backgroundM;
+  if (task && background)
+    v.contrast = computeViewContrast(scene, tracer, view.positionM, *task, *background, settings,
+                                     overridden ? options.contrastLoc : view.loc);
+  v.rgbCdM2.resize(v.image.radiance.size());
+  for (std::size_t i = 0; i < v.rgbCdM2.size(); ++i) v.rgbCdM2[i] = kLumensPerWatt * v.image.radiance[i];
+  v.scale = luminanceScale(v.image.luminance, options.logScale, options.minCdM2, options.maxCdM2);
+  v.stem = safeFileName(view.name);
+  return v;
+}
+
+ViewReport viewReport(const ViewResult& v) {
+  const ViewSpec& view = v.view;
+  const Image& img = v.image;
+  ViewReport vr;
+  vr.name = view.name;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%s, %d × %d px, from (%.2f, %.2f, %.2f) m; files %s.exr, %s.png",
+                view.type == ViewType::kFisheye ? "fisheye 180°" : "perspective", img.width, img.height,
+                view.positionM.x, view.positionM.y, view.positionM.z, v.stem.c_str(), v.stem.c_str());
+  vr.description = buf;
+  vr.falseColorPng = encodePng(luminanceFalseColor(img.width, img.height, img.luminance, v.scale));
+  vr.previewPng = encodePng(toneMap(img.width, img.height, img.luminance, v.rgbCdM2, img.inside));
+  const ViewGlare& glare = v.glare;
+  vr.metrics.emplace_back("Vertical illuminance at the eye", fixed(glare.verticalLux, 1) + " lx");
+  vr.metrics.emplace_back("UGR (CIE 117)", glare.sources.empty() ? "no luminaire in view"
+                                                                 : fixed(glare.ugr, 1) + " (" +
+                                                                       std::to_string(glare.sources.size()) +
+                                                                       " luminaires)");
+  if (glare.dgp) vr.metrics.emplace_back("DGP (Wienold & Christoffersen 2006)", fixed(glare.dgp->dgp, 3));
+  if (v.contrast) {
+    const ViewContrast& vc = *v.contrast;
+    vr.metrics.emplace_back("Task / background luminance",
+                            fixed(vc.taskCdM2, 2) + " / " + fixed(vc.backgroundCdM2, 2) + " cd/m²");
+    vr.metrics.emplace_back("Contrast C = (Lt − Lb)/Lb", fixed(vc.contrast, 3));
+    vr.metrics.emplace_back("Contrast rendition factor CRF", fixed(vc.crf(), 3));
+  }
+  return vr;
+}
+
+ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment) {
+  const Image& img = v.image;
+  return writeViewImages(dir, v.stem, img.width, img.height, img.luminance, v.rgbCdM2, img.inside, v.scale, comment);
+}
+
+ViewLuminance viewLuminance(const ViewResult& v) {
+  const Camera cam(v.view);
+  const Image& img = v.image;
+  double sum = 0.0, omega = 0.0;
+  ViewLuminance out;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const std::size_t i = img.index(x, y);
+      const double w = cam.pixelSolidAngleSr(x, y);
+      sum += img.luminance[i] * w;
+      omega += w;
+      out.maxCdM2 = std::max(out.maxCdM2, img.luminance[i]);
+    }
+  out.meanCdM2 = omega > 0.0 ? sum / omega : 0.0;
+  return out;
+}
+
+RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderRequest& request,
+                            StudyObserver& observer) {
+  const CaseFile c = readCaseFile(caseFile);
+  const FileLoc atCase{c.path.string(), 0, 0};
+  const ViewSpec* view = nullptr;
+  for (const ViewSpec& v : c.views)
+    if (v.name == request.view) view = &v;
+  if (!view) {
+    std::string names;
+    for (const ViewSpec& v : c.views) names += (names.empty() ? "" : ", ") + v.name;
+    throw InputError(atCase, "no [[view]] named '" + request.view + "' (" +
+                                 (names.empty() ? "the case has no views" : "views: " + names) + ")");
+  }
+  const ViewOptions& o = request.options;
+  if (o.logScale && o.minCdM2 && *o.minCdM2 == 0.0)
+    throw InputError(atCase, "--min must be above 0 cd/m2 on a log scale");
+  if (o.minCdM2 && o.maxCdM2 && *o.maxCdM2 <= *o.minCdM2) throw InputError(atCase, "--max must be above --min");
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  // The settings `candela run` gives the case's views.
+  const ResolvedTrace trace = resolveTrace(&c.settings, request.trace, Method::kCache);
+  const std::filesystem::path outDir = request.outDir.empty() ? c.output.dir : request.outDir;
+  const Tracer tracer(*scene);
+  RenderResult r;
+  r.caseName = c.name;
+  r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
+  try {
+    r.paths = writeViewResult(outDir, r.view,
+                              "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
+  }
+  return r;
+}
+
+}  // namespace candela

@@ -1,0 +1,88 @@
+// One view of a case from start to finish, the same for `candela run` (every [[view]]) and
+// `candela render` (one): the luminance image, its glare ratings, the task contrast, the
+// false-colour scale and pictures, and the report's rows (docs/views.md).
+#pragma once
+
+#include "base/error.h"
+#include "engine/render.h"
+#include "engine/tracer.h"
+#include "reports/falsecolor.h"
+#include "reports/report_data.h"
+#include "reports/tonemap.h"
+#include "study/case_file.h"
+#include "study/observer.h"
+#include "study/trace_options.h"
+#include "study/view_glare.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// The pipeline's knobs. The defaults are what both commands use unless told otherwise.
+struct ViewOptions {
+  int pixelSamples = 4;   // camera rays per traced pixel
+  int coarseStep = 4;     // pixels between first-pass samples (1: every pixel)
+  // Matte surfaces seen take ρE/π from a stratified irradiance estimate with this many samples
+  // (0: one path per camera ray). A path per ray leaves salt-and-pepper noise at the few rays per
+  // pixel a report can afford, under a sky (through windows) as under electric light (docs/views.md).
+  int irradianceSamples = 64;
+  bool logScale = true;
+  std::optional<double> minCdM2, maxCdM2;   // false-colour range; unset: automatic
+  double glareThresholdCdM2 = 0.0;          // DGP glare sources; 0: 5 × the image's mean luminance
+  // Contrast points instead of the view's own `task`/`background` (both or neither), and where
+  // they were given (errors point there).
+  std::optional<Vec3> task, background;
+  FileLoc contrastLoc;
+};
+
+struct ViewResult {
+  ViewSpec view;
+  RenderSettings render;        // as traced
+  Image image;
+  std::vector<Rgb> rgbCdM2;     // colour luminance per pixel, cd/m²
+  ColorScale scale;             // of the false-colour picture
+  std::string stem;             // file names: <stem>.exr, <stem>.png, <stem>_preview.png
+  ViewGlare glare;
+  std::optional<ViewContrast> contrast;
+};
+
+// Renders and rates one view (progress through `observer`, one item a pixel). Throws InputError
+// for contrast points that cannot be rated.
+ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
+                       int threads, const ViewOptions& options, StudyObserver& observer);
+
+// The view's section of the HTML report: description, pictures, metric rows.
+ViewReport viewReport(const ViewResult& v);
+
+// Writes the view's three pictures into `dir` (atomically, each); `comment` goes into the EXR.
+ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment);
+
+// Mean luminance over the image weighted by each pixel's solid angle, and the largest, cd/m².
+struct ViewLuminance {
+  double meanCdM2 = 0.0, maxCdM2 = 0.0;
+};
+ViewLuminance viewLuminance(const ViewResult& v);
+
+// `candela render`: one [[view]] of a case, named `view`, through the same pipeline and settings
+// as `candela run` gives it, its pictures written into `outDir` (empty: the case's [output] dir).
+struct RenderRequest {
+  std::string view;
+  std::filesystem::path outDir;
+  TraceOverrides trace;
+  ViewOptions options;
+};
+
+struct RenderResult {
+  std::string caseName;
+  ViewResult view;
+  ViewImagePaths paths;
+};
+
+// Throws InputError for an unknown view, bad options or bad input, before anything is written.
+RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderRequest& request,
+                            StudyObserver& observer = silentObserver());
+
+}  // namespace candela

@@ -1,0 +1,53 @@
+// The one settings resolution: caller over case over preset.
+#include "study/trace_options.h"
+
+#include <gtest/gtest.h>
+
+namespace candela {
+namespace {
+
+TEST(TraceOptions, CallerOverCaseOverPreset) {
+  Settings c;
+  c.quality = Quality::kDraft;
+  c.seed = 7;
+  c.bounces = 3;
+  c.samples = 100;
+  c.threads = 1;
+  c.method = Method::kPath;
+  const ResolvedTrace fromCase = resolveTrace(&c, {}, Method::kCache);
+  EXPECT_EQ(fromCase.quality, Quality::kDraft);
+  EXPECT_EQ(fromCase.settings.lightSamples, settingsForQuality(Quality::kDraft).lightSamples);
+  EXPECT_EQ(fromCase.settings.seed, 7u);
+  EXPECT_EQ(fromCase.settings.maxBounces, 3);
+  EXPECT_EQ(fromCase.settings.hemisphereSamples, 100);
+  EXPECT_EQ(fromCase.threads, 1);
+  EXPECT_EQ(fromCase.settings.method, Method::kPath);
+
+  TraceOverrides o;
+  o.quality = Quality::kHigh;
+  o.seed = 9;
+  o.bounces = 0;
+  o.samples = 64;
+  o.threads = 0;
+  o.method = Method::kCache;
+  const ResolvedTrace fromCaller = resolveTrace(&c, o, Method::kPath);
+  EXPECT_EQ(fromCaller.quality, Quality::kHigh);
+  EXPECT_EQ(fromCaller.settings.lightSamples, settingsForQuality(Quality::kHigh).lightSamples);
+  EXPECT_EQ(fromCaller.settings.seed, 9u);
+  EXPECT_EQ(fromCaller.settings.maxBounces, 0);
+  EXPECT_EQ(fromCaller.settings.hemisphereSamples, 64);
+  EXPECT_EQ(fromCaller.threads, 0);
+  EXPECT_EQ(fromCaller.settings.method, Method::kCache);
+}
+
+TEST(TraceOptions, DefaultMethodOnlyWhenNeitherNamesOne) {
+  Settings c;  // no method
+  EXPECT_EQ(resolveTrace(&c, {}, Method::kCache).settings.method, Method::kCache);
+  EXPECT_EQ(resolveTrace(nullptr, {}, Method::kPath).settings.method, Method::kPath);
+  const ResolvedTrace preset = resolveTrace(nullptr, {}, Method::kPath);
+  EXPECT_EQ(preset.settings.hemisphereSamples, settingsForQuality(Quality::kNormal).hemisphereSamples);
+  EXPECT_EQ(preset.settings.seed, 1u);
+}
+
+}  // namespace
+}  // namespace candela
