@@ -1,4 +1,4 @@
-// Stability cases (issue "Validation suite", stability report): where methods usually fail.
+// Stability cases (docs/validation.md, stability report): where methods usually fail.
 // Each states its reference; docs/validation.md reports the measured error at the default
 // settings. Near contact is covered by the sphere-on-plane cases (0.25 m from the contact point,
 // sensors 1 cm up) and by tests/engine/stability_test.cpp (5 mm from the sphere).
