@@ -7,6 +7,7 @@
 #include "photometry/luminaire_summary.h"
 #include "photometry/photometric_web.h"
 #include "reports/polar_plot_svg.h"
+#include "photometry/photometric_file.h"
 
 #include <filesystem>
 #include <iostream>

@@ -3,6 +3,7 @@
 #include "photometry/site.h"
 #include "photometry/sky_perez.h"
 #include "photometry/sun_spa.h"
+#include "photometry/make_sky.h"
 
 #include <cmath>
 

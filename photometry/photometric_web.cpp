@@ -1,8 +1,6 @@
 #include "photometry/photometric_web.h"
 
 #include "base/error.h"
-#include "photometry/eulumdat.h"
-#include "photometry/ies_lm63.h"
 
 #include <algorithm>
 #include <cctype>
@@ -270,15 +268,6 @@ std::vector<double> PhotometricWeb::zonalLumens(double zoneDeg) const {
 double PhotometricWeb::lightOutputRatio() const {
   if (isAbsolute()) return std::numeric_limits<double>::quiet_NaN();
   return totalLumens() / info_.lampLumens;
-}
-
-PhotometricWeb readPhotometricFile(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  if (ext == ".ies") return readIes(path);
-  if (ext == ".ldt") return readEulumdat(path);
-  throw InputError(FileLoc{path.string(), 0, 0},
-                   "unknown luminaire file type '" + ext + "' (expected .ies or .ldt)");
 }
 
 }  // namespace candela

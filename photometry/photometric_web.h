@@ -163,7 +163,4 @@ class PhotometricWeb {
   CGamma maxDir_;
 };
 
-// Reads an .ies or .ldt file (by extension, case-insensitive). Throws InputError.
-PhotometricWeb readPhotometricFile(const std::filesystem::path& path);
-
 }  // namespace candela

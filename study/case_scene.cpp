@@ -3,6 +3,8 @@
 #include "engine/rad_reader.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
+#include "photometry/photometric_file.h"
+#include "photometry/make_sky.h"
 
 #include <cmath>
 

@@ -13,6 +13,7 @@
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
+#include "photometry/make_sky.h"
 
 #include <gtest/gtest.h>
 

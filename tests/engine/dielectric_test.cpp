@@ -6,6 +6,7 @@
 #include "engine/rad_reader.h"
 #include "engine/tracer.h"
 #include "photometry/sky_model.h"
+#include "photometry/make_sky.h"
 
 #include <gtest/gtest.h>
 

@@ -9,6 +9,7 @@
 #include "engine/tracer.h"
 #include "photometry/sky_model.h"
 #include "tests/engine/test_materials.h"
+#include "photometry/make_sky.h"
 
 #include <gtest/gtest.h>
 

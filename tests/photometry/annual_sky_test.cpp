@@ -4,6 +4,7 @@
 #include "photometry/sky_perez.h"
 #include "photometry/sun_spa.h"
 #include "sky_test_support.h"
+#include "photometry/make_sky.h"
 
 #include <gtest/gtest.h>
 

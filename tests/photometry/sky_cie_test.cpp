@@ -3,6 +3,7 @@
 #include "base/rng.h"
 #include "photometry/site.h"
 #include "sky_test_support.h"
+#include "photometry/make_sky.h"
 
 #include <gtest/gtest.h>
 

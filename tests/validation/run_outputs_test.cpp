@@ -30,6 +30,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "photometry/photometric_web.h"
+#include "photometry/photometric_file.h"
 
 #ifndef CANDELA_EXE
 #error "CANDELA_EXE (path of the candela executable) must be defined by tests/CMakeLists.txt"
