@@ -5,7 +5,7 @@ namespace candela::cli {
 void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp,
                          const std::string& methodDefault) {
   cmd->add_option("--quality", o.quality, "draft | normal | high (default: the case's, else normal: accurate)")
-      ->check(CLI::IsMember({"draft", "normal", "high"}));
+      ->check(parsedBy(parseQuality, "QUALITY"));
   cmd->add_option("--bounces", o.bounces, "diffuse interreflections followed (default: case, else quality)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--samples", o.samples, samplesHelp + " (default: case, else quality)")->check(CLI::PositiveNumber);
@@ -14,7 +14,7 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
   cmd->add_option("--method", o.method,
                   "path (unbiased path tracer) | cache (Ward's irradiance cache) (default: the case's, else " +
                       methodDefault + ")")
-      ->check(CLI::IsMember({"path", "cache"}));
+      ->check(parsedBy(parseMethod, "METHOD"));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's, else all)")
       ->check(CLI::NonNegativeNumber);
 }

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 namespace candela::cli {
@@ -20,6 +21,22 @@ struct CaseTraceOptions {
   std::string method;   // empty: the case's, else the command's default
   TraceOverrides overrides() const;
 };
+
+// Checks an option's text with the engine's own parser of those names (parseQuality,
+// parseMethod, parseAccelerator), so the names live in one place.
+template <class Parse>
+CLI::Validator parsedBy(Parse parse, const std::string& description) {
+  return CLI::Validator(
+      [parse](std::string& s) -> std::string {
+        try {
+          parse(s);
+          return {};
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      },
+      description);
+}
 
 // Adds --quality, --bounces, --samples (with `samplesHelp`), --seed, --method and --threads;
 // `defaults` ends the help text of --quality and --method ("the case's, else ...").

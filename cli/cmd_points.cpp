@@ -115,7 +115,7 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--points", opts->pointsFile, "sensor points file (default: stdin)");
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point", "path");
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
-      ->check(CLI::IsMember({"embree", "octree"}));
+      ->check(parsedBy(parseAccelerator, "ACCELERATOR"));
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
   cmd->add_option("--target-error", opts->targetErrorPct,
                   "sample each point until its standard error is below PCT percent of its value")

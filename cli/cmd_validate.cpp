@@ -1,6 +1,7 @@
 // candela validate [--quick] [--out DIR]: runs the validation cases at the default (or given)
 // quality and prints case, reference, result, errors, tolerance, verdict and wall time; writes
 // validation.csv and validation.html. Exit code 1 when any case fails.
+#include "cli/case_options.h"
 #include "cli/commands.h"
 
 #include "base/atomic_file.h"
@@ -53,7 +54,7 @@ void addValidateCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--quick", opts->quick, "only the quick subset (run by CI)");
   cmd->add_option("--out", opts->out, "directory for validation.csv (default: current directory)");
   cmd->add_option("--quality", opts->quality, "draft | normal | high (default normal)")
-      ->check(CLI::IsMember({"draft", "normal", "high"}));
+      ->check(parsedBy(parseQuality, "QUALITY"));
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", opts->seed, "random seed");
   cmd->add_flag("--chart", opts->chart, "speed-accuracy study instead: speed_accuracy.csv and .svg in --out");
