@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace candela {
 
@@ -14,7 +15,12 @@ struct FileLoc {
   std::string str() const;  // "file:line" (or "file" when the line is unknown)
 };
 
-// Bad user input. what() reads "file:line: message", ready to print as the one error line.
+// `text` with every control character (bytes 0x00–0x1f and 0x7f) written as \xNN, so that input
+// echoed in a message cannot drive the terminal it is printed on.
+std::string printable(std::string_view text);
+
+// Bad user input. what() reads "file:line: message", ready to print as the one error line, with
+// control characters escaped (printable).
 class InputError : public std::runtime_error {
  public:
   InputError(FileLoc loc, const std::string& message);

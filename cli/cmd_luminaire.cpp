@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 
 #include "base/atomic_file.h"
+#include "base/input_file.h"
 #include "photometry/luminaire_summary.h"
 #include "photometry/photometric_web.h"
 #include "reports/polar_plot_svg.h"
@@ -25,12 +26,14 @@ struct LuminaireOptions {
 
 int runLuminaire(const LuminaireOptions& o) {
   const PhotometricWeb web = readPhotometricFile(o.file);
+  const std::filesystem::path svgPath =
+      o.svg.empty() ? std::filesystem::path(std::filesystem::path(o.file).stem().string() + "_polar.svg")
+                    : std::filesystem::path(o.svg);
+  if (!o.noSvg) checkOutputFile(svgPath);
   const LuminaireSummary summary = summarizeLuminaire(web);
   std::string report = formatSummary(summary);
   if (!o.noSvg) {
-    const std::filesystem::path out =
-        o.svg.empty() ? std::filesystem::path(std::filesystem::path(o.file).stem().string() + "_polar.svg")
-                      : std::filesystem::path(o.svg);
+    const std::filesystem::path& out = svgPath;
     const PlaneCurve c0 = planeCurve(web, 0.0, 1.0), c90 = planeCurve(web, 90.0, 1.0);
     std::string title = std::filesystem::path(o.file).filename().string();
     if (!summary.luminaire.empty()) title = summary.luminaire + " (" + title + ")";

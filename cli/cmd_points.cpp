@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 
 #include "base/error.h"
+#include "base/input_file.h"
 #include "engine/daylight.h"
 #include "photometry/site.h"
 #include "photometry/sky_type.h"
@@ -12,7 +13,6 @@
 #include "study/sensor_grid.h"
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -78,9 +78,9 @@ int runPoints(const PointsOptions& o) {
   std::vector<SensorPoint> points;
   if (o.pointsFile.empty() || o.pointsFile == "-") {
     points = readPoints(std::cin, "<stdin>");
+    if (std::cin.bad()) throw InputError(FileLoc{"<stdin>", 0, 0}, "cannot read the sensor points");
   } else {
-    std::ifstream in(o.pointsFile);
-    if (!in) throw InputError(FileLoc{o.pointsFile, 0, 0}, "cannot open points file");
+    std::istringstream in(readInputFile(o.pointsFile, "points file"));
     points = readPoints(in, o.pointsFile);
   }
   const std::vector<IrradianceEstimate> est = computePoints(scene, job.accelerator, points).estimates;

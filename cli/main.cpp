@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "candela: " << e.what() << "\n";
+    std::cerr << "candela: " << candela::printable(e.what()) << "\n";
     return 2;
   }
   try {
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "candela: internal error: " << e.what() << "\n";
+    std::cerr << "candela: internal error: " << candela::printable(e.what()) << "\n";
     return 1;
   }
 }

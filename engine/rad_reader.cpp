@@ -1,4 +1,5 @@
 #include "engine/rad_reader.h"
+#include "base/input_file.h"
 
 #include <charconv>
 #include <cmath>
@@ -333,11 +334,7 @@ void readRadianceText(std::string_view text, const std::string& fileName, Scene&
 }
 
 void readRadianceFile(const std::filesystem::path& path, Scene& scene) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open scene file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  readRadianceText(ss.str(), path.string(), scene);
+  readRadianceText(readInputFile(path, "scene file"), path.string(), scene);
 }
 
 }  // namespace candela

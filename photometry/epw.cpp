@@ -1,10 +1,11 @@
 #include "photometry/epw.h"
 
 #include "photometry/site.h"
+#include "base/input_file.h"
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <limits>
 
 namespace candela {
@@ -123,8 +124,7 @@ EpwFile parseEpw(std::istream& in, const std::string& fileName) {
 }
 
 EpwFile readEpw(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(FileLoc{path, 0, 0}, "cannot open EPW file");
+  std::istringstream in(readInputFile(path, "EPW file"));
   return parseEpw(in, path);
 }
 

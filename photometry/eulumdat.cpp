@@ -10,6 +10,7 @@
 #include "photometry/text_lines.h"
 
 #include "base/error.h"
+#include "base/input_file.h"
 
 #include <algorithm>
 #include <charconv>
@@ -70,11 +71,7 @@ std::string fmt(double v) {
 }  // namespace
 
 PhotometricWeb readEulumdat(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parseEulumdat(ss.str(), path.string());
+  return parseEulumdat(readInputFile(path, "file"), path.string());
 }
 
 PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName) {

@@ -9,6 +9,8 @@
 //   vertical angles). After the TILT line numbers may wrap freely across lines and be
 //   separated by blanks or commas.
 #include "photometry/ies_lm63.h"
+
+#include "base/input_file.h"
 #include "photometry/text_lines.h"
 
 #include "base/error.h"
@@ -28,13 +30,6 @@ constexpr double kFeetToMetres = 0.3048;  // international foot
 
 char upperChar(char c) { return char(std::toupper(static_cast<unsigned char>(c))); }
 
-std::string readText(const std::filesystem::path& path, const FileLoc& loc) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(loc, "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 
 std::string trim(std::string_view s) {
@@ -129,6 +124,34 @@ void readTiltBlock(Tokens& t, TiltData& tilt) {
   }
 }
 
+// A TILT file names a file beside the IES file (LM-63-2019 5.5: a file name). Confined to the IES
+// file's folder (no absolute path, no "..") and to a regular file of at most 1 MiB, and a file
+// the user did not name is never quoted in an error: its problems are reported at the TILT line
+// of the IES file with the TILT file's line number only.
+constexpr std::uintmax_t kMaxTiltFileBytes = 1 << 20;
+
+void readTiltFile(const std::string& name, const std::filesystem::path& folder, const FileLoc& at, TiltData& tilt) {
+  const std::filesystem::path rel(name);
+  bool escapes = rel.is_absolute() || rel.has_root_name();
+  for (const auto& part : rel) escapes = escapes || part == "..";
+  if (escapes) throw InputError(at, "TILT file '" + name + "' must lie in the IES file's folder");
+  const std::filesystem::path tiltPath = folder / rel;
+  std::string text;
+  try {
+    text = readInputFile(tiltPath, "TILT file", kMaxTiltFileBytes);
+  } catch (const InputError& e) {
+    throw InputError(at, "cannot open TILT file '" + name + "': " + e.message());
+  }
+  const std::vector<std::string> tiltLines = splitLines(text);
+  Tokens tt(tiltPath.string(), tiltLines, 0);
+  try {
+    readTiltBlock(tt, tilt);
+  } catch (const InputError& e) {
+    throw InputError(at, "TILT file '" + name + "' is not a valid TILT block (its line " +
+                             std::to_string(e.loc().line) + ")");
+  }
+}
+
 // Linear interpolation in the TILT table, held constant beyond its ends.
 double tiltMultiplier(const TiltData& tilt, double angleDeg) {
   const auto& a = tilt.anglesDeg;
@@ -165,8 +188,7 @@ OpeningShape iesOpeningShape(double w, double l, double h) {
 }
 
 PhotometricWeb readIes(const std::filesystem::path& path, const IesOptions& options) {
-  const std::string text = readText(path, FileLoc{path.string(), 0, 0});
-  return parseIes(text, path.string(), path.parent_path(), options);
+  return parseIes(readInputFile(path, "file"), path.string(), path.parent_path(), options);
 }
 
 PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
@@ -234,14 +256,7 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   } else {
     // TILT=<file>: the same block in a file of its own, beside the IES file.
     info.tilt.source = tiltValue;
-    const std::filesystem::path tiltPath = folder / tiltValue;
-    std::ifstream probe(tiltPath, std::ios::binary);
-    if (!probe)
-      throw InputError(FileLoc{fileName, tiltLine, 0}, "cannot open TILT file '" + tiltPath.string() + "'");
-    const std::string tiltText = readText(tiltPath, FileLoc{tiltPath.string(), 0, 0});
-    const std::vector<std::string> tiltLines = splitLines(tiltText);
-    Tokens tt(tiltPath.string(), tiltLines, 0);
-    readTiltBlock(tt, info.tilt);
+    readTiltFile(tiltValue, folder, FileLoc{fileName, tiltLine, 0}, info.tilt);
   }
   if (info.tilt.source != "NONE")
     info.tilt.appliedMultiplier = tiltMultiplier(info.tilt, options.tiltAngleDeg);

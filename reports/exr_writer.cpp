@@ -3,16 +3,40 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 
-#include <atomic>
+#include "base/atomic_file.h"
+
+#include <cstring>
 #include <stdexcept>
-#include <system_error>
-#include <unistd.h>
 
 namespace candela {
+
+namespace {
+
+// The file's bytes in memory, so that they reach the disk through writeFileAtomic (an exclusive
+// temporary, never through a link) like every other output.
+class MemoryStream : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (pos_ + n > bytes_.size()) bytes_.resize(pos_ + n);
+    std::memcpy(bytes_.data() + pos_, c, static_cast<std::size_t>(n));
+    pos_ += static_cast<std::size_t>(n);
+  }
+  uint64_t tellp() override { return pos_; }
+  void seekp(uint64_t pos) override { pos_ = static_cast<std::size_t>(pos); }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+  std::size_t pos_ = 0;
+};
+
+}  // namespace
 
 void writeLuminanceExr(const std::filesystem::path& path, int width, int height,
                        const std::vector<double>& luminance, const std::vector<Rgb>& rgb, const std::string& comment) {
@@ -50,22 +74,15 @@ void writeLuminanceExr(const std::filesystem::path& path, int width, int height,
     add("B", b);
   }
 
-  // A temporary beside the target (same file system, so the rename is atomic).
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path tmp = path;
-  tmp += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter.fetch_add(1));
+  MemoryStream stream;
   try {
-    {
-      Imf::OutputFile file(tmp.string().c_str(), header);
-      file.setFrameBuffer(fb);
-      file.writePixels(height);
-    }
-    std::filesystem::rename(tmp, path);
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(fb);
+    file.writePixels(height);
   } catch (const std::exception& e) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
     throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
   }
+  writeFileAtomic(path, stream.bytes());
 }
 
 }  // namespace candela

@@ -325,12 +325,12 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   describeAnnualSettings(data, c, in, t, trace, y.occupiedCount);
   annualGridReports(data, c, in, t, y);
   data.run.runTimeS = secondsSince(run.start);
-  // 4. Write, each file through a temporary and a rename.
-  writeRunOutputs(run.outDir, [&] {
-    writeAnnualGrids(run.outDir, data, in, t, y);
-    writeSummaryCsv(run.outDir, data);
-    writeSummaryJson(run.outDir, data);
-    writeHtmlReport(run.outDir / "report.html", data);
+  // 4. Write: the folder is committed as a whole.
+  writeRunOutputs(run.outDir, [&](const std::filesystem::path& dir) {
+    writeAnnualGrids(dir, data, in, t, y);
+    writeSummaryCsv(dir, data);
+    writeSummaryJson(dir, data);
+    writeHtmlReport(dir / "report.html", data);
   });
   return result;
 }

@@ -1,4 +1,5 @@
 #include "study/case_file.h"
+#include "base/input_file.h"
 
 #include <toml++/toml.h>
 
@@ -158,6 +159,7 @@ fs::path filePath(Table& t, std::string_view key, const char* what) {
   const toml::node& n = t.require(key);
   const std::string text = asString(t.ctx(), n, key);
   if (text.empty()) t.ctx().fail(n, keyText(key) + " must not be empty");
+  if (text.find('\0') != std::string::npos) t.ctx().fail(n, keyText(key) + " must not contain a NUL character");
   fs::path p(text);
   if (p.is_relative()) p = t.ctx().dir / p;
   p = p.lexically_normal();
@@ -569,6 +571,7 @@ void readOutput(const Context& c, const toml::table& t, OutputSpec& o) {
   if (const toml::node* n = tab.get("dir")) {
     const std::string d = asString(c, *n, "dir");
     if (d.empty()) c.fail(*n, "'dir' must not be empty");
+    if (d.find('\0') != std::string::npos) c.fail(*n, "'dir' must not contain a NUL character");
     o.dir = fs::path(d);
     if (o.dir.is_relative()) o.dir = c.dir / o.dir;
     o.dir = o.dir.lexically_normal();
@@ -627,13 +630,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   return out;
 }
 
-CaseFile readCaseFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open case file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseCaseFile(text.str(), path);
-}
+CaseFile readCaseFile(const fs::path& path) { return parseCaseFile(readInputFile(path, "case file"), path); }
 
 void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double toleranceM) {
   if (sceneBounds.empty()) return;

@@ -150,19 +150,18 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   }
   data.run.runTimeS = secondsSince(run.start);
 
-  // 4. Write. Each file goes through a temporary and a rename.
-  const std::filesystem::path& outDir = run.outDir;
-  writeRunOutputs(outDir, [&] {
+  // 4. Write: the folder is committed as a whole.
+  writeRunOutputs(run.outDir, [&](const std::filesystem::path& dir) {
     for (std::size_t gi = 0; gi < grids.size(); ++gi) {
       std::vector<ExtraColumn> extra = {{"error_lux", values[gi].errorLux}};
       if (grids[gi].spec->daylightFactor) extra.push_back({"daylight_factor_pct", data.grids[gi].values});
-      writeGridCsv(outDir, grids[gi].spec->name, values[gi].points, values[gi].lux, extra);
+      writeGridCsv(dir, grids[gi].spec->name, values[gi].points, values[gi].lux, extra);
     }
     for (const ViewResult& v : views)
-      writeViewResult(outDir, v, "candela " + std::string(CANDELA_VERSION) + ", case " + c.name);
-    writeSummaryCsv(outDir, data);
-    writeFileAtomic(outDir / "summary.json", summaryJsonWithSpacing(data, grids));
-    writeHtmlReport(outDir / "report.html", data);
+      writeViewResult(dir, v, "candela " + std::string(CANDELA_VERSION) + ", case " + c.name);
+    writeSummaryCsv(dir, data);
+    writeFileAtomic(dir / "summary.json", summaryJsonWithSpacing(data, grids));
+    writeHtmlReport(dir / "report.html", data);
   });
   return result;
 }

@@ -1,7 +1,7 @@
 // A point-in-time study (docs/run.md): every [[grid]] of the case traced with one tracer under
 // its luminaires and sky, the metrics and EN 12464-1 target verdicts, every [[view]] through the
 // view pipeline, and the result folder: <grid>.csv, the views' pictures, summary.csv,
-// summary.json and report.html, each written atomically.
+// summary.json and report.html, committed as a whole (study/run_outputs.h).
 #pragma once
 
 #include "study/case_file.h"

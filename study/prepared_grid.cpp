@@ -1,10 +1,11 @@
 #include "study/prepared_grid.h"
 
+#include "study/output_names.h"
+
 #include "base/error.h"
 #include "reports/csv_writer.h"
 #include "reports/plan_svg.h"
 
-#include <map>
 
 namespace candela {
 
@@ -61,18 +62,13 @@ PlanLayout planLayout(const PreparedGrid& g) {
 
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   std::vector<PreparedGrid> grids;
-  std::map<std::string, std::string> stems;  // file stem -> grid name, to refuse collisions
+  checkOutputNames(c);
   for (const GridSpec& spec : c.grids) {
     checkGridInside(spec, bounds);
     PreparedGrid g;
     g.spec = &spec;
     g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(spec.plane, spec.loc) : readPointsFile(spec.pointsFile);
     g.fileStem = safeFileName(spec.name);
-    if (g.fileStem == "summary")
-      throw InputError(spec.loc, "grid name '" + spec.name + "' would overwrite summary.csv; choose another name");
-    if (const auto [it, fresh] = stems.emplace(g.fileStem, spec.name); !fresh)
-      throw InputError(spec.loc, "grids '" + it->second + "' and '" + spec.name + "' would both write " +
-                                     g.fileStem + ".csv; choose distinct names");
     grids.push_back(std::move(g));
   }
   return grids;

@@ -20,8 +20,8 @@ struct PreparedGrid {
   std::string fileStem;  // <fileStem>.csv
 };
 
-// Every [[grid]] of the case, checked against `bounds` and for file-name collisions (throws
-// InputError at the grid's line).
+// Every [[grid]] of the case, checked against `bounds`, and every output name of the case for
+// collisions (study/output_names.h); throws InputError at the entry's line.
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds);
 
 // One line a reader of the report understands: orientation, height, spacing, border.

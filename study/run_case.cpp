@@ -32,8 +32,7 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   const CaseFile c = readCaseFile(caseFile);
   if (c.grids.empty()) throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;
-  if (std::filesystem::exists(run.outDir) && !std::filesystem::is_directory(run.outDir))
-    throw InputError(FileLoc{run.outDir.string(), 0, 0}, "output path exists and is not a folder");
+  checkResultFolder(run.outDir);
   if (c.sky.type.kind == SkyKind::kAnnual) return runAnnualStudy(c, run, observer);
   return runGridStudy(c, run, observer);
 }

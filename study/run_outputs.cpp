@@ -1,11 +1,19 @@
 #include "study/run_outputs.h"
 
+#include "base/atomic_file.h"
 #include "base/error.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <ctime>
+#include <fcntl.h>
 #include <stdexcept>
+#include <system_error>
 
 namespace candela {
+
+namespace fs = std::filesystem;
 
 std::string localTimeNow() {
   const std::time_t t = std::time(nullptr);
@@ -16,14 +24,73 @@ std::string localTimeNow() {
   return buf;
 }
 
-void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write) {
+namespace {
+
+bool holdsResult(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::is_empty(dir, ec)) return true;
+  // A marker, or the summary every candela result has (folders written before the marker).
+  return fs::is_regular_file(fs::symlink_status(dir / kResultMarker, ec)) ||
+         fs::is_regular_file(fs::symlink_status(dir / "summary.json", ec));
+}
+
+// Puts `fresh` where `target` is, in one rename; returns where the previous target now is (empty
+// when there was none).
+fs::path swapInto(const fs::path& fresh, const fs::path& target) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(target, ec))) {
+    if (::rename(fresh.c_str(), target.c_str()) != 0)
+      throw std::runtime_error(std::string("cannot rename the results into place: ") + std::strerror(errno));
+    return {};
+  }
+  if (::renameat2(AT_FDCWD, fresh.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) return fresh;
+  if (errno != EINVAL && errno != ENOSYS)
+    throw std::runtime_error(std::string("cannot swap the results into place: ") + std::strerror(errno));
+  // No atomic exchange on this file system: two renames, the target missing in between.
+  const fs::path old = uniqueSibling(target.parent_path().empty() ? fs::path(".") : target.parent_path(),
+                                     target.filename().string() + ".old");
+  if (::rename(target.c_str(), old.c_str()) != 0 || ::rename(fresh.c_str(), target.c_str()) != 0)
+    throw std::runtime_error(std::string("cannot rename the results into place: ") + std::strerror(errno));
+  return old;
+}
+
+}  // namespace
+
+void checkResultFolder(const fs::path& outDir) {
+  const FileLoc at{outDir.string(), 0, 0};
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(outDir, ec);
+  if (fs::is_symlink(st)) throw InputError(at, "the output folder is a symbolic link; name the folder itself");
+  if (fs::exists(st) && !fs::is_directory(st)) throw InputError(at, "output path exists and is not a folder");
+  if (fs::is_directory(st) && !holdsResult(outDir))
+    throw InputError(at, "the output folder holds files that are not a candela result; a run replaces its folder "
+                         "whole, so name a new or empty folder");
+}
+
+void writeRunOutputs(const fs::path& outDir, const std::function<void(const fs::path&)>& write) {
+  const FileLoc at{outDir.string(), 0, 0};
+  fs::path tmp;
   try {
-    std::filesystem::create_directories(outDir);
-    write();
-  } catch (const std::filesystem::filesystem_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+    checkResultFolder(outDir);
+    const fs::path parent = outDir.has_parent_path() ? outDir.parent_path() : fs::path(".");
+    fs::create_directories(parent);
+    tmp = createTemporaryFolder(parent, outDir.filename().string() + ".tmp");
+    write(tmp);
+    writeFileAtomic(tmp / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
+    fs::permissions(tmp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec);
+    const fs::path old = swapInto(tmp, outDir);
+    tmp.clear();
+    std::error_code ec;
+    if (!old.empty()) fs::remove_all(old, ec);
+  } catch (const InputError&) {
+    std::error_code ec;
+    if (!tmp.empty()) fs::remove_all(tmp, ec);
+    throw;
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    if (!tmp.empty()) fs::remove_all(tmp, ec);
+    throw InputError(at, std::string("cannot write the results: ") + e.what());
   }
 }
 

@@ -1,4 +1,5 @@
-// How a study's results reach the disk, and when they were made.
+// How a study's results reach the disk, and when they were made. A result folder holds either
+// the complete previous result or the complete new one, never a mix (docs/reliability.md).
 #pragma once
 
 #include <filesystem>
@@ -10,9 +11,18 @@ namespace candela {
 // The local time now, "YYYY-MM-DD HH:MM".
 std::string localTimeNow();
 
-// Creates `outDir` and calls write(); a file-system or write failure becomes InputError at
-// outDir, "cannot write the results: ...". Each writer writes atomically, so a failure leaves no
-// half file.
-void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void()>& write);
+// The file that marks a folder as a candela result (so that a later run may replace it whole).
+inline constexpr const char* kResultMarker = ".candela-result";
+
+// Throws InputError at `outDir` unless a run may write its result there: a new name in an
+// existing or creatable place, an empty folder, or a folder that holds a candela result. Any
+// other folder (a user's documents, say) is refused, since the result replaces the folder whole.
+void checkResultFolder(const std::filesystem::path& outDir);
+
+// Calls write(dir) with a fresh temporary folder beside `outDir`, then puts that folder in
+// place of `outDir` in one step (the previous result, if any, is removed after the swap). A
+// file-system or write failure becomes InputError at outDir, "cannot write the results: ...",
+// and leaves `outDir` as it was.
+void writeRunOutputs(const std::filesystem::path& outDir, const std::function<void(const std::filesystem::path&)>& write);
 
 }  // namespace candela

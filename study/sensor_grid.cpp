@@ -1,4 +1,5 @@
 #include "study/sensor_grid.h"
+#include "base/input_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,11 +142,38 @@ SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
   return g;
 }
 
+namespace {
+
+// A sensor line is a few dozen characters; a "line" without end (stdin from /dev/zero) must not
+// grow without bound.
+constexpr std::size_t kMaxPointsLineChars = 1 << 16;
+
+// std::getline with a bound: false at the end of the input; throws InputError at the line when
+// it is longer than kMaxPointsLineChars.
+bool readBoundedLine(std::istream& in, std::string& line, const std::string& sourceName, int lineNo) {
+  line.clear();
+  std::streambuf* buf = in.rdbuf();
+  for (;;) {
+    const int c = buf->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n') return true;
+    if (line.size() == kMaxPointsLineChars)
+      throw InputError(FileLoc{sourceName, lineNo, 0},
+                       "a sensor point line is longer than " + std::to_string(kMaxPointsLineChars) + " characters");
+    line.push_back(static_cast<char>(c));
+  }
+}
+
+}  // namespace
+
 std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName) {
   std::vector<SensorPoint> points;
   std::string line;
   int lineNo = 0;
-  while (std::getline(in, line)) {
+  while (readBoundedLine(in, line, sourceName, lineNo + 1)) {
     ++lineNo;
     const std::size_t hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
@@ -178,8 +206,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
 }
 
 SensorGrid readPointsFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open sensor points file");
+  std::istringstream in(readInputFile(path, "sensor points file"));
   SensorGrid g;
   g.points = readPoints(in, path.string());
   if (g.points.empty()) throw InputError(FileLoc{path.string(), 0, 0}, "sensor points file holds no points");

@@ -16,3 +16,15 @@ TEST(InputError, WithoutLineNamesFileOnly) {
 }
 
 }  // namespace candela
+
+namespace candela {
+
+TEST(InputError, ControlCharactersAreEscaped) {
+  // An IES first line with a window-title and a clear-screen sequence must not reach the terminal.
+  const InputError e(FileLoc{"evil.ies", 1, 0}, "unknown IES edition 'x\x1b]0;pwned\x07\x1b[2J'");
+  EXPECT_STREQ(e.what(), "evil.ies:1: unknown IES edition 'x\\x1b]0;pwned\\x07\\x1b[2J'");
+  EXPECT_EQ(printable("tab\tand\r"), "tab\\x09and\\x0d");
+  EXPECT_EQ(printable("caf\xc3\xa9 ok"), "caf\xc3\xa9 ok");  // UTF-8 is kept
+}
+
+}  // namespace candela

@@ -4,7 +4,7 @@ candela_cli_test(points.cache_exact 0 "1,1,0.75,0,0,1,11218.5,0" points points/r
                  --quality draft --method cache --error)
 candela_cli_test(points.target_error_exact 0 "1,1,0.75,0,0,1,11218.5,0" points points/room.rad
                  --points points/desk.pts --quality draft --target-error 1 --error)
-candela_cli_test(points.bad_method 2 "--method: bogus not in {path,cache}" points points/room.rad
+candela_cli_test(points.bad_method 2 "--method: method must be path or cache, not 'bogus'" points points/room.rad
                  --points points/desk.pts --method bogus)
 candela_cli_test(points.bad_target_error 2 "--target-error" points points/room.rad --points points/desk.pts
                  --target-error 0)

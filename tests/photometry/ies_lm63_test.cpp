@@ -117,11 +117,25 @@ INSTANTIATE_TEST_SUITE_P(
                     BadFile{"bad_tilt_file.ies", 5, "cannot open TILT file"},
                     BadFile{"bad_tilt_multiplier.ies", 9, "TILT multiplier"},
                     BadFile{"bad_lumens.ies", 6, "lumens per lamp"},
-                    BadFile{"bad_horizontal.ies", 10, "not a known symmetry"}),
+                    BadFile{"bad_horizontal.ies", 10, "not a known symmetry"},
+                    // TILT files stay in the IES file's folder, are regular files, and are never quoted.
+                    BadFile{"tilt_absolute.ies", 5, "TILT file '/etc/shadow' must lie in the IES file's folder"},
+                    BadFile{"tilt_dotdot.ies", 5, "must lie in the IES file's folder"},
+                    BadFile{"tilt_folder.ies", 5, "is a folder, not a regular file"},
+                    BadFile{"tilt_content.ies", 5, "TILT file 'secret_content.tlt' is not a valid TILT block (its line 1)"}),
     [](const testing::TestParamInfo<BadFile>& info) {
       std::string n = info.param.name;
       return n.substr(0, n.find('.'));
     });
+
+TEST(IesLm63, TiltFileContentIsNeverEchoed) {
+  try {
+    readIes(kIes + "tilt_content.ies");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("SECRET"), std::string::npos) << e.what();
+  }
+}
 
 TEST(IesLm63, MissingFile) {
   EXPECT_THROW(readIes(kIes + "no_such_file.ies"), InputError);

@@ -1,0 +1,29 @@
+// Reading input files safely: only regular files are read (never a folder, FIFO, socket or
+// device: `/dev/zero` would eat memory, a FIFO would hang the run), every failure to open or read
+// is an InputError naming the file, and the size read is bounded.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace candela {
+
+// No input file candela reads is larger than this unless the caller says so (bytes).
+inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t(4) << 30;
+
+// The whole content of `path`. `what` names the file in errors ("scene file", "case file").
+// Throws InputError(path, ...) when it cannot be opened, is not a regular file, is larger than
+// `maxBytes` or cannot be read to the end.
+std::string readInputFile(const std::filesystem::path& path, const std::string& what,
+                          std::uintmax_t maxBytes = kMaxInputFileBytes);
+
+// Throws InputError(path, ...) unless `path` names a regular file that can be opened for reading.
+void checkInputFile(const std::filesystem::path& path, const std::string& what);
+
+// Where an output file may be written: a new name in an existing folder, or a regular file (a
+// link, a folder, a device or a FIFO is refused, so writing never follows or replaces one).
+// Throws InputError(path, ...).
+void checkOutputFile(const std::filesystem::path& path);
+
+}  // namespace candela

@@ -1,0 +1,95 @@
+// A result folder holds the complete previous result or the complete new one, never a mix.
+#include "study/run_outputs.h"
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::path(testing::TempDir()) / "candela_run_outputs" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Everything in `parent` but `keep`: temporaries left behind would show here.
+std::vector<std::string> strays(const fs::path& parent, const std::string& keep) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(parent))
+    if (e.path().filename() != keep) out.push_back(e.path().filename().string());
+  return out;
+}
+
+TEST(RunOutputs, NewResultIsMarkedAndComplete) {
+  const fs::path out = scratch("new") / "out";
+  writeRunOutputs(out, [](const fs::path& dir) {
+    writeFileAtomic(dir / "summary.json", "{\"seed\": 1}\n");
+    writeFileAtomic(dir / "a.csv", "x\n");
+  });
+  EXPECT_EQ(slurp(out / "summary.json"), "{\"seed\": 1}\n");
+  EXPECT_TRUE(fs::exists(out / kResultMarker));
+  EXPECT_TRUE(strays(out.parent_path(), "out").empty());
+}
+
+TEST(RunOutputs, ANewResultReplacesTheOldOneWhole) {
+  const fs::path out = scratch("replace") / "out";
+  writeRunOutputs(out, [](const fs::path& dir) {
+    writeFileAtomic(dir / "summary.json", "seed 1");
+    writeFileAtomic(dir / "old_grid.csv", "seed 1");
+  });
+  writeRunOutputs(out, [](const fs::path& dir) { writeFileAtomic(dir / "summary.json", "seed 2"); });
+  EXPECT_EQ(slurp(out / "summary.json"), "seed 2");
+  EXPECT_FALSE(fs::exists(out / "old_grid.csv"));  // no seed-1 file beside the seed-2 summary
+  EXPECT_TRUE(strays(out.parent_path(), "out").empty());
+}
+
+TEST(RunOutputs, AFailedWriteLeavesThePreviousResult) {
+  const fs::path out = scratch("fail") / "out";
+  writeRunOutputs(out, [](const fs::path& dir) {
+    writeFileAtomic(dir / "summary.json", "seed 1");
+    writeFileAtomic(dir / "report.html", "seed 1");
+  });
+  // The second run writes its summary, then its report fails (a folder in the way).
+  EXPECT_THROW(writeRunOutputs(out,
+                               [](const fs::path& dir) {
+                                 writeFileAtomic(dir / "summary.json", "seed 2");
+                                 fs::create_directories(dir / "report.html");
+                                 writeFileAtomic(dir / "report.html", "seed 2");
+                               }),
+               InputError);
+  EXPECT_EQ(slurp(out / "summary.json"), "seed 1");
+  EXPECT_EQ(slurp(out / "report.html"), "seed 1");
+  EXPECT_TRUE(strays(out.parent_path(), "out").empty());
+}
+
+TEST(RunOutputs, AFolderOfOtherFilesIsRefused) {
+  const fs::path out = scratch("foreign") / "documents";
+  fs::create_directories(out);
+  std::ofstream(out / "thesis.tex") << "years of work";
+  EXPECT_THROW(checkResultFolder(out), InputError);
+  EXPECT_THROW(writeRunOutputs(out, [](const fs::path&) {}), InputError);
+  EXPECT_EQ(slurp(out / "thesis.tex"), "years of work");
+  fs::create_symlink(out, out.parent_path() / "link");
+  EXPECT_THROW(checkResultFolder(out.parent_path() / "link"), InputError);
+  EXPECT_NO_THROW(checkResultFolder(out.parent_path() / "fresh"));
+}
+
+}  // namespace
+}  // namespace candela
