@@ -1,27 +1,13 @@
 #include "engine/irradiance_cache.h"
 
-#include "base/rng.h"
-#include "base/parallel.h"
-#include "engine/sensors.h"
-#include "engine/tracer.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 namespace candela {
-
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Random streams of phase A (record radii) and phase B (record values), apart from the points'.
-constexpr uint64_t kRadiusStream = 0x5000000000000000ULL;
-constexpr uint64_t kRecordStream = 0x6000000000000000ULL;
-// The second level's (two-level cache).
-constexpr uint64_t kRadiusStream2 = 0x5800000000000000ULL;
-constexpr uint64_t kRecordStream2 = 0x7000000000000000ULL;
 
 }  // namespace
 
@@ -194,11 +180,11 @@ void CacheTally::secondDifferenceVariance(const IrradianceCache& cache, size_t e
                                           std::vector<double>& out) const {
   out.assign(static_cast<size_t>(m * n), 0.0);
   if (n < 3) return;
-  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  std::vector<std::pair<uint32_t, size_t>>& keys = keys_;
   keys.clear();
   for (size_t e = 0; e < end; ++e) keys.emplace_back(entries_[e].record, e);
   std::sort(keys.begin(), keys.end());
-  thread_local std::vector<std::pair<int, RecordVector>> cellBeta;  // (cell, β summed)
+  std::vector<std::pair<int, RecordVector>>& cellBeta = cellBeta_;
   for (size_t a = 0; a < keys.size();) {
     size_t b = a;
     cellBeta.clear();
@@ -212,7 +198,7 @@ void CacheTally::secondDifferenceVariance(const IrradianceCache& cache, size_t e
       return v;
     };
     const IrradianceRecord& r = cache.record(keys[a].first);
-    thread_local std::vector<int> centres;
+    std::vector<int>& centres = centres_;
     centres.clear();
     for (const auto& [cell, beta] : cellBeta) {
       const int j = cell / n, k = cell % n;
@@ -235,7 +221,7 @@ double CacheTally::spreadVariance(const IrradianceCache& cache, const std::vecto
   const size_t m = marks.size() - 1;
   if (m < 2) return 0.0;
   // β_qi per (record, sample), summed over a sample's lookups of the same record.
-  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  std::vector<std::pair<uint32_t, size_t>>& keys = keys_;
   keys.clear();
   for (size_t q = 0; q < m; ++q)
     for (size_t e = marks[q]; e < marks[q + 1]; ++e) keys.emplace_back(entries_[e].record, e);
@@ -266,7 +252,7 @@ double CacheTally::spreadVariance(const IrradianceCache& cache, const std::vecto
 
 double CacheTally::recordVariance(const IrradianceCache& cache, double scale, const std::vector<int>* counts) {
   if (!merged_) merge(counts);
-  thread_local std::vector<std::pair<uint32_t, RecordVector>> perRecord;
+  std::vector<std::pair<uint32_t, RecordVector>>& perRecord = perRecord_;
   perRecord.clear();
   for (const Entry& e : entries_) perRecord.emplace_back(e.record, e.beta);
   std::sort(perRecord.begin(), perRecord.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -377,23 +363,25 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
   return id;
 }
 
-bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape) const {
+bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
   bool found = false;
   visit(p, 0.0, [&](uint32_t i) {
-    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape)) found = true;
+    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays)) found = true;
   });
   return found;
 }
 
-bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape) const {
+bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape,
+                                  uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
   // Gathered in the octree's fixed order, so sums are reproducible.
-  thread_local std::vector<std::pair<double, uint32_t>> found;
+  std::vector<std::pair<double, uint32_t>> local;
+  std::vector<std::pair<double, uint32_t>>& found = used ? used->found : local;
   found.clear();
   visit(p, 0.0, [&](uint32_t i) {
     const double w = weight(records_[i], p, n);
-    if (w > k && usable(records_[i], p, n, shape)) found.emplace_back(w, i);
+    if (w > k && usable(records_[i], p, n, shape, rays)) found.emplace_back(w, i);
   });
   if (found.empty()) return false;
   Rgb sum(0.0);
@@ -413,76 +401,6 @@ bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* 
     for (const auto& [w, i] : found) used->weights.emplace_back(i, w / sumW);
   }
   return true;
-}
-
-namespace {
-
-// Phase A over a list of queries, gathered in parallel in batches (gather(i, out): the queries of
-// item i, in order) and walked in order on one thread: an uncovered hit becomes a record whose
-// R_i comes from stream radiusStream + its index.
-void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, uint64_t radiusStream,
-                  const TraceSettings& settings, int threads,
-                  const std::function<void(size_t, std::vector<CacheQuery>&)>& gather) {
-  constexpr size_t kBatch = 64;
-  std::vector<std::vector<CacheQuery>> hits;
-  for (size_t b = 0; b < items; b += kBatch) {
-    const size_t e = std::min(items, b + kBatch);
-    hits.assign(e - b, {});
-    parallelFor(e - b, threads, [&](size_t i) { gather(b + i, hits[i]); });
-    for (const auto& list : hits) {
-      for (const CacheQuery& q : list) {
-        if (cache.covers(q.p, q.n, q.shape)) continue;
-        IrradianceRecord r;
-        r.p = q.p;
-        r.n = q.n;
-        r.skip = q.skip;
-        r.shape = q.shape;
-        Rng rng(settings.seed, radiusStream + cache.size());
-        r.radiusM = tracer.harmonicMeanDistance(q, settings.cache.radiusSamples, rng);
-        cache.add(r);
-      }
-    }
-  }
-}
-
-}  // namespace
-
-IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads) {
-  auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) {
-    return tracer.cacheVisible(p, n, shape, r);
-  };
-  IrradianceCache cache(tracer.scene().bounds(), settings.cache);
-  cache.setVisibility(visibility);
-  // Phase A: first diffuse hits of each point's initial hemisphere cells.
-  placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
-               [&](size_t i, std::vector<CacheQuery>& out) {
-                 tracer.cacheQueries(points[i].position, points[i].normal, i, settings, out);
-               });
-  // Second level: phase A over the first level's record rays (the directions phase B will
-  // trace), then its values, frozen before the first level's values use it. A record ray's
-  // first hit is the second diffuse bounce: only when bounces go that far.
-  const bool twoLevels = settings.cache.levels >= 2 && settings.maxBounces >= 2;
-  std::optional<IrradianceCache> deeper;
-  if (twoLevels) {
-    TraceSettings s2 = settings;
-    s2.cache = deeperLevel(settings.cache);
-    deeper.emplace(tracer.scene().bounds(), s2.cache);
-    deeper->setVisibility(visibility);
-    placeRecords(*deeper, tracer, cache.size(), kRadiusStream2, s2, threads,
-                 [&](size_t i, std::vector<CacheQuery>& out) {
-                   tracer.recordQueries(cache.record(i), kRecordStream + i, settings, out);
-                 });
-    parallelFor(deeper->size(), threads, [&](size_t i) {
-      tracer.computeRecord(deeper->record(i), kRecordStream2 + i, s2, nullptr, 2);
-    });
-  }
-  // Phase B: the values, record i from stream i.
-  const IrradianceCache* d = deeper ? &*deeper : nullptr;
-  parallelFor(cache.size(), threads, [&](size_t i) {
-    tracer.computeRecord(cache.record(i), kRecordStream + i, settings, d, 1);
-  });
-  return cache;
 }
 
 }  // namespace candela
