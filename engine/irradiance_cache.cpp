@@ -24,14 +24,8 @@ std::vector<CellWeights> cellWeights(const HemisphereSamples& h) {
   auto idx = [n](int j, int k) { return j * n + k; };
   const double cellE = kPi / static_cast<double>(m * n);
   for (CellWeights& c : w) c.e = cellE;
-  // Rotational gradient. Cosine-weighted samples estimate ∫ f cos θ dω by π/(MN) Σ f; here
-  // f = L tan θ v(φ), so the sum estimates ∫ L sin θ v dω = ∫ L (n × ω) dω. Rotating n by δ
-  // (n' = n + δ × n) changes E = ∫ L max(0, n·ω) dω by δ·∫ L (n × ω) dω = (n × n')·G_r (the
-  // horizon term vanishes with cos θ). As Ward & Heckbert, tan θ and v are functions of the
-  // cell, not of the jittered sample, so that a uniform L gives exactly 0 (tan θ at the sample
-  // near the horizon is noisy); here their means over the cell: with u = sin² θ, ∫ tan θ du =
-  // F(u) = asin √u − √(u(1 − u)), and the mean of v over [φ_k, φ_k+1] is v(φ_centre) sin(π/N)/(π/N).
-  // (Tan θ at the centre would miss 7 % of the gradient at M = 40: tan θ is singular at the horizon.)
+  // Rotational gradient (Ward & Heckbert 1992): π/(MN) Σ L tan θ v(φ), tan θ and v the cell's
+  // means, F(u) = ∫ tan θ du with u = sin² θ (derivation: docs/estimator.md#rotational-gradient).
   auto F = [](double u) { return std::asin(std::sqrt(u)) - std::sqrt(std::max(0.0, u * (1.0 - u))); };
   const double sinc = n > 1 ? std::sin(kPi / n) / (kPi / n) : 0.0;
   for (int j = 0; j < m; ++j) {
@@ -41,14 +35,9 @@ std::vector<CellWeights> cellWeights(const HemisphereSamples& h) {
       w[idx(j, k)].rot = cellE * meanTan * sinc * Vec3(-std::sin(phi), std::cos(phi), 0.0);
     }
   }
-  // Translational gradient of Ward & Heckbert 1992, as written by Křivánek et al. (2005): moving
-  // the point moves the boundaries between cells over the surfaces seen; each boundary
-  // contributes the radiance difference across it times its projected motion, at the nearer of
-  // the two distances.
-  //   ∇E = Σ_k [ u_k (2π/N) Σ_{j≥1} sin θ_j− cos² θ_j− (L_jk − L_j−1,k) / min(r_jk, r_j−1,k)
-  //            + v_k− Σ_j (sin θ_j+ − sin θ_j−) (L_jk − L_j,k−1) / min(r_jk, r_j,k−1) ]
-  // with sin² θ_j− = j/M, sin² θ_j+ = (j+1)/M, u_k at φ = 2π(k + ½)/N, v_k− at 2πk/N + π/2.
-  // Each boundary term f (L_a − L_b) adds +f to cell a's weight and −f to cell b's.
+  // Translational gradient of Ward & Heckbert 1992, as written by Křivánek et al. (2005): each
+  // boundary term f (L_a − L_b) adds +f to cell a's weight and −f to cell b's (the formula:
+  // docs/estimator.md#translational-gradient).
   if (n < 2) return w;
   for (int k = 0; k < n; ++k) {
     const double phiC = kTwoPi * (k + 0.5) / n, phiB = kTwoPi * k / n;
@@ -132,11 +121,8 @@ void setRecordValue(IrradianceRecord& r, const HemisphereSamples& h, const Frame
     r.gradR[ch] = frame.toWorld(gr[ch]);
     r.gradT[ch] = frame.toWorld(gt[ch]);
   }
-  // Covariance of Q = Σ_c λ_c y_c (y_c the photopic radiance of cell c, the cells independent):
-  // Σ_c σ_c² λ_c λ_cᵀ, with σ_c² estimated locally as stratifiedVariance does globally: d_c²/6
-  // from the second difference along φ (E[d_c²] = curvature² + σ²_c−1 + 4σ²_c + σ²_c+1), or
-  // (y_a − y_b)²/2 for collapsed pairs when there are fewer than three φ strata. For E
-  // (λ = π/(MN)) this is exactly stratifiedVariance.
+  // Covariance of Q = Σ_c λ_c y_c: Σ_c σ_c² λ_c λ_cᵀ, σ_c² estimated locally as stratifiedVariance
+  // does globally (derivation: docs/estimator.md#record-covariance).
   const int m = h.m, n = h.n, cells = m * n;
   std::vector<double> y(cells), s2(cells, 0.0);
   for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);

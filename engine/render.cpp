@@ -383,9 +383,12 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   TraceSettings s = settings;
   s.maxBounces = settings.maxBounces + 1;  // as renderView: the surface seen is the first reflection
   Rng rng(settings.seed, stream);
+  TraceContext ctx(tracer, s, rng);  // one context for the eye's paths, as a pixel's
+  PathState eyeRay;
+  eyeRay.countSources = true;
   Rgb sum(0.0);
   const int n = std::max(1, pathSamples);
-  for (int k = 0; k < n; ++k) sum += tracer.radiance(eye, d, kNoShape, true, rng, s);
+  for (int k = 0; k < n; ++k) sum += pathRadiance(ctx, eye, d, eyeRay);
   return luminanceFromRadiance(sum / static_cast<double>(n));
 }
 
