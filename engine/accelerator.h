@@ -21,6 +21,7 @@ class RayAccelerator {
   virtual ~RayAccelerator() = default;
   // Nearest hit along o + t·dir (dir unit length) with t in (tMin, tMax), ignoring shapes
   // skipA/skipB. t must equal intersectShape's value for that shape.
+  // 7 parameters: the ray, its interval, the result and the two shapes a ray leaving a surface skips.
   virtual bool intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax, RayHit& hit,
                          uint32_t skipA = kNoShape, uint32_t skipB = kNoShape) const = 0;
   // Any hit in (tMin, tMax) ignoring shapes skipA and skipB (shadow rays).

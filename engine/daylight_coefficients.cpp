@@ -51,9 +51,7 @@ DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std
   dc.total.assign(positions.size() * np, 0.0f);
   std::atomic<size_t> done{0};
   parallelFor(positions.size(), threads, [&](size_t i) {
-    thread_local std::vector<double> direct, indirect;
-    direct.assign(np, 0.0);
-    indirect.assign(np, 0.0);
+    std::vector<double> direct(np, 0.0), indirect(np, 0.0);
     tracer.skyCoefficients(positions[i], normals[i], i, settings, patches, direct.data(), indirect.data());
     for (size_t p = 0; p < np; ++p) dc.total[i * np + p] = static_cast<float>(direct[p] + indirect[p]);
     const size_t d = ++done;
@@ -111,8 +109,7 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vect
   std::vector<float> out(positions.size() * ns, 0.0f);
   std::atomic<size_t> done{0};
   parallelFor(positions.size(), threads, [&](size_t i) {
-    thread_local std::vector<double> acc;
-    acc.assign(ns, 0.0);
+    std::vector<double> acc(ns, 0.0);
     tracer.sunCoefficients(positions[i], normals[i], i, settings, sunDirsModel, acc.data());
     for (size_t j = 0; j < ns; ++j) out[i * ns + j] = static_cast<float>(acc[j]);
     const size_t d = ++done;

@@ -72,6 +72,7 @@ std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky);
 // Coefficients of every sensor (point i uses random stream i: results do not depend on the
 // thread count). The tracer's scene must have a sky (see Tracer::skyCoefficients).
 // progress(done) as for computeIrradiance (thread-safe, cheap), may be empty.
+// 7 parameters: the public batch entry point (geometry, sky, settings, threads, progress).
 DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                                  const std::vector<Vec3>& normals, const SkyPatches& patches,
                                                  const TraceSettings& settings, int threads,
@@ -80,12 +81,14 @@ DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std
 // S(s, j) for sun directions j (unit, model frame): mean over `samples` stratified directions
 // in the sun's disc of max(0, cos incidence) × transmittance, sensor-major [s * suns + j].
 // Illuminance from the sun is S × its direct normal illuminance.
+// 7 parameters: the public batch entry point (geometry, suns, sampling, threads).
 std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                          const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
                                          int samples, uint64_t seed, int threads);
 
 // I(s, j) for the suns of a set (unit, model frame), sensor-major [s * suns + j], lux per lux of
 // direct normal illuminance. Point i uses random stream i.
+// 7 parameters: the public batch entry point (geometry, suns, settings, threads, progress).
 std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                            const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
                                            const TraceSettings& settings, int threads,

@@ -1,5 +1,5 @@
 // Fresnel reflection at a smooth boundary between two non-absorbing media, Snell refraction
-// (the `dielectric` material, engine/tracer.cpp) and thin glass (the `glass` material).
+// (the `dielectric` material, engine/materials.cpp) and thin glass (the `glass` material).
 #pragma once
 
 #include "base/math.h"

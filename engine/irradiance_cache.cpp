@@ -1,27 +1,13 @@
 #include "engine/irradiance_cache.h"
 
-#include "base/rng.h"
-#include "base/parallel.h"
-#include "engine/sensors.h"
-#include "engine/tracer.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 namespace candela {
-
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Random streams of phase A (record radii) and phase B (record values), apart from the points'.
-constexpr uint64_t kRadiusStream = 0x5000000000000000ULL;
-constexpr uint64_t kRecordStream = 0x6000000000000000ULL;
-// The second level's (two-level cache).
-constexpr uint64_t kRadiusStream2 = 0x5800000000000000ULL;
-constexpr uint64_t kRecordStream2 = 0x7000000000000000ULL;
 
 }  // namespace
 
@@ -38,14 +24,8 @@ std::vector<CellWeights> cellWeights(const HemisphereSamples& h) {
   auto idx = [n](int j, int k) { return j * n + k; };
   const double cellE = kPi / static_cast<double>(m * n);
   for (CellWeights& c : w) c.e = cellE;
-  // Rotational gradient. Cosine-weighted samples estimate ∫ f cos θ dω by π/(MN) Σ f; here
-  // f = L tan θ v(φ), so the sum estimates ∫ L sin θ v dω = ∫ L (n × ω) dω. Rotating n by δ
-  // (n' = n + δ × n) changes E = ∫ L max(0, n·ω) dω by δ·∫ L (n × ω) dω = (n × n')·G_r (the
-  // horizon term vanishes with cos θ). As Ward & Heckbert, tan θ and v are functions of the
-  // cell, not of the jittered sample, so that a uniform L gives exactly 0 (tan θ at the sample
-  // near the horizon is noisy); here their means over the cell: with u = sin² θ, ∫ tan θ du =
-  // F(u) = asin √u − √(u(1 − u)), and the mean of v over [φ_k, φ_k+1] is v(φ_centre) sin(π/N)/(π/N).
-  // (Tan θ at the centre would miss 7 % of the gradient at M = 40: tan θ is singular at the horizon.)
+  // Rotational gradient (Ward & Heckbert 1992): π/(MN) Σ L tan θ v(φ), tan θ and v the cell's
+  // means, F(u) = ∫ tan θ du with u = sin² θ (derivation: docs/estimator.md#rotational-gradient).
   auto F = [](double u) { return std::asin(std::sqrt(u)) - std::sqrt(std::max(0.0, u * (1.0 - u))); };
   const double sinc = n > 1 ? std::sin(kPi / n) / (kPi / n) : 0.0;
   for (int j = 0; j < m; ++j) {
@@ -55,14 +35,9 @@ std::vector<CellWeights> cellWeights(const HemisphereSamples& h) {
       w[idx(j, k)].rot = cellE * meanTan * sinc * Vec3(-std::sin(phi), std::cos(phi), 0.0);
     }
   }
-  // Translational gradient of Ward & Heckbert 1992, as written by Křivánek et al. (2005): moving
-  // the point moves the boundaries between cells over the surfaces seen; each boundary
-  // contributes the radiance difference across it times its projected motion, at the nearer of
-  // the two distances.
-  //   ∇E = Σ_k [ u_k (2π/N) Σ_{j≥1} sin θ_j− cos² θ_j− (L_jk − L_j−1,k) / min(r_jk, r_j−1,k)
-  //            + v_k− Σ_j (sin θ_j+ − sin θ_j−) (L_jk − L_j,k−1) / min(r_jk, r_j,k−1) ]
-  // with sin² θ_j− = j/M, sin² θ_j+ = (j+1)/M, u_k at φ = 2π(k + ½)/N, v_k− at 2πk/N + π/2.
-  // Each boundary term f (L_a − L_b) adds +f to cell a's weight and −f to cell b's.
+  // Translational gradient of Ward & Heckbert 1992, as written by Křivánek et al. (2005): each
+  // boundary term f (L_a − L_b) adds +f to cell a's weight and −f to cell b's (the formula:
+  // docs/estimator.md#translational-gradient).
   if (n < 2) return w;
   for (int k = 0; k < n; ++k) {
     const double phiC = kTwoPi * (k + 0.5) / n, phiB = kTwoPi * k / n;
@@ -146,11 +121,8 @@ void setRecordValue(IrradianceRecord& r, const HemisphereSamples& h, const Frame
     r.gradR[ch] = frame.toWorld(gr[ch]);
     r.gradT[ch] = frame.toWorld(gt[ch]);
   }
-  // Covariance of Q = Σ_c λ_c y_c (y_c the photopic radiance of cell c, the cells independent):
-  // Σ_c σ_c² λ_c λ_cᵀ, with σ_c² estimated locally as stratifiedVariance does globally: d_c²/6
-  // from the second difference along φ (E[d_c²] = curvature² + σ²_c−1 + 4σ²_c + σ²_c+1), or
-  // (y_a − y_b)²/2 for collapsed pairs when there are fewer than three φ strata. For E
-  // (λ = π/(MN)) this is exactly stratifiedVariance.
+  // Covariance of Q = Σ_c λ_c y_c: Σ_c σ_c² λ_c λ_cᵀ, σ_c² estimated locally as stratifiedVariance
+  // does globally (derivation: docs/estimator.md#record-covariance).
   const int m = h.m, n = h.n, cells = m * n;
   std::vector<double> y(cells), s2(cells, 0.0);
   for (int c = 0; c < cells; ++c) y[c] = photopic(h.radiance[c]);
@@ -194,11 +166,11 @@ void CacheTally::secondDifferenceVariance(const IrradianceCache& cache, size_t e
                                           std::vector<double>& out) const {
   out.assign(static_cast<size_t>(m * n), 0.0);
   if (n < 3) return;
-  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  std::vector<std::pair<uint32_t, size_t>>& keys = keys_;
   keys.clear();
   for (size_t e = 0; e < end; ++e) keys.emplace_back(entries_[e].record, e);
   std::sort(keys.begin(), keys.end());
-  thread_local std::vector<std::pair<int, RecordVector>> cellBeta;  // (cell, β summed)
+  std::vector<std::pair<int, RecordVector>>& cellBeta = cellBeta_;
   for (size_t a = 0; a < keys.size();) {
     size_t b = a;
     cellBeta.clear();
@@ -212,7 +184,7 @@ void CacheTally::secondDifferenceVariance(const IrradianceCache& cache, size_t e
       return v;
     };
     const IrradianceRecord& r = cache.record(keys[a].first);
-    thread_local std::vector<int> centres;
+    std::vector<int>& centres = centres_;
     centres.clear();
     for (const auto& [cell, beta] : cellBeta) {
       const int j = cell / n, k = cell % n;
@@ -235,7 +207,7 @@ double CacheTally::spreadVariance(const IrradianceCache& cache, const std::vecto
   const size_t m = marks.size() - 1;
   if (m < 2) return 0.0;
   // β_qi per (record, sample), summed over a sample's lookups of the same record.
-  thread_local std::vector<std::pair<uint32_t, size_t>> keys;  // (record, entry index)
+  std::vector<std::pair<uint32_t, size_t>>& keys = keys_;
   keys.clear();
   for (size_t q = 0; q < m; ++q)
     for (size_t e = marks[q]; e < marks[q + 1]; ++e) keys.emplace_back(entries_[e].record, e);
@@ -266,7 +238,7 @@ double CacheTally::spreadVariance(const IrradianceCache& cache, const std::vecto
 
 double CacheTally::recordVariance(const IrradianceCache& cache, double scale, const std::vector<int>* counts) {
   if (!merged_) merge(counts);
-  thread_local std::vector<std::pair<uint32_t, RecordVector>> perRecord;
+  std::vector<std::pair<uint32_t, RecordVector>>& perRecord = perRecord_;
   perRecord.clear();
   for (const Entry& e : entries_) perRecord.emplace_back(e.record, e.beta);
   std::sort(perRecord.begin(), perRecord.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -377,23 +349,25 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
   return id;
 }
 
-bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape) const {
+bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
   bool found = false;
   visit(p, 0.0, [&](uint32_t i) {
-    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape)) found = true;
+    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays)) found = true;
   });
   return found;
 }
 
-bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape) const {
+bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape,
+                                  uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
   // Gathered in the octree's fixed order, so sums are reproducible.
-  thread_local std::vector<std::pair<double, uint32_t>> found;
+  std::vector<std::pair<double, uint32_t>> local;
+  std::vector<std::pair<double, uint32_t>>& found = used ? used->found : local;
   found.clear();
   visit(p, 0.0, [&](uint32_t i) {
     const double w = weight(records_[i], p, n);
-    if (w > k && usable(records_[i], p, n, shape)) found.emplace_back(w, i);
+    if (w > k && usable(records_[i], p, n, shape, rays)) found.emplace_back(w, i);
   });
   if (found.empty()) return false;
   Rgb sum(0.0);
@@ -413,76 +387,6 @@ bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* 
     for (const auto& [w, i] : found) used->weights.emplace_back(i, w / sumW);
   }
   return true;
-}
-
-namespace {
-
-// Phase A over a list of queries, gathered in parallel in batches (gather(i, out): the queries of
-// item i, in order) and walked in order on one thread: an uncovered hit becomes a record whose
-// R_i comes from stream radiusStream + its index.
-void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, uint64_t radiusStream,
-                  const TraceSettings& settings, int threads,
-                  const std::function<void(size_t, std::vector<CacheQuery>&)>& gather) {
-  constexpr size_t kBatch = 64;
-  std::vector<std::vector<CacheQuery>> hits;
-  for (size_t b = 0; b < items; b += kBatch) {
-    const size_t e = std::min(items, b + kBatch);
-    hits.assign(e - b, {});
-    parallelFor(e - b, threads, [&](size_t i) { gather(b + i, hits[i]); });
-    for (const auto& list : hits) {
-      for (const CacheQuery& q : list) {
-        if (cache.covers(q.p, q.n, q.shape)) continue;
-        IrradianceRecord r;
-        r.p = q.p;
-        r.n = q.n;
-        r.skip = q.skip;
-        r.shape = q.shape;
-        Rng rng(settings.seed, radiusStream + cache.size());
-        r.radiusM = tracer.harmonicMeanDistance(q, settings.cache.radiusSamples, rng);
-        cache.add(r);
-      }
-    }
-  }
-}
-
-}  // namespace
-
-IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads) {
-  auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r) {
-    return tracer.cacheVisible(p, n, shape, r);
-  };
-  IrradianceCache cache(tracer.scene().bounds(), settings.cache);
-  cache.setVisibility(visibility);
-  // Phase A: first diffuse hits of each point's initial hemisphere cells.
-  placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
-               [&](size_t i, std::vector<CacheQuery>& out) {
-                 tracer.cacheQueries(points[i].position, points[i].normal, i, settings, out);
-               });
-  // Second level: phase A over the first level's record rays (the directions phase B will
-  // trace), then its values, frozen before the first level's values use it. A record ray's
-  // first hit is the second diffuse bounce: only when bounces go that far.
-  const bool twoLevels = settings.cache.levels >= 2 && settings.maxBounces >= 2;
-  std::optional<IrradianceCache> deeper;
-  if (twoLevels) {
-    TraceSettings s2 = settings;
-    s2.cache = deeperLevel(settings.cache);
-    deeper.emplace(tracer.scene().bounds(), s2.cache);
-    deeper->setVisibility(visibility);
-    placeRecords(*deeper, tracer, cache.size(), kRadiusStream2, s2, threads,
-                 [&](size_t i, std::vector<CacheQuery>& out) {
-                   tracer.recordQueries(cache.record(i), kRecordStream + i, settings, out);
-                 });
-    parallelFor(deeper->size(), threads, [&](size_t i) {
-      tracer.computeRecord(deeper->record(i), kRecordStream2 + i, s2, nullptr, 2);
-    });
-  }
-  // Phase B: the values, record i from stream i.
-  const IrradianceCache* d = deeper ? &*deeper : nullptr;
-  parallelFor(cache.size(), threads, [&](size_t i) {
-    tracer.computeRecord(cache.record(i), kRecordStream + i, settings, d, 1);
-  });
-  return cache;
 }
 
 }  // namespace candela

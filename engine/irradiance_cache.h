@@ -8,7 +8,8 @@
 // diffuse surfaces that sensor hemisphere rays meet. It is filled before any point is evaluated,
 // in a fixed order (phase A, sequential: which records exist and their radii; phase B, parallel:
 // their values, each from its own random stream), then frozen; the points are then evaluated in
-// parallel against the frozen cache. Results are therefore identical for any thread count.
+// parallel against the frozen cache (engine/cache_builder.h). Results are therefore identical
+// for any thread count.
 // With two levels (CacheSettings::levels), a second cache serves the first diffuse hits of the
 // first level's record rays, with fewer samples and a looser a (Ward et al. 1988: deeper values
 // matter less, their contribution being attenuated by reflectance); it is filled the same way
@@ -26,9 +27,7 @@
 
 namespace candela {
 
-struct SensorPoint;
 class IrradianceCache;
-class Tracer;
 
 // One cached value: indirect irradiance (W/m², RGB) at point p on a surface of unit normal n.
 struct IrradianceRecord {
@@ -111,7 +110,7 @@ class CacheTally {
   void add(uint32_t record, const RecordVector& beta) { entries_.push_back({cell_, record, beta}); }
   // The photopic radiance the current cell's samples took from the records (interpolated
   // irradiance times the path's weight and ρ/π), summed per cell; cachedValue(c): 0 if none.
-  // Adaptive super-sampling chooses its strata without it (Tracer::irradiance).
+  // Adaptive super-sampling chooses its strata without it (engine/irradiance_estimator.cpp).
   void addCachedValue(double photopicRadiance) {
     if (cell_ >= static_cast<int>(cached_.size())) cached_.resize(cell_ + 1, 0.0);
     cached_[cell_] += photopicRadiance;
@@ -145,6 +144,11 @@ class CacheTally {
   bool merged_ = false;
   std::vector<Entry> entries_;
   std::vector<double> cached_;
+  // Scratch of the variance sums, reused from call to call.
+  mutable std::vector<std::pair<uint32_t, size_t>> keys_;        // (record, entry index)
+  mutable std::vector<std::pair<int, RecordVector>> cellBeta_;   // (cell, β summed)
+  mutable std::vector<int> centres_;
+  std::vector<std::pair<uint32_t, RecordVector>> perRecord_;
 };
 
 
@@ -160,21 +164,24 @@ class IrradianceCache {
   // Adds a record whose value is still to be computed; applies min/max spacing and neighbour
   // clamping (R_i ≤ R_j + |P_i − P_j| both ways). Returns its index.
   uint32_t add(const IrradianceRecord& r);
-  // visible(p, n, shape, record): nothing but p's and the record's own shapes between them.
-  using Visibility = std::function<bool(const Vec3&, const Vec3&, uint32_t, const IrradianceRecord&)>;
+  // visible(p, n, shape, record, rays): nothing but p's and the record's own shapes between them;
+  // the rays it casts are added to `rays`.
+  using Visibility = std::function<bool(const Vec3&, const Vec3&, uint32_t, const IrradianceRecord&, uint64_t&)>;
   void setVisibility(Visibility v) { visible_ = std::move(v); }
 
   // True when some record has w_i(p, n) > 1/a (and is visible from p when checked). `shape`:
-  // the shape p lies on.
-  bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu) const;
-  // What an interpolation used, for error bars: each record with its normalised weight.
+  // the shape p lies on; the visibility rays cast are added to *rays when given.
+  bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu, uint64_t* rays = nullptr) const;
+  // What an interpolation used, for error bars: each record with its normalised weight; and
+  // the records found, scratch reused from call to call.
   struct Used {
     std::vector<std::pair<uint32_t, double>> weights;
+    std::vector<std::pair<double, uint32_t>> found;
   };
   // Gradient-corrected weighted mean (W/m²) of the records with w_i > 1/a; false when none.
-  // Appends to *used when given.
+  // Appends to *used when given; visibility rays as for covers.
   bool interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used = nullptr,
-                   uint32_t shape = 0xffffffffu) const;
+                   uint32_t shape = 0xffffffffu, uint64_t* rays = nullptr) const;
 
   size_t size() const { return records_.size(); }
   IrradianceRecord& record(size_t i) { return records_[i]; }
@@ -197,8 +204,9 @@ class IrradianceCache {
   void visit(const Vec3& p, double extraM, const std::function<void(uint32_t)>& fn) const;
   void visitNode(int32_t node, const Vec3& p, double extraM, const std::function<void(uint32_t)>& fn) const;
 
-  bool usable(const IrradianceRecord& r, const Vec3& p, const Vec3& n, uint32_t shape) const {
-    return !visible_ || !settings_.visibilityCheck || visible_(p, n, shape, r);
+  bool usable(const IrradianceRecord& r, const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
+    uint64_t uncounted = 0;
+    return !visible_ || !settings_.visibilityCheck || visible_(p, n, shape, r, rays ? *rays : uncounted);
   }
 
   CacheSettings settings_;
@@ -206,13 +214,5 @@ class IrradianceCache {
   std::vector<IrradianceRecord> records_;
   std::vector<Node> nodes_;
 };
-
-// Phases A and B: the records the points' first diffuse hits need, with their values.
-// Deterministic: phase A walks the points and their hemisphere cells in order on one thread;
-// phase B computes record i from random stream i on `threads` threads. With two levels, between
-// the two phases: phase A over the first level's record rays gives the second level's records,
-// whose values are computed (phase B) and frozen; the first level's values then use them.
-IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads);
 
 }  // namespace candela

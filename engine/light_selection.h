@@ -2,7 +2,7 @@
 // with probability p_l = 0.9 · w_l / Σw + 0.1 / n (w_l a cheap estimate of its unoccluded
 // irradiance, mixed with a uniform floor so that every light that can contribute has p_l > 0),
 // then one point of it; the estimate f V / p_l is unbiased and costs one shadow ray per sample
-// whatever the number of lights. Sensors keep the per-light ratio estimator (tracer.cpp), which
+// whatever the number of lights. Sensors keep the per-light ratio estimator (integrator_direct.cpp), which
 // is exact for wholly visible sources.
 #pragma once
 
@@ -21,13 +21,15 @@ namespace candela {
 // near the source. Zero only where the light certainly cannot reach: behind a one-sided source.
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
 
-// `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray.
+// `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray; `cdf` is
+// the caller's scratch (TraceContext), reused from call to call.
+// 8 parameters: the scene and point, the sample count and stream, the scratch and the visibility
+// test are separate inputs of one estimate.
 template <class Visibility>
 Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scene, const Vec3& p, const Vec3& n,
-                             int k, Rng& rng, const Visibility& visibility) {
+                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility) {
   const size_t count = lights.size();
   if (count == 0) return Rgb(0.0);
-  thread_local std::vector<double> cdf;
   cdf.resize(count);
   double total = 0.0;
   for (size_t l = 0; l < count; ++l) total += cdf[l] = lightImportance(lights[l], scene, p, n);

@@ -384,4 +384,16 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
   return y * light.areaM2 * (cosL + 0.05) * (cosI + 0.05) / d2;
 }
 
+SampledSources collectSampledSources(const Scene& scene) {
+  SampledSources out;
+  out.lights = collectLights(scene);
+  for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& sh = scene.shapes[i];
+    if (isFlat(sh) && scene.materials[sh.material].type == MaterialType::kMirror) out.mirrors.push_back(i);
+  }
+  out.isMirrorImage.assign(scene.shapes.size(), 0);
+  for (uint32_t i : out.mirrors) out.isMirrorImage[i] = 1;
+  return out;
+}
+
 }  // namespace candela

@@ -28,6 +28,15 @@ struct Light {
 // The explicitly sampled lights of a scene.
 std::vector<Light> collectLights(const Scene& scene);
 
+// What the direct integrator samples (engine/integrator_direct.h): the lights, and the flat
+// mirrors that show each of them as a virtual source.
+struct SampledSources {
+  std::vector<Light> lights;
+  std::vector<uint32_t> mirrors;    // flat mirror shapes
+  std::vector<char> isMirrorImage;  // per shape: 1 for a flat mirror with virtual sources
+};
+SampledSources collectSampledSources(const Scene& scene);
+
 // One sample of a light seen from point p: unit direction to the light, distance (infinity for
 // distant sources) and the unoccluded contribution w such that irradiance = E[w · cos θ · V].
 struct LightSample {
@@ -51,6 +60,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
 
 // Uniform sample of a polygon source restricted to `tris` (its part above a receiver's horizon,
 // triangulated, with cumulative areas `cumulative`).
+// 7 parameters: sampleLight's six with the clipped triangulation in place of the light's own.
 bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3, 3>>& tris,
                           const std::vector<double>& cumulative, const Vec3& p, double u1, double u2,
                           LightSample& out);

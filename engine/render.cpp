@@ -2,6 +2,8 @@
 
 #include "base/rng.h"
 #include "base/parallel.h"
+#include "engine/integrator_path.h"
+#include "engine/trace_context.h"
 
 #include <algorithm>
 #include <atomic>
@@ -59,10 +61,15 @@ Rgb luminaireRadiance(const std::vector<LuminaireSource>& lums, const Vec3& o, c
 }
 
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.
+// 8 parameters: the pixel, its camera, both settings (paths, seen surfaces) and the shared ray count.
 PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, const TraceSettings& s,
                       const TraceSettings& irradianceSettings, const RenderSettings& r,
                       std::atomic<std::size_t>& rays) {
   Rng rng(s.seed, kCameraStreamBase + static_cast<uint64_t>(y) * cam.width() + x);
+  // The pixel's camera rays share one context (its rays, scratch), as Tracer::radiance's own.
+  TraceContext ctx(tracer, s, rng);
+  PathState cameraRay;
+  cameraRay.countSources = true;
   const int n = std::max(1, r.samplesPerPixel);
   const int m = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
   const bool showLums = r.showLuminaires && !tracer.scene().luminaires.empty();
@@ -107,7 +114,7 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
         done = true;
       }
     }
-    if (!done) value = tracer.radiance(cam.position(), *dir, kNoShape, true, rng, s);
+    if (!done) value = pathRadiance(ctx, cam.position(), *dir, cameraRay);
     sum += value;
     const double l = luminanceFromRadiance(value);
     y1 += l;
@@ -145,6 +152,8 @@ bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(li
 
 }  // namespace
 
+// About 125 lines: the coarse pass and the refinement passes share the lattice, the image and the
+// trace/store lambdas; a split would pass all of them.
 Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render, const RenderProgress& progress) {
   const Camera cam(view);
@@ -374,9 +383,12 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   TraceSettings s = settings;
   s.maxBounces = settings.maxBounces + 1;  // as renderView: the surface seen is the first reflection
   Rng rng(settings.seed, stream);
+  TraceContext ctx(tracer, s, rng);  // one context for the eye's paths, as a pixel's
+  PathState eyeRay;
+  eyeRay.countSources = true;
   Rgb sum(0.0);
   const int n = std::max(1, pathSamples);
-  for (int k = 0; k < n; ++k) sum += tracer.radiance(eye, d, kNoShape, true, rng, s);
+  for (int k = 0; k < n; ++k) sum += pathRadiance(ctx, eye, d, eyeRay);
   return luminanceFromRadiance(sum / static_cast<double>(n));
 }
 

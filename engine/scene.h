@@ -89,6 +89,7 @@ struct Scene {
                      const std::string& name = {});
   uint32_t addRing(const Vec3& centre, const Vec3& normal, double innerM, double outerM, uint32_t material,
                    const std::string& name = {});
+  // 7 parameters: a cone's geometry (two ends, two radii, side), material and name.
   uint32_t addCone(const Vec3& a, const Vec3& b, double ra, double rb, uint32_t material, bool inward = false,
                    const std::string& name = {});
   void addDistant(const Vec3& dir, double fullAngleDeg, uint32_t material, const std::string& name = {});

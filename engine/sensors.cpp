@@ -1,6 +1,6 @@
 #include "engine/sensors.h"
 
-#include "engine/irradiance_cache.h"
+#include "engine/cache_builder.h"
 #include "base/parallel.h"
 
 #include <algorithm>

@@ -24,6 +24,7 @@ bool insidePolygon2D(const Vec2* v, uint32_t n, double u, double w) {
 }
 
 // Roots of a t² + 2 b t + c = 0 in (tMin, tMax), nearest first; numerically stable form.
+// 7 parameters: the three coefficients, the interval and the two roots out.
 bool nearestQuadraticRoot(double a, double b, double c, double tMin, double tMax, double& t,
                           double* other = nullptr) {
   if (a == 0.0) {

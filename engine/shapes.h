@@ -58,11 +58,17 @@ struct VertexStore {
 // Nearest intersection of the ray o + t·dir with the shape for t in (tMin, tMax); dir need not be
 // unit length for polygons but must be for spheres/cones (the integrator always passes unit
 // vectors). Returns true and sets t on a hit.
+// 7 parameters: a ray query's own (shape, vertices, ray, interval, result).
 bool intersectShape(const Shape& s, const VertexStore& vs, const Vec3& o, const Vec3& dir, double tMin,
                     double tMax, double& t);
 
 // Unit normal of the shape at a point on it, facing the shape's front (Radiance orientation).
 Vec3 shapeNormal(const Shape& s, const Vec3& p);
+// Triangles, polygons and rings: a ray leaving one cannot meet it again (so it is skipped), and a
+// flat mirror among them has virtual sources.
+inline bool isFlat(const Shape& s) {
+  return s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon || s.type == ShapeType::kRing;
+}
 
 // Axis-aligned bounds of the shape.
 Box shapeBounds(const Shape& s, const VertexStore& vs);

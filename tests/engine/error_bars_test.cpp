@@ -4,7 +4,7 @@
 // a binomial standard deviation √(0.68·0.32/N) = 2.3 % at N = 400; the path tracer's lower
 // bound is 4 of those below 68 % (error bars too small: the dangerous side). Stratified
 // sampling has no unbiased variance estimate, so the path tracer's are upper bounds
-// (engine/tracer.cpp, stratifiedVariance); its upper bound, 90 %, says they are not grossly
+// (engine/irradiance_estimator.cpp, stratifiedVariance); its upper bound, 90 %, says they are not grossly
 // inflated (a bar 1.6× too wide covers 95 %). Estimates whose variance is unbiasedly estimated
 // (the cache's records; strata refined by adaptive super-sampling, which carry the variance
 // under small sky openings) are held to 68 % ± 3 binomial standard deviations both ways

@@ -1,0 +1,222 @@
+#include "engine/cache_builder.h"
+
+#include "base/parallel.h"
+#include "base/rng.h"
+#include "engine/integrator_path.h"
+#include "engine/irradiance_estimator.h"
+#include "engine/materials.h"
+#include "engine/sampling.h"
+#include "engine/sensors.h"
+#include "engine/trace_context.h"
+#include "engine/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+
+namespace candela {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Random streams of phase A (record radii) and phase B (record values), apart from the points'.
+constexpr uint64_t kRadiusStream = 0x5000000000000000ULL;
+constexpr uint64_t kRecordStream = 0x6000000000000000ULL;
+// The second level's (two-level cache).
+constexpr uint64_t kRadiusStream2 = 0x5800000000000000ULL;
+constexpr uint64_t kRecordStream2 = 0x7000000000000000ULL;
+
+// A record's hemisphere directions come from a stream of their own (its value stream + this),
+// so that the second level's phase A (recordQueries) traces exactly the directions phase B will.
+constexpr uint64_t kRecordDirectionOffset = 1ULL << 56;
+
+int recordThetaStrata(const TraceSettings& s) {
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(s.cache.recordSamples / kPi))));
+}
+int recordPhiStrata(const TraceSettings& s) { return std::max(2, s.cache.recordSamples / recordThetaStrata(s)); }
+
+// The cacheable first hits of mTheta × nPhi stratified cosine rays from o (the strata in order,
+// jittered by dirRng), appended to out; shared by cacheQueries and recordQueries.
+// 8 parameters: the ray fan (origin, frame, strata, skip, stream) and the output are separate inputs.
+void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& frame, int mTheta, int nPhi,
+                            uint32_t skip, Rng& dirRng, std::vector<CacheQuery>& out) {
+  const Scene& scene = tracer.scene();
+  uint64_t rays = 0;
+  for (int c = 0; c < mTheta * nPhi; ++c) {
+    const int j = c / nPhi, k = c % nPhi;
+    const double u1 = (j + dirRng.uniform()) / mTheta;
+    const double u2 = (k + dirRng.uniform()) / nPhi;
+    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    RayHit h;
+    ++rays;
+    if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
+    const Shape& shape = scene.shapes[h.shape];
+    const Material* m = &scene.materials[shape.material];
+    if (m->type == MaterialType::kIllum) {
+      if (m->alternate < 0) continue;
+      m = &scene.materials[m->alternate];
+    }
+    if (!isCacheable(*m)) continue;
+    const Vec3 x = o + h.t * dir;
+    const Vec3 ng = shapeNormal(shape, x);
+    out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});
+  }
+  tracer.addRays(rays);
+}
+
+// Phase A over a list of queries, gathered in parallel in batches (gather(i, out): the queries of
+// item i, in order) and walked in order on one thread: an uncovered hit becomes a record whose
+// R_i comes from stream radiusStream + its index.
+// 7 parameters: the cache, the tracer, the item list (count and gather) and the stream, settings
+// and threads of the phase are separate inputs.
+void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, uint64_t radiusStream,
+                  const TraceSettings& settings, int threads,
+                  const std::function<void(size_t, std::vector<CacheQuery>&)>& gather) {
+  constexpr size_t kBatch = 64;
+  std::vector<std::vector<CacheQuery>> hits;
+  uint64_t rays = 0;  // the coverage tests' visibility rays
+  for (size_t b = 0; b < items; b += kBatch) {
+    const size_t e = std::min(items, b + kBatch);
+    hits.assign(e - b, {});
+    parallelFor(e - b, threads, [&](size_t i) { gather(b + i, hits[i]); });
+    for (const auto& list : hits) {
+      for (const CacheQuery& q : list) {
+        if (cache.covers(q.p, q.n, q.shape, &rays)) continue;
+        IrradianceRecord r;
+        r.p = q.p;
+        r.n = q.n;
+        r.skip = q.skip;
+        r.shape = q.shape;
+        Rng rng(settings.seed, radiusStream + cache.size());
+        r.radiusM = harmonicMeanDistance(tracer, q, settings.cache.radiusSamples, rng);
+        cache.add(r);
+      }
+    }
+  }
+  tracer.addRays(rays);
+}
+
+}  // namespace
+
+void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                  std::vector<CacheQuery>& out) {
+  if (s.maxBounces < 1) return;
+  Rng dirRng(s.seed, kDirectionStream + pointIndex);
+  hemisphereCacheQueries(tracer, p, Frame::fromNormal(n), hemisphereThetaStrata(s), hemispherePhiStrata(s),
+                         kNoShape, dirRng, out);
+}
+
+bool cacheVisible(const Tracer& tracer, const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
+                  uint64_t& rays) {
+  const Vec3 a = p + Tracer::originOffset(p) * n, b = r.p + Tracer::originOffset(r.p) * r.n;
+  const Vec3 d = b - a;
+  const double len = glm::length(d);
+  if (len <= 0.0) return true;
+  // Both endpoints' own shapes are skipped: a chord of a convex surface passes inside it.
+  ++rays;
+  return !tracer.accelerator().occluded(a, d / len, 0.0, len, shape, r.shape);
+}
+
+double harmonicMeanDistance(const Tracer& tracer, const CacheQuery& q, int rays, Rng& rng) {
+  const Strata2D strata(std::max(1, rays), 1.0 / kPi);
+  const Frame frame = Frame::fromNormal(q.n);
+  const Vec3 o = q.p + Tracer::originOffset(q.p) * q.n;
+  double inv = 0.0;
+  uint64_t cast = 0;
+  for (int i = 0; i < strata.size(); ++i) {
+    const Vec2 u = strata.sample(i, rng);
+    RayHit h;
+    ++cast;
+    if (tracer.accelerator().intersect(o, frame.toWorld(sampleCosineHemisphere(u.x, u.y)), 0.0, kInf, h, q.skip))
+      inv += 1.0 / std::max(h.t, 1e-9);
+  }
+  tracer.addRays(cast);
+  return inv > 0.0 ? strata.size() / inv : kInf;
+}
+
+void recordQueries(const Tracer& tracer, const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                   std::vector<CacheQuery>& out) {
+  Rng dirRng(s.seed, stream + kRecordDirectionOffset);
+  hemisphereCacheQueries(tracer, r.p + Tracer::originOffset(r.p) * r.n, Frame::fromNormal(r.n),
+                         recordThetaStrata(s), recordPhiStrata(s), r.skip, dirRng, out);
+}
+
+void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                   const IrradianceCache* deeper, int level) {
+  Rng rng(s.seed, stream), dirRng(s.seed, stream + kRecordDirectionOffset);
+  TraceContext ctx(tracer, s, rng);
+  HemisphereSamples h;
+  h.m = recordThetaStrata(s);
+  h.n = recordPhiStrata(s);
+  const int cells = h.m * h.n;
+  h.radiance.resize(cells);
+  h.distanceM.resize(cells);
+  h.local.resize(cells);
+  const Frame frame = Frame::fromNormal(r.n);
+  const Vec3 o = r.p + Tracer::originOffset(r.p) * r.n;
+  CacheUse use;
+  use.cache = deeper;
+  use.depth = level;
+  for (int c = 0; c < cells; ++c) {
+    const int j = c / h.n, k = c % h.n;
+    const double u1 = (j + dirRng.uniform()) / h.m;
+    const double u2 = (k + dirRng.uniform()) / h.n;
+    h.local[c] = sampleCosineHemisphere(u1, u2);
+    const Vec3 dir = frame.toWorld(h.local[c]);
+    // Everything but the sampled sources (which every lookup samples itself): sky and glow seen,
+    // and light reflected by deeper bounces: from the second-level cache at the rays' first
+    // diffuse hits when there is one, path traced with Russian roulette by albedo beyond.
+    use.tally.setCell(c);
+    PathState st;
+    st.skip = r.skip;
+    st.diffuse = level;
+    st.misCosPdf = h.local[c].z * kInvPi;
+    h.radiance[c] = pathRadiance(ctx, o, dir, st, deeper ? &use : nullptr, &h.distanceM[c]);
+  }
+  setRecordValue(r, h, frame);
+  // The second level's records, shared by this record's cells and by other records, give
+  // Var = Σ_j B_jᵀ C_j B_j; kept apart (sharedSd) because other records share them.
+  r.sharedSd = deeper ? std::sqrt(use.tally.recordVariance(*deeper, kPi / static_cast<double>(cells), nullptr)) : 0.0;
+}
+
+IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                     const TraceSettings& settings, int threads) {
+  auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
+                              uint64_t& rays) { return cacheVisible(tracer, p, n, shape, r, rays); };
+  IrradianceCache cache(tracer.scene().bounds(), settings.cache);
+  cache.setVisibility(visibility);
+  // Phase A: first diffuse hits of each point's initial hemisphere cells.
+  placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
+               [&](size_t i, std::vector<CacheQuery>& out) {
+                 cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
+               });
+  // Second level: phase A over the first level's record rays (the directions phase B will
+  // trace), then its values, frozen before the first level's values use it. A record ray's
+  // first hit is the second diffuse bounce: only when bounces go that far.
+  const bool twoLevels = settings.cache.levels >= 2 && settings.maxBounces >= 2;
+  std::optional<IrradianceCache> deeper;
+  if (twoLevels) {
+    TraceSettings s2 = settings;
+    s2.cache = deeperLevel(settings.cache);
+    deeper.emplace(tracer.scene().bounds(), s2.cache);
+    deeper->setVisibility(visibility);
+    placeRecords(*deeper, tracer, cache.size(), kRadiusStream2, s2, threads,
+                 [&](size_t i, std::vector<CacheQuery>& out) {
+                   recordQueries(tracer, cache.record(i), kRecordStream + i, settings, out);
+                 });
+    parallelFor(deeper->size(), threads, [&](size_t i) {
+      computeRecord(tracer, deeper->record(i), kRecordStream2 + i, s2, nullptr, 2);
+    });
+  }
+  // Phase B: the values, record i from stream i.
+  const IrradianceCache* d = deeper ? &*deeper : nullptr;
+  parallelFor(cache.size(), threads, [&](size_t i) {
+    computeRecord(tracer, cache.record(i), kRecordStream + i, settings, d, 1);
+  });
+  return cache;
+}
+
+}  // namespace candela

@@ -1,0 +1,53 @@
+// Filling Ward's irradiance cache (engine/irradiance_cache.h) before any point is evaluated:
+// phase A walks the points' hemisphere rays in a fixed order on one thread and places a record
+// at every first diffuse hit no record covers (its radius from the harmonic mean distance);
+// phase B computes the records' values in parallel, record i from its own random stream. With
+// two levels, phase A over the first level's record rays places the second level, whose values
+// are computed and frozen before the first level's.
+#pragma once
+
+#include "engine/irradiance_cache.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace candela {
+
+struct SensorPoint;
+class Rng;
+class Tracer;
+
+// Phases A and B: the records the points' first diffuse hits need, with their values.
+// Deterministic: phase A walks the points and their hemisphere cells in order on one thread;
+// phase B computes record i from random stream i on `threads` threads. With two levels, between
+// the two phases: phase A over the first level's record rays gives the second level's records,
+// whose values are computed (phase B) and frozen; the first level's values then use them.
+IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                     const TraceSettings& settings, int threads);
+
+// The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that
+// Tracer::irradiance(p, n, pointIndex, s, cache) will trace (same directions), appended to out.
+// 6 parameters: the sensor estimate's own inputs plus the output list.
+void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                  std::vector<CacheQuery>& out);
+// Harmonic mean distance (m) to the surfaces seen from q over `rays` stratified cosine rays
+// (Ward et al. 1988's R_i); infinity when every ray escapes.
+double harmonicMeanDistance(const Tracer& tracer, const CacheQuery& q, int rays, Rng& rng);
+// Fills r.e, its gradients and variance from s.cache.recordSamples hemisphere rays, random
+// stream `stream`; r lies at diffuse bounce `level` (1: a sensor ray's first hit). The first
+// diffuse hits of its rays take their indirect irradiance from `deeper` when given (a frozen
+// second-level cache); beyond, bounces are path traced with Russian roulette (the closure).
+// 6 parameters: the record, its stream and level, the settings and the deeper cache are all inputs.
+void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                   const IrradianceCache* deeper = nullptr, int level = 1);
+// The first diffuse hits, on surfaces the cache serves, of the hemisphere rays that
+// computeRecord(tracer, r, stream, s, ...) will trace (same directions), appended to out.
+void recordQueries(const Tracer& tracer, const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
+                   std::vector<CacheQuery>& out);
+// Whether a record may serve point p (normal n) on `shape`: the segment between the two
+// points, each lifted off its surface, meets no shape but theirs. Its ray is added to `rays`.
+// 6 parameters: IrradianceCache::Visibility's five and the tracer.
+bool cacheVisible(const Tracer& tracer, const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
+                  uint64_t& rays);
+
+}  // namespace candela

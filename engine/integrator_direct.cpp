@@ -1,0 +1,256 @@
+#include "engine/integrator_direct.h"
+
+#include "engine/light_selection.h"
+#include "engine/sampling.h"
+#include "engine/sky_tally.h"
+#include "photometry/site.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace candela {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Variance of a sum of stratified terms z, strata collapsed in pairs (Cochran, "Sampling
+// Techniques", 5A.12; derivation: docs/estimator.md#ratio-estimator).
+double collapsedPairs(const std::vector<double>& z, int kk) {
+  double v = 0.0;
+  for (int i = 0; i + 1 < kk; i += 2) v += (z[i] - z[i + 1]) * (z[i] - z[i + 1]);
+  if (kk % 2 == 1) v += 2.0 * z[kk - 1] * z[kk - 1];  // an unpaired stratum: as if iid, doubled
+  return v;
+}
+
+// One sampled source's irradiance at `at` (at.skip unused), k stratified samples;
+// visibility(ls, lightShape) gives the RGB transmittance of sample ls (a shadow ray, or the path
+// through a mirror). With a closed form for the unoccluded irradiance E_u, the samples only
+// estimate the visible fraction: E = E_u · Σ f V / Σ f, f = w cos ι. This ratio estimator is
+// exact when the source is wholly visible, exactly 0 when wholly hidden (no light leaks), and its
+// bias falls as 1/k. Without a closed form: E = mean(f V).
+// About 90 lines: the sampling loop and the variance share its per-sample sums; split, they
+// would pass a dozen of them.
+template <class Visibility>
+Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int k, double* variance,
+                  const Visibility& visibility) {
+  const Scene& scene = ctx.tracer.scene();
+  const Vec3& p = at.p;
+  const Vec3& n = at.n;
+  LightScratch& sc = ctx.light;
+  const Strata2D strata(k);
+  Rgb exact(0.0);
+  const bool haveExact = unoccludedIrradiance(light, scene, p, n, exact, &sc.clipped);
+  if (haveExact && photopic(exact) <= 0.0) return Rgb(0.0);  // the source cannot reach this side
+  // Polygon sources are sampled over their part above the receiver's horizon, so that every
+  // sample tells about visibility.
+  const bool clippedPolygon = haveExact && light.kind == Light::Kind::kArea && !light.outline.empty();
+  if (clippedPolygon) {
+    sc.tris = triangulatePolygon(sc.clipped, scene.shapes[light.shape].n);
+    sc.cumulative.clear();
+    double acc = 0.0;
+    for (const auto& t : sc.tris) {
+      acc += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+      sc.cumulative.push_back(acc);
+    }
+  }
+  Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
+  double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
+  const uint32_t lightShape = light.kind == Light::Kind::kArea ? light.shape : kNoShape;
+  // A far-field luminaire is one point: one shadow ray says all there is.
+  const bool point = light.kind == Light::Kind::kLuminaire && haveExact;
+  const int kk = point ? 1 : k;
+  // Per-stratum terms for the variance (zero where a sample tells nothing).
+  if (variance) {
+    sc.zRatio.assign(kk, 0.0);
+    sc.zRest.assign(kk, 0.0);
+    sc.fyS.assign(kk, 0.0);
+    sc.vyS.assign(kk, 0.0);
+  }
+  for (int i = 0; i < kk; ++i) {
+    const Vec2 u = strata.sample(i, ctx.rng);
+    LightSample ls;
+    const bool ok = clippedPolygon ? sampleClippedPolygon(light, sc.tris, sc.cumulative, p, u.x, u.y, ls)
+                                   : sampleLight(light, scene, p, u.x, u.y, ls);
+    if (!ok) continue;
+    const double cosI = glm::dot(n, ls.dir);
+    if (cosI <= 0.0) continue;
+    const Rgb f = ls.weight * cosI;
+    const Rgb v = visibility(ls, lightShape);
+    const double c = haveExact ? 1.0 : 0.0;
+    sumFvc += f * v * c;
+    sumFc += f * c;
+    sumRest += f * v * (1.0 - c);
+    const double fy = photopic(f) * c, vy = photopic(f * v) / std::max(photopic(f), 1e-300);
+    yF2 += fy * fy;
+    yF2V += fy * fy * vy;
+    yF2V2 += fy * fy * vy * vy;
+    yFc += fy;
+    const double ry = photopic(f * v) * (1.0 - c);
+    yRest += ry;
+    yRest2 += ry * ry;
+    if (variance) {
+      sc.fyS[i] = fy;
+      sc.vyS[i] = vy;
+      sc.zRest[i] = ry;
+    }
+  }
+  Rgb e = sumRest / static_cast<double>(kk);
+  if (haveExact) {
+    // No informative sample (numerically degenerate): claim nothing rather than leak light.
+    for (int ch = 0; ch < 3; ++ch) e[ch] += sumFc[ch] > 0.0 ? exact[ch] * sumFvc[ch] / sumFc[ch] : 0.0;
+  }
+  if (variance && kk > 1) {
+    // Delta-method variance of the ratio, strata collapsed in pairs
+    // (derivation: docs/estimator.md#ratio-estimator).
+    if (yFc > 0.0) {
+      const double ratio = (yF2V > 0.0 || yF2 > 0.0) ? photopic(sumFvc) / yFc : 0.0;
+      for (int i = 0; i < kk; ++i) sc.zRatio[i] = sc.fyS[i] * (sc.vyS[i] - ratio);
+      *variance += photopic(exact) * photopic(exact) * collapsedPairs(sc.zRatio, kk) / (yFc * yFc);
+    }
+    if (yRest > 0.0) *variance += collapsedPairs(sc.zRest, kk) / (static_cast<double>(kk) * kk);
+  }
+
+  return e;
+}
+
+// Irradiance from the images of the sampled sources in flat mirrors (virtual sources).
+Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance) {
+  // A flat mirror shows each source as an image behind it: the light reaching p by one
+  // reflection is the light the source would give at p's mirror image p' (normal n'), passed
+  // through the mirror's outline and reflectance. So the source is sampled from p' (with the
+  // closed form there, as a ratio estimator), and each sample's visibility is the real path:
+  // p to the mirror (which must be the first surface met) and on to the source.
+  const Scene& scene = ctx.tracer.scene();
+  const Vec3& p = at.p;
+  const Vec3& n = at.n;
+  const uint32_t skip = at.skip;
+  Rgb total(0.0);
+  for (uint32_t ms : ctx.tracer.sources().mirrors) {
+    const Shape& mirror = scene.shapes[ms];
+    const Vec3 nm = mirror.n, q = mirror.a;
+    const double dp = glm::dot(p - q, nm);
+    if (std::abs(dp) < 1e-12) continue;
+    const Vec3 pi = p - 2.0 * dp * nm, ni = n - 2.0 * glm::dot(n, nm) * nm;
+    const Rgb colour = scene.materials[mirror.material].color;
+    const Vec3 side = dp > 0.0 ? nm : -nm;
+    const Receiver image{pi, ni, skip};
+    for (const Light& light : ctx.tracer.sources().lights) {
+      if (light.kind == Light::Kind::kArea && light.shape == ms) continue;
+      total += colour * lightEstimate(ctx, light, image, k, variance, [&](const LightSample& ls, uint32_t lightShape) {
+        const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
+        // Both legs pass transmitting surfaces (glass, trans, illum without alternate) as shadow
+        // rays do, so that a path meeting them before the mirror does not count the image again
+        // (pathRadiance: the first mirror after a diffuse vertex is an image).
+        double tm = 0.0;
+        if (!intersectShape(mirror, scene.vertices, p, dir, 0.0, ls.distance, tm)) return Rgb(0.0);
+        const Vec3 x = p + tm * dir;
+        const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - tm) * (1.0 - 1e-9);
+        if (rest <= 0.0) return Rgb(0.0);
+        const Rgb toMirror = ctx.transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms);
+        if (photopic(toMirror) <= 0.0) return Rgb(0.0);
+        return toMirror * ctx.transmittance(x + Tracer::originOffset(x) * side, ls.dir, rest, ms, lightShape);
+      });
+    }
+  }
+  return total;
+}
+
+// Sun coefficients (Tracer::sunCoefficients): each sun's light at a path vertex, one shadow ray
+// (a point: its disc matters for the direct sun only).
+void tallySuns(TraceContext& ctx, const Receiver& at) {
+  SkyTally& tally = *ctx.tally;
+  const std::vector<Vec3>& suns = *tally.suns;
+  for (size_t j = 0; j < suns.size(); ++j) {
+    const double cosI = glm::dot(at.n, suns[j]);
+    if (cosI <= 0.0) continue;
+    tally.sunIndirect[j] += photopic(tally.outer * ctx.transmittance(at.p, suns[j], kInf, at.skip, kNoShape)) * cosI;
+  }
+}
+
+// The sky by importance sampling of its luminance, MIS-weighted against cosine sampling.
+Rgb skyIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance, double misRatio) {
+  const SkyDome& sky = *ctx.tracer.scene().sky;
+  SkyTally* tally = ctx.tally;
+  const bool atPathVertex = variance == nullptr;
+  const Strata2D strata(k);
+  Rgb sum(0.0);
+  double y1 = 0.0, y2 = 0.0;
+  for (int i = 0; i < k; ++i) {
+    const Vec2 u = strata.sample(i, ctx.rng);
+    double ps = 0.0;
+    const Vec3 t = sky.model->sample(u.x, u.y, &ps);
+    const Vec3 dir = trueToModel(t, sky.northDeg);
+    const double cosI = glm::dot(at.n, dir);
+    if (cosI <= 0.0 || ps <= 0.0) continue;
+    const double pc = cosI * kInvPi / misRatio;
+    const double w = ps * ps / (ps * ps + pc * pc);
+    const Rgb v = ctx.transmittance(at.p, dir, kInf, at.skip, kNoShape);
+    const Rgb g = v * (w * sky.model->luminance(t) / kLumensPerWatt * cosI / ps);
+    if (tally && tally->patches && !(tally->directApart && !atPathVertex))
+      tallySky(*tally, dir, v * (w * cosI / ps / k), !atPathVertex);
+    sum += g;
+    y1 += photopic(g);
+    y2 += photopic(g) * photopic(g);
+  }
+  if (variance && k > 1) {
+    const double mean = y1 / k;
+    *variance += std::max(0.0, y2 / k - mean * mean) / (k - 1);
+  }
+  return sum / static_cast<double>(k);
+}
+
+}  // namespace
+
+Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance, double misRatio) {
+  const Tracer& tracer = ctx.tracer;
+  const Scene& scene = tracer.scene();
+  const std::vector<Light>& lights = tracer.sources().lights;
+  Rgb total(0.0);
+  // Path vertices (no variance wanted): one light chosen per sample (engine/light_selection.h).
+  const bool atPathVertex = variance == nullptr;
+  if (atPathVertex) {
+    total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf,
+                                     [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
+                                       return ctx.transmittance(o, dir, tMax, at.skip, lightShape);
+                                     });
+  }
+  for (const Light& light : lights) {
+    if (atPathVertex) break;
+    total += lightEstimate(ctx, light, at, k, variance, [&](const LightSample& ls, uint32_t lightShape) {
+      const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
+      return ctx.transmittance(at.p, ls.dir, tMax, at.skip, lightShape);
+    });
+  }
+  // Sources seen in flat mirrors, as virtual sources.
+  if (!tracer.sources().mirrors.empty()) total += mirrorIrradiance(ctx, at, k, variance);
+  if (ctx.tally && ctx.tally->suns && atPathVertex) tallySuns(ctx, at);
+  if (scene.sky && !(ctx.tally && !ctx.tally->patches)) total += skyIrradiance(ctx, at, k, variance, misRatio);
+  return total;
+}
+
+Rgb distantRadiance(const Scene& scene, const Vec3& dir, bool countSources, double misCosPdf, double misRatio) {
+  // Where sources at infinity overlap, the smallest one is seen (it lies in front of the larger,
+  // as the sun in front of the sky).
+  const DistantSource* seen = nullptr;
+  for (const DistantSource& d : scene.distant)
+    if (glm::dot(dir, d.direction) >= d.cosHalfAngle && (!seen || d.solidAngleSr < seen->solidAngleSr)) seen = &d;
+  if (seen) {
+    const Material& m = scene.materials[seen->material];
+    if (m.type == MaterialType::kGlow) return m.color;
+    return countSources ? m.color : Rgb(0.0);
+  }
+  if (!scene.sky) return Rgb(0.0);
+  const SkyDome& sky = *scene.sky;
+  if (dir.z <= 0.0) return Rgb(sky.groundLuminanceCdM2 / kLumensPerWatt);
+  const Vec3 t = modelToTrue(dir, sky.northDeg);
+  double w = 1.0;
+  if (misCosPdf > 0.0) {
+    const double ps = misRatio * sky.model->pdf(t);
+    w = misCosPdf * misCosPdf / (misCosPdf * misCosPdf + ps * ps);
+  }
+  return Rgb(w * sky.model->luminance(t) / kLumensPerWatt);
+}
+
+}  // namespace candela

@@ -1,0 +1,271 @@
+#include "engine/integrator_path.h"
+
+#include "engine/integrator_direct.h"
+#include "engine/materials.h"
+#include "engine/sampling.h"
+#include "engine/sky_tally.h"
+#include "photometry/site.h"
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+
+namespace candela {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A surface met by a path's ray.
+struct Hit {
+  Vec3 x{0.0};       // the point
+  Vec3 inDir{0.0};   // direction of the ray that arrived
+  Vec3 ng{0.0};      // geometric normal
+  Vec3 nf{0.0};      // normal facing the incoming ray
+  bool front = true; // the ray arrived on the side of ng
+  double off = 0.0;  // origin offset (Tracer::originOffset)
+  uint32_t flatSkip = kNoShape;  // the shape when flat (rays leaving it skip it), or kNoShape
+  uint32_t shape = kNoShape;
+  double t = 0.0;    // distance travelled to it, m
+};
+
+// The ray being followed through specular and pass-through events.
+struct Ray {
+  Vec3 o{0.0}, d{0.0};
+  Rgb beta{1.0};           // throughput so far
+  bool reflected = false;  // a specular reflection on the way (for the sky tally's direct part)
+};
+
+Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st);
+
+// The radiance of sky and distant sources seen by a ray escaping along d; tallies it as the sky
+// tally asks (MIS-weighted as distantRadiance weighs it, the ground always in full).
+Rgb escapeRadiance(TraceContext& ctx, const Vec3& d, const PathState& st, const Ray& ray) {
+  const Scene& scene = ctx.tracer.scene();
+  SkyTally* tally = ctx.tally;
+  if (tally && tally->patches && scene.sky && !(tally->directApart && st.diffuse == 0 && !ray.reflected)) {
+    double w = 1.0;
+    if (d.z > 0.0 && st.misCosPdf > 0.0) {
+      const double ps = st.misRatio * scene.sky->model->pdf(modelToTrue(d, scene.sky->northDeg));
+      w = st.misCosPdf * st.misCosPdf / (st.misCosPdf * st.misCosPdf + ps * ps);
+    }
+    tallySky(*tally, d, ray.beta * w, st.diffuse == 0 && !ray.reflected);
+  }
+  return distantRadiance(scene, d, st.countSources, st.misCosPdf, st.misRatio);
+}
+
+// Follows a mirror, thin glass or dielectric at v: the ray and the path's state after it; false
+// when the path ends (glass that neither transmits nor reflects).
+bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray, PathState& st) {
+  switch (m.type) {
+    case MaterialType::kMirror:
+      st.misCosPdf = 0.0;  // the sky seen in a mirror is not sampled directly
+      ray.reflected = true;
+      ray.beta *= m.color;
+      ray.d = mirrorDirection(ray.d, v.ng);
+      ray.o = v.x + v.off * v.nf;
+      st.skip = v.flatSkip;
+      // A path that does not count sources (they are sampled at its last diffuse vertex) and
+      // meets one flat mirror keeps not counting them: the mirror's virtual sources were sampled
+      // too, with their visibility through transmitting surfaces before and after the mirror.
+      // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
+      if (st.countSources || st.mirrorsMet != 0 || !ctx.tracer.sources().isMirrorImage[v.shape])
+        st.countSources = true;
+      ++st.mirrorsMet;
+      return true;
+    case MaterialType::kGlass: {
+      const GlassEvent e = sampleThinGlass(m, ray.d, v.ng, ctx.rng, ray.beta);
+      if (e == GlassEvent::kAbsorbed) return false;
+      if (e == GlassEvent::kTransmitted) {
+        ray.o = v.x - v.off * v.nf;
+        // Thin glass keeps the direction: whether sources count is the incoming ray's state
+        // (shadow rays through the same glass already carried them from a diffuse vertex).
+      } else {
+        ray.reflected = true;
+        ray.d = mirrorDirection(ray.d, v.ng);
+        ray.o = v.x + v.off * v.nf;
+        st.misCosPdf = 0.0;
+        st.countSources = true;
+      }
+      st.skip = v.flatSkip;
+      return true;
+    }
+    default: {  // MaterialType::kDielectric
+      if (!v.front) absorbInDielectric(m, v.t, ray.beta);
+      const DielectricEvent e = sampleDielectric(m, ray.d, v.nf, v.front, ctx.rng);
+      ray.d = e.dir;
+      ray.o = e.reflected ? v.x + v.off * v.nf : v.x - v.off * v.nf;
+      st.skip = v.flatSkip;
+      st.misCosPdf = 0.0;
+      st.countSources = true;
+      ray.reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
+      return true;
+    }
+  }
+}
+
+// One sample of the glossy (Ward) lobe of m leaving v: its reflected radiance estimate. As
+// Radiance's sampled specular rays do, a sample carries the specular reflectance ρ_s; sources met
+// are counted (the light sampled at the vertex is the diffuse part's only); glossy reflections
+// count as bounces.
+Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
+  Vec3 out(0.0);
+  if (!sampleWardLobe(m, v.inDir, v.nf, ctx.rng, out)) return Rgb(0.0);
+  const TallyFactor tf(ctx.tally, m.specularReflectance);
+  PathState next;
+  next.skip = v.flatSkip;
+  next.countSources = true;
+  next.diffuse = diffuse + 1;
+  return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
+}
+
+// Ward's cache at a diffuse vertex: direct light sampled here, indirect irradiance interpolated;
+// nothing when no record covers the vertex.
+std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material& m, int diffuse, const Rgb& beta,
+                                CacheUse& cache) {
+  Rgb e(0.0);
+  cache.scratch.weights.clear();
+  if (!cache.cache->interpolate(v.x, v.nf, e, &cache.scratch, v.shape, &ctx.rays)) return std::nullopt;
+  const Vec3 xf = v.x + v.off * v.nf;
+  const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
+                                      nullptr, 1.0);
+  const Rgb f = beta * m.diffuseReflectance * kInvPi;
+  const double fy = photopic(f);
+  for (const auto& [i, w] : cache.scratch.weights) {
+    RecordVector b = lookupVector(cache.cache->record(i), v.x, v.nf, cache.cache->settings().gradients);
+    for (double& x : b) x *= fy * w;
+    cache.tally.add(i, b);
+  }
+  cache.tally.addCachedValue(photopic(f * e));
+  Rgb result(0.0);
+  result += f * (direct + e);
+  if (photopic(m.specularReflectance) > 0.0) result += beta * glossyBounce(ctx, v, m, diffuse);
+  return result;
+}
+
+// Light leaving a diffuse vertex v of material m towards the incoming ray. The incoming ray's
+// countSources, MIS density and ratio and flat mirrors met carry on through specular
+// transmission (trans), which keeps its direction.
+Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st) {
+  const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
+  const Vec3 nf = v.nf;
+  const Vec3 xf = v.x + v.off * nf, xb = v.x - v.off * nf;
+  const int k = std::max(1, st.split);
+  Rgb out(0.0);
+  // Light reflected (and diffusely transmitted) from the sampled sources.
+  if (photopic(rho) > 0.0) {
+    const TallyFactor tf(ctx.tally, rho * kInvPi);
+    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, v.flatSkip}, k, nullptr, 1.0);
+  }
+  if (photopic(tauD) > 0.0) {
+    const TallyFactor tf(ctx.tally, tauD * kInvPi);
+    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, v.flatSkip}, k, nullptr, 1.0);
+  }
+  // Indirect light: k continuations (stratified when k > 1), each one event chosen with
+  // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
+  // with probability 1 − albedo).
+  const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
+  const double pSp = m.type == MaterialType::kMirror ? 0.0 : photopic(m.specularReflectance);
+  const double norm = std::max(1.0, pRho + pTd + pTs + pSp);
+  if (pRho + pTd + pTs + pSp <= 0.0) return out;
+  const Strata2D strata(k, 1.0 / kPi);
+  PathState bounce;  // a diffuse continuation: cosine-sampled, sources sampled here
+  bounce.skip = v.flatSkip;
+  bounce.diffuse = st.diffuse + 1;
+  Rgb acc(0.0);
+  for (int j = 0; j < k; ++j) {
+    const Vec2 u12 = strata.sample(j, ctx.rng);
+    const double u = ctx.rng.uniform() * norm;
+    if (u < pRho) {
+      const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      const TallyFactor tf(ctx.tally, rho * (norm / pRho / k));
+      bounce.misCosPdf = glm::dot(dir, nf) * kInvPi;
+      acc += rho * (norm / pRho) * pathRadiance(ctx, xf, dir, bounce);
+    } else if (u < pRho + pTd) {
+      const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      const TallyFactor tf(ctx.tally, tauD * (norm / pTd / k));
+      bounce.misCosPdf = -glm::dot(dir, nf) * kInvPi;
+      acc += tauD * (norm / pTd) * pathRadiance(ctx, xb, dir, bounce);
+    } else if (u < pRho + pTd + pTs) {
+      // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
+      // Straight on, so sources count as they did for the incoming ray (shadow rays through the
+      // trans already carried them to diffuse vertices, and mirror images through it), and the
+      // sky keeps the incoming ray's MIS weight (sky samples' shadow rays pass the trans too).
+      const TallyFactor tf(ctx.tally, tauS * (norm / pTs / k));
+      PathState through = st;
+      through.skip = v.flatSkip;
+      through.split = 1;
+      acc += tauS * (norm / pTs) * pathRadiance(ctx, xb, v.inDir, through);
+    } else if (u < pRho + pTd + pTs + pSp) {
+      const TallyFactor tf(ctx.tally, norm / pSp / k);
+      acc += (norm / pSp) * glossyBounce(ctx, v, m, st.diffuse);
+    }
+  }
+  return out + acc / static_cast<double>(k);
+}
+
+}  // namespace
+
+Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, PathState st, CacheUse* cache,
+                 double* firstHitT) {
+  const Scene& scene = ctx.tracer.scene();
+  Rgb result(0.0);
+  Ray ray;
+  ray.o = origin;
+  ray.d = direction;
+  // Specular and pass-through events are followed iteratively; a diffuse vertex ends the loop.
+  for (int vertex = 0; vertex < 64; ++vertex) {
+    RayHit h;
+    const bool hit = ctx.intersect(ray.o, ray.d, 0.0, kInf, h, st.skip);
+    if (vertex == 0 && firstHitT) *firstHitT = hit ? h.t : kInf;
+    if (!hit) return result + ray.beta * escapeRadiance(ctx, ray.d, st, ray);
+    Hit v;
+    v.x = ray.o + h.t * ray.d;
+    v.inDir = ray.d;
+    v.t = h.t;
+    v.shape = h.shape;
+    const Shape& shape = scene.shapes[h.shape];
+    const Material* m = &scene.materials[shape.material];
+    v.ng = shapeNormal(shape, v.x);
+    v.front = glm::dot(ray.d, v.ng) < 0.0;
+    v.nf = v.front ? v.ng : -v.ng;
+    v.off = Tracer::originOffset(v.x);
+    v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
+    if (m->type == MaterialType::kIllum) {
+      if (m->alternate < 0) {  // invisible to non-shadow rays: pass straight through
+        ray.o = v.x - v.off * v.nf;
+        st.skip = v.flatSkip;
+        continue;
+      }
+      m = &scene.materials[m->alternate];
+    }
+    switch (m->type) {
+      case MaterialType::kLight:
+      case MaterialType::kIllum:
+        return (st.countSources && v.front) ? result + ray.beta * m->color : result;
+      case MaterialType::kGlow:
+        return v.front ? result + ray.beta * m->color : result;
+      case MaterialType::kVoid:
+        return result;
+      case MaterialType::kMirror:
+      case MaterialType::kGlass:
+      case MaterialType::kDielectric:
+        if (!followSpecular(ctx, *m, v, ray, st)) return result;
+        continue;
+      default:
+        break;
+    }
+    // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
+    if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
+    if (cache && cache->cache && st.diffuse == cache->depth && isCacheable(*m)) {
+      if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
+      PathState miss = st;
+      miss.split = 1;
+      return result + ray.beta * diffuseVertex(ctx, v, *m, miss);
+    }
+    const TallyFactor tf(ctx.tally, ray.beta);
+    return result + ray.beta * diffuseVertex(ctx, v, *m, st);
+  }
+  return result;
+}
+
+}  // namespace candela

@@ -1,0 +1,47 @@
+// Path-traced radiance: specular and pass-through events followed iteratively (engine/materials.h),
+// and at a diffuse vertex the sampled sources' light (engine/integrator_direct.h) plus a few
+// continuations chosen by Russian roulette on the albedo; at the vertex a frozen irradiance cache
+// serves, its interpolated indirect irradiance instead (Ward, Rubinstein & Clear 1988).
+#pragma once
+
+#include "engine/irradiance_cache.h"
+#include "engine/trace_context.h"
+
+#include <cstdint>
+
+namespace candela {
+
+// A path's state as a ray leaves a vertex (or the sensor, the camera).
+struct PathState {
+  uint32_t skip = kNoShape;   // the flat shape the ray leaves (not to be hit again), or kNoShape
+  // Whether sampled sources met count: true after specular reflection and for camera rays; a
+  // diffuse vertex samples them itself, so its continuations do not count them.
+  bool countSources = false;
+  int diffuse = 0;      // diffuse reflections so far
+  int split = 1;        // continuations the next diffuse vertex takes (stratified)
+  // Density (per sr) of the cosine sampling that drew the ray, for the sky's MIS weight
+  // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
+  double misCosPdf = 0.0;
+  double misRatio = 1.0;
+  // Flat mirrors met since the last diffuse vertex, carried through a trans surface's specular
+  // transmission (which keeps the direction).
+  int mirrorsMet = 0;
+};
+
+// A frozen cache serving the diffuse vertex at diffuse count `depth`, and what the lookups used
+// (for error bars): each record's share of each cell's radiance (beta·ρ/π·normalised
+// weight·lookup vector). One per top-level call.
+struct CacheUse {
+  const IrradianceCache* cache = nullptr;
+  int depth = 0;  // the diffuse count at which the cache serves (0: sensor rays' first hits)
+  CacheTally tally;
+  IrradianceCache::Used scratch;
+};
+
+// Radiance arriving at origin along -direction. cache: at the diffuse vertex st.diffuse ==
+// cache->depth of a cacheable material, the indirect irradiance comes from it. firstHitT: the
+// distance to the first surface met (infinity when none).
+Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, PathState st,
+                 CacheUse* cache = nullptr, double* firstHitT = nullptr);
+
+}  // namespace candela

@@ -1,0 +1,52 @@
+// The sensor estimator: irradiance at one point from the sampled sources (engine/integrator_direct.h)
+// and the paper's stratified cosine-weighted hemisphere (eq. 3) with path-traced interreflection
+// (engine/integrator_path.h), adaptive super-sampling of the strata whose neighbours disagree,
+// and the variance of the estimate from its own samples (derivations: docs/estimator.md).
+#pragma once
+
+#include "engine/irradiance_cache.h"
+#include "engine/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace candela {
+
+struct SkyTally;
+
+// The stream of a point's hemisphere directions under the cache method, apart from its other
+// samples, so that phase A (cacheQueries) traces exactly the directions evaluation will.
+inline constexpr uint64_t kDirectionStream = 0x4000000000000000ULL;
+
+// The hemisphere's M × N strata for s.hemisphereSamples rays (N ≈ πM).
+inline int hemisphereThetaStrata(const TraceSettings& s) {
+  return std::max(1, static_cast<int>(std::lround(std::sqrt(s.hemisphereSamples / kPi))));
+}
+inline int hemispherePhiStrata(const TraceSettings& s) {
+  return std::max(1, s.hemisphereSamples / hemisphereThetaStrata(s));
+}
+
+// What an estimate reads and reports besides its point: the frozen irradiance cache
+// (Method::kCache; the indirect irradiance at the hemisphere rays' first diffuse hits), and the
+// daylight-coefficient observer (engine/sky_tally.h). Either may be null.
+struct EstimatorInputs {
+  const IrradianceCache* cache = nullptr;
+  SkyTally* tally = nullptr;
+};
+
+// Irradiance on the side of unit normal n at p from random stream pointIndex (Tracer::irradiance).
+IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex,
+                                      const TraceSettings& s, const EstimatorInputs& in);
+
+// Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k) from second
+// differences along φ (n ≥ 3) or collapsed pairs; cells refined by adaptive super-sampling
+// (ownBetween not NaN) take their own estimate ownBetween + ownWithin instead; recordShare (cache
+// method): the records' expected share of each unrefined cell's squared second difference, taken
+// off. Derivation: docs/estimator.md#stratified-variance.
+double stratifiedVariance(const std::vector<double>& y, int m, int n, const std::vector<double>* ownBetween = nullptr,
+                          const std::vector<double>* ownWithin = nullptr,
+                          const std::vector<double>* recordShare = nullptr);
+
+}  // namespace candela
