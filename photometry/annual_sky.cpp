@@ -168,14 +168,108 @@ double perezRelativeHorizontal(const SkyModel& sky, const Vec3& sunDirTrue) {
   return interval(0.0, altS) + interval(altS, kPi - altS);
 }
 
-AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOptions& options) {
+namespace {
+
+void checkOptions(const AnnualSkyOptions& options) {
   if (options.subdivision < 1 || options.subdivision > 64)
     throw InputError({}, "annual sky: the sky subdivision (Reinhart MF) must be 1..64");
   if (options.subSamples < 1 || options.subSamples > 64)
     throw InputError({}, "annual sky: patch sub-samples must be 1..64");
   if (!(options.groundReflectance >= 0.0 && options.groundReflectance <= 1.0))
     throw InputError({}, "annual sky: the ground reflectance must be in [0, 1]");
+}
 
+// What every hour shares (patch layout and quadrature, site, options), and the counts of the
+// hours' problems: atomic, as the hours run in parallel.
+struct AnnualSkyJob {
+  const SkyPatches& patches;
+  const PatchRule& rule;
+  const Site& site;
+  const AnnualSkyOptions& options;
+  int patchCount;
+  // The disc's horizontal illuminance per unit direct normal illuminance and sin(altitude).
+  double discFactor;
+  std::atomic<int> missingValues{0}, missingHours{0}, degenerateHours{0};
+};
+
+// The hour's calendar fields and the sun's position at the middle of the hour-ending record.
+SpaResult hourAndSun(const AnnualSkyJob& job, const EpwRecord& rec, AnnualHour& hour) {
+  const Site& site = job.site;
+  hour.month = rec.month;
+  hour.day = rec.day;
+  hour.hour = rec.hour;
+  LocalTime t;
+  t.year = rec.year;
+  t.month = rec.month;
+  t.day = rec.day;
+  hour.dayOfYear = std::clamp(t.dayOfYear(), 1, 366);
+
+  SpaInput in;
+  in.year = rec.year;
+  in.month = rec.month;
+  in.day = rec.day;
+  in.hourOfDay = rec.hour - 0.5;  // the middle of the hour-ending record
+  in.timezoneHours = site.timezoneHours;
+  in.latitudeDeg = site.latitudeDeg;
+  in.longitudeDeg = site.longitudeDeg;
+  in.elevationM = site.elevationM;
+  in.deltaTSec = estimateDeltaTSec(rec.year + (hour.dayOfYear - 0.5) / 365.25);
+  const SpaResult sun = computeSunPositionOnly(in);
+  hour.sunAltitudeDeg = sun.altitudeDeg;
+  hour.sunAzimuthDeg = sun.azimuthDeg;
+  hour.sunUp = sun.altitudeDeg > 0.0;
+  hour.sunDirTrue = directionFromAzAlt(sun.azimuthDeg, sun.altitudeDeg, 0.0);
+  hour.sunPatch = hour.sunUp ? job.patches.indexOf(hour.sunDirTrue) : -1;
+  return sun;
+}
+
+// The hour's Perez sky: its illuminances in `hour` and the patch luminances in lum[0..patchCount)
+// (lum[0] the ground), left at 0 at night or when the record holds no light.
+void skyHour(AnnualSkyJob& job, const EpwRecord& rec, const SpaResult& sun, AnnualHour& hour, float* lum) {
+  const PatchRule& rule = job.rule;
+  int missing = 0;
+  const double dni = usable(rec.directNormalWhm2, &missing);
+  const double dhi = usable(rec.diffuseHorizontalWhm2, &missing);
+  job.missingValues += missing;
+  job.missingHours += missing > 0;
+  if (dhi <= 0.0 && (dni <= 0.0 || !hour.sunUp)) return;  // night, or no light recorded
+
+  PerezInput pin;
+  pin.directNormalWm2 = dni;
+  pin.diffuseHorizontalWm2 = dhi;
+  // As engine/daylight.cpp: the sky's sun is clamped to the horizon.
+  pin.sunDirTrue = directionFromAzAlt(sun.azimuthDeg, std::max(sun.altitudeDeg, 0.0), 0.0);
+  pin.dayOfYear = hour.dayOfYear;
+  pin.calibrate = false;
+  const PerezSky sky(pin, FileLoc{"", rec.line, 0});
+
+  hour.diffuseHorizontalLux = sky.diffuseHorizontalIlluminanceLux();
+  hour.directNormalLux = hour.sunUp ? sky.directNormalIlluminanceLux() : 0.0;
+  double skyLux = 0.0;
+  if (hour.diffuseHorizontalLux > 0.0) {
+    const double relH = perezRelativeHorizontal(sky, pin.sunDirTrue);
+    // A Perez shape that is <= 0 everywhere (possible at the edges of the fitted ranges, see
+    // AnnualSky::degenerateHours) gives a black sky, as PerezSky's calibrate does.
+    const double scale = relH > 0.0 ? hour.diffuseHorizontalLux / relH : 0.0;
+    job.degenerateHours += relH <= 0.0;
+    skyLux = scale * relH;
+    for (int p = 1; p < job.patchCount; ++p) {
+      double mean = 0.0;
+      for (int k = rule.start[p]; k < rule.start[p + 1]; ++k) mean += rule.weight[k] * sky.relativeLuminance(rule.dir[k]);
+      lum[p] = float(scale * mean);
+    }
+  }
+  const double sunLux = hour.directNormalLux > 0.0
+                            ? hour.directNormalLux * std::sin(degToRad(hour.sunAltitudeDeg)) * job.discFactor
+                            : 0.0;
+  hour.globalHorizontalLux = skyLux + sunLux;
+  lum[0] = float(job.options.groundReflectance * hour.globalHorizontalLux / kPi);
+}
+
+}  // namespace
+
+AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOptions& options) {
+  checkOptions(options);
   const SkyPatches patches(options.subdivision);
   const PatchRule rule = makePatchRule(patches, options.subSamples);
   AnnualSky out;
@@ -188,80 +282,18 @@ AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOpt
   // The disc's horizontal illuminance per unit direct normal illuminance and sin(altitude):
   // pi sin^2(a) / (2 pi (1 - cos a)) = (1 + cos a) / 2, as engine/daylight.cpp's cap formula.
   const double discFactor = 0.5 * (1.0 + std::cos(halfSun));
+  AnnualSkyJob job{patches, rule, site, options, out.patchCount, discFactor};
 
   // Each hour writes only its own slots, so the result does not depend on the thread count.
-  std::atomic<int> missingValues{0}, missingHours{0}, degenerateHours{0};
   parallelFor(nHours, options.threads, [&](size_t h) {
     const EpwRecord& rec = epw.records[h];
     AnnualHour& hour = out.hours[h];
-    hour.month = rec.month;
-    hour.day = rec.day;
-    hour.hour = rec.hour;
-    LocalTime t;
-    t.year = rec.year;
-    t.month = rec.month;
-    t.day = rec.day;
-    hour.dayOfYear = std::clamp(t.dayOfYear(), 1, 366);
-
-    SpaInput in;
-    in.year = rec.year;
-    in.month = rec.month;
-    in.day = rec.day;
-    in.hourOfDay = rec.hour - 0.5;  // the middle of the hour-ending record
-    in.timezoneHours = site.timezoneHours;
-    in.latitudeDeg = site.latitudeDeg;
-    in.longitudeDeg = site.longitudeDeg;
-    in.elevationM = site.elevationM;
-    in.deltaTSec = estimateDeltaTSec(rec.year + (hour.dayOfYear - 0.5) / 365.25);
-    const SpaResult sun = computeSunPositionOnly(in);
-    hour.sunAltitudeDeg = sun.altitudeDeg;
-    hour.sunAzimuthDeg = sun.azimuthDeg;
-    hour.sunUp = sun.altitudeDeg > 0.0;
-    hour.sunDirTrue = directionFromAzAlt(sun.azimuthDeg, sun.altitudeDeg, 0.0);
-    hour.sunPatch = hour.sunUp ? patches.indexOf(hour.sunDirTrue) : -1;
-
-    int missing = 0;
-    const double dni = usable(rec.directNormalWhm2, &missing);
-    const double dhi = usable(rec.diffuseHorizontalWhm2, &missing);
-    missingValues += missing;
-    missingHours += missing > 0;
-    if (dhi <= 0.0 && (dni <= 0.0 || !hour.sunUp)) return;  // night, or no light recorded
-
-    PerezInput pin;
-    pin.directNormalWm2 = dni;
-    pin.diffuseHorizontalWm2 = dhi;
-    // As engine/daylight.cpp: the sky's sun is clamped to the horizon.
-    pin.sunDirTrue = directionFromAzAlt(sun.azimuthDeg, std::max(sun.altitudeDeg, 0.0), 0.0);
-    pin.dayOfYear = hour.dayOfYear;
-    pin.calibrate = false;
-    const PerezSky sky(pin, FileLoc{"", rec.line, 0});
-
-    hour.diffuseHorizontalLux = sky.diffuseHorizontalIlluminanceLux();
-    hour.directNormalLux = hour.sunUp ? sky.directNormalIlluminanceLux() : 0.0;
-    double skyLux = 0.0;
-    float* lum = &out.luminance[h * size_t(out.patchCount)];
-    if (hour.diffuseHorizontalLux > 0.0) {
-      const double relH = perezRelativeHorizontal(sky, pin.sunDirTrue);
-      // A Perez shape that is <= 0 everywhere (possible at the edges of the fitted ranges, see
-      // AnnualSky::degenerateHours) gives a black sky, as PerezSky's calibrate does.
-      const double scale = relH > 0.0 ? hour.diffuseHorizontalLux / relH : 0.0;
-      degenerateHours += relH <= 0.0;
-      skyLux = scale * relH;
-      for (int p = 1; p < out.patchCount; ++p) {
-        double mean = 0.0;
-        for (int k = rule.start[p]; k < rule.start[p + 1]; ++k) mean += rule.weight[k] * sky.relativeLuminance(rule.dir[k]);
-        lum[p] = float(scale * mean);
-      }
-    }
-    const double sunLux = hour.directNormalLux > 0.0
-                              ? hour.directNormalLux * std::sin(degToRad(hour.sunAltitudeDeg)) * discFactor
-                              : 0.0;
-    hour.globalHorizontalLux = skyLux + sunLux;
-    lum[0] = float(options.groundReflectance * hour.globalHorizontalLux / kPi);
+    const SpaResult sun = hourAndSun(job, rec, hour);
+    skyHour(job, rec, sun, hour, &out.luminance[h * size_t(out.patchCount)]);
   });
-  out.missingValues = missingValues;
-  out.missingHours = missingHours;
-  out.degenerateHours = degenerateHours;
+  out.missingValues = job.missingValues;
+  out.missingHours = job.missingHours;
+  out.degenerateHours = job.degenerateHours;
   return out;
 }
 

@@ -74,13 +74,17 @@ PhotometricWeb readEulumdat(const std::filesystem::path& path) {
   return parseEulumdat(readInputFile(path, "file"), path.string());
 }
 
-PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName) {
-  LdtLines in(fileName, text);
-  PhotometricInfo info;
-  info.fileName = fileName;
-  info.format = "EULUMDAT";
-  info.numLamps = 0;
+namespace {
 
+// Lines 2-7: the counts that shape the rest of the file.
+struct LdtShape {
+  int isym = 0;  // symmetry indicator Isym, 0-4
+  int mc = 0;    // number of C planes
+  int ng = 0;    // number of gamma angles
+};
+
+// Lines 1-12: company, type, symmetry, the numbers of C planes and gamma angles, and the names.
+LdtShape readIdentification(LdtLines& in, PhotometricInfo& info) {
   info.keywords["MANUFAC"] = in.text("company identification (line 1)");
   const int ityp = in.integer("type indicator Ityp");
   if (ityp < 0 || ityp > 3)
@@ -102,6 +106,11 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   info.keywords["LUMCAT"] = in.text("luminaire number");
   info.keywords["FILENAME"] = in.text("file name");
   info.keywords["DATE"] = in.text("date/user");
+  return LdtShape{isym, mc, ng};
+}
+
+// Lines 13-21: luminaire and luminous area dimensions (mm in the file, m in `info`).
+void readDimensions(LdtLines& in, PhotometricInfo& info) {
   const double mm = 1e-3;
   info.luminaireLengthM = in.number("luminaire length") * mm;
   info.luminaireWidthM = in.number("luminaire width") * mm;
@@ -124,6 +133,11 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   } else {
     info.openingShape = lh > 0.0 ? OpeningShape::kRectangularWithSides : OpeningShape::kRectangular;
   }
+}
+
+// Lines 22-27: DFF, LORL, conversion factor, tilt, the lamp sets and the direct ratios. Returns
+// the line of lamp set 1's flux, for its error message.
+int readLampData(LdtLines& in, PhotometricInfo& info) {
   info.declaredDownwardFluxPercent = in.number("downward flux fraction DFF");
   info.declaredLorPercent = in.number("light output ratio LORL");
   info.conversionFactor = in.number("conversion factor for intensities");
@@ -144,7 +158,11 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   for (auto& s : info.lampSets) s.colourRendering = in.text("colour rendering");
   for (auto& s : info.lampSets) s.wattsW = in.number("wattage including ballast");
   for (int k = 0; k < 10; ++k) in.number("direct ratio");
+  return fluxLine;
+}
 
+// Line 28: Mc increasing C angles in [0, 360).
+std::vector<double> readCAngles(LdtLines& in, int mc) {
   std::vector<double> c(static_cast<size_t>(mc));
   for (int k = 0; k < mc; ++k) {
     c[size_t(k)] = in.number("C angle");
@@ -153,7 +171,11 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
     if (k > 0 && !(c[size_t(k)] > c[size_t(k) - 1]))
       throw InputError(in.loc(), "C angles must increase: " + fmt(c[size_t(k)]) + " follows " + fmt(c[size_t(k) - 1]));
   }
-  const int cEndLine = in.loc().line;
+  return c;
+}
+
+// Line 29: Ng increasing gamma angles in [0, 180].
+std::vector<double> readGammaAngles(LdtLines& in, int ng) {
   std::vector<double> g(static_cast<size_t>(ng));
   for (int k = 0; k < ng; ++k) {
     g[size_t(k)] = in.number("gamma angle");
@@ -162,9 +184,18 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
     if (k > 0 && !(g[size_t(k)] > g[size_t(k) - 1]))
       throw InputError(in.loc(), "gamma angles must increase: " + fmt(g[size_t(k)]) + " follows " + fmt(g[size_t(k) - 1]));
   }
+  return g;
+}
 
-  // Stored planes Mc1..Mc2 (1-based, wrapping past Mc for Isym 3) and the checks that they
-  // are the planes the symmetry needs.
+struct StoredPlanes {
+  std::vector<double> planes;
+  PlaneSymmetry sym = PlaneSymmetry::kNone;
+};
+
+// Stored planes Mc1..Mc2 (1-based, wrapping past Mc for Isym 3) and the checks that they
+// are the planes the symmetry needs. `cEndLine` is the line of the last C angle.
+StoredPlanes storedPlanes(const std::vector<double>& c, int isym, const std::string& fileName, int cEndLine) {
+  const int mc = int(c.size());
   std::vector<double> planes;
   PlaneSymmetry sym = PlaneSymmetry::kNone;
   const auto need = [&](size_t k, double deg) {
@@ -195,10 +226,13 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
       sym = PlaneSymmetry::kQuadrant;
       break;
   }
+  return StoredPlanes{std::move(planes), sym};
+}
 
-  // cd/klm -> cd with the flux of lamp set 1 (its "total luminous flux of lamps", already the
-  // sum over its lamps). A negative lamp count marks absolute photometry: the flux field then
-  // holds the luminaire flux and the lamp lumens are unknown.
+// cd/klm -> cd with the flux of lamp set 1 (its "total luminous flux of lamps", already the
+// sum over its lamps). A negative lamp count marks absolute photometry: the flux field then
+// holds the luminaire flux and the lamp lumens are unknown. Returns the factor cd/klm -> cd.
+double applyLampSet1(PhotometricInfo& info, const std::string& fileName, int fluxLine) {
   const LampSet& set1 = info.lampSets.front();
   if (!(set1.totalFluxLm > 0.0))
     throw InputError(FileLoc{fileName, fluxLine, 0},
@@ -207,11 +241,14 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
   info.lampLumens = set1.count < 0 ? -1.0 : set1.totalFluxLm;
   info.lumensPerLamp = set1.count > 0 ? set1.totalFluxLm / set1.count : -1.0;
   info.inputWatts = set1.wattsW;
-  const double scale = set1.totalFluxLm / 1000.0 * info.conversionFactor;
+  return set1.totalFluxLm / 1000.0 * info.conversionFactor;
+}
 
+// Line 30: `count` intensities (cd/klm), scaled to cd; nothing may follow them.
+std::vector<double> readIntensities(LdtLines& in, size_t count, double scale) {
   std::vector<double> cd;
-  cd.reserve(planes.size() * size_t(ng));
-  for (size_t i = 0; i < planes.size() * size_t(ng); ++i) {
+  cd.reserve(count);
+  for (size_t i = 0; i < count; ++i) {
     const double v = in.number("luminous intensity (cd/klm)");
     if (v < 0.0) throw InputError(in.loc(), "negative luminous intensity " + fmt(v));
     cd.push_back(v * scale);
@@ -220,7 +257,29 @@ PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName)
     in.text("end of file");
     throw InputError(in.loc(), "unexpected line after the intensity table (check Mc, Ng and Isym)");
   }
-  return PhotometricWeb(std::move(info), PhotometricType::kC, sym, std::move(planes), std::move(g), std::move(cd));
+  return cd;
+}
+
+}  // namespace
+
+PhotometricWeb parseEulumdat(std::string_view text, const std::string& fileName) {
+  LdtLines in(fileName, text);
+  PhotometricInfo info;
+  info.fileName = fileName;
+  info.format = "EULUMDAT";
+  info.numLamps = 0;
+
+  const LdtShape shape = readIdentification(in, info);
+  readDimensions(in, info);
+  const int fluxLine = readLampData(in, info);
+  const std::vector<double> c = readCAngles(in, shape.mc);
+  const int cEndLine = in.loc().line;
+  std::vector<double> g = readGammaAngles(in, shape.ng);
+  StoredPlanes stored = storedPlanes(c, shape.isym, fileName, cEndLine);
+  const double scale = applyLampSet1(info, fileName, fluxLine);
+  std::vector<double> cd = readIntensities(in, stored.planes.size() * size_t(shape.ng), scale);
+  return PhotometricWeb(std::move(info), PhotometricType::kC, stored.sym, std::move(stored.planes), std::move(g),
+                        std::move(cd));
 }
 
 }  // namespace candela

@@ -107,13 +107,25 @@ std::string metricPlan(const GridReport& g, const std::string& quantity, const s
   return planSvg(m, ColorScale{0.0, 100.0, false}, options);
 }
 
-// "Annual daylight" section of an annual grid: DA300 plan and the summary table, UDI plans as
-// small multiples, the sDA/ASE plan and the temporal map of the chosen sensor.
-void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index, const RunInfo& run, double northDeg) {
-  const AnnualGridReport& a = *g.annual;
-  const GridAnnualSummary& s = a.summary;
+// What an annual grid's section draws from: the grid, its place in the report and the run.
+struct AnnualPage {
+  const GridReport& grid;
+  std::size_t index;  // of the grid in the report, 0-based
+  const RunInfo& run;
+  double northDeg;
+
+  const AnnualGridReport& annual() const { return *grid.annual; }
+  const GridAnnualSummary& summary() const { return grid.annual->summary; }
+  std::string id() const { return "annual" + std::to_string(index + 1); }
+};
+
+// The section's heading, its introduction and the DA300 plan.
+void annualIntro(std::ostringstream& h, const AnnualPage& page) {
+  const GridReport& g = page.grid;
+  const AnnualGridReport& a = page.annual();
+  const GridAnnualSummary& s = page.summary();
   using M = SensorAnnualMetrics;
-  const std::string id = "annual" + std::to_string(index + 1);
+  const std::size_t index = page.index;
   h << "<section class=\"grid annual\" id=\"annual-" << index + 1 << "\">\n<h2><span class=\"n\">" << index + 1
     << "</span>Annual daylight: " << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">Climate-based daylight over "
     << s.occupiedHours << " occupied hours of the weather year, " << s.sensors
@@ -122,13 +134,19 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
        "supplementary 100–300 lx, autonomous 300–3000 lx, exceeded &gt; 3000 lx.</p>\n<div class=\"grid-body\">\n";
   if (!a.sensors.empty()) {
     PlanOptions opt;
-    opt.northDeg = northDeg;
-    opt.idPrefix = id + "-da";
+    opt.northDeg = page.northDeg;
+    opt.idPrefix = page.id() + "-da";
     opt.contourLevels = {25.0, 50.0, 75.0};
     h << "<figure>\n" << metricPlan(g, "Daylight autonomy DA300", annualColumn(a, &M::da), opt)
       << "<figcaption>DA300 per sensor: share of occupied hours with at least 300 lx from daylight, 0–100 %; "
          "lines at 25, 50 and 75 %.</figcaption>\n</figure>\n";
   }
+}
+
+// The table of the grid's annual metrics (means and shares over its sensors) and the run's timing.
+void annualSummaryTable(std::ostringstream& h, const AnnualPage& page) {
+  const GridAnnualSummary& s = page.summary();
+  const RunInfo& run = page.run;
   h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Metric</th><th class=\"num\">Value</th><th>Meaning</th></tr>"
        "</thead>\n<tbody>\n";
   auto row = [&](const char* name, const std::string& value, const char* meaning) {
@@ -147,7 +165,15 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
   if (run.coefficientsTimeS) row("coefficients_time_s", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
   if (run.productTimeS) row("product_time_s", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
   h << "</tbody>\n</table>\n</div>\n</div>\n";
+}
 
+// The four UDI bins as small multiples.
+void udiMultiples(std::ostringstream& h, const AnnualPage& page) {
+  const GridReport& g = page.grid;
+  const AnnualGridReport& a = page.annual();
+  const GridAnnualSummary& s = page.summary();
+  using M = SensorAnnualMetrics;
+  const std::string id = page.id();
   struct Bin {
     const char* name;
     double M::*perSensor;
@@ -161,7 +187,7 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
   for (const auto& [name, perSensor, meanPct] : bins) {
     if (a.sensors.empty()) continue;
     PlanOptions opt;
-    opt.northDeg = northDeg;
+    opt.northDeg = page.northDeg;
     opt.idPrefix = id + "-" + name;
     opt.maxPlanWidthPx = 230.0;
     opt.maxPlanHeightPx = 170.0;
@@ -171,11 +197,17 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
       << pctText(meanPct) << " mean)</figcaption>\n</figure>\n";
   }
   h << "</div>\n";
+}
 
+// The sDA/ASE plan, and the temporal map of the chosen sensor.
+void sdaAseAndTemporalMap(std::ostringstream& h, const AnnualPage& page) {
+  const GridReport& g = page.grid;
+  const AnnualGridReport& a = page.annual();
+  const GridAnnualSummary& s = page.summary();
   const std::vector<bool> pass = sdaPassPerSensor(a), ase = aseExceededPerSensor(a);
   if (!pass.empty()) {
     PlanOptions opt;
-    opt.idPrefix = id + "-sda";
+    opt.idPrefix = page.id() + "-sda";
     h << "<h3>Spatial daylight autonomy and annual sunlight exposure</h3>\n<figure class=\"temporal\">\n"
       << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA300_50 = " << pctText(s.sDA300_50)
       << " of sensors, ASE1000_250 = " << pctText(s.ASE1000_250) << " of sensors.</figcaption>\n</figure>\n";
@@ -195,14 +227,21 @@ void annualSection(std::ostringstream& h, const GridReport& g, std::size_t index
          "of the day from midnight (top) to midnight (bottom); illuminance in lx on a log scale from 10 to "
          "100 000 lx, values outside clamped.</figcaption></figure>\n";
   }
+}
+
+// "Annual daylight" section of an annual grid: DA300 plan and the summary table, UDI plans as
+// small multiples, the sDA/ASE plan and the temporal map of the chosen sensor.
+void annualSection(std::ostringstream& h, const AnnualPage& page) {
+  annualIntro(h, page);
+  annualSummaryTable(h, page);
+  udiMultiples(h, page);
+  sdaAseAndTemporalMap(h, page);
   h << "</section>\n";
 }
 
-}  // namespace
-
-std::string htmlReport(const ReportData& data) {
+// The page's head, its inline style and the report's header (case, time, software).
+void pageHeader(std::ostringstream& h, const ReportData& data) {
   const RunInfo& run = data.run;
-  std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
     << "<title>" << xmlEscape(run.caseName) << " — lighting report</title>\n<style>" << kCss << "</style>\n</head>\n"
@@ -218,8 +257,10 @@ std::string htmlReport(const ReportData& data) {
   meta("Grids", std::to_string(data.grids.size()));
   meta("Software", "candela " + run.version);
   h << "</dl>\n</header>\n";
+}
 
-  // Summary of every grid.
+// Summary of every grid.
+void summarySection(std::ostringstream& h, const ReportData& data) {
   h << "<section class=\"summary\">\n<h2>Summary</h2>\n<p class=\"sub\">Calculated values on each calculation "
        "grid against its design targets (EN 12464-1: maintained illuminance Ē<sub>m</sub> and uniformity "
        "U<sub>0</sub> = E<sub>min</sub>/Ē must not fall below the requirement).</p>\n"
@@ -238,74 +279,75 @@ std::string htmlReport(const ReportData& data) {
       << badge(g.check.overall) << "</td></tr>\n";
   }
   h << "</tbody>\n</table>\n</section>\n";
+}
 
-  // One section per grid: plan and metrics.
-  for (std::size_t i = 0; i < data.grids.size(); ++i) {
-    const GridReport& g = data.grids[i];
-    if (g.annual) {
-      // Annual grids: their own section carries the DA plan and every metric (an illuminance
-      // table of Emin, U0, ... would name the wrong quantities).
-      annualSection(h, g, i, run, data.northDeg);
-      continue;
-    }
-    const std::string u = unitText(g.unit);
-    h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
-      << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << xmlEscape(g.quantity) << " in " << xmlEscape(g.unit);
-    if (!g.description.empty()) h << " · " << xmlEscape(g.description);
-    h << "</p>\n<div class=\"grid-body\">\n";
-    if (!g.values.empty()) {
-      PlanOptions opt;
-      opt.northDeg = data.northDeg;
-      opt.idPrefix = "plan" + std::to_string(i + 1);
-      const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
-      h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
-        << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
-        << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
-    }
-    h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Quantity</th><th class=\"num\">Calculated</th>"
-         "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
-    std::string quantity = g.quantity;
-    for (char& ch : quantity) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    h << "<tr><td>Average " << xmlEscape(quantity) << " Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
-      << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
-      << badge(g.check.average) << "</td></tr>\n";
-    h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">E<sub>min</sub> / Ē</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
-      << "</td><td class=\"num\">" << (g.targets.uniformity ? "≥ " + formatFixed(*g.targets.uniformity, 2) : "—")
-      << "</td><td>" << badge(g.check.uniformity) << "</td></tr>\n";
-    h << "<tr><td>Minimum E<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
-      << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
-      << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><td>Median</td><td class=\"num\">" << valueText(g.stats.medianLux) << u
-      << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">E<sub>min</sub> / E<sub>max</sub></span></td><td class=\"num\">"
-      << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";
-    if (g.layout.regular)
-      h << "<tr><td>Grid spacing</td><td class=\"num\">" << formatFixed(g.layout.spacingM.x, 3) << " × "
-        << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
-    h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
-    h << "</tbody>\n</table>\n</div>\n</div>\n</section>\n";
+// The metrics table of a point-in-time grid: calculated values against their targets.
+void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
+  const std::string u = unitText(g.unit);
+  h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Quantity</th><th class=\"num\">Calculated</th>"
+       "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
+  std::string quantity = g.quantity;
+  for (char& ch : quantity) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  h << "<tr><td>Average " << xmlEscape(quantity) << " Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
+    << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
+    << badge(g.check.average) << "</td></tr>\n";
+  h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">E<sub>min</sub> / Ē</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
+    << "</td><td class=\"num\">" << (g.targets.uniformity ? "≥ " + formatFixed(*g.targets.uniformity, 2) : "—")
+    << "</td><td>" << badge(g.check.uniformity) << "</td></tr>\n";
+  h << "<tr><td>Minimum E<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
+    << "</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
+    << "</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Median</td><td class=\"num\">" << valueText(g.stats.medianLux) << u
+    << "</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">E<sub>min</sub> / E<sub>max</sub></span></td><td class=\"num\">"
+    << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";
+  if (g.layout.regular)
+    h << "<tr><td>Grid spacing</td><td class=\"num\">" << formatFixed(g.layout.spacingM.x, 3) << " × "
+      << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
+  h << "</tbody>\n</table>\n</div>\n";
+}
+
+// The section of point-in-time grid `i` (0-based): its plan and metrics.
+void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, double northDeg) {
+  h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
+    << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << xmlEscape(g.quantity) << " in " << xmlEscape(g.unit);
+  if (!g.description.empty()) h << " · " << xmlEscape(g.description);
+  h << "</p>\n<div class=\"grid-body\">\n";
+  if (!g.values.empty()) {
+    PlanOptions opt;
+    opt.northDeg = northDeg;
+    opt.idPrefix = "plan" + std::to_string(i + 1);
+    const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
+    h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
+      << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
+      << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
   }
+  gridMetricsTable(h, g);
+  h << "</div>\n</section>\n";
+}
 
-  // Calculation settings and timing.
-  // Views: the pictures are embedded as data URIs, so the page stays one self-contained file.
-  for (std::size_t i = 0; i < data.views.size(); ++i) {
-    const ViewReport& v = data.views[i];
-    h << "<section class=\"grid\" id=\"view-" << i + 1 << "\">\n<h2>View: " << xmlEscape(v.name) << "</h2>\n<p class=\"sub\">"
-      << xmlEscape(v.description) << "</p>\n<div class=\"views\">\n";
-    if (!v.previewPng.empty())
-      h << "<figure><img alt=\"tone-mapped view " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
-        << base64(v.previewPng) << "\"><figcaption>Tone-mapped luminance</figcaption></figure>\n";
-    if (!v.falseColorPng.empty())
-      h << "<figure><img alt=\"false-colour luminance of " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
-        << base64(v.falseColorPng) << "\"><figcaption>Luminance, cd/m²</figcaption></figure>\n";
-    h << "</div>\n<table>\n<tbody>\n";
-    for (const auto& [k, val] : v.metrics)
-      h << "<tr><td>" << xmlEscape(k) << "</td><td class=\"num\">" << xmlEscape(val) << "</td></tr>\n";
-    h << "</tbody>\n</table>\n</section>\n";
-  }
+// The section of view `i` (0-based). The pictures are embedded as data URIs, so the page stays
+// one self-contained file.
+void viewSection(std::ostringstream& h, const ViewReport& v, std::size_t i) {
+  h << "<section class=\"grid\" id=\"view-" << i + 1 << "\">\n<h2>View: " << xmlEscape(v.name) << "</h2>\n<p class=\"sub\">"
+    << xmlEscape(v.description) << "</p>\n<div class=\"views\">\n";
+  if (!v.previewPng.empty())
+    h << "<figure><img alt=\"tone-mapped view " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
+      << base64(v.previewPng) << "\"><figcaption>Tone-mapped luminance</figcaption></figure>\n";
+  if (!v.falseColorPng.empty())
+    h << "<figure><img alt=\"false-colour luminance of " << xmlEscape(v.name) << "\" src=\"data:image/png;base64,"
+      << base64(v.falseColorPng) << "\"><figcaption>Luminance, cd/m²</figcaption></figure>\n";
+  h << "</div>\n<table>\n<tbody>\n";
+  for (const auto& [k, val] : v.metrics)
+    h << "<tr><td>" << xmlEscape(k) << "</td><td class=\"num\">" << xmlEscape(val) << "</td></tr>\n";
+  h << "</tbody>\n</table>\n</section>\n";
+}
 
+// Calculation settings and timing, and the page's footer.
+void settingsAndFooter(std::ostringstream& h, const RunInfo& run) {
   h << "<section class=\"settings\">\n<h2>Calculation</h2>\n<p class=\"sub\">Settings of this run; with the same "
        "seed and settings candela reproduces these numbers exactly, on any number of threads.</p>\n"
     << "<table class=\"kv\">\n<tbody>\n";
@@ -323,6 +365,27 @@ std::string htmlReport(const ReportData& data) {
     << ". Values are calculated at the points listed in each grid's CSV file. This report is self-contained "
        "and can be archived as a single file.</footer>\n"
     << "</div>\n</body>\n</html>\n";
+}
+
+}  // namespace
+
+std::string htmlReport(const ReportData& data) {
+  std::ostringstream h;
+  pageHeader(h, data);
+  summarySection(h, data);
+  // One section per grid: plan and metrics.
+  for (std::size_t i = 0; i < data.grids.size(); ++i) {
+    const GridReport& g = data.grids[i];
+    if (g.annual) {
+      // Annual grids: their own section carries the DA plan and every metric (an illuminance
+      // table of Emin, U0, ... would name the wrong quantities).
+      annualSection(h, AnnualPage{g, i, data.run, data.northDeg});
+      continue;
+    }
+    gridSection(h, g, i, data.northDeg);
+  }
+  for (std::size_t i = 0; i < data.views.size(); ++i) viewSection(h, data.views[i], i);
+  settingsAndFooter(h, data.run);
   return h.str();
 }
 

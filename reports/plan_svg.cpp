@@ -47,32 +47,42 @@ double niceLength(double target) {
   return best;
 }
 
-}  // namespace
+// A regular layout's values on its node lattice (cell centres), NaN where no sensor sits.
+struct NodeField {
+  const PlanLayout& layout;
+  int nx, ny;
+  std::vector<double> field;
 
-std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level) {
-  std::vector<ContourLine> lines;
-  if (!layout.regular || layout.columns < 2 || layout.rows < 2) return lines;
-  const int nx = layout.columns, ny = layout.rows;
-  std::vector<double> field(static_cast<std::size_t>(nx) * ny, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t k = 0; k < layout.cells.size() && k < values.size(); ++k) {
-    const glm::ivec2 c = layout.cells[k];
-    if (c.x >= 0 && c.y >= 0 && c.x < nx && c.y < ny) field[static_cast<std::size_t>(c.y) * nx + c.x] = values[k];
-  }
-  auto value = [&](int i, int j) { return field[static_cast<std::size_t>(j) * nx + i]; };
-  auto node = [&](int i, int j) { return layout.originM + (Vec2(i, j) + 0.5) * layout.spacingM; };
-  auto crossing = [&](const EdgeKey& e) {
+  double value(int i, int j) const { return field[static_cast<std::size_t>(j) * nx + i]; }
+  Vec2 node(int i, int j) const { return layout.originM + (Vec2(i, j) + 0.5) * layout.spacingM; }
+  // Where `level` crosses edge e, interpolated linearly between its two nodes.
+  Vec2 crossing(const EdgeKey& e, double level) const {
     const auto [vertical, i, j] = e;
     const int i2 = vertical ? i : i + 1, j2 = vertical ? j + 1 : j;
     const double a = value(i, j), b = value(i2, j2);
     const double t = std::clamp((level - a) / (b - a), 0.0, 1.0);
     return node(i, j) + t * (node(i2, j2) - node(i, j));
-  };
+  }
+};
 
+NodeField nodeField(const PlanLayout& layout, const std::vector<double>& values) {
+  const int nx = layout.columns, ny = layout.rows;
+  NodeField f{layout, nx, ny,
+              std::vector<double>(static_cast<std::size_t>(nx) * ny, std::numeric_limits<double>::quiet_NaN())};
+  for (std::size_t k = 0; k < layout.cells.size() && k < values.size(); ++k) {
+    const glm::ivec2 c = layout.cells[k];
+    if (c.x >= 0 && c.y >= 0 && c.x < nx && c.y < ny) f.field[static_cast<std::size_t>(c.y) * nx + c.x] = values[k];
+  }
+  return f;
+}
+
+// Marching squares: the segments of the `level` line in each lattice cell whose four nodes have values.
+std::vector<Segment> levelSegments(const NodeField& f, double level) {
   std::vector<Segment> segments;
-  for (int j = 0; j + 1 < ny; ++j) {
-    for (int i = 0; i + 1 < nx; ++i) {
+  for (int j = 0; j + 1 < f.ny; ++j) {
+    for (int i = 0; i + 1 < f.nx; ++i) {
       // Corners counter-clockwise from bottom-left; edge k joins corner k and k+1.
-      const double v[4] = {value(i, j), value(i + 1, j), value(i + 1, j + 1), value(i, j + 1)};
+      const double v[4] = {f.value(i, j), f.value(i + 1, j), f.value(i + 1, j + 1), f.value(i, j + 1)};
       if (std::isnan(v[0]) || std::isnan(v[1]) || std::isnan(v[2]) || std::isnan(v[3])) continue;
       const EdgeKey edge[4] = {{0, i, j}, {1, i + 1, j}, {0, i, j + 1}, {1, i, j}};
       bool above[4];
@@ -92,8 +102,12 @@ std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<do
       segments.push_back({crossed[0], crossed[1]});
     }
   }
+  return segments;
+}
 
-  // Join segments sharing an edge crossing into polylines.
+// Join segments sharing an edge crossing into polylines.
+std::vector<ContourLine> joinSegments(const std::vector<Segment>& segments, const NodeField& f, double level) {
+  std::vector<ContourLine> lines;
   std::map<EdgeKey, std::vector<std::size_t>> byEdge;
   for (std::size_t s = 0; s < segments.size(); ++s) {
     byEdge[segments[s].a].push_back(s);
@@ -124,12 +138,20 @@ std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<do
     }
     ContourLine line;
     line.level = level;
-    for (auto it = head.rbegin(); it != head.rend(); ++it) line.points.push_back(crossing(*it));
-    for (const EdgeKey& e : chain) line.points.push_back(crossing(e));
+    for (auto it = head.rbegin(); it != head.rend(); ++it) line.points.push_back(f.crossing(*it, level));
+    for (const EdgeKey& e : chain) line.points.push_back(f.crossing(e, level));
     line.closed = chain.size() > 2 && chain.front() == chain.back();
     lines.push_back(std::move(line));
   }
   return lines;
+}
+
+}  // namespace
+
+std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level) {
+  if (!layout.regular || layout.columns < 2 || layout.rows < 2) return {};
+  const NodeField field = nodeField(layout, values);
+  return joinSegments(levelSegments(field, level), field, level);
 }
 
 std::string svgNumber(double v) {
@@ -159,177 +181,231 @@ PlanExtent planExtent(const PlanLayout& L) {
   return {lo, hi};
 }
 
-std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
-  const PlanLayout& L = grid.layout;
-  const auto [lo, hi] = planExtent(L);
-  const Vec2 ext = hi - lo;
-  const double k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);  // px per m
-  const double planW = ext.x * k, planH = ext.y * k;
-  const double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70;
-  const double width = left + planW + legendGap + legendBar + legendLabels;
-  const double height = top + planH + 64;
-  auto X = [&](double u) { return left + (u - lo.x) * k; };
-  auto Y = [&](double v) { return top + (hi.y - v) * k; };
-  const std::string id = opt.idPrefix;
-  const std::string font = "font-family=\"Helvetica Neue,Helvetica,Arial,sans-serif\"";
+namespace {
 
-  std::ostringstream s;
-  s << "<svg " << (opt.standalone ? "xmlns=\"http://www.w3.org/2000/svg\" " : "") << "class=\"plan\" width=\"" << px(width) << "\" height=\""
-    << px(height) << "\" viewBox=\"0 0 " << px(width) << " " << px(height) << "\" role=\"img\" aria-label=\""
-    << xmlEscape(grid.quantity + " plan of " + grid.name) << "\" " << font << ">\n";
+// One plan drawing: what it shows and where (page layout in px, `k` px per m of plan).
+struct PlanPage {
+  PlanPage(const GridReport& g, const ColorScale& sc, const PlanOptions& o) : grid(g), scale(sc), opt(o) {
+    const auto [extLo, extHi] = planExtent(grid.layout);
+    lo = extLo;
+    hi = extHi;
+    ext = hi - lo;
+    k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);
+    planW = ext.x * k;
+    planH = ext.y * k;
+    width = left + planW + legendGap + legendBar + legendLabels;
+    height = top + planH + 64;
+  }
+  double X(double u) const { return left + (u - lo.x) * k; }
+  double Y(double v) const { return top + (hi.y - v) * k; }
+
+  const GridReport& grid;
+  const ColorScale& scale;
+  const PlanOptions& opt;
+  Vec2 lo, hi, ext;
+  double k = 0.0;  // px per m
+  double planW = 0.0, planH = 0.0;
+  double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70;
+  double width = 0.0, height = 0.0;
+};
+
+// The <svg> element, the legend's gradient, the clip path of the plan and its background.
+void writeSvgOpen(std::ostringstream& s, const PlanPage& p) {
+  const std::string& id = p.opt.idPrefix;
+  const std::string font = "font-family=\"Helvetica Neue,Helvetica,Arial,sans-serif\"";
+  s << "<svg " << (p.opt.standalone ? "xmlns=\"http://www.w3.org/2000/svg\" " : "") << "class=\"plan\" width=\"" << px(p.width) << "\" height=\""
+    << px(p.height) << "\" viewBox=\"0 0 " << px(p.width) << " " << px(p.height) << "\" role=\"img\" aria-label=\""
+    << xmlEscape(p.grid.quantity + " plan of " + p.grid.name) << "\" " << font << ">\n";
   // Gradient for the legend, sampled from the same colour map.
   s << "<defs><linearGradient id=\"" << id << "-scale\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
   for (int i = 0; i <= 16; ++i) s << "<stop offset=\"" << px(i / 16.0) << "\" stop-color=\"" << hexColor(viridis(i / 16.0)) << "\"/>";
-  s << "</linearGradient><clipPath id=\"" << id << "-clip\"><rect x=\"" << px(left) << "\" y=\"" << px(top)
-    << "\" width=\"" << px(planW) << "\" height=\"" << px(planH) << "\"/></clipPath></defs>\n";
-  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(planW) << "\" height=\"" << px(planH)
+  s << "</linearGradient><clipPath id=\"" << id << "-clip\"><rect x=\"" << px(p.left) << "\" y=\"" << px(p.top)
+    << "\" width=\"" << px(p.planW) << "\" height=\"" << px(p.planH) << "\"/></clipPath></defs>\n";
+  s << "<rect x=\"" << px(p.left) << "\" y=\"" << px(p.top) << "\" width=\"" << px(p.planW) << "\" height=\"" << px(p.planH)
     << "\" fill=\"#f4f4f2\"/>\n";
+}
 
-  // Cells (regular) or dots (points files).
+// Cells (regular) or dots (points files), and the calculation area's outline.
+void writeCells(std::ostringstream& s, const PlanPage& p) {
+  const GridReport& grid = p.grid;
+  const PlanLayout& L = grid.layout;
   s << "<g shape-rendering=\"crispEdges\">\n";
-  const double cellPx = L.regular ? std::min(L.spacingM.x, L.spacingM.y) * k : 0.0;
   for (std::size_t i = 0; i < grid.values.size(); ++i) {
-    const Rgb8 c = falseColor(grid.values[i], scale);
+    const Rgb8 c = falseColor(grid.values[i], p.scale);
     if (L.regular && i < L.cells.size()) {
       const Vec2 a = L.originM + Vec2(L.cells[i]) * L.spacingM;
       // Half a pixel of overlap hides hairline seams between neighbours.
-      s << "<rect x=\"" << px(X(a.x)) << "\" y=\"" << px(Y(a.y + L.spacingM.y)) << "\" width=\""
-        << px(L.spacingM.x * k + 0.5) << "\" height=\"" << px(L.spacingM.y * k + 0.5) << "\" fill=\"" << hexColor(c)
+      s << "<rect x=\"" << px(p.X(a.x)) << "\" y=\"" << px(p.Y(a.y + L.spacingM.y)) << "\" width=\""
+        << px(L.spacingM.x * p.k + 0.5) << "\" height=\"" << px(L.spacingM.y * p.k + 0.5) << "\" fill=\"" << hexColor(c)
         << "\"/>\n";
     }
   }
   s << "</g>\n";
   if (!L.regular) {
     for (std::size_t i = 0; i < grid.values.size() && i < L.planPositions.size(); ++i) {
-      const Vec2 p = L.planPositions[i];
-      s << "<circle cx=\"" << px(X(p.x)) << "\" cy=\"" << px(Y(p.y)) << "\" r=\"6\" fill=\""
-        << hexColor(falseColor(grid.values[i], scale)) << "\" stroke=\"#333\" stroke-width=\"0.8\"/>\n";
+      const Vec2 q = L.planPositions[i];
+      s << "<circle cx=\"" << px(p.X(q.x)) << "\" cy=\"" << px(p.Y(q.y)) << "\" r=\"6\" fill=\""
+        << hexColor(falseColor(grid.values[i], p.scale)) << "\" stroke=\"#333\" stroke-width=\"0.8\"/>\n";
     }
   }
   if (L.outline.size() >= 3) {
     s << "<polygon points=\"";
-    for (const Vec2& p : L.outline) s << px(X(p.x)) << "," << px(Y(p.y)) << " ";
+    for (const Vec2& q : L.outline) s << px(p.X(q.x)) << "," << px(p.Y(q.y)) << " ";
     s << "\" fill=\"none\" stroke=\"#222\" stroke-width=\"1.5\"/>\n";
   }
+}
 
-  // Cell values, when the cells are large enough to hold them.
-  if (opt.cellValues && L.regular && cellPx >= 30.0 && grid.values.size() <= 200) {
-    s << "<g font-size=\"" << px(std::min(11.0, cellPx / 3.2)) << "\" text-anchor=\"middle\" dominant-baseline=\"central\">\n";
-    for (std::size_t i = 0; i < grid.values.size() && i < L.cells.size(); ++i) {
-      const Vec2 c = L.originM + (Vec2(L.cells[i]) + 0.5) * L.spacingM;
-      s << "<text x=\"" << px(X(c.x)) << "\" y=\"" << px(Y(c.y)) << "\" fill=\""
-        << hexColor(contrastingText(falseColor(grid.values[i], scale))) << "\" fill-opacity=\"0.75\">"
-        << formatNumber(grid.values[i], 3) << "</text>\n";
-    }
-    s << "</g>\n";
+// Cell values, when the cells are large enough to hold them.
+void writeCellValues(std::ostringstream& s, const PlanPage& p) {
+  const GridReport& grid = p.grid;
+  const PlanLayout& L = grid.layout;
+  const double cellPx = L.regular ? std::min(L.spacingM.x, L.spacingM.y) * p.k : 0.0;
+  if (!(p.opt.cellValues && L.regular && cellPx >= 30.0 && grid.values.size() <= 200)) return;
+  s << "<g font-size=\"" << px(std::min(11.0, cellPx / 3.2)) << "\" text-anchor=\"middle\" dominant-baseline=\"central\">\n";
+  for (std::size_t i = 0; i < grid.values.size() && i < L.cells.size(); ++i) {
+    const Vec2 c = L.originM + (Vec2(L.cells[i]) + 0.5) * L.spacingM;
+    s << "<text x=\"" << px(p.X(c.x)) << "\" y=\"" << px(p.Y(c.y)) << "\" fill=\""
+      << hexColor(contrastingText(falseColor(grid.values[i], p.scale))) << "\" fill-opacity=\"0.75\">"
+      << formatNumber(grid.values[i], 3) << "</text>\n";
   }
+  s << "</g>\n";
+}
 
-  // Isolines with labels at the middle of each long enough line.
-  if (opt.contours && L.regular) {
-    std::vector<double> levels = opt.contourLevels;
-    if (levels.empty()) {
-      // Isolux lines at the legend's ticks and halfway between them.
-      const std::vector<double> ticks = scaleTicks(scale, 6);
-      for (std::size_t i = 0; i < ticks.size(); ++i) {
-        for (double t : {ticks[i], i + 1 < ticks.size() ? 0.5 * (ticks[i] + ticks[i + 1]) : ticks[i]})
-          if (t > grid.stats.minimumLux && t < grid.stats.maximumLux &&
-              (levels.empty() || t > levels.back()))
-            levels.push_back(t);
-      }
+// The options' contour levels or, without them, isolux lines at the legend's ticks and halfway
+// between them, inside the grid's range.
+std::vector<double> contourLevels(const PlanPage& p) {
+  std::vector<double> levels = p.opt.contourLevels;
+  if (levels.empty()) {
+    const std::vector<double> ticks = scaleTicks(p.scale, 6);
+    for (std::size_t i = 0; i < ticks.size(); ++i) {
+      for (double t : {ticks[i], i + 1 < ticks.size() ? 0.5 * (ticks[i] + ticks[i + 1]) : ticks[i]})
+        if (t > p.grid.stats.minimumLux && t < p.grid.stats.maximumLux &&
+            (levels.empty() || t > levels.back()))
+          levels.push_back(t);
     }
-    s << "<g clip-path=\"url(#" << id << "-clip)\">\n";
-    std::ostringstream labels;
-    for (double level : levels) {
-      for (const ContourLine& line : isolines(L, grid.values, level)) {
-        if (line.points.size() < 2) continue;
-        s << "<polyline points=\"";
-        double length = 0.0;
-        for (std::size_t i = 0; i < line.points.size(); ++i) {
-          s << px(X(line.points[i].x)) << "," << px(Y(line.points[i].y)) << " ";
-          if (i) length += glm::length(line.points[i] - line.points[i - 1]) * k;
-        }
-        s << "\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\"1.1\" stroke-linejoin=\"round\"/>\n";
-        if (length < 60.0) continue;
-        // Label at half the length, along the line, never upside down.
-        double walked = 0.0;
-        for (std::size_t i = 1; i < line.points.size(); ++i) {
-          const double d = glm::length(line.points[i] - line.points[i - 1]) * k;
-          if (walked + d >= 0.5 * length) {
-            const Vec2 a = line.points[i - 1], b = line.points[i];
-            const double f = d > 0 ? (0.5 * length - walked) / d : 0.0;
-            const Vec2 m = a + f * (b - a);
-            double angle = radToDeg(std::atan2(-(b.y - a.y), b.x - a.x));
-            if (angle > 90.0) angle -= 180.0;
-            if (angle < -90.0) angle += 180.0;
-            labels << "<text x=\"" << px(X(m.x)) << "\" y=\"" << px(Y(m.y)) << "\" transform=\"rotate(" << px(angle)
-                   << " " << px(X(m.x)) << " " << px(Y(m.y))
-                   << ")\" text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
-                      "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
-                   << formatNumber(level, 4) << "</text>\n";
-            break;
-          }
-          walked += d;
-        }
-      }
-    }
-    s << labels.str() << "</g>\n";
   }
-  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(planW) << "\" height=\"" << px(planH)
+  return levels;
+}
+
+// The label of a contour line `length` px long: at half its length, along the line, never upside down.
+void writeContourLabel(std::ostringstream& labels, const PlanPage& p, const ContourLine& line, double length,
+                       double level) {
+  double walked = 0.0;
+  for (std::size_t i = 1; i < line.points.size(); ++i) {
+    const double d = glm::length(line.points[i] - line.points[i - 1]) * p.k;
+    if (walked + d >= 0.5 * length) {
+      const Vec2 a = line.points[i - 1], b = line.points[i];
+      const double f = d > 0 ? (0.5 * length - walked) / d : 0.0;
+      const Vec2 m = a + f * (b - a);
+      double angle = radToDeg(std::atan2(-(b.y - a.y), b.x - a.x));
+      if (angle > 90.0) angle -= 180.0;
+      if (angle < -90.0) angle += 180.0;
+      labels << "<text x=\"" << px(p.X(m.x)) << "\" y=\"" << px(p.Y(m.y)) << "\" transform=\"rotate(" << px(angle)
+             << " " << px(p.X(m.x)) << " " << px(p.Y(m.y))
+             << ")\" text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
+                "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
+             << formatNumber(level, 4) << "</text>\n";
+      break;
+    }
+    walked += d;
+  }
+}
+
+// Isolines with labels at the middle of each long enough line; the labels are drawn last, over every line.
+void writeContours(std::ostringstream& s, const PlanPage& p) {
+  const PlanLayout& L = p.grid.layout;
+  if (!(p.opt.contours && L.regular)) return;
+  const std::vector<double> levels = contourLevels(p);
+  s << "<g clip-path=\"url(#" << p.opt.idPrefix << "-clip)\">\n";
+  std::ostringstream labels;
+  for (double level : levels) {
+    for (const ContourLine& line : isolines(L, p.grid.values, level)) {
+      if (line.points.size() < 2) continue;
+      s << "<polyline points=\"";
+      double length = 0.0;
+      for (std::size_t i = 0; i < line.points.size(); ++i) {
+        s << px(p.X(line.points[i].x)) << "," << px(p.Y(line.points[i].y)) << " ";
+        if (i) length += glm::length(line.points[i] - line.points[i - 1]) * p.k;
+      }
+      s << "\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\"1.1\" stroke-linejoin=\"round\"/>\n";
+      if (length < 60.0) continue;
+      writeContourLabel(labels, p, line, length, level);
+    }
+  }
+  s << labels.str() << "</g>\n";
+}
+
+// The plan's frame and axis ticks in metres along its bottom and left edges.
+void writeAxes(std::ostringstream& s, const PlanPage& p) {
+  const double left = p.left, top = p.top, planH = p.planH;
+  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(p.planW) << "\" height=\"" << px(planH)
     << "\" fill=\"none\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
-
-  // Axis ticks in metres along the bottom and left edges.
-  {
-    const double step = niceLength(std::max(ext.x, ext.y) / 6.0);
-    s << "<g font-size=\"10\" fill=\"#555\">\n";
-    for (double u = std::ceil(lo.x / step - 1e-9) * step; u <= hi.x + 1e-9; u += step) {
-      s << "<line x1=\"" << px(X(u)) << "\" y1=\"" << px(top + planH) << "\" x2=\"" << px(X(u)) << "\" y2=\""
-        << px(top + planH + 4) << "\" stroke=\"#777\"/><text x=\"" << px(X(u)) << "\" y=\"" << px(top + planH + 15)
-        << "\" text-anchor=\"middle\">" << formatNumber(u, 4) << "</text>\n";
-    }
-    for (double v = std::ceil(lo.y / step - 1e-9) * step; v <= hi.y + 1e-9; v += step) {
-      s << "<line x1=\"" << px(left - 4) << "\" y1=\"" << px(Y(v)) << "\" x2=\"" << px(left) << "\" y2=\"" << px(Y(v))
-        << "\" stroke=\"#777\"/><text x=\"" << px(left - 7) << "\" y=\"" << px(Y(v))
-        << "\" text-anchor=\"end\" dominant-baseline=\"central\">" << formatNumber(v, 4) << "</text>\n";
-    }
-    s << "</g>\n";
+  const double step = niceLength(std::max(p.ext.x, p.ext.y) / 6.0);
+  s << "<g font-size=\"10\" fill=\"#555\">\n";
+  for (double u = std::ceil(p.lo.x / step - 1e-9) * step; u <= p.hi.x + 1e-9; u += step) {
+    s << "<line x1=\"" << px(p.X(u)) << "\" y1=\"" << px(top + planH) << "\" x2=\"" << px(p.X(u)) << "\" y2=\""
+      << px(top + planH + 4) << "\" stroke=\"#777\"/><text x=\"" << px(p.X(u)) << "\" y=\"" << px(top + planH + 15)
+      << "\" text-anchor=\"middle\">" << formatNumber(u, 4) << "</text>\n";
   }
+  for (double v = std::ceil(p.lo.y / step - 1e-9) * step; v <= p.hi.y + 1e-9; v += step) {
+    s << "<line x1=\"" << px(left - 4) << "\" y1=\"" << px(p.Y(v)) << "\" x2=\"" << px(left) << "\" y2=\"" << px(p.Y(v))
+      << "\" stroke=\"#777\"/><text x=\"" << px(left - 7) << "\" y=\"" << px(p.Y(v))
+      << "\" text-anchor=\"end\" dominant-baseline=\"central\">" << formatNumber(v, 4) << "</text>\n";
+  }
+  s << "</g>\n";
+}
 
-  // Scale bar under the plan, bottom left.
+// Scale bar under the plan, bottom left, and the north arrow, top right above the plan, rotated
+// to true north.
+void writeScaleBarAndNorth(std::ostringstream& s, const PlanPage& p) {
   {
-    const double len = niceLength(ext.x / 4.0);
-    const double x0 = left, y0 = top + planH + 36, w = len * k;
+    const double len = niceLength(p.ext.x / 4.0);
+    const double x0 = p.left, y0 = p.top + p.planH + 36, w = len * p.k;
     s << "<g font-size=\"10\" fill=\"#333\"><rect x=\"" << px(x0) << "\" y=\"" << px(y0) << "\" width=\"" << px(w / 2)
       << "\" height=\"5\" fill=\"#333\"/><rect x=\"" << px(x0 + w / 2) << "\" y=\"" << px(y0) << "\" width=\""
       << px(w / 2) << "\" height=\"5\" fill=\"#fff\" stroke=\"#333\" stroke-width=\"0.8\"/><text x=\""
       << px(x0 + w + 6) << "\" y=\"" << px(y0 + 5) << "\">" << formatNumber(len, 3) << " m</text></g>\n";
   }
-
-  // North arrow, top right above the plan, rotated to true north.
   {
-    const double cx = left + planW - 12, cy = 15;
-    s << "<g transform=\"translate(" << px(cx) << " " << px(cy) << ") rotate(" << px(opt.northDeg)
+    const double cx = p.left + p.planW - 12, cy = 15;
+    s << "<g transform=\"translate(" << px(cx) << " " << px(cy) << ") rotate(" << px(p.opt.northDeg)
       << ")\"><circle r=\"12\" fill=\"#fff\" stroke=\"#666\" stroke-width=\"0.8\"/>"
          "<path d=\"M0,-10 L5,6 L0,3 L-5,6 Z\" fill=\"#222\"/></g>"
       << "<text x=\"" << px(cx - 18) << "\" y=\"" << px(cy + 4) << "\" font-size=\"11\" font-weight=\"700\" "
       << "text-anchor=\"end\" fill=\"#222\">N</text>\n";
   }
+}
 
-  // Legend: colour bar with ticks in the grid's unit.
-  {
-    const double lx = left + planW + legendGap, ly = top, lh = planH;
-    s << "<text x=\"" << px(lx) << "\" y=\"" << px(ly - 10) << "\" font-size=\"11\" font-weight=\"600\" fill=\"#333\">"
-      << xmlEscape(grid.unit) << "</text>\n";
-    s << "<rect x=\"" << px(lx) << "\" y=\"" << px(ly) << "\" width=\"" << px(legendBar) << "\" height=\"" << px(lh)
-      << "\" fill=\"url(#" << id << "-scale)\" stroke=\"#666\" stroke-width=\"0.6\"/>\n";
-    s << "<g font-size=\"10\" fill=\"#333\">\n";
-    for (double t : scaleTicks(scale, 6)) {
-      const double y = ly + lh * (1.0 - scalePosition(t, scale));
-      s << "<line x1=\"" << px(lx + legendBar) << "\" y1=\"" << px(y) << "\" x2=\"" << px(lx + legendBar + 4)
-        << "\" y2=\"" << px(y) << "\" stroke=\"#555\"/><text x=\"" << px(lx + legendBar + 7) << "\" y=\"" << px(y)
-        << "\" dominant-baseline=\"central\">" << formatNumber(t, 4) << "</text>\n";
-    }
-    s << "</g>\n";
+// Legend: colour bar with ticks in the grid's unit.
+void writeLegend(std::ostringstream& s, const PlanPage& p) {
+  const double legendBar = p.legendBar;
+  const double lx = p.left + p.planW + p.legendGap, ly = p.top, lh = p.planH;
+  s << "<text x=\"" << px(lx) << "\" y=\"" << px(ly - 10) << "\" font-size=\"11\" font-weight=\"600\" fill=\"#333\">"
+    << xmlEscape(p.grid.unit) << "</text>\n";
+  s << "<rect x=\"" << px(lx) << "\" y=\"" << px(ly) << "\" width=\"" << px(legendBar) << "\" height=\"" << px(lh)
+    << "\" fill=\"url(#" << p.opt.idPrefix << "-scale)\" stroke=\"#666\" stroke-width=\"0.6\"/>\n";
+  s << "<g font-size=\"10\" fill=\"#333\">\n";
+  for (double t : scaleTicks(p.scale, 6)) {
+    const double y = ly + lh * (1.0 - scalePosition(t, p.scale));
+    s << "<line x1=\"" << px(lx + legendBar) << "\" y1=\"" << px(y) << "\" x2=\"" << px(lx + legendBar + 4)
+      << "\" y2=\"" << px(y) << "\" stroke=\"#555\"/><text x=\"" << px(lx + legendBar + 7) << "\" y=\"" << px(y)
+      << "\" dominant-baseline=\"central\">" << formatNumber(t, 4) << "</text>\n";
   }
+  s << "</g>\n";
+}
+
+}  // namespace
+
+std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
+  const PlanPage page(grid, scale, opt);
+  std::ostringstream s;
+  writeSvgOpen(s, page);
+  writeCells(s, page);
+  writeCellValues(s, page);
+  writeContours(s, page);
+  writeAxes(s, page);
+  writeScaleBarAndNorth(s, page);
+  writeLegend(s, page);
   s << "</svg>\n";
   return s.str();
 }

@@ -350,10 +350,9 @@ void readSky(const Context& c, const toml::table& t, SkySpec& s) {
   tab.finish();
 }
 
-void readGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
-  Table tab(t, c, "[[grid]]");
-  GridSpec g;
-  g.loc = tab.loc();
+// The grid's 'name' (default grid<n>), unique among the case's grids.
+void readGridName(Table& tab, int index, std::set<std::string>& names, GridSpec& g) {
+  const Context& c = tab.ctx();
   g.name = "grid" + std::to_string(index + 1);
   if (auto n = tab.get("name")) {
     g.name = asString(c, *n, "name");
@@ -363,61 +362,90 @@ void readGrid(const Context& c, const toml::table& t, int index, std::set<std::s
     const toml::node* n = tab.get("name");
     throw InputError(n ? c.at(*n) : g.loc, "two grids are named '" + g.name + "'");
   }
+}
+
+void readPointsGrid(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  g.kind = GridKind::kPoints;
+  g.pointsFile = filePath(tab, "file", "sensor points file");
+  for (const char* key : {"corners", "outline", "height", "spacing", "border", "normal", "origin", "axes"})
+    if (const toml::node* n = tab.get(key)) c.fail(*n, keyText(key) + " applies to kind = \"plane\" grids only");
+}
+
+// A plane grid's area: 'corners' of a rectangle or an 'outline' polygon.
+void readPlaneArea(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
+  const Context& c = tab.ctx();
+  const toml::node* cn = tab.get("corners");
+  const toml::node* on = tab.get("outline");
+  if (cn && on) c.fail(*on, "give either 'corners' or 'outline', not both");
+  if (!cn && !on) throw InputError(gridLoc, "a plane grid needs 'corners' = [[x0, y0], [x1, y1]] or an 'outline'");
+  if (cn) {
+    p.isRectangle = true;
+    p.outline = asPointList(c, *cn, "corners");
+    if (p.outline.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+    const Vec2 d = p.outline[1] - p.outline[0];
+    if (!(std::abs(d.x * d.y) > 0.0)) c.fail(*cn, "'corners' span a zero area");
+  } else {
+    p.isRectangle = false;
+    p.outline = asPointList(c, *on, "outline");
+    if (p.outline.size() < 3) c.fail(*on, "'outline' needs at least 3 points");
+    if (!(std::abs(polygonArea(p.outline)) > 0.0)) c.fail(*on, "'outline' encloses a zero area");
+  }
+}
+
+// Where a plane grid lies: at a 'height' (horizontal) or by 'origin' and 'axes'.
+void readPlanePlacement(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
+  const Context& c = tab.ctx();
+  const toml::node* hn = tab.get("height");
+  const toml::node* orn = tab.get("origin");
+  const toml::node* axn = tab.get("axes");
+  if (orn || axn) {
+    // A plane in any orientation: origin + u·axes[0] + v·axes[1].
+    if (hn) c.fail(*hn, "'height' applies to horizontal grids; a grid with 'origin' and 'axes' is placed by them");
+    if (!orn || !axn) throw InputError(gridLoc, "a grid with 'origin' also needs 'axes' = [[ux, uy, uz], [vx, vy, vz]], and vice versa");
+    p.origin = asVec3(c, *orn, "origin");
+    const toml::array& ax = asArray(c, *axn, "axes", 2, "two directions [[ux, uy, uz], [vx, vy, vz]]");
+    p.uAxis = asDirection(c, ax[0], "axes");
+    p.vAxis = asDirection(c, ax[1], "axes");
+    if (std::abs(glm::dot(p.uAxis, p.vAxis)) > 1e-6) c.fail(*axn, "the two 'axes' must be perpendicular");
+  } else {
+    if (!hn) throw InputError(gridLoc, "a plane grid needs 'height' (m) of the horizontal plane");
+    p.origin = Vec3(0.0, 0.0, asNumber(c, *hn, "height"));
+  }
+}
+
+void readPlaneGrid(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  g.kind = GridKind::kPlane;
+  if (const toml::node* n = tab.get("file")) c.fail(*n, "'file' applies to kind = \"points\" grids only");
+  PlaneGridSpec& p = g.plane;
+  readPlaneArea(tab, g.loc, p);
+  readPlanePlacement(tab, g.loc, p);
+  if (const toml::node* sn = tab.get("spacing")) {
+    if (sn->is_string()) {
+      if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
+    } else {
+      p.spacingM = asNumber(c, *sn, "spacing");
+      checkMin(tab, "spacing", *p.spacingM, 0.0, true, " m");
+    }
+  }
+  p.borderM = numberOr(tab, "border", 0.0);
+  checkMin(tab, "border", p.borderM, 0.0, false, " m");
+  if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
+}
+
+void readGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[grid]]");
+  GridSpec g;
+  g.loc = tab.loc();
+  readGridName(tab, index, names, g);
   std::string kind = "plane";
   const toml::node* kn = tab.get("kind");
   if (kn) kind = asString(c, *kn, "kind");
   if (kind == "points") {
-    g.kind = GridKind::kPoints;
-    g.pointsFile = filePath(tab, "file", "sensor points file");
-    for (const char* key : {"corners", "outline", "height", "spacing", "border", "normal", "origin", "axes"})
-      if (const toml::node* n = tab.get(key)) c.fail(*n, keyText(key) + " applies to kind = \"plane\" grids only");
+    readPointsGrid(tab, g);
   } else if (kind == "plane") {
-    g.kind = GridKind::kPlane;
-    if (const toml::node* n = tab.get("file")) c.fail(*n, "'file' applies to kind = \"points\" grids only");
-    PlaneGridSpec& p = g.plane;
-    const toml::node* cn = tab.get("corners");
-    const toml::node* on = tab.get("outline");
-    if (cn && on) c.fail(*on, "give either 'corners' or 'outline', not both");
-    if (!cn && !on) throw InputError(g.loc, "a plane grid needs 'corners' = [[x0, y0], [x1, y1]] or an 'outline'");
-    if (cn) {
-      p.isRectangle = true;
-      p.outline = asPointList(c, *cn, "corners");
-      if (p.outline.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
-      const Vec2 d = p.outline[1] - p.outline[0];
-      if (!(std::abs(d.x * d.y) > 0.0)) c.fail(*cn, "'corners' span a zero area");
-    } else {
-      p.isRectangle = false;
-      p.outline = asPointList(c, *on, "outline");
-      if (p.outline.size() < 3) c.fail(*on, "'outline' needs at least 3 points");
-      if (!(std::abs(polygonArea(p.outline)) > 0.0)) c.fail(*on, "'outline' encloses a zero area");
-    }
-    const toml::node* hn = tab.get("height");
-    const toml::node* orn = tab.get("origin");
-    const toml::node* axn = tab.get("axes");
-    if (orn || axn) {
-      // A plane in any orientation: origin + u·axes[0] + v·axes[1].
-      if (hn) c.fail(*hn, "'height' applies to horizontal grids; a grid with 'origin' and 'axes' is placed by them");
-      if (!orn || !axn) throw InputError(g.loc, "a grid with 'origin' also needs 'axes' = [[ux, uy, uz], [vx, vy, vz]], and vice versa");
-      p.origin = asVec3(c, *orn, "origin");
-      const toml::array& ax = asArray(c, *axn, "axes", 2, "two directions [[ux, uy, uz], [vx, vy, vz]]");
-      p.uAxis = asDirection(c, ax[0], "axes");
-      p.vAxis = asDirection(c, ax[1], "axes");
-      if (std::abs(glm::dot(p.uAxis, p.vAxis)) > 1e-6) c.fail(*axn, "the two 'axes' must be perpendicular");
-    } else {
-      if (!hn) throw InputError(g.loc, "a plane grid needs 'height' (m) of the horizontal plane");
-      p.origin = Vec3(0.0, 0.0, asNumber(c, *hn, "height"));
-    }
-    if (const toml::node* sn = tab.get("spacing")) {
-      if (sn->is_string()) {
-        if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
-      } else {
-        p.spacingM = asNumber(c, *sn, "spacing");
-        checkMin(tab, "spacing", *p.spacingM, 0.0, true, " m");
-      }
-    }
-    p.borderM = numberOr(tab, "border", 0.0);
-    checkMin(tab, "border", p.borderM, 0.0, false, " m");
-    if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
+    readPlaneGrid(tab, g);
   } else {
     c.fail(*kn, "unknown grid kind '" + kind + "' (expected plane or points)");
   }

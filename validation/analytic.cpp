@@ -19,14 +19,14 @@ double rectangleCorner(double radiance, double aM, double bM, double hM) {
   return kPi * radiance * f;
 }
 
-double rectangleAbove(double radiance, double x0, double y0, double x1, double y1, double hM, double x, double y) {
+double rectangleAbove(double radiance, const RectXY& r, double hM, double x, double y) {
   // Signed corner rectangles from the receiver's foot point to each corner.
   auto corner = [&](double cx, double cy) {
     const double a = cx - x, b = cy - y;
     const double s = (a < 0 ? -1.0 : 1.0) * (b < 0 ? -1.0 : 1.0);
     return s * rectangleCorner(radiance, std::abs(a), std::abs(b), hM);
   };
-  return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
+  return corner(r.x1, r.y1) - corner(r.x0, r.y1) - corner(r.x1, r.y0) + corner(r.x0, r.y0);
 }
 
 double coaxialDisk(double radiance, double radiusM, double hM) {

@@ -17,9 +17,15 @@ double sphereSource(double radiance, double radiusM, double distanceM, double co
 // E = π L F.
 double rectangleCorner(double radiance, double aM, double bM, double hM);
 
-// Receiver at (x, y) under an axis-aligned rectangle [x0,x1]×[y0,y1] at height h above it, by
-// superposition of four corner rectangles (signed).
-double rectangleAbove(double radiance, double x0, double y0, double x1, double y1, double hM, double x, double y);
+// An axis-aligned rectangle [x0, x1] × [y0, y1] (m) in a horizontal plane; corners (x0, y0) and
+// (x1, y1).
+struct RectXY {
+  double x0, y0, x1, y1;
+};
+
+// Receiver at (x, y) under rectangle r at height h (m) above it, by superposition of four corner
+// rectangles (signed).
+double rectangleAbove(double radiance, const RectXY& r, double hM, double x, double y);
 
 // Coaxial Lambertian disk of radius R at distance h: E = π L R² / (R² + h²).
 double coaxialDisk(double radiance, double radiusM, double hM);

@@ -103,16 +103,21 @@ CaseResult roofOpening(const RunConfig& cfg) {
   for (auto [x, y] : {std::pair{0.0, 0.0}, {0.5, 0.75}, {2.0, 1.0}}) {
     probes.push_back({"(" + std::to_string(x).substr(0, 3) + "," + std::to_string(y).substr(0, 4) + ")",
                       {Vec3(x, y, 0.0), Vec3(0, 0, 1)}});
-    refs.push_back(analytic::rectangleAbove(L, -0.5, -0.75, 0.5, 0.75, 3.0, x, y));
+    refs.push_back(analytic::rectangleAbove(L, {-0.5, -0.75, 0.5, 0.75}, 3.0, x, y));
   }
   return run(scene, probes, refs, cfg, "E = pi L F (configuration factor of the opening)", 0.01);
 }
 
-// E at p (facing up) through a window in the plane x = 0 spanning y ∈ [y0, y1], z ∈ [z0, z1],
-// under the CIE overcast sky of horizontal illuminance eh (analytic::overcastAperture).
-double overcastWindow(const Vec3& p, double y0, double y1, double z0, double z1, double eh, int n) {
-  const double pp[3] = {p.x, p.y, p.z}, up[3] = {0, 0, 1}, c[3] = {0, y0, z0}, u[3] = {0, y1 - y0, 0},
-               v[3] = {0, 0, z1 - z0};
+// A window in the plane x = 0 spanning y ∈ [y0, y1], z ∈ [z0, z1] (m).
+struct WindowYZ {
+  double y0, y1, z0, z1;
+};
+
+// E at p (facing up) through window w under the CIE overcast sky of horizontal illuminance eh
+// (analytic::overcastAperture).
+double overcastWindow(const Vec3& p, const WindowYZ& w, double eh, int n) {
+  const double pp[3] = {p.x, p.y, p.z}, up[3] = {0, 0, 1}, c[3] = {0, w.y0, w.z0}, u[3] = {0, w.y1 - w.y0, 0},
+               v[3] = {0, 0, w.z1 - w.z0};
   return analytic::overcastAperture(pp, up, c, u, v, eh, n);
 }
 
@@ -154,7 +159,7 @@ CaseResult sideWindow(const RunConfig& cfg) {
   for (double x : {0.5, 1.0, 2.0, 4.0}) {
     const Vec3 p(x, 0.3, 0.8);
     probes.push_back({"x=" + std::to_string(x).substr(0, 3) + " m", {p, Vec3(0, 0, 1)}});
-    refs.push_back(overcastWindow(p, -1.0, 1.0, 1.0, 2.0, 10000.0, 1500));
+    refs.push_back(overcastWindow(p, {-1.0, 1.0, 1.0, 2.0}, 10000.0, 1500));
   }
   return run(scene, probes, refs, cfg, "quadrature of Moon-Spencer luminance over the window", 0.01);
 }

@@ -75,7 +75,7 @@ CaseResult rectangleSource(const RunConfig& cfg) {
   std::vector<Probe> pr;
   for (auto [x, y] : {std::pair{0.0, 0.0}, {0.6, 0.3}, {1.0, 0.0}, {2.0, 1.0}, {0.3, -0.2}}) {
     pr.push_back({"(" + fmt("%g", x) + "," + fmt("%g", y) + ")", {Vec3(x, y, 0), Vec3(0, 0, 1)},
-                  kLux * analytic::rectangleAbove(50.0, -0.6, -0.3, 0.6, 0.3, 1.5, x, y)});
+                  kLux * analytic::rectangleAbove(50.0, {-0.6, -0.3, 0.6, 0.3}, 1.5, x, y)});
   }
   return runScene(rad, pr, cfg, "configuration factor of a parallel rectangle (corner superposition)", 0.01);
 }

@@ -90,7 +90,7 @@ CaseResult nearField(const RunConfig& cfg) {
   for (auto [x, h] : {std::pair{0.0, 0.3}, {0.3, 0.3}, {0.5, 0.6}, {0.0, 1.5}}) {
     pts.push_back({Vec3(x, 0.0, 2.0 - h), Vec3(0, 0, 1)});
     labels.push_back("x=" + std::to_string(x).substr(0, 3) + " h=" + std::to_string(h).substr(0, 3));
-    refs.push_back(analytic::rectangleAbove(l, -0.3, -0.3, 0.3, 0.3, h, x, 0.0));
+    refs.push_back(analytic::rectangleAbove(l, {-0.3, -0.3, 0.3, 0.3}, h, x, 0.0));
   }
   return runLuminaire(iesText(lambertian, 0.6, 0.6), Vec3(0, 0, 2.0), pts, labels, refs, cfg,
                       "Lambert: E = L pi F of the 0.6 m square opening", 0.01, 1024);

@@ -144,7 +144,7 @@ CaseResult coplanarSource(const RunConfig& cfg) {
   for (auto [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.5}, {-2.0, 1.0}}) {
     probes.push_back({"(" + std::to_string(x).substr(0, 4) + "," + std::to_string(y).substr(0, 3) + ")",
                       {Vec3(x, y, 0.0), Vec3(0, 0, 1)}});
-    refs.push_back(kLux * analytic::rectangleAbove(50.0, -0.6, -0.3, 0.6, 0.3, 2.5, x, y));
+    refs.push_back(kLux * analytic::rectangleAbove(50.0, {-0.6, -0.3, 0.6, 0.3}, 2.5, x, y));
   }
   return runRad(rad, probes, refs, cfg, "the lone panel's configuration factor", 0.01);
 }

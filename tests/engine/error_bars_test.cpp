@@ -127,7 +127,7 @@ TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
   s.hemisphereSamples = 16;
   s.lightSamples = 16;
   s.maxBounces = 0;
-  const double exact = kLumensPerWatt * analytic::rectangleAbove(100.0, 0.0, -0.5, 0.5, 0.5, 2.0, 0.0, 0.0);
+  const double exact = kLumensPerWatt * analytic::rectangleAbove(100.0, {0.0, -0.5, 0.5, 0.5}, 2.0, 0.0, 0.0);
   const double a = coverage([&](uint64_t seed) {
     TraceSettings t = s;
     t.seed = seed;
@@ -261,7 +261,7 @@ TEST(ErrorBars, SmallSkyOpeningsCoverTheirShareAtNormalQuality) {
   for (auto [x, y] : {std::pair{0.0, 0.0}, {0.5, 0.75}, {2.0, 1.0}}) {
     const std::string what = "normal, under the roof opening at (" + std::to_string(x).substr(0, 3) + ", " +
                              std::to_string(y).substr(0, 4) + ")";
-    const double exact = analytic::rectangleAbove(L, -0.5, -0.75, 0.5, 0.75, 3.0, x, y);
+    const double exact = analytic::rectangleAbove(L, {-0.5, -0.75, 0.5, 0.75}, 3.0, x, y);
     const double a = coverage(at(tr, Vec3(x, y, 0)), exact, what.c_str());
     EXPECT_GE(a, kBandLo) << what;
     EXPECT_LE(a, kBandHi) << what;

@@ -96,7 +96,7 @@ TEST(LuminaireSource, NearFieldPanelGivesTheAreaSourceAnswer) {
   s.lightSamples = 4096;
   const IrradianceEstimate e = tracer.irradiance({0, 0, 0}, {0, 0, 1}, 0, s);
   const double luminance = 1000.0 / 0.36;  // cd/m²
-  const double area = analytic::rectangleAbove(luminance, -0.3, -0.3, 0.3, 0.3, 0.3, 0.0, 0.0);  // lux
+  const double area = analytic::rectangleAbove(luminance, {-0.3, -0.3, 0.3, 0.3}, 0.3, 0.0, 0.0);  // lux
   const double point = 1000.0 / (0.3 * 0.3);
   // Area source (Lambert, 0.6 m square at 0.3 m): 4835.7 lux; point source: 11111.1 lux.
   // The estimate is the area source's, within its standard error (4096 stratified samples).

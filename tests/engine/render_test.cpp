@@ -283,7 +283,7 @@ TEST(Render, EyeLightSeparatesDirectFromIndirect) {
   s.lightSamples = 1024;
   const EyeLight e = eyeLight(tracer, v, s);
   ASSERT_EQ(e.luminaires.size(), 1u);
-  const double want = kLumensPerWatt * analytic::rectangleAbove(1000.0 / 0.36 / kLumensPerWatt, 0.0, 0.2, 0.6, 0.8, 1.6, 0.0, 0.0);
+  const double want = kLumensPerWatt * analytic::rectangleAbove(1000.0 / 0.36 / kLumensPerWatt, {0.0, 0.2, 0.6, 0.8}, 1.6, 0.0, 0.0);
   std::printf("[ measured ] panel at the eye: direct %.5g lx (closed form %.5g), tracer %.5g lx\n", e.directLuminaireLux,
               want, e.verticalLux);
   EXPECT_NEAR(e.directLuminaireLux, want, 2e-3 * want);

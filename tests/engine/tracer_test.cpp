@@ -78,7 +78,7 @@ TEST(Tracer, LightRectangleAboveIsExact) {
   // Under the rectangle, under a corner, and beside it.
   for (const Vec2 xy : {Vec2(0, 0), Vec2(0.3, 0.6), Vec2(-1.0, -0.5), Vec2(2.5, 1.0), Vec2(-3.0, 0.2)}) {
     const IrradianceEstimate e = tracer.irradiance(Vec3(xy, 0.0), Vec3(0, 0, 1), 7, TraceSettings{});
-    const double want = kLumensPerWatt * analytic::rectangleAbove(L, -1.0, -0.5, 1.5, 0.75, h, xy.x, xy.y);
+    const double want = kLumensPerWatt * analytic::rectangleAbove(L, {-1.0, -0.5, 1.5, 0.75}, h, xy.x, xy.y);
     expectExact(e.illuminanceLux(), want, "rectangle source");
   }
   // Behind the one-sided source nothing arrives.
@@ -169,8 +169,8 @@ TEST(Tracer, PartiallyShadowedRectangle) {
     const double qx0 = std::max(sx0, 2 * ox0 - p.x), qx1 = std::min(sx1, 2 * ox1 - p.x);
     const double qy0 = std::max(sy0, 2 * oy0 - p.y), qy1 = std::min(sy1, 2 * oy1 - p.y);
     ASSERT_TRUE(qx0 < qx1 && qy0 < qy1);
-    const double full = analytic::rectangleAbove(L, sx0, sy0, sx1, sy1, h, p.x, p.y);
-    const double hidden = analytic::rectangleAbove(L, qx0, qy0, qx1, qy1, h, p.x, p.y);
+    const double full = analytic::rectangleAbove(L, {sx0, sy0, sx1, sy1}, h, p.x, p.y);
+    const double hidden = analytic::rectangleAbove(L, {qx0, qy0, qx1, qy1}, h, p.x, p.y);
     const double want = kLumensPerWatt * (full - hidden);
     ASSERT_GT(hidden, 0.01 * full);  // the shadow matters
     const IrradianceEstimate e = tracer.irradiance(Vec3(p, 0.0), {0, 0, 1}, 11, s);
@@ -250,7 +250,7 @@ TEST(Tracer, SensorsJustAboveAFloorSeeNoSelfIntersection) {
     for (const Vec2 xy : {Vec2(0, 0), Vec2(1.0, -0.4)}) {
       const IrradianceEstimate e = tracer.irradiance(Vec3(xy, zFloor + gap), {0, 0, 1}, 0, TraceSettings{});
       const double want =
-          kLumensPerWatt * analytic::rectangleAbove(L, -0.6, -0.6, 0.6, 0.6, zLight - zFloor - gap, xy.x, xy.y);
+          kLumensPerWatt * analytic::rectangleAbove(L, {-0.6, -0.6, 0.6, 0.6}, zLight - zFloor - gap, xy.x, xy.y);
       expectExact(e.illuminanceLux(), want, "sensor above floor");
     }
   }
