@@ -1,6 +1,6 @@
 // The hourly product of annual daylight (engine/daylight_coefficients.h): 1000 sensors × a full
 // year of sky vectors (Tregenza 146 and Reinhart MF:2 578 patches), sun terms included, on all
-// cores. The budget is 5 s for the 8760-hour product; docs/performance.md has the times
+// cores. The budget is 5 s for the 8760-hour product (docs/annual.md); docs/performance.md has the times
 // of a real case.
 #include "engine/daylight_coefficients.h"
 

@@ -1,5 +1,5 @@
 // Rays per second through the octree (and Embree, engine/embree_accelerator.h) on generated scenes
-// of 10³ … 10⁶ small random triangles filling a 10 m cube (issue "Engine core"; results in
+// of 10³ … 10⁶ small random triangles filling a 10 m cube (results in
 // docs/performance.md).
 // Run: build/bench/octree_bench [--benchmark_filter=...]
 #include "base/rng.h"

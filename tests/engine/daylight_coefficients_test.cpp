@@ -3,7 +3,7 @@
 //    the patches of a uniform sky and ground reproduces Tracer::irradiance to rounding;
 //  - an open sensor's coefficients against the closed-form projected solid angles of the bands;
 //  - the site's north rotation puts a north-facing window's light into northern patches;
-//  - the acceptance check of issue 8: for a few hours of a year, the daylight-coefficient
+//  - the acceptance check of docs/annual.md: for a few hours of a year, the daylight-coefficient
 //    illuminance in a side-lit room matches a point-in-time run of the same Perez sky (and sun)
 //    within 3 %.
 #include "engine/daylight.h"

@@ -251,7 +251,7 @@ Scene sphereOnGreyFloor() {
 }
 
 TEST(IrradianceCacheMethod, NearContactAgreesWithThePathTracer) {
-  // The peer failure of the issue: floor points close to the contact point, where a value from
+  // Where peer tools fail (docs/accuracy.md): floor points close to the contact point, where a value from
   // one lighting situation is easily interpolated into another. Sensors 5 mm above the floor
   // and 5 mm from the sphere, and a few farther out, facing up and sideways.
   const Scene sc = sphereOnGreyFloor();

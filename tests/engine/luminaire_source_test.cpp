@@ -36,7 +36,7 @@ Scene sceneWith(const std::string& file, const Vec3& pos, const Vec3& aim, doubl
 double lux(const Tracer& t, const Vec3& p, const Vec3& n) { return t.irradiance(p, n, 0, TraceSettings{}).illuminanceLux(); }
 
 // Directions on the file's (C, γ) grid, where bilinear interpolation is exact: E = I cos ι / d²
-// to the printing precision of the file (9 digits), far inside the 0.5 %.
+// to the printing precision of the file (9 digits), far inside the 0.5 % a photometric web promises.
 TEST(LuminaireSource, InverseSquareAndCosineLawOnAPlane) {
   const double h = 3.0;
   const Scene sc = sceneWith("asym_c.ies", {1.0, 2.0, h}, {0, 0, -1}, 0.0);
