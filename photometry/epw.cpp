@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <limits>
 
@@ -51,6 +52,22 @@ int integer(const std::string& raw, const FileLoc& loc, const char* what, int lo
     throw InputError(loc, std::string(what) + " " + trim(raw) + " is outside " + std::to_string(lo) + ".." +
                               std::to_string(hi));
   return int(v);
+}
+
+// Whether record b is the hour right after record a (EPW hours are hour-ending, 1..24). Typical
+// years mix source years, so February may or may not have a 29th; the year may wrap at New Year.
+bool nextHour(const EpwRecord& a, const EpwRecord& b) {
+  if (a.hour < 24) return b.month == a.month && b.day == a.day && b.hour == a.hour + 1;
+  if (b.hour != 1) return false;
+  if (b.month == a.month) return b.day == a.day + 1;
+  const bool monthEnds = a.day == daysInMonth(2000, a.month) || (a.month == 2 && a.day == 28);
+  return monthEnds && b.day == 1 && b.month == a.month % 12 + 1;
+}
+
+std::string stamp(const EpwRecord& r) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%02d-%02d hour %d", r.month, r.day, r.hour);
+  return buf;
 }
 
 double orMissing(double v, double missingAtOrAbove) {
@@ -117,6 +134,15 @@ EpwFile parseEpw(std::istream& in, const std::string& fileName) {
     r.diffuseHorizontalLux = orMissing(number(v[18], loc, "diffuse horizontal illuminance"), 999900.0);
     for (double x : {r.globalHorizontalWhm2, r.directNormalWhm2, r.diffuseHorizontalWhm2})
       if (x < 0.0) throw InputError(loc, "negative irradiation");
+    // Records run hour by hour: a repeat (8760 copies of one hour pass for a year) or a gap would
+    // put the weather at the wrong sun.
+    if (!f.records.empty() && !nextHour(f.records.back(), r)) {
+      const EpwRecord& prev = f.records.back();
+      const bool repeat = prev.month == r.month && prev.day == r.day && prev.hour == r.hour;
+      throw InputError(loc, "record " + stamp(r) + " follows " + stamp(prev) +
+                                (repeat ? ": the hour is repeated" : ": hours are missing or out of order") +
+                                "; EPW records run hour by hour");
+    }
     f.records.push_back(r);
   }
   if (f.records.empty()) throw InputError(FileLoc{fileName, lineNo, 0}, "EPW file has no hourly records");

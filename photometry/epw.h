@@ -43,11 +43,16 @@ struct EpwFile {
   EpwLocation location;
   std::vector<EpwRecord> records;
   // 8760 or 8784 hourly records.
-  bool isFullYear() const { return records.size() == 8760 || records.size() == 8784; }
+  // 8760 or 8784 hourly records from 1 January hour 1 (records always run hour by hour).
+  bool isFullYear() const {
+    return (records.size() == 8760 || records.size() == 8784) && records.front().month == 1 &&
+           records.front().day == 1 && records.front().hour == 1;
+  }
 };
 
 // Throws InputError "file:line: message" for a missing or malformed LOCATION line, a record
-// with fewer than 35 fields, a field that is not a number, or a month/day/hour out of range.
+// with fewer than 35 fields, a field that is not a number, a month/day/hour out of range, or a
+// record that is not the hour after the one before it (a repeat or a gap).
 EpwFile readEpw(const std::string& path);
 EpwFile parseEpw(std::istream& in, const std::string& fileName);
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 #include <sstream>
 
@@ -78,7 +80,33 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(ErrorCase{"bad_field_count.epw", 11, "has 20 fields, expected 35"},
                       ErrorCase{"bad_number.epw", 10, "bad number 'abc' for direct normal radiation"},
                       ErrorCase{"bad_hour.epw", 12, "hour 25 is outside 1..24"},
-                      ErrorCase{"bad_location.epw", 1, "bad number 'north' for latitude"}));
+                      ErrorCase{"bad_location.epw", 1, "bad number 'north' for latitude"},
+                      // 8760 copies of one hour once passed for a year (DA 100 % instead of 92.5 %).
+                      ErrorCase{"repeated_hour.epw", 21, "record 01-01 hour 12 follows 01-01 hour 12: the hour is repeated"},
+                      ErrorCase{"missing_hour.epw", 21, "record 01-01 hour 14 follows 01-01 hour 12: hours are missing"}));
+
+TEST(Epw, RecordsRunThroughTheYearInOrder) {
+  // The full test year parses (day ends, month ends, 28 February to 1 March), and is a year.
+  const EpwFile y = readEpw(kDir + "synthetic_golden_2026.epw");
+  ASSERT_EQ(y.records.size(), 8760u);
+  EXPECT_TRUE(y.isFullYear());
+  // Three days from 1 January are hour by hour but not a year.
+  EXPECT_FALSE(readEpw(kDir + "synthetic_3day.epw").isFullYear());
+}
+
+TEST(Epw, EveryReferenceWeatherFileIsAYearInOrder) {
+  // Files nobody here wrote (../shared/reference/weather): several sources, leap and non-leap.
+  const std::filesystem::path dir = std::filesystem::path(CANDELA_REFERENCE) / "weather";
+  ASSERT_TRUE(std::filesystem::is_directory(dir)) << dir;
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().extension() != ".epw") continue;
+    ++files;
+    const EpwFile f = readEpw(e.path().string());
+    EXPECT_TRUE(f.isFullYear()) << e.path() << ": " << f.records.size() << " records";
+  }
+  EXPECT_GE(files, 6);
+}
 
 TEST(Epw, MissingFile) {
   EXPECT_THROW(readEpw(kDir + "no_such.epw"), InputError);
