@@ -6,9 +6,11 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
                          const std::string& methodDefault) {
   cmd->add_option("--quality", o.quality, "draft | normal | high (default: the case's, else normal: accurate)")
       ->check(parsedBy(parseQuality, "QUALITY"));
+  // The same bounds as the case file's [settings] (docs/case-format.md).
   cmd->add_option("--bounces", o.bounces, "diffuse interreflections followed (default: case, else quality)")
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--samples", o.samples, samplesHelp + " (default: case, else quality)")->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0, 100));
+  cmd->add_option("--samples", o.samples, samplesHelp + " (default: case, else quality)")
+      ->check(CLI::Range(1, 1'000'000));
   cmd->add_option("--seed", o.seed, "random seed (same seed, same numbers; default: the case's, else 1)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--method", o.method,
@@ -16,7 +18,7 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
                       methodDefault + ")")
       ->check(parsedBy(parseMethod, "METHOD"));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's, else all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 4096));
 }
 
 TraceOverrides CaseTraceOptions::overrides() const {

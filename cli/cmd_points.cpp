@@ -123,24 +123,30 @@ void addPointsCommand(CLI::App& app, Action& action) {
   // Daylight.
   cmd->add_option("--sky", opts->sky, "uniform | cie-overcast | cie-clear | cie:1..15 | perez | none")
       ->group("Daylight");
-  cmd->add_option("--sun-altitude", opts->sunAltitude, "sun altitude, deg")->group("Daylight");
-  cmd->add_option("--sun-azimuth", opts->sunAzimuth, "sun azimuth, deg clockwise from north")->group("Daylight");
+  cmd->add_option("--sun-altitude", opts->sunAltitude, "sun altitude, deg")
+      ->check(CLI::Range(-90.0, 90.0))->group("Daylight");
+  cmd->add_option("--sun-azimuth", opts->sunAzimuth, "sun azimuth, deg clockwise from north")
+      ->check(CLI::Range(-360.0, 360.0))->group("Daylight");
   cmd->add_option("--lat", opts->lat, "site latitude, deg north (or DMS: 37d52'N)")->group("Daylight");
   cmd->add_option("--lon", opts->lon, "site longitude, deg east (or DMS: 122d16'W)")->group("Daylight");
   cmd->add_option("--time", opts->time, "local standard time, ISO 8601 (sun from the NREL SPA)")->group("Daylight");
-  cmd->add_option("--timezone", opts->timezone, "hours from UTC of local standard time")->group("Daylight");
-  cmd->add_option("--elevation", opts->elevation, "site elevation, m")->group("Daylight");
-  cmd->add_option("--north", opts->north, "true north, deg clockwise from model +Y")->group("Daylight");
+  cmd->add_option("--timezone", opts->timezone, "hours from UTC of local standard time")
+      ->check(CLI::Range(-18.0, 18.0))->group("Daylight");
+  cmd->add_option("--elevation", opts->elevation, "site elevation, m")->check(CLI::Range(-500.0, 12000.0))->group("Daylight");
+  cmd->add_option("--north", opts->north, "true north, deg clockwise from model +Y")
+      ->check(CLI::Range(-360.0, 360.0))->group("Daylight");
   cmd->add_flag("--no-sun", opts->noSun, "sky only, no sun")->group("Daylight");
+  // Illuminances and irradiances: finite, and far above any sky's (the sun's direct normal
+  // illuminance stays below 1.3e5 lx) so that no valid input is refused.
   cmd->add_option("--diffuse-horizontal-illuminance", opts->dhiLux,
                   "the sky's illuminance on an open horizontal plane, lux (default 10000)")
-      ->check(CLI::NonNegativeNumber)->group("Daylight");
+      ->check(CLI::Range(0.0, 1.0e7))->group("Daylight");
   cmd->add_option("--direct-normal-illuminance", opts->dniLux, "the sun's direct normal illuminance, lux")
-      ->check(CLI::NonNegativeNumber)->group("Daylight");
+      ->check(CLI::Range(0.0, 1.0e7))->group("Daylight");
   cmd->add_option("--direct-normal-irradiance", opts->dniWm2, "direct normal irradiance, W/m2 (perez)")
-      ->check(CLI::NonNegativeNumber)->group("Daylight");
+      ->check(CLI::Range(0.0, 1.0e7))->group("Daylight");
   cmd->add_option("--diffuse-horizontal-irradiance", opts->dhiWm2, "diffuse horizontal irradiance, W/m2 (perez)")
-      ->check(CLI::NonNegativeNumber)->group("Daylight");
+      ->check(CLI::Range(0.0, 1.0e7))->group("Daylight");
   cmd->add_option("--ground-reflectance", opts->groundReflectance, "ground reflectance (default 0.2)")
       ->check(CLI::Range(0.0, 1.0))->group("Daylight");
   cmd->callback([opts, &action] { action = [opts] { return runPoints(*opts); }; });

@@ -68,11 +68,18 @@ void addSunCommand(CLI::App& app, Action& action) {
   cmd->add_option("--lat", opts->lat, "latitude, deg north (decimal or DMS, e.g. 37d52'N)")->required();
   cmd->add_option("--lon", opts->lon, "longitude, deg east (decimal or DMS, e.g. 122d16'W)")->required();
   cmd->add_option("--time", opts->time, "local standard time YYYY-MM-DDTHH:MM[:SS][+HH:MM]")->required();
-  cmd->add_option("--elevation", opts->elevationM, "site elevation, m (default 0)");
-  cmd->add_option("--pressure", opts->pressureMbar, "mean air pressure, mbar (default 1013.25; 0: no refraction)");
-  cmd->add_option("--temperature", opts->temperatureC, "mean air temperature, deg C (default 15)");
-  cmd->add_option("--delta-t", opts->deltaTSec, "TT - UT1, s (default: Espenak-Meeus estimate for the year)");
-  cmd->add_option("--timezone", opts->timezoneHours, "hours from UTC when --time has no offset (default 0)");
+  // Ranges: the places where people build (the Dead Sea shore to the highest summits, with room
+  // for aircraft), the pressures and temperatures of the lower atmosphere, and Delta T over the
+  // SPA's years (Reda & Andreas 2008, table 1: -8000 to 8000 s).
+  cmd->add_option("--elevation", opts->elevationM, "site elevation, m (default 0)")->check(CLI::Range(-500.0, 12000.0));
+  cmd->add_option("--pressure", opts->pressureMbar, "mean air pressure, mbar (default 1013.25; 0: no refraction)")
+      ->check(CLI::Range(0.0, 1100.0));
+  cmd->add_option("--temperature", opts->temperatureC, "mean air temperature, deg C (default 15)")
+      ->check(CLI::Range(-90.0, 60.0));
+  cmd->add_option("--delta-t", opts->deltaTSec, "TT - UT1, s (default: Espenak-Meeus estimate for the year)")
+      ->check(CLI::Range(-8000.0, 8000.0));
+  cmd->add_option("--timezone", opts->timezoneHours, "hours from UTC when --time has no offset (default 0)")
+      ->check(CLI::Range(-18.0, 18.0));
   cmd->callback([opts, &action] { action = [opts] { return runSun(*opts); }; });
 }
 

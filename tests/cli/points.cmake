@@ -27,3 +27,12 @@ candela_cli_test(points.missing_points 2 "points/no_such.pts" points points/room
 # An annual case is a whole year: `points` refuses it at the [sky] line and points to `run`.
 candela_cli_test(points.annual_case 2 "annual/case.toml:8: an annual sky is a whole year: `candela run` computes it"
                  ${PTS} --case ${PROJECT_SOURCE_DIR}/tests/cli/run/annual/case.toml)
+
+# Absurd option values are refused up front (exit 2), never run for hours or ended in exit 1.
+candela_cli_test(points.absurd_samples 2 "--samples: Value 2000000000 not in range 1 to 1000000"
+                 ${PTS} points/room.rad --samples 2000000000)
+candela_cli_test(points.absurd_bounces 2 "--bounces" ${PTS} points/room.rad --bounces 1000000)
+# Inputs that are not regular files: a device would be read forever, a folder is no points file.
+candela_cli_test(points.device_scene 2 "/dev/zero: the scene file is a device, not a regular file" ${PTS} /dev/zero)
+candela_cli_test(points.folder_points 2 "the points file is a folder, not a regular file"
+                 points points/room.rad --points points)

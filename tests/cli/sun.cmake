@@ -14,3 +14,7 @@ candela_cli_test(sun_bad_latitude 2 "--lat: latitude '95' is outside"
   sun --lat 95 --lon 0 --time 2026-03-21T12:00)
 candela_cli_test(sun_bad_time 2 "--time: bad time"
   sun --lat 40 --lon 0 --time 2026-02-30T12:00)
+
+# Values outside the places and atmospheres the SPA models are refused (exit 2), not computed.
+candela_cli_test(sun.absurd_elevation 2 "--elevation: Value 1e308 not in range"
+                 sun --lat 40 --lon -105 --time 2026-03-21T12:00 --elevation 1e308)
