@@ -1,5 +1,7 @@
 #include "reports/csv_writer.h"
 
+#include <string_view>
+
 #include <stdexcept>
 
 #include "base/atomic_file.h"
@@ -9,8 +11,12 @@ namespace candela {
 namespace fs = std::filesystem;
 
 std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string q = "\"";
+  // A text that a spreadsheet would take for a formula (=, +, -, @, or a leading tab or CR: a
+  // grid named "=cmd|' /C calc'!A0") gets a leading apostrophe, so it is shown as text (OWASP,
+  // "CSV Injection").
+  const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
+  if (!formula && text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string q = formula ? "\"'" : "\"";
   for (char c : text) {
     if (c == '"') q += '"';
     q += c;

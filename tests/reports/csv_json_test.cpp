@@ -148,5 +148,13 @@ TEST(Summary, CsvFieldQuoting) {
   EXPECT_EQ(csvField("say \"hi\""), "\"say \"\"hi\"\"\"");
 }
 
+TEST(Summary, CsvFieldsThatLookLikeFormulasStayText) {
+  // A grid named like a spreadsheet formula must not run as one when summary.csv is opened.
+  EXPECT_EQ(csvField("=cmd|' /C calc'!A0"), "\"'=cmd|' /C calc'!A0\"");
+  for (const char* f : {"+1", "-2", "@SUM(A1)", "\tx", "\rx"}) EXPECT_EQ(csvField(f).substr(0, 2), "\"'") << f;
+  EXPECT_EQ(csvField("desk-1"), "desk-1");  // only a leading sign counts
+  EXPECT_EQ(csvField(""), "");
+}
+
 }  // namespace
 }  // namespace candela
