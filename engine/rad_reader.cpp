@@ -1,6 +1,7 @@
 #include "engine/rad_reader.h"
 #include "base/input_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -8,6 +9,11 @@
 #include <unordered_map>
 
 namespace candela {
+
+namespace {
+constexpr double kMaxCoordinateM = 1e7;
+constexpr double kMaxRadiance = 1e30;
+}  // namespace
 
 namespace {
 
@@ -219,7 +225,50 @@ class Reader {
     }
     for (int c = 0; c < 3; ++c)
       if (m.color[c] < 0.0) fail(p.line, p.type + " '" + p.name + "' has a negative colour component");
+    checkPhysical(p, m);
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+  }
+
+  // Materials that cannot exist are refused: they would create light or give nonsense, and an
+  // overflowing emitter gives NaN lux. A surface reflects and transmits at most what it receives
+  // (Radiance reference manual: plastic reflects colour·(1 − spec) diffusely and spec specularly;
+  // trans transmits a fraction trans of what is not reflected specularly).
+  void checkPhysical(const Primitive& p, const Material& m) {
+    const std::string what = p.type + " '" + p.name + "'";
+    const double cmax = std::max({m.color.x, m.color.y, m.color.z});
+    switch (m.type) {
+      case MaterialType::kPlastic:
+      case MaterialType::kMetal:
+      case MaterialType::kTrans:
+        if (cmax > 1.0) fail(p.line, what + " reflects more than it receives: a colour component above 1");
+        if (!(m.specularity >= 0.0 && m.specularity <= 1.0)) fail(p.line, what + " needs a specularity in [0, 1]");
+        if (m.roughness < 0.0) fail(p.line, what + " has a negative roughness");
+        if (m.type == MaterialType::kTrans &&
+            !(m.transmissivity >= 0.0 && m.transmissivity <= 1.0 && m.transmittedSpecular >= 0.0 &&
+              m.transmittedSpecular <= 1.0))
+          fail(p.line, what + " needs its transmission and transmitted specularity in [0, 1]");
+        break;
+      case MaterialType::kMirror:
+      case MaterialType::kGlass:
+        if (cmax > 1.0) fail(p.line, what + " transmits or reflects more than it receives: a component above 1");
+        break;
+      case MaterialType::kLight:
+      case MaterialType::kIllum:
+      case MaterialType::kGlow:
+        // 1e30 W/sr/m² is far above the sun's 2e7; beyond it the light would overflow in products.
+        if (cmax > kMaxRadiance) fail(p.line, what + " has a radiance above 1e30 W/sr/m2");
+        break;
+      default:
+        break;
+    }
+  }
+
+  // Geometry within 10 000 km of the origin: beyond, ray offsets and the accelerators' single
+  // precision lose the surfaces (Embree aborts at ~1.8e18 m).
+  void checkCoordinates(const Primitive& p) {
+    for (double v : p.reals)
+      if (std::abs(v) > kMaxCoordinateM)
+        fail(p.line, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + std::to_string(v) + ")");
   }
 
   void addPolygon(const Primitive& p, uint32_t mat, Scene& target) {
@@ -291,6 +340,7 @@ class Reader {
     const uint32_t mat = mod < 0 ? 0 : static_cast<uint32_t>(mod);
     Scene probe;  // void surfaces are validated into a scratch scene and dropped
     Scene& target = mod < 0 ? probe : scene_;
+    checkCoordinates(p);
     if (t == "polygon") {
       addPolygon(p, mat, target);
     } else if (t == "sphere" || t == "bubble") {

@@ -12,6 +12,7 @@
 #include "reports/json_writer.h"
 #include "study/blinds.h"
 #include "study/case_scene.h"
+#include "study/finite_results.h"
 #include "study/prepared_grid.h"
 #include "study/run_outputs.h"
 
@@ -310,6 +311,8 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
   // 2. Sky vectors of the year, then coefficients.
   const AnnualTraces t = traceAnnual(c, in, trace, observer);
+  checkFinite(t.open.year.total, "the hourly illuminance");
+  if (t.closed) checkFinite(t.closed->year.total, "the hourly illuminance with blinds closed");
   // 3. Metrics per grid.
   const YearHours y = yearHours(t.sky, c.annual);
   RunResult result;

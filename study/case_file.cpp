@@ -77,13 +77,23 @@ class Table {
 
 std::string keyText(std::string_view key) { return "'" + std::string(key) + "'"; }
 
+// No value of a case file is larger: coordinates stay within 10 000 km, where ray offsets and the
+// accelerators' single precision keep the surfaces (Embree aborts near 1.8e18 m), and no
+// illuminance, threshold or multiplier comes near it.
+constexpr double kMaxCaseValue = 1e7;
+
 double asNumber(const Context& c, const toml::node& n, std::string_view key) {
-  if (auto v = n.as_floating_point()) {
-    if (!std::isfinite(v->get())) c.fail(n, keyText(key) + " must be a finite number");
-    return v->get();
+  double v = 0.0;
+  if (auto f = n.as_floating_point()) {
+    if (!std::isfinite(f->get())) c.fail(n, keyText(key) + " must be a finite number");
+    v = f->get();
+  } else if (auto i = n.as_integer()) {
+    v = static_cast<double>(i->get());
+  } else {
+    c.fail(n, keyText(key) + " must be a number, got " + typeName(n));
   }
-  if (auto v = n.as_integer()) return static_cast<double>(v->get());
-  c.fail(n, keyText(key) + " must be a number, got " + typeName(n));
+  if (std::abs(v) > kMaxCaseValue) c.fail(n, keyText(key) + " must lie within ±1e7 (coordinates in m)");
+  return v;
 }
 
 int64_t asInteger(const Context& c, const toml::node& n, std::string_view key) {

@@ -9,6 +9,7 @@
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 #include "study/case_scene.h"
+#include "study/finite_results.h"
 #include "study/prepared_grid.h"
 #include "study/run_outputs.h"
 #include "study/view_study.h"
@@ -135,6 +136,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     const ObservedStep step(observer, "tracing", all.size());
     est = computeIrradiance(tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); });
   }
+  checkFinite(est, "the grids' illuminance");
 
   // 3. Metrics, verdicts and views, all before anything is written.
   RunResult result;
@@ -146,6 +148,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   std::vector<ViewResult> views;
   for (const ViewSpec& view : c.views) {
     views.push_back(computeView(*scene, tracer, view, trace.settings, trace.threads, ViewOptions{}, observer));
+    checkFinite(views.back().image.luminance, "view '" + view.name + "'");
     data.views.push_back(viewReport(views.back()));
   }
   data.run.runTimeS = secondsSince(run.start);

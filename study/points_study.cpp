@@ -3,6 +3,7 @@
 #include "engine/rad_reader.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
+#include "study/finite_results.h"
 
 namespace candela {
 
@@ -33,6 +34,7 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
   const ObservedStep step(observer, "tracing", points.size());
   r.estimates = computeIrradiance(tracer, points, ps.trace.settings, ps.trace.threads,
                                   [&step](std::size_t done) { step(done); });
+  checkFinite(r.estimates, "the points' illuminance");
   return r;
 }
 

@@ -3,6 +3,7 @@
 #include "engine/camera.h"
 #include "reports/png_writer.h"
 #include "study/case_scene.h"
+#include "study/finite_results.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -117,6 +118,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   RenderResult r;
   r.caseName = c.name;
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
+  checkFinite(r.view.image.luminance, "view '" + view->name + "'");
   try {
     r.paths = writeViewResult(outDir, r.view,
                               "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);

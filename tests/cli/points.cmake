@@ -36,3 +36,6 @@ candela_cli_test(points.absurd_bounces 2 "--bounces" ${PTS} points/room.rad --bo
 candela_cli_test(points.device_scene 2 "/dev/zero: the scene file is a device, not a regular file" ${PTS} /dev/zero)
 candela_cli_test(points.folder_points 2 "the points file is a folder, not a regular file"
                  points points/room.rad --points points)
+# A finite but huge coordinate once aborted the process inside Embree (exit 134).
+candela_cli_test(points.far_point 2 "points/far_point.pts:2: a sensor point lies beyond 1e7 m from the origin"
+                 points points/room.rad --points points/far_point.pts)

@@ -192,6 +192,19 @@ TEST(RadReader, NegativeRadius) {
   expectError("negative_radius.rad", 6, "ring 'disk' has a negative radius");
 }
 
+TEST(RadReader, PhysicallyImpossibleMaterials) {
+  expectError("reflects_too_much.rad", 1, "plastic 'bright' reflects more than it receives");
+  expectError("negative_roughness.rad", 1, "plastic 'rough' has a negative roughness");
+  expectError("transmits_too_much.rad", 1, "trans 't' needs its transmission and transmitted specularity in [0, 1]");
+  // 1e308 W/sr/m² once gave -nan lux with exit 0.
+  expectError("overflowing_light.rad", 2, "light 'lamp' has a radiance above 1e30 W/sr/m2");
+}
+
+TEST(RadReader, CoordinatesBeyondTheExactRange) {
+  // A centre at 1e30 m once aborted the process inside Embree.
+  expectError("far_sphere.rad", 6, "sphere 'far' has a coordinate or size beyond 1e7 m");
+}
+
 TEST(RadReader, NumberThatDoesNotParse) {
   expectError("bad_number.rad", 6, "'0.5x' is not a number");
 }

@@ -1,0 +1,32 @@
+#include "study/finite_results.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace candela {
+
+namespace {
+
+[[noreturn]] void nonFinite(const std::string& what, std::size_t i) {
+  throw std::runtime_error("a non-finite result in " + what + " at index " + std::to_string(i) +
+                           "; nothing was written");
+}
+
+template <class T>
+void checkAll(const std::vector<T>& values, const std::string& what) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i])) nonFinite(what, i);
+}
+
+}  // namespace
+
+void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::string& what) {
+  for (std::size_t i = 0; i < estimates.size(); ++i)
+    if (!std::isfinite(estimates[i].illuminanceLux()) || !std::isfinite(estimates[i].standardErrorLux()))
+      nonFinite(what, i);
+}
+
+void checkFinite(const std::vector<float>& values, const std::string& what) { checkAll(values, what); }
+void checkFinite(const std::vector<double>& values, const std::string& what) { checkAll(values, what); }
+
+}  // namespace candela

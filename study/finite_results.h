@@ -1,0 +1,21 @@
+// Results are checked before anything is written: NaN or infinity is never a result. Inputs
+// that could overflow are refused at their line by the readers, so a non-finite value here is an
+// internal failure (exit 1), reported with where it arose instead of written as "-nan" lux.
+#pragma once
+
+#include "engine/tracer.h"
+
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// Throws std::runtime_error naming `what` and the first point whose illuminance or error is not
+// finite.
+void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::string& what);
+
+// Throws std::runtime_error naming `what` and the first index whose value is not finite.
+void checkFinite(const std::vector<float>& values, const std::string& what);
+void checkFinite(const std::vector<double>& values, const std::string& what);
+
+}  // namespace candela
