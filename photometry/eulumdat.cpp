@@ -55,6 +55,16 @@ class LdtLines {
   }
   FileLoc loc() const { return FileLoc{file_, int(pos_), 0}; }
   bool done() const { return pos_ >= lines_.size(); }
+  // Lines not read yet.
+  size_t remaining() const { return lines_.size() - std::min(pos_, lines_.size()); }
+  // A count read from the header (`what`, at the line just read) needs `perItem` lines per item:
+  // refused before anything is allocated when the file cannot hold them (a 756-byte file with
+  // Mc = 400 000 000 once allocated 3.1 GB).
+  void checkCount(long long count, long long perItem, const std::string& what) const {
+    if (count > 0 && count * perItem > static_cast<long long>(remaining()))
+      throw InputError(loc(), what + " = " + std::to_string(count) + " needs " + std::to_string(count * perItem) +
+                                  " more lines, but the file has " + std::to_string(remaining()));
+  }
 
  private:
   std::string file_;
@@ -94,12 +104,14 @@ LdtShape readIdentification(LdtLines& in, PhotometricInfo& info) {
     throw InputError(in.loc(), "symmetry indicator Isym must be 0-4, got " + std::to_string(isym));
   const int mc = in.integer("number of C planes Mc");
   if (mc < 1) throw InputError(in.loc(), "number of C planes Mc must be at least 1, got " + std::to_string(mc));
+  in.checkCount(mc, 1, "Mc");
   if ((isym == 2 && mc % 2 != 0) || ((isym == 3 || isym == 4) && mc % 4 != 0))
     throw InputError(in.loc(), "Mc = " + std::to_string(mc) + " does not fit symmetry " + std::to_string(isym) +
                                    (isym == 2 ? " (needs an even number)" : " (needs a multiple of 4)"));
   in.number("C plane spacing Dc");
   const int ng = in.integer("number of gamma angles Ng");
   if (ng < 2) throw InputError(in.loc(), "number of gamma angles Ng must be at least 2, got " + std::to_string(ng));
+  in.checkCount(ng, 1, "Ng");
   in.number("gamma spacing Dg");
   info.keywords["TEST"] = in.text("measurement report number");
   info.keywords["LUMINAIRE"] = in.text("luminaire name");
@@ -146,6 +158,7 @@ int readLampData(LdtLines& in, PhotometricInfo& info) {
   info.keywords["TILT"] = fmt(in.number("tilt during measurement"));
   const int nsets = in.integer("number of lamp sets");
   if (nsets < 1) throw InputError(in.loc(), "number of lamp sets must be at least 1, got " + std::to_string(nsets));
+  in.checkCount(nsets, 6, "the number of lamp sets");
   info.lampSets.resize(size_t(nsets));
   for (auto& s : info.lampSets) s.count = in.integer("number of lamps");
   for (auto& s : info.lampSets) s.type = in.text("lamp type");
@@ -247,7 +260,7 @@ double applyLampSet1(PhotometricInfo& info, const std::string& fileName, int flu
 // Line 30: `count` intensities (cd/klm), scaled to cd; nothing may follow them.
 std::vector<double> readIntensities(LdtLines& in, size_t count, double scale) {
   std::vector<double> cd;
-  cd.reserve(count);
+  cd.reserve(std::min(count, in.remaining()));  // a truncated file ends in its own error below
   for (size_t i = 0; i < count; ++i) {
     const double v = in.number("luminous intensity (cd/klm)");
     if (v < 0.0) throw InputError(in.loc(), "negative luminous intensity " + fmt(v));

@@ -90,7 +90,11 @@ INSTANTIATE_TEST_SUITE_P(
                     BadFile{"bad_negative.ldt", 111, "negative luminous intensity"},
                     BadFile{"bad_extra.ldt", 141, "unexpected line"},
                     BadFile{"bad_flux.ldt", 29, "lamp flux"},
-                    BadFile{"bad_mc.ldt", 4, "multiple of 4"}),
+                    BadFile{"bad_mc.ldt", 4, "multiple of 4"},
+                    // Counts a small file cannot hold are refused before any allocation.
+                    BadFile{"huge_mc.ldt", 4, "Mc = 400000000 needs 400000000 more lines"},
+                    BadFile{"huge_ng.ldt", 6, "Ng = 1000000000 needs"},
+                    BadFile{"huge_lamp_sets.ldt", 26, "the number of lamp sets = 10000000 needs 60000000 more lines"}),
     [](const testing::TestParamInfo<BadFile>& info) {
       std::string n = info.param.name;
       return n.substr(0, n.find('.'));
