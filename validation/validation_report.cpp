@@ -1,6 +1,7 @@
 #include "validation/validation_report.h"
 
 #include "base/atomic_file.h"
+#include "base/error.h"
 #include "validation/validation_html.h"
 
 #include <cmath>
@@ -55,7 +56,12 @@ std::string validationCsv(const std::vector<CaseResult>& results) {
 
 void writeValidationOutputs(const std::filesystem::path& dir, const std::vector<CaseResult>& results,
                             const std::string& quality, uint64_t seed) {
-  std::filesystem::create_directories(dir);
+  // An --out that is not a folder (a file, a device) is the user's to fix: exit 2, not 1.
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError(FileLoc{dir.string(), 0, 0}, "the output folder cannot be created (" +
+                                                      (ec ? ec.message() : std::string("not a folder")) + ")");
   writeFileAtomic(dir / "validation.csv", validationCsv(results));
   ValidationPage page;
   page.quality = quality;
