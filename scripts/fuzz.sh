@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# Sanitizers and fuzzing (docs/reliability.md, "Fuzzing and sanitizers"). Run by .ci/run after
+# scripts/test.sh. In one clang build folder (build-asan, AddressSanitizer + UndefinedBehavior-
+# Sanitizer, every finding fatal):
+#   1. the unit-test binaries run under the sanitizers;
+#   2. each reader's libFuzzer target runs for FUZZ_SECONDS, seeded with the project's fixtures.
+# Any crash, sanitizer report, uncaught exception other than InputError, input slower than 10 s
+# or allocation over 1 GB fails the script. A failing input is copied to tests/fuzz/<reader>/
+# (commit it: the normal build's CTest fuzz_replay.<reader> replays it from then on).
+#
+#   scripts/fuzz.sh [tests|fuzz|all]      (default all)
+# Environment: FUZZ_SECONDS (per reader, default 60), FUZZ_JOBS (readers at once, default 2),
+# FUZZ_READERS (default every reader), BUILD_DIR (default build-asan),
+# CANDELA_SKIP_FUZZ=1 skips everything (ignored when CI=true: CI always runs it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root="$(pwd)"
+stage="${1:-all}"
+if [ "${CANDELA_SKIP_FUZZ:-0}" = "1" ]; then
+  if [ "${CI:-}" = "true" ]; then
+    echo "fuzz.sh: CANDELA_SKIP_FUZZ is ignored on CI" >&2
+  else
+    echo "fuzz.sh: skipped (CANDELA_SKIP_FUZZ=1)" >&2
+    exit 0
+  fi
+fi
+build="${BUILD_DIR:-build-asan}"
+seconds="${FUZZ_SECONDS:-60}"
+jobs="${FUZZ_JOBS:-2}"
+readers=(${FUZZ_READERS:-rad_reader sensor_points ies eulumdat epw case_file})
+unit_tests=(base_test photometry_test engine_test metrics_test reports_test study_test)
+
+# Unit tests left out under the sanitizers (docs/reliability.md says why): whole-case runs whose
+# ray tracing is ~10x slower instrumented and that the fuzz targets and the faster tests
+# already cover for memory errors.
+declare -A gtest_exclude=(
+)
+
+scripts/deps.sh --fuzz
+sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=None \
+  -DCMAKE_CXX_FLAGS="$sanitize -O1 -gline-tables-only" \
+  -DCANDELA_FUZZ=ON -DCANDELA_BUILD_BENCH=OFF >/dev/null
+targets=()
+[ "$stage" = fuzz ] || targets+=("${unit_tests[@]}")
+[ "$stage" = tests ] || for r in "${readers[@]}"; do targets+=("fuzz_$r"); done
+t0=$SECONDS
+cmake --build "$build" -j2 --target "${targets[@]}"
+echo "== sanitizer build: $((SECONDS - t0)) s" >&2
+
+# halt_on_error: the first report ends the process with a failure (UBSan too: the code is built
+# with -fno-sanitize-recover=all). Leak checking stays on.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+status=0
+
+if [ "$stage" != fuzz ]; then
+  t0=$SECONDS
+  logs="$build/sanitizer-logs"
+  mkdir -p "$logs"
+  run_unit() {  # binary -> log; prints one line with the result and the time
+    local t=$SECONDS filter="${gtest_exclude[$1]:-}"
+    local args=()
+    [ -n "$filter" ] && args+=("--gtest_filter=-$filter")
+    if "$build/tests/$1" "${args[@]}" >"$logs/$1.log" 2>&1; then
+      echo "   $1: ok ($((SECONDS - t)) s)"
+    else
+      echo "   $1: FAILED ($((SECONDS - t)) s), log: $logs/$1.log"
+      tail -n 40 "$logs/$1.log"
+      return 1
+    fi
+  }
+  export -f run_unit
+  export build logs
+  declare -p gtest_exclude >"$logs/exclude.sh"
+  echo "== unit tests under ASan+UBSan" >&2
+  printf '%s\n' "${unit_tests[@]}" |
+    xargs -P2 -I{} bash -c 'source "$logs/exclude.sh"; run_unit {}' || status=1
+  echo "== sanitizer tests: $((SECONDS - t0)) s" >&2
+fi
+
+# Seeds for each reader: the project's fixtures and demo cases, and /work/shared/reference when
+# it exists, copied at run time into the build folder (never into the repository), plus the
+# inputs kept in tests/fuzz/<reader>/.
+seed_pattern() {
+  case "$1" in
+    rad_reader) echo '*.rad' ;; sensor_points) echo '*.pts' ;; ies) echo '*.[iI][eE][sS]' ;;
+    eulumdat) echo '*.[lL][dD][tT]' ;; epw) echo '*.epw' ;; case_file) echo '*.toml' ;;
+  esac
+}
+fuzz_one() {  # reader -> 0 when the pass found nothing
+  local r="$1" dir="$build/fuzz/$1"
+  rm -rf "$dir/seeds" "$dir/artifacts"
+  mkdir -p "$dir/seeds" "$dir/corpus" "$dir/artifacts"
+  local n=0 f
+  while IFS= read -r -d '' f; do
+    # Seeds are cut at 64 KB (libFuzzer's -max_len below): an EPW year is 1.5 MB.
+    head -c 65536 "$f" >"$dir/seeds/$n.seed"
+    n=$((n + 1))
+  done < <(find tests/data cases /work/shared/reference -type f -name "$(seed_pattern "$r")" -print0 2>/dev/null)
+  local kept=()
+  [ -d "tests/fuzz/$r" ] && kept=("tests/fuzz/$r")
+  local t=$SECONDS
+  # -timeout: an input slower than 10 s is a hang; -rss_limit_mb / -malloc_limit_mb: more than
+  # 1 GB resident or in one allocation is a finding.
+  if "$build/tests/fuzz/fuzz_$r" "$dir/corpus" "$dir/seeds" "${kept[@]}" \
+      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=1024 \
+      -max_len=65536 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" \
+      >"$dir/fuzz.log" 2>&1; then
+    echo "   $r: ok, $n seeds, $(grep -o 'stat::number_of_executed_units: *[0-9]*' "$dir/fuzz.log" |
+      grep -o '[0-9]*$') runs ($((SECONDS - t)) s)"
+    return 0
+  fi
+  echo "   $r: FINDING ($((SECONDS - t)) s), log: $dir/fuzz.log"
+  grep -E 'ERROR|SUMMARY|==[0-9]+==|terminate|what\(\)|Test unit written' "$dir/fuzz.log" | head -n 20
+  mkdir -p "tests/fuzz/$r"
+  for f in "$dir"/artifacts/*; do
+    [ -f "$f" ] || continue
+    cp "$f" "tests/fuzz/$r/"
+    echo "   kept as tests/fuzz/$r/$(basename "$f") (commit it); reproduce:"
+    echo "     $build/tests/fuzz/fuzz_$r tests/fuzz/$r/$(basename "$f")"
+  done
+  return 1
+}
+
+if [ "$stage" != tests ]; then
+  t0=$SECONDS
+  export -f fuzz_one seed_pattern
+  export seconds
+  echo "== fuzz pass: ${#readers[@]} readers x ${seconds} s, $jobs at a time" >&2
+  printf '%s\n' "${readers[@]}" | xargs -P"$jobs" -I{} bash -c 'fuzz_one {}' || status=1
+  echo "== fuzz pass: $((SECONDS - t0)) s" >&2
+fi
+
+[ $status = 0 ] && echo "fuzz.sh: no findings" >&2 || echo "fuzz.sh: FAILED (see above)" >&2
+exit $status
