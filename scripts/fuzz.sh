@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # Sanitizers and fuzzing (docs/reliability.md, "Fuzzing and sanitizers"). Run by .ci/run after
-# scripts/test.sh. In one clang build folder (build-asan, AddressSanitizer + UndefinedBehavior-
-# Sanitizer, every finding fatal):
-#   1. the unit-test binaries run under the sanitizers;
-#   2. each reader's libFuzzer target runs for FUZZ_SECONDS, seeded with the project's fixtures.
+# scripts/test.sh. Two build folders, AddressSanitizer + UndefinedBehaviorSanitizer in both,
+# every finding fatal:
+#   tests: build-asan (g++): the unit-test binaries run under the sanitizers;
+#   fuzz:  build-fuzz (clang 14, libFuzzer): each reader's fuzz target runs for FUZZ_SECONDS,
+#          seeded with the project's fixtures.
 # Any crash, sanitizer report, uncaught exception other than InputError, input slower than 10 s
 # or allocation over 1 GB fails the script. A failing input is copied to tests/fuzz/<reader>/
 # (commit it: the normal build's CTest fuzz_replay.<reader> replays it from then on).
 #
 #   scripts/fuzz.sh [tests|fuzz|all]      (default all)
 # Environment: FUZZ_SECONDS (per reader, default 60), FUZZ_JOBS (readers at once, default 2),
-# FUZZ_READERS (default every reader), BUILD_DIR (default build-asan),
-# CANDELA_SKIP_FUZZ=1 skips everything (ignored when CI=true: CI always runs it).
+# FUZZ_READERS (default every reader), CANDELA_SKIP_FUZZ=1 skips everything (ignored when
+# CI=true: CI always runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$(pwd)"
@@ -24,7 +25,6 @@ if [ "${CANDELA_SKIP_FUZZ:-0}" = "1" ]; then
     exit 0
   fi
 fi
-build="${BUILD_DIR:-build-asan}"
 seconds="${FUZZ_SECONDS:-60}"
 jobs="${FUZZ_JOBS:-2}"
 readers=(${FUZZ_READERS:-rad_reader sensor_points ies eulumdat epw case_file})
@@ -37,16 +37,26 @@ declare -A gtest_exclude=(
 )
 
 scripts/deps.sh --fuzz
-sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=None \
-  -DCMAKE_CXX_FLAGS="$sanitize -O1 -gline-tables-only" \
-  -DCANDELA_FUZZ=ON -DCANDELA_BUILD_BENCH=OFF >/dev/null
-targets=()
-[ "$stage" = fuzz ] || targets+=("${unit_tests[@]}")
-[ "$stage" = tests ] || for r in "${readers[@]}"; do targets+=("fuzz_$r"); done
-t0=$SECONDS
-cmake --build "$build" -j2 --target "${targets[@]}"
-echo "== sanitizer build: $((SECONDS - t0)) s" >&2
+sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1"
+if [ "$stage" != fuzz ]; then
+  # g++: the same compiler as the normal build (clang 14 cannot compile reports/, see
+  # tests/fuzz/CMakeLists.txt). The replay of the kept fuzz inputs is built too.
+  build=build-asan
+  cmake -S . -B $build -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="$sanitize -g1" \
+    -DCANDELA_BUILD_BENCH=OFF >/dev/null
+  t0=$SECONDS
+  cmake --build $build -j2 --target "${unit_tests[@]}" \
+    $(for r in "${readers[@]}"; do echo "fuzz_replay_$r"; done)
+  echo "== sanitizer build ($build): $((SECONDS - t0)) s" >&2
+fi
+if [ "$stage" != tests ]; then
+  fuzz_build=build-fuzz
+  cmake -S . -B $fuzz_build -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=None \
+    -DCMAKE_CXX_FLAGS="$sanitize -gline-tables-only" -DCANDELA_FUZZ=ON -DCANDELA_BUILD_BENCH=OFF >/dev/null
+  t0=$SECONDS
+  cmake --build $fuzz_build -j2 --target $(for r in "${readers[@]}"; do echo "fuzz_$r"; done)
+  echo "== fuzz build ($fuzz_build): $((SECONDS - t0)) s" >&2
+fi
 
 # halt_on_error: the first report ends the process with a failure (UBSan too: the code is built
 # with -fno-sanitize-recover=all). Leak checking stays on.
@@ -77,10 +87,15 @@ if [ "$stage" != fuzz ]; then
   printf '%s\n' "${unit_tests[@]}" |
     xargs -P2 -I{} bash -c 'source "$logs/exclude.sh"; run_unit {}' || status=1
   echo "== sanitizer tests: $((SECONDS - t0)) s" >&2
+  # The kept fuzz inputs under the sanitizers (known open findings left out, as in CTest).
+  t0=$SECONDS
+  ctest --test-dir $build -L fuzz --output-on-failure -j2 >"$logs/fuzz_replay.log" 2>&1 ||
+    { echo "   fuzz_replay: FAILED, log: $logs/fuzz_replay.log"; tail -n 30 "$logs/fuzz_replay.log"; status=1; }
+  echo "== fuzz replay under the sanitizers: $((SECONDS - t0)) s" >&2
 fi
 
 # Seeds for each reader: the project's fixtures and demo cases, and /work/shared/reference when
-# it exists, copied at run time into the build folder (never into the repository), plus the
+# it exists, copied at run time into build-fuzz (never into the repository), plus the
 # inputs kept in tests/fuzz/<reader>/.
 seed_pattern() {
   case "$1" in
@@ -89,7 +104,7 @@ seed_pattern() {
   esac
 }
 fuzz_one() {  # reader -> 0 when the pass found nothing
-  local r="$1" dir="$build/fuzz/$1"
+  local r="$1" dir="$fuzz_build/fuzz/$1"
   rm -rf "$dir/seeds" "$dir/artifacts"
   mkdir -p "$dir/seeds" "$dir/corpus" "$dir/artifacts"
   local n=0 f
@@ -112,7 +127,7 @@ fuzz_one() {  # reader -> 0 when the pass found nothing
   # -timeout: an input slower than 10 s is a hang; -rss_limit_mb / -malloc_limit_mb: more than
   # 1 GB resident or in one allocation is a finding.
   [ ${#kept[@]} = 0 ] || cp "${kept[@]}" "$dir/seeds/"
-  if "$build/tests/fuzz/fuzz_$r" "$dir/corpus" "$dir/seeds" \
+  if "$fuzz_build/tests/fuzz/fuzz_$r" "$dir/corpus" "$dir/seeds" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=1024 -malloc_limit_mb=1024 \
       -max_len=65536 -print_final_stats=1 -artifact_prefix="$dir/artifacts/" \
       >"$dir/fuzz.log" 2>&1; then
@@ -132,7 +147,7 @@ fuzz_one() {  # reader -> 0 when the pass found nothing
     [ -f "$f" ] || continue
     cp "$f" "tests/fuzz/$r/"
     echo "   kept as tests/fuzz/$r/$(basename "$f") (commit it); reproduce:"
-    echo "     $build/tests/fuzz/fuzz_$r tests/fuzz/$r/$(basename "$f")"
+    echo "     $fuzz_build/tests/fuzz/fuzz_$r tests/fuzz/$r/$(basename "$f")"
   done
   [ $known -gt 0 ] && [ "${FUZZ_STRICT:-0}" != 1 ] && return 0
   return 1
@@ -141,7 +156,7 @@ fuzz_one() {  # reader -> 0 when the pass found nothing
 if [ "$stage" != tests ]; then
   t0=$SECONDS
   export -f fuzz_one seed_pattern
-  export seconds
+  export seconds fuzz_build
   echo "== fuzz pass: ${#readers[@]} readers x ${seconds} s, $jobs at a time" >&2
   printf '%s\n' "${readers[@]}" | xargs -P"$jobs" -I{} bash -c 'fuzz_one {}' || status=1
   echo "== fuzz pass: $((SECONDS - t0)) s" >&2
