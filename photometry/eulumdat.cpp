@@ -227,9 +227,9 @@ StoredPlanes storedPlanes(const std::vector<double>& c, int isym, const std::str
       sym = PlaneSymmetry::kMirrorC0C180;
       break;
     case 3:
-      need(size_t(3 * mc / 4), 270.0);
+      need(size_t(3) * size_t(mc) / 4, 270.0);
       need(size_t(mc / 4), 90.0);
-      for (int k = 3 * mc / 4; k < mc; ++k) planes.push_back(c[size_t(k)] - 360.0);  // C270..C345 as -90..-15
+      for (size_t k = size_t(3) * size_t(mc) / 4; k < size_t(mc); ++k) planes.push_back(c[k] - 360.0);  // C270..C345 as -90..-15
       for (int k = 0; k <= mc / 4; ++k) planes.push_back(c[size_t(k)]);
       sym = PlaneSymmetry::kMirrorC90C270;
       break;

@@ -87,7 +87,10 @@ class Tokens {
     return a;
   }
   FileLoc loc() const { return FileLoc{file_, toks_[pos_ - 1].second, 0}; }
+  // Where a file that ends too early is reported: its last line.
+  FileLoc endLoc() const { return FileLoc{file_, lastLine_, 0}; }
   bool done() const { return pos_ >= toks_.size(); }
+  size_t remaining() const { return toks_.size() - pos_; }
   FileLoc peekLoc() const { return FileLoc{file_, toks_[pos_].second, 0}; }
   const std::string& peek() const { return toks_[pos_].first; }
   static std::string fmt(double v) {
@@ -307,6 +310,16 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   info.inputWatts = t.number("input watts");
   if (info.inputWatts < 0.0) throw InputError(t.loc(), "input watts must not be negative");
 
+  // The angles and the candela table must all be in the file: checked before anything is
+  // allocated, so that counts such as 46341 x 46341 (whose product overflows an int) or 10^9 are
+  // a truncated file, not gigabytes.
+  const size_t tableSize = size_t(nv) * size_t(nh);
+  const size_t needed = size_t(nv) + size_t(nh) + tableSize;
+  if (needed > t.remaining())
+    throw InputError(t.endLoc(), "file ends before the candela table: " + std::to_string(nv) + " vertical x " +
+                                     std::to_string(nh) + " horizontal angles need " + std::to_string(needed) +
+                                     " more numbers, the file has " + std::to_string(t.remaining()) +
+                                     " (truncated data, or wrong numbers of angles)");
   std::vector<double> vAngles = t.angles(nv, "vertical angles");
   const FileLoc vLoc = t.loc();
   std::vector<double> hAngles = t.angles(nh, "horizontal angles");
@@ -343,8 +356,8 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   const double factor = info.candelaMultiplier * info.ballastFactor * info.ballastLampFactor *
                         info.tilt.appliedMultiplier;
   std::vector<double> cd;
-  cd.reserve(size_t(nv) * size_t(nh));
-  for (int i = 0; i < nh * nv; ++i) {
+  cd.reserve(tableSize);
+  for (size_t i = 0; i < tableSize; ++i) {
     const double v = t.number("candela values");
     if (v < 0.0) throw InputError(t.loc(), "negative candela value " + Tokens::fmt(v));
     cd.push_back(v * factor);

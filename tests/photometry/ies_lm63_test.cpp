@@ -106,6 +106,7 @@ TEST_P(IesErrors, NamesFileAndLine) {
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, IesErrors,
     testing::Values(BadFile{"bad_truncated.ies", 11, "truncated"},
+                    BadFile{"bad_huge_counts.ies", 8, "46341 vertical x 46341 horizontal angles need"},
                     BadFile{"bad_count.ies", 13, "after the candela table"},
                     BadFile{"bad_angles.ies", 8, "vertical angles must increase"},
                     BadFile{"bad_negative.ies", 11, "negative candela"},

@@ -1,0 +1,13 @@
+// Fuzz target: Radiance scene text (engine/rad_reader.h, readRadianceText).
+#include "engine/rad_reader.h"
+#include "base/error.h"
+#include "tests/fuzz/fuzz_target.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  try {
+    candela::Scene scene;
+    candela::readRadianceText(candela::fuzz::asText(data, size), "fuzz.rad", scene);
+  } catch (const candela::InputError&) {
+  }
+  return 0;
+}
