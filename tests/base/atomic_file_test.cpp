@@ -1,6 +1,8 @@
 // Atomic writes: exclusive temporaries with unpredictable names, never through a link.
 #include "base/atomic_file.h"
 
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,19 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(testing::TempDir()) / "candela_atomic_file" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch(const std::string& name) { return test_support::scratchDir("candela_atomic_file", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 TEST(AtomicFile, WritesTheContentAndLeavesNoTemporary) {
   const fs::path d = scratch("plain");

@@ -4,6 +4,8 @@
 
 #include "base/error.h"
 
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,12 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(testing::TempDir()) / "candela_input_file" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch(const std::string& name) { return test_support::scratchDir("candela_input_file", name); }
 
 std::string errorOf(const std::function<void()>& f) {
   try {

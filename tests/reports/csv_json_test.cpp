@@ -1,6 +1,8 @@
 #include "reports/csv_writer.h"
 #include "reports/json_writer.h"
 
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -21,12 +23,7 @@ fs::path freshDir(const std::string& name) {
   return d;
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // Minimal CSV reader for the tests: RFC 4180 quotes, no embedded line breaks.
 std::vector<std::vector<std::string>> parseCsv(const std::string& text) {

@@ -4,6 +4,8 @@
 #include "base/atomic_file.h"
 #include "base/error.h"
 
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,19 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::path(testing::TempDir()) / "candela_run_outputs" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch(const std::string& name) { return test_support::scratchDir("candela_run_outputs", name); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // Everything in `parent` but `keep`: temporaries left behind would show here.
 std::vector<std::string> strays(const fs::path& parent, const std::string& keep) {
