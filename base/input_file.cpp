@@ -41,6 +41,23 @@ Fd openRegular(const std::filesystem::path& path, const std::string& what, struc
 
 }  // namespace
 
+std::string normalizeText(std::string text) {
+  std::size_t start = 0;
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) start = 3;
+  if (start == 0 && text.find('\r') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size() - start);
+  for (std::size_t i = start; i < text.size(); ++i) {
+    if (text[i] != '\r') {
+      out += text[i];
+    } else {
+      out += '\n';
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CRLF is one line end
+    }
+  }
+  return out;
+}
+
 std::string readInputFile(const std::filesystem::path& path, const std::string& what, std::uintmax_t maxBytes) {
   const FileLoc at{path.string(), 0, 0};
   struct stat st {};
@@ -59,7 +76,7 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
     got += static_cast<std::size_t>(n);
   }
   out.resize(got);
-  return out;
+  return normalizeText(std::move(out));
 }
 
 void checkInputFile(const std::filesystem::path& path, const std::string& what) {

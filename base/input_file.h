@@ -12,11 +12,17 @@ namespace candela {
 // No input file candela reads is larger than this unless the caller says so (bytes).
 inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t(4) << 30;
 
-// The whole content of `path`. `what` names the file in errors ("scene file", "case file").
+// The whole content of `path` as text (normalizeText). `what` names the file in errors ("scene
+// file", "case file").
 // Throws InputError(path, ...) when it cannot be opened, is not a regular file, is larger than
 // `maxBytes` or cannot be read to the end.
 std::string readInputFile(const std::filesystem::path& path, const std::string& what,
                           std::uintmax_t maxBytes = kMaxInputFileBytes);
+
+// Text as every reader expects it: a leading UTF-8 byte-order mark removed, and CRLF and lone CR
+// line endings (classic Mac files, some exporters) turned into LF, so line numbers are right
+// whatever wrote the file. readInputFile applies it; binary files are not read through it.
+std::string normalizeText(std::string text);
 
 // Throws InputError(path, ...) unless `path` names a regular file that can be opened for reading.
 void checkInputFile(const std::filesystem::path& path, const std::string& what);

@@ -362,7 +362,15 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
     if (v < 0.0) throw InputError(t.loc(), "negative candela value " + Tokens::fmt(v));
     cd.push_back(v * factor);
   }
-  if (!t.done())
+  // Some exporters close the file with a line "END" (blank lines are never tokens): accepted when
+  // it is the last thing in the file.
+  bool closedByEnd = false;
+  if (t.remaining() == 1) {
+    std::string last = t.peek();
+    std::transform(last.begin(), last.end(), last.begin(), upperChar);
+    closedByEnd = last == "END";
+  }
+  if (!t.done() && !closedByEnd)
     throw InputError(t.peekLoc(), "unexpected value '" + t.peek() +
                                       "' after the candela table (check the numbers of angles)");
   return PhotometricWeb(std::move(info), type, sym, std::move(hAngles), std::move(vAngles), std::move(cd));

@@ -160,6 +160,10 @@ bool readBoundedLine(std::istream& in, std::string& line, const std::string& sou
       return !line.empty();
     }
     if (c == '\n') return true;
+    if (c == '\r') {  // CRLF or a lone CR ends the line
+      if (buf->sgetc() == '\n') buf->sbumpc();
+      return true;
+    }
     if (line.size() == kMaxPointsLineChars)
       throw InputError(FileLoc{sourceName, lineNo, 0},
                        "a sensor point line is longer than " + std::to_string(kMaxPointsLineChars) + " characters");
@@ -175,6 +179,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
   int lineNo = 0;
   while (readBoundedLine(in, line, sourceName, lineNo + 1)) {
     ++lineNo;
+    if (lineNo == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // UTF-8 BOM
     const std::size_t hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;

@@ -70,3 +70,16 @@ TEST(OutputFile, OnlyRegularFilesOrNewNames) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(InputFile, TextIsNormalised) {
+  EXPECT_EQ(normalizeText("\xEF\xBB\xBF" "a\r\nb\rc\n"), "a\nb\nc\n");  // BOM, CRLF and a lone CR
+  EXPECT_EQ(normalizeText("plain\nlines\n"), "plain\nlines\n");
+  EXPECT_EQ(normalizeText("\r\r\n"), "\n\n");
+  EXPECT_EQ(normalizeText("caf\xC3\xA9"), "caf\xC3\xA9");
+}
+
+}  // namespace
+}  // namespace candela

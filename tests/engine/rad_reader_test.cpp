@@ -205,6 +205,13 @@ TEST(RadReader, CoordinatesBeyondTheExactRange) {
   expectError("far_sphere.rad", 6, "sphere 'far' has a coordinate or size beyond 1e7 m");
 }
 
+TEST(RadReader, ByteOrderMarkIsNotAModifier) {
+  Scene scene;
+  readRadianceFile(std::string(CANDELA_TEST_DATA) + "/rad/bom.rad", scene);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[0].name, "panel_light");
+}
+
 TEST(RadReader, NumberThatDoesNotParse) {
   expectError("bad_number.rad", 6, "'0.5x' is not a number");
 }

@@ -108,6 +108,12 @@ TEST(Epw, EveryReferenceWeatherFileIsAYearInOrder) {
   EXPECT_GE(files, 6);
 }
 
+TEST(Epw, ByteOrderMarkBeforeLocation) {
+  const EpwFile a = readEpw(kDir + "bom.epw"), b = readEpw(kDir + "synthetic_3day.epw");
+  EXPECT_EQ(a.location.city, b.location.city);
+  EXPECT_EQ(a.records.size(), b.records.size());
+}
+
 TEST(Epw, MissingFile) {
   EXPECT_THROW(readEpw(kDir + "no_such.epw"), InputError);
 }

@@ -138,6 +138,18 @@ TEST(IesLm63, TiltFileContentIsNeverEchoed) {
   }
 }
 
+TEST(IesLm63, CrOnlyLineEndingsReadAsLines) {
+  // Classic Mac line endings once made a whole file one 1 295-character line.
+  const PhotometricWeb a = readIes(kIes + "cr_only.ies"), b = readIes(kIes + "lambert_full.ies");
+  EXPECT_EQ(a.totalLumens(), b.totalLumens());
+  EXPECT_EQ(a.maxIntensityCd(), b.maxIntensityCd());
+}
+
+TEST(IesLm63, TrailingEndLineAndBlankLines) {
+  const PhotometricWeb a = readIes(kIes + "trailing_end.ies"), b = readIes(kIes + "lambert_full.ies");
+  EXPECT_EQ(a.totalLumens(), b.totalLumens());
+}
+
 TEST(IesLm63, MissingFile) {
   EXPECT_THROW(readIes(kIes + "no_such_file.ies"), InputError);
 }

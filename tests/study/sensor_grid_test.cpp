@@ -181,4 +181,16 @@ TEST(SensorGrid, ReadsPointsFileFixture) {
 }
 
 }  // namespace
+TEST(ReadPoints, ByteOrderMarkAndEveryLineEnding) {
+  for (const char* f : {"bom_crlf.pts", "cr_only.pts"}) {
+    const SensorGrid g = readPointsFile(std::string(CANDELA_TEST_DATA) + "/points/" + f);
+    ASSERT_EQ(g.points.size(), 2u) << f;
+    EXPECT_EQ(g.points[0].position, Vec3(1, 1, 0.75)) << f;
+    EXPECT_EQ(g.points[1].position, Vec3(0.5, 1.5, 0.75)) << f;
+  }
+  // The same from a stream (stdin): CR and CRLF end lines, the BOM is dropped.
+  std::istringstream in("\xEF\xBB\xBF" "1 1 0.75 0 0 1\r0.5 1.5 0.75 0 0 1\r\n2 2 0.75 0 0 1");
+  EXPECT_EQ(readPoints(in, "<stdin>").size(), 3u);
+}
+
 }  // namespace candela
