@@ -74,6 +74,16 @@ double orMissing(double v, double missingAtOrAbove) {
   return v >= missingAtOrAbove ? std::numeric_limits<double>::quiet_NaN() : v;
 }
 
+// A radiation or illuminance field: the data dictionary's missing marks (9999 and above for
+// radiation, 999900 for illuminance), an empty field, or -999 and below (Meteonorm and other
+// exporters) are missing (NaN); any other negative value is refused.
+double measured(const std::string& raw, const FileLoc& loc, const char* what, double missingAtOrAbove) {
+  if (trim(raw).empty()) return std::numeric_limits<double>::quiet_NaN();
+  const double v = number(raw, loc, what);
+  if (v <= -999.0) return std::numeric_limits<double>::quiet_NaN();
+  return orMissing(v, missingAtOrAbove);
+}
+
 }  // namespace
 
 EpwFile parseEpw(std::istream& in, const std::string& fileName) {
@@ -126,14 +136,15 @@ EpwFile parseEpw(std::istream& in, const std::string& fileName) {
     // 16 global horizontal, 17 direct normal, 18 diffuse horizontal illuminance.
     r.dryBulbC = orMissing(number(v[6], loc, "dry bulb temperature"), 99.9);
     r.dewPointC = orMissing(number(v[7], loc, "dew point temperature"), 99.9);
-    r.globalHorizontalWhm2 = orMissing(number(v[13], loc, "global horizontal radiation"), 9999.0);
-    r.directNormalWhm2 = orMissing(number(v[14], loc, "direct normal radiation"), 9999.0);
-    r.diffuseHorizontalWhm2 = orMissing(number(v[15], loc, "diffuse horizontal radiation"), 9999.0);
-    r.globalHorizontalLux = orMissing(number(v[16], loc, "global horizontal illuminance"), 999900.0);
-    r.directNormalLux = orMissing(number(v[17], loc, "direct normal illuminance"), 999900.0);
-    r.diffuseHorizontalLux = orMissing(number(v[18], loc, "diffuse horizontal illuminance"), 999900.0);
+    r.globalHorizontalWhm2 = measured(v[13], loc, "global horizontal radiation", 9999.0);
+    r.directNormalWhm2 = measured(v[14], loc, "direct normal radiation", 9999.0);
+    r.diffuseHorizontalWhm2 = measured(v[15], loc, "diffuse horizontal radiation", 9999.0);
+    r.globalHorizontalLux = measured(v[16], loc, "global horizontal illuminance", 999900.0);
+    r.directNormalLux = measured(v[17], loc, "direct normal illuminance", 999900.0);
+    r.diffuseHorizontalLux = measured(v[18], loc, "diffuse horizontal illuminance", 999900.0);
     for (double x : {r.globalHorizontalWhm2, r.directNormalWhm2, r.diffuseHorizontalWhm2})
       if (x < 0.0) throw InputError(loc, "negative irradiation");
+    if (std::isnan(r.directNormalWhm2) || std::isnan(r.diffuseHorizontalWhm2)) ++f.missingIrradianceHours;
     // Records run hour by hour: a repeat (8760 copies of one hour pass for a year) or a gap would
     // put the weather at the wrong sun.
     if (!f.records.empty() && !nextHour(f.records.back(), r)) {

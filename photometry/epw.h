@@ -43,6 +43,9 @@ struct EpwFile {
   EpwLocation location;
   std::vector<EpwRecord> records;
   // 8760 or 8784 hourly records.
+  // Records whose direct normal or diffuse horizontal radiation is missing (a missing mark, an
+  // empty field or -999): their sky is dark (docs/daylight.md).
+  int missingIrradianceHours = 0;
   // 8760 or 8784 hourly records from 1 January hour 1 (records always run hour by hour).
   bool isFullYear() const {
     return (records.size() == 8760 || records.size() == 8784) && records.front().month == 1 &&

@@ -89,6 +89,10 @@ DaylightSpec daylightFromCase(const CaseFile& c) {
     for (const EpwRecord& r : epw.records)
       if (r.month == t.month && r.day == t.day && r.hour == hour) rec = &r;
     if (!rec) throw InputError(d.timeLoc, "the weather file has no hour " + std::to_string(hour) + " on " + d.time);
+    if (std::isnan(rec->directNormalWhm2) || std::isnan(rec->diffuseHorizontalWhm2))
+      throw InputError(d.timeLoc, "the weather file's hour " + std::to_string(hour) + " on " + d.time +
+                                      " has missing irradiance (line " + std::to_string(rec->line) +
+                                      "); choose another time or give the irradiances in [sky]");
     if (!d.directNormalWm2) d.directNormalWm2 = rec->directNormalWhm2;
     if (!d.diffuseHorizontalWm2) d.diffuseHorizontalWm2 = rec->diffuseHorizontalWhm2;
     if (d.skyType.kind != SkyKind::kPerez) {

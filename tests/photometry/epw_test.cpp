@@ -114,6 +114,18 @@ TEST(Epw, ByteOrderMarkBeforeLocation) {
   EXPECT_EQ(a.records.size(), b.records.size());
 }
 
+TEST(Epw, MissingMarksAreCountedNotRefused) {
+  // -999 (Meteonorm), an empty field and 9999 (the data dictionary's mark) are missing values;
+  // a Meteonorm file with -999 was once refused as "negative irradiation".
+  const EpwFile f = readEpw(kDir + "missing_marks.epw");
+  EXPECT_EQ(f.missingIrradianceHours, 3);
+  EXPECT_TRUE(std::isnan(f.records[12].directNormalWhm2));   // -999
+  EXPECT_TRUE(std::isnan(f.records[13].diffuseHorizontalWhm2));  // empty
+  EXPECT_TRUE(std::isnan(f.records[14].directNormalWhm2));   // 9999
+  EXPECT_FALSE(std::isnan(f.records[15].directNormalWhm2));
+  EXPECT_EQ(readEpw(kDir + "synthetic_3day.epw").missingIrradianceHours, 0);
+}
+
 TEST(Epw, MissingFile) {
   EXPECT_THROW(readEpw(kDir + "no_such.epw"), InputError);
 }
