@@ -55,6 +55,20 @@ class LdtLines {
   }
   FileLoc loc() const { return FileLoc{file_, int(pos_), 0}; }
   bool done() const { return pos_ >= lines_.size(); }
+  // Whether line `index` (0-based, read or not) holds a number, without reading it.
+  bool numberAt(size_t index) const {
+    if (index >= lines_.size()) return false;
+    std::string v = lines_[index];
+    const size_t a = v.find_first_not_of(" \t");
+    if (a == std::string::npos) return false;
+    v = v.substr(a, v.find_last_not_of(" \t") - a + 1);
+    if (v.find('.') == std::string::npos) std::replace(v.begin(), v.end(), ',', '.');
+    if (v.front() == '+') v.erase(0, 1);
+    double x = 0.0;
+    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+    return !v.empty() && ec == std::errc() && p == v.data() + v.size();
+  }
+  size_t position() const { return pos_; }
   // Lines not read yet.
   size_t remaining() const { return lines_.size() - std::min(pos_, lines_.size()); }
   // A count read from the header (`what`, at the line just read) needs `perItem` lines per item:
@@ -147,6 +161,51 @@ void readDimensions(LdtLines& in, PhotometricInfo& info) {
   }
 }
 
+// Lines 26a-f of n lamp sets. Files as manufacturers' tools write them keep each set's six lines
+// together (count, type, flux, colour, colour rendering, watts, then the next set); some older
+// writers stored each field for all sets in turn. The field-by-field reading is taken only when
+// its numeric lines (counts, fluxes, watts) are numbers and the set-by-set reading's are not;
+// otherwise, the common layout, whose errors then name the line.
+bool setsAsFields(const LdtLines& in, int n) {
+  const size_t at = in.position();
+  bool byBlock = true, byField = true;
+  for (size_t k = 0; k < size_t(n); ++k) {
+    byBlock = byBlock && in.numberAt(at + 6 * k) && in.numberAt(at + 6 * k + 2) && in.numberAt(at + 6 * k + 5);
+    byField = byField && in.numberAt(at + k) && in.numberAt(at + 2 * n + k) && in.numberAt(at + 5 * n + k);
+  }
+  return byField && !byBlock;
+}
+
+// Each set's six lines together. Returns the line of lamp set 1's flux.
+int readLampSetsByBlock(LdtLines& in, PhotometricInfo& info) {
+  int fluxLine = 0;
+  for (LampSet& s : info.lampSets) {
+    s.count = in.integer("number of lamps");
+    s.type = in.text("lamp type");
+    s.totalFluxLm = in.number("total lamp flux");
+    if (&s == &info.lampSets.front()) fluxLine = in.loc().line;
+    s.colour = in.text("colour appearance");
+    s.colourRendering = in.text("colour rendering");
+    s.wattsW = in.number("wattage including ballast");
+  }
+  return fluxLine;
+}
+
+// Each field for all sets in turn. Returns the line of lamp set 1's flux.
+int readLampSetsByField(LdtLines& in, PhotometricInfo& info) {
+  for (auto& s : info.lampSets) s.count = in.integer("number of lamps");
+  for (auto& s : info.lampSets) s.type = in.text("lamp type");
+  int fluxLine = 0;
+  for (auto& s : info.lampSets) {
+    s.totalFluxLm = in.number("total lamp flux");
+    if (&s == &info.lampSets.front()) fluxLine = in.loc().line;
+  }
+  for (auto& s : info.lampSets) s.colour = in.text("colour appearance");
+  for (auto& s : info.lampSets) s.colourRendering = in.text("colour rendering");
+  for (auto& s : info.lampSets) s.wattsW = in.number("wattage including ballast");
+  return fluxLine;
+}
+
 // Lines 22-27: DFF, LORL, conversion factor, tilt, the lamp sets and the direct ratios. Returns
 // the line of lamp set 1's flux, for its error message.
 int readLampData(LdtLines& in, PhotometricInfo& info) {
@@ -160,16 +219,7 @@ int readLampData(LdtLines& in, PhotometricInfo& info) {
   if (nsets < 1) throw InputError(in.loc(), "number of lamp sets must be at least 1, got " + std::to_string(nsets));
   in.checkCount(nsets, 6, "the number of lamp sets");
   info.lampSets.resize(size_t(nsets));
-  for (auto& s : info.lampSets) s.count = in.integer("number of lamps");
-  for (auto& s : info.lampSets) s.type = in.text("lamp type");
-  int fluxLine = 0;
-  for (auto& s : info.lampSets) {
-    s.totalFluxLm = in.number("total lamp flux");
-    if (&s == &info.lampSets.front()) fluxLine = in.loc().line;
-  }
-  for (auto& s : info.lampSets) s.colour = in.text("colour appearance");
-  for (auto& s : info.lampSets) s.colourRendering = in.text("colour rendering");
-  for (auto& s : info.lampSets) s.wattsW = in.number("wattage including ballast");
+  const int fluxLine = setsAsFields(in, nsets) ? readLampSetsByField(in, info) : readLampSetsByBlock(in, info);
   for (int k = 0; k < 10; ++k) in.number("direct ratio");
   return fluxLine;
 }

@@ -81,6 +81,36 @@ TEST_P(LdtErrors, NamesFileAndLine) {
   }
 }
 
+TEST(Eulumdat, LampSetsInTheBlockLayoutOfRealFiles) {
+  // A manufacturer's file (../shared/reference): each set's lines 26a-f together. It was once
+  // refused with "bad number 'LED110-CLO/730' for number of lamps".
+  const PhotometricWeb web =
+      readEulumdat(std::string(CANDELA_REFERENCE) + "/photometry/eulumdat-rs/demo_two_lamp_sets.ldt");
+  const auto& sets = web.info().lampSets;
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_EQ(sets[0].count, 1);
+  EXPECT_EQ(sets[0].type, "LED110-CLO/730");
+  EXPECT_EQ(sets[0].totalFluxLm, 9408.0);
+  EXPECT_EQ(sets[0].wattsW, 72.0);
+  EXPECT_EQ(sets[1].type, "LED120-CLO/730");
+  EXPECT_EQ(sets[1].totalFluxLm, 10080.0);
+  EXPECT_EQ(sets[1].colourRendering, "70");
+  EXPECT_EQ(sets[1].wattsW, 79.0);
+  // Intensities are per 1000 lm of lamp set 1 (EULUMDAT's convention).
+  EXPECT_EQ(web.info().lampLumens, 9408.0);
+}
+
+TEST(Eulumdat, LampSetsFieldByFieldWhereThatIsUnambiguous) {
+  const PhotometricWeb web = readEulumdat(kLdt + "two_sets_by_field.ldt");
+  const auto& sets = web.info().lampSets;
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_EQ(sets[0].type, "LED");
+  EXPECT_EQ(sets[1].type, "T8 58W");
+  EXPECT_EQ(sets[1].count, 2);
+  EXPECT_EQ(sets[1].colour, "3000 K");
+  EXPECT_EQ(sets[1].wattsW, 20.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, LdtErrors,
     testing::Values(BadFile{"bad_truncated.ldt", 130, "truncated"},
