@@ -3,6 +3,7 @@
 #include "engine/camera.h"
 #include "reports/png_writer.h"
 #include "study/case_scene.h"
+#include "study/warnings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -115,6 +116,10 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   const std::filesystem::path outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   const Tracer tracer(*scene);
   RenderResult r;
+  checkLightSources(*scene, atCase, r.warnings);
+  checkCaseSite(c, r.warnings);
+  checkLuminaires(tracer, c.luminaires, {}, r.warnings);
+  throwIfStrict(r.warnings, request.strict);
   r.caseName = c.name;
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
   try {
