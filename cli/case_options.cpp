@@ -1,5 +1,7 @@
 #include "cli/case_options.h"
 
+#include <iostream>
+
 namespace candela::cli {
 
 void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp,
@@ -30,6 +32,16 @@ TraceOverrides CaseTraceOptions::overrides() const {
   if (threads >= 0) t.threads = threads;
   if (!method.empty()) t.method = parseMethod(method);
   return t;
+}
+
+void addStrictOption(CLI::App* cmd, bool& strict) {
+  cmd->add_flag("--strict", strict,
+                "treat every warning as an error: exit 2 with the first one, before any output is written");
+}
+
+void printWarnings(const std::vector<Warning>& warnings) {
+  for (const Warning& w : warnings) std::cerr << warningLine(w) << "\n";
+  std::cerr << std::flush;
 }
 
 }  // namespace candela::cli

@@ -2,6 +2,7 @@
 // TraceOverrides (study/trace_options.h resolves them over the case and the preset).
 #pragma once
 
+#include "base/warning.h"
 #include "study/trace_options.h"
 
 #include <CLI/CLI.hpp>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace candela::cli {
 
@@ -42,5 +44,12 @@ CLI::Validator parsedBy(Parse parse, const std::string& description) {
 // `defaults` ends the help text of --quality and --method ("the case's, else ...").
 void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& samplesHelp,
                          const std::string& methodDefault = "cache");
+
+// Adds --strict (every warning an error, exit 2) to a command.
+void addStrictOption(CLI::App* cmd, bool& strict);
+
+// Prints each warning as one line on stderr ("warning: file:line: message [code]"); --quiet
+// does not silence them.
+void printWarnings(const std::vector<Warning>& warnings);
 
 }  // namespace candela::cli

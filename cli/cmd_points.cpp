@@ -29,6 +29,7 @@ struct PointsOptions {
   CaseTraceOptions trace;
   std::string accelerator = "embree";
   bool error = false;
+  bool strict = false;
   double targetErrorPct = 0.0;
   // Daylight: used when --sky is given; else the case's [sky] applies.
   std::string sky;
@@ -73,17 +74,25 @@ int runPoints(const PointsOptions& o) {
   job.trace = o.trace.overrides();
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
   job.accelerator = parseAccelerator(o.accelerator);
+  job.strict = o.strict;
   const PointsScene scene = loadPointsScene(job);
 
   std::vector<SensorPoint> points;
-  if (o.pointsFile.empty() || o.pointsFile == "-") {
-    points = readPoints(std::cin, "<stdin>");
-    if (std::cin.bad()) throw InputError(FileLoc{"<stdin>", 0, 0}, "cannot read the sensor points");
+  std::vector<int> lines;
+  const bool stdinPoints = o.pointsFile.empty() || o.pointsFile == "-";
+  const std::string source = stdinPoints ? "<stdin>" : o.pointsFile;
+  if (stdinPoints) {
+    points = readPoints(std::cin, source, &lines);
+    if (std::cin.bad()) throw InputError(FileLoc{source, 0, 0}, "cannot read the sensor points");
   } else {
     std::istringstream in(readInputFile(o.pointsFile, "points file"));
-    points = readPoints(in, o.pointsFile);
+    points = readPoints(in, source, &lines);
   }
-  const std::vector<IrradianceEstimate> est = computePoints(scene, job.accelerator, points).estimates;
+  std::vector<FileLoc> locs;
+  for (const int line : lines) locs.push_back(FileLoc{source, line, 0});
+  const PointsResult result = computePoints(scene, job.accelerator, points, silentObserver(), locs);
+  const std::vector<IrradianceEstimate>& est = result.estimates;
+  printWarnings(result.warnings);
 
   std::ostringstream csv;
   csv << "x,y,z,dx,dy,dz,illuminance_lux" << (o.error ? ",error_lux" : "") << "\n";
@@ -116,6 +125,7 @@ void addPointsCommand(CLI::App& app, Action& action) {
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point", "path");
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(parsedBy(parseAccelerator, "ACCELERATOR"));
+  addStrictOption(cmd, opts->strict);
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
   cmd->add_option("--target-error", opts->targetErrorPct,
                   "sample each point until its standard error is below PCT percent of its value")

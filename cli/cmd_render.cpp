@@ -36,6 +36,7 @@ struct RenderOptions {
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
   std::vector<double> task, background;   // points (m) for contrast and CRF, seen from the view point
   bool quiet = false;
+  bool strict = false;
 };
 
 std::string num(double v, int decimals) {
@@ -49,6 +50,7 @@ RenderRequest requestOf(const RenderOptions& o) {
   r.view = o.view;
   r.outDir = o.outDir;
   r.trace = o.trace.overrides();
+  r.strict = o.strict;
   ViewOptions& v = r.options;
   v.pixelSamples = o.pixelSamples;
   v.coarseStep = o.coarseStep;
@@ -89,6 +91,7 @@ int renderCommand(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   ProgressObserver progress(o.quiet);
   const RenderResult r = renderCaseView(o.caseFile, requestOf(o), progress);
+  printWarnings(r.warnings);
   if (o.quiet) return 0;
   const ViewResult& v = r.view;
   const Image& img = v.image;
@@ -143,7 +146,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--task", opts->task, "task point X Y Z (m) for contrast and CRF, seen from the view point")
       ->expected(3);
   cmd->add_option("--background", opts->background, "background point X Y Z (m) next to the task")->expected(3);
-  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors only)");
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors and warnings only)");
+  addStrictOption(cmd, opts->strict);
   cmd->callback([opts, &action] { action = [opts] { return renderCommand(*opts); }; });
 }
 

@@ -21,6 +21,7 @@ struct RunOptions {
   std::string outDir;  // empty: the case's [output] dir
   CaseTraceOptions trace;
   bool quiet = false;
+  bool strict = false;
 };
 
 std::string gridLine(const GridReport& r) {
@@ -46,8 +47,10 @@ int runCommand(const RunOptions& o) {
   RunRequest request;
   request.outDir = o.outDir;
   request.trace = o.trace.overrides();
+  request.strict = o.strict;
   ProgressObserver progress(o.quiet);
   const RunResult r = runCase(o.caseFile, request, progress);
+  printWarnings(r.data.warnings);
   if (o.quiet) return 0;
   std::ostringstream s;
   for (const GridReport& g : r.data.grids) s << gridLine(g);
@@ -69,7 +72,8 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
   cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point");
-  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors only)");
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors and warnings only)");
+  addStrictOption(cmd, opts->strict);
   cmd->callback([opts, &action] { action = [opts] { return runCommand(*opts); }; });
 }
 

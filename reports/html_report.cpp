@@ -73,6 +73,9 @@ h3 { font-size:14px; margin:18px 0 6px; font-weight:600; }
 .multiples figcaption, .temporal figcaption { font-size:11px; color:var(--muted); margin-top:2px; max-width:560px; }
 .temporal img { max-width:100%; }
 td code { font-size:12px; }
+section.warnings { background:#fff4e0; border-left:6px solid #d98c00; }
+section.warnings h2 { color:#8a5300; }
+section.warnings li { margin:4px 0; } section.warnings code { font-size:12px; color:var(--muted); }
 footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
 @media print { body { background:#fff; } .page { box-shadow:none; margin:0; max-width:none; }
                section.grid { break-inside:avoid; } }
@@ -259,6 +262,18 @@ void pageHeader(std::ostringstream& h, const ReportData& data) {
   h << "</dl>\n</header>\n";
 }
 
+// The run's warnings, first thing under the header: a reader must see them before the numbers.
+void warningsSection(std::ostringstream& h, const std::vector<Warning>& warnings) {
+  if (warnings.empty()) return;
+  h << "<section class=\"warnings\">\n<h2>Warnings (" << warnings.size()
+    << ")</h2>\n<p class=\"sub\">The input is valid, but these results are probably not what was meant "
+       "(docs/warnings.md).</p>\n<ul>\n";
+  for (const Warning& w : warnings)
+    h << "<li><strong>" << xmlEscape(printable(w.loc.str())) << "</strong>: " << xmlEscape(printable(w.message)) << " <code>["
+      << xmlEscape(w.code) << "]</code></li>\n";
+  h << "</ul>\n</section>\n";
+}
+
 // Summary of every grid.
 void summarySection(std::ostringstream& h, const ReportData& data) {
   h << "<section class=\"summary\">\n<h2>Summary</h2>\n<p class=\"sub\">Calculated values on each calculation "
@@ -372,6 +387,7 @@ void settingsAndFooter(std::ostringstream& h, const RunInfo& run) {
 std::string htmlReport(const ReportData& data) {
   std::ostringstream h;
   pageHeader(h, data);
+  warningsSection(h, data.warnings);
   summarySection(h, data);
   // One section per grid: plan and metrics.
   for (std::size_t i = 0; i < data.grids.size(); ++i) {

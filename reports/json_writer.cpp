@@ -71,6 +71,14 @@ std::string summaryJson(const ReportData& data) {
     grids.push_back(o);
   }
   j["grids"] = grids;
+  // Always present (empty when none), so a pipeline can test it without a key check.
+  json warnings = json::array();
+  for (const Warning& w : data.warnings)
+    warnings.push_back({{"code", w.code},
+                        {"message", w.message},
+                        {"file", w.loc.file},
+                        {"line", w.loc.line > 0 ? json(w.loc.line) : json()}});
+  j["warnings"] = warnings;
   return j.dump(2) + "\n";
 }
 

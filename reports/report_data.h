@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/math.h"
+#include "base/warning.h"
 #include "metrics/annual.h"
 #include "metrics/grid_stats.h"
 #include "metrics/targets.h"
@@ -107,6 +108,7 @@ struct ReportData {
   std::vector<GridReport> grids;
   std::vector<ViewReport> views;
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
+  std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };
 
 // Shortest text that reads back to `v` within `significant` digits ("%.*g"); "nan"/"inf" kept.

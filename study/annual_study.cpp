@@ -15,6 +15,7 @@
 #include "study/finite_results.h"
 #include "study/prepared_grid.h"
 #include "study/run_outputs.h"
+#include "study/warnings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -309,6 +310,8 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   AnnualInputs in = readAnnualInputs(c);
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
+  const Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
+  throwIfStrict(warnings, run.request.strict);
   // 2. Sky vectors of the year, then coefficients.
   const AnnualTraces t = traceAnnual(c, in, trace, observer);
   checkFinite(t.open.year.total, "the hourly illuminance");
@@ -326,6 +329,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   data.run.coefficientsTimeS = result.coefficientsS;
   data.run.productTimeS = result.productS;
   describeAnnualSettings(data, c, in, t, trace, y.occupiedCount);
+  data.warnings = warnings;
   annualGridReports(data, c, in, t, y);
   data.run.runTimeS = secondsSince(run.start);
   // 4. Write: the folder is committed as a whole.

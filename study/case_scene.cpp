@@ -7,6 +7,7 @@
 #include "photometry/make_sky.h"
 
 #include <cmath>
+#include <optional>
 
 #include <algorithm>
 #include <map>
@@ -71,22 +72,27 @@ DaylightSpec daylightFromCase(const CaseFile& c) {
   d.directNormalWm2 = c.sky.directNormalIrradianceWm2;
   d.diffuseHorizontalWm2 = c.sky.diffuseHorizontalIrradianceWm2;
   d.groundReflectance = c.sky.groundReflectance;
-  if (c.site.present) {
-    const Site site = caseSite(c);
+  // A weather file's LOCATION fills what [site] leaves out (all of it without a [site]), as in
+  // annual studies (caseSite); a [site] that contradicts it is warned of (study/warnings.h).
+  std::optional<EpwFile> epw;
+  if (!c.sky.weather.empty()) {
+    if (d.time.empty()) throw InputError(c.sky.loc, "a weather file needs a time to pick the hour");
+    epw = readEpw(c.sky.weather.string());
+  }
+  if (c.site.present || epw) {
+    const Site site = caseSite(c, epw ? &epw->location : nullptr);
     d.latitudeDeg = site.latitudeDeg;
     d.longitudeDeg = site.longitudeDeg;
     d.elevationM = site.elevationM;
     d.timezoneHours = site.timezoneHours;
     d.northDeg = site.trueNorthDeg();
   }
-  if (!c.sky.weather.empty()) {
-    if (d.time.empty()) throw InputError(c.sky.loc, "a weather file needs a time to pick the hour");
-    const EpwFile epw = readEpw(c.sky.weather.string());
+  if (epw) {
     const LocalTime t = parseLocalTime(d.time, d.timeLoc);
     // EPW hours are hour-ending: hour h covers (h − 1, h].
     const int hour = std::clamp(static_cast<int>(std::ceil(t.hourOfDay())), 1, 24);
     const EpwRecord* rec = nullptr;
-    for (const EpwRecord& r : epw.records)
+    for (const EpwRecord& r : epw->records)
       if (r.month == t.month && r.day == t.day && r.hour == hour) rec = &r;
     if (!rec) throw InputError(d.timeLoc, "the weather file has no hour " + std::to_string(hour) + " on " + d.time);
     if (std::isnan(rec->directNormalWhm2) || std::isnan(rec->diffuseHorizontalWhm2))

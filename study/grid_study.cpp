@@ -13,6 +13,7 @@
 #include "study/prepared_grid.h"
 #include "study/run_outputs.h"
 #include "study/view_study.h"
+#include "study/warnings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -131,6 +132,10 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   std::vector<SensorPoint> all;
   for (const PreparedGrid& g : grids) all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
   const Tracer tracer(*scene);
+  // Warnings on the input, before tracing: a strict run stops here.
+  Warnings warnings = pointInTimeWarnings(c, tracer, grids);
+  const std::vector<SensorSet> sets = sensorSets(grids);
+  throwIfStrict(warnings, run.request.strict);
   std::vector<IrradianceEstimate> est;
   {
     const ObservedStep step(observer, "tracing", all.size());
@@ -138,12 +143,21 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   }
   checkFinite(est, "the grids' illuminance");
 
+  // Warnings on the results, before anything is written.
+  std::size_t first = 0;
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    checkErrorBars(tracer, sets[gi], est.data() + first, warnings);
+    first += grids[gi].grid.size();
+  }
+  throwIfStrict(warnings, run.request.strict);
+
   // 3. Metrics, verdicts and views, all before anything is written.
   RunResult result;
   result.outDir = run.outDir;
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
   describeSettings(data, c, *scene, trace, all.size());
+  data.warnings = warnings;
   const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
   std::vector<ViewResult> views;
   for (const ViewSpec& view : c.views) {

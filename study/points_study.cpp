@@ -4,6 +4,7 @@
 #include "study/case_file.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"
+#include "study/warnings.h"
 
 namespace candela {
 
@@ -23,18 +24,38 @@ PointsScene loadPointsScene(const PointsJob& job) {
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);
+  out.strict = job.strict;
+  const FileLoc where{c ? c->path.string() : !job.scenes.empty() ? job.scenes.front().string() : "command line", 0, 0};
+  checkLightSources(*out.scene, where, out.warnings);
+  if (c) {
+    out.luminaires = c->luminaires;
+    checkCaseSite(*c, out.warnings);  // the case's site and weather hour apply under --sky too
+  }
   return out;
 }
 
 PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, const std::vector<SensorPoint>& points,
-                           StudyObserver& observer) {
+                           StudyObserver& observer, const std::vector<FileLoc>& pointLocs) {
   PointsResult r;
   r.trace = ps.trace;
+  r.warnings = ps.warnings;
   const Tracer tracer(*ps.scene, accelerator);
-  const ObservedStep step(observer, "tracing", points.size());
-  r.estimates = computeIrradiance(tracer, points, ps.trace.settings, ps.trace.threads,
-                                  [&step](std::size_t done) { step(done); });
+  SensorSet set;
+  set.name = "points";
+  set.points = &points;
+  set.loc = pointLocs.empty() ? FileLoc{"points", 0, 0} : FileLoc{pointLocs.front().file, 0, 0};
+  set.pointLocs = pointLocs;
+  checkLuminaires(tracer, ps.luminaires, {set}, r.warnings);
+  checkSensors(tracer, set, r.warnings);
+  throwIfStrict(r.warnings, ps.strict);
+  {
+    const ObservedStep step(observer, "tracing", points.size());
+    r.estimates = computeIrradiance(tracer, points, ps.trace.settings, ps.trace.threads,
+                                    [&step](std::size_t done) { step(done); });
+  }
   checkFinite(r.estimates, "the points' illuminance");
+  if (!points.empty()) checkErrorBars(tracer, set, r.estimates.data(), r.warnings);
+  throwIfStrict(r.warnings, ps.strict);
   return r;
 }
 

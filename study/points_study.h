@@ -6,6 +6,8 @@
 #include "engine/daylight.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"
+#include "base/warning.h"
+#include "study/case_file.h"
 #include "study/observer.h"
 #include "study/trace_options.h"
 
@@ -24,22 +26,29 @@ struct PointsJob {
   std::function<DaylightSpec(DaylightSpec)> sky;
   TraceOverrides trace;
   AcceleratorKind accelerator = AcceleratorKind::kEmbree;
+  bool strict = false;  // every warning an InputError (the first one, before any output)
 };
 
 struct PointsResult {
   ResolvedTrace trace;
   std::vector<IrradianceEstimate> estimates;  // one per point, in input order
+  std::vector<Warning> warnings;              // study/warnings.h
 };
 
 // The scene and settings a job describes (throws InputError naming the bad file and line).
 struct PointsScene {
   std::unique_ptr<Scene> scene;
   ResolvedTrace trace;
+  std::vector<LuminairePlacement> luminaires;  // the case's, for the warnings
+  std::vector<Warning> warnings;               // on the scene and the case, found on loading
+  bool strict = false;                         // the job's
 };
 PointsScene loadPointsScene(const PointsJob& job);
 
-// Traces `points` in a loaded scene.
+// Traces `points` in a loaded scene. `pointLocs` (one per point, or empty) names where each
+// point was read, for the warnings. Throws InputError for the first warning when strict.
 PointsResult computePoints(const PointsScene& scene, AcceleratorKind accelerator,
-                           const std::vector<SensorPoint>& points, StudyObserver& observer = silentObserver());
+                           const std::vector<SensorPoint>& points, StudyObserver& observer = silentObserver(),
+                           const std::vector<FileLoc>& pointLocs = {});
 
 }  // namespace candela

@@ -17,12 +17,14 @@ namespace candela {
 struct RunRequest {
   std::filesystem::path outDir;  // empty: the case's [output] dir
   TraceOverrides trace;
+  // Every warning becomes an InputError (the first one, before anything is written).
+  bool strict = false;
 };
 
 // What a finished run wrote, for the caller to summarise.
 struct RunResult {
   std::filesystem::path outDir;
-  ReportData data;
+  ReportData data;               // data.warnings: what the run found suspicious (study/warnings.h)
   bool annual = false;
   int hours = 0;                 // annual: hours of the weather year
   double coefficientsS = 0.0;    // annual: wall time of the coefficients, s

@@ -173,7 +173,7 @@ bool readBoundedLine(std::istream& in, std::string& line, const std::string& sou
 
 }  // namespace
 
-std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName) {
+std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName, std::vector<int>* lines) {
   std::vector<SensorPoint> points;
   std::string line;
   int lineNo = 0;
@@ -210,6 +210,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
     const Vec3 dir(v[3], v[4], v[5]);
     if (!(glm::length(dir) > 0.0)) throw InputError(loc, "sensor direction is zero");
     points.push_back({Vec3(v[0], v[1], v[2]), glm::normalize(dir)});
+    if (lines) lines->push_back(lineNo);
   }
   return points;
 }
@@ -217,7 +218,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
 SensorGrid readPointsFile(const std::filesystem::path& path) {
   std::istringstream in(readInputFile(path, "sensor points file"));
   SensorGrid g;
-  g.points = readPoints(in, path.string());
+  g.points = readPoints(in, path.string(), &g.lines);
   if (g.points.empty()) throw InputError(FileLoc{path.string(), 0, 0}, "sensor points file holds no points");
   return g;
 }

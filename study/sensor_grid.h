@@ -40,6 +40,7 @@ struct SensorGrid {
   std::vector<SensorPoint> points;
   std::vector<Vec2> uv;               // plane coordinates (m) of each point (plane grids only)
   std::vector<glm::ivec2> cell;       // lattice cell (i, j) of each point (plane grids only)
+  std::vector<int> lines;             // line of each point in its file (points files only)
   bool regular = false;               // true for plane grids
   double nominalSpacingM = 0.0;       // spacing asked for, or the automatic one
   Vec2 spacingM{0.0, 0.0};            // actual spacing along u and v, m (<= nominal)
@@ -71,8 +72,9 @@ SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc = {});
 
 // Radiance-style sensor points, one per line "x y z dx dy dz" (m; direction = sensor normal,
 // normalised here). Blank lines and '#' comments are allowed; any other malformed line throws
-// InputError naming `sourceName` and the line.
-std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName);
+// InputError naming `sourceName` and the line. With `lines`, the line of each point is appended.
+std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName,
+                                    std::vector<int>* lines = nullptr);
 SensorGrid readPointsFile(const std::filesystem::path& path);
 
 // Even-odd point-in-polygon test (concave polygons included); points on an edge count as

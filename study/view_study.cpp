@@ -4,6 +4,7 @@
 #include "reports/png_writer.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"
+#include "study/warnings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -116,6 +117,10 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   const std::filesystem::path outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   const Tracer tracer(*scene);
   RenderResult r;
+  checkLightSources(*scene, atCase, r.warnings);
+  checkCaseSite(c, r.warnings);
+  checkLuminaires(tracer, c.luminaires, {}, r.warnings);
+  throwIfStrict(r.warnings, request.strict);
   r.caseName = c.name;
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
   checkFinite(r.view.image.luminance, "view '" + view->name + "'");

@@ -73,15 +73,18 @@ struct RenderRequest {
   std::filesystem::path outDir;
   TraceOverrides trace;
   ViewOptions options;
+  bool strict = false;  // every warning an InputError (the first one, before anything is traced)
 };
 
 struct RenderResult {
   std::string caseName;
   ViewResult view;
   ViewImagePaths paths;
+  std::vector<Warning> warnings;  // study/warnings.h: no light source, luminaires, site
 };
 
-// Throws InputError for an unknown view, bad options or bad input, before anything is written.
+// Throws InputError for an unknown view, bad options or bad input (and, when strict, for the
+// first warning), before anything is written.
 RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderRequest& request,
                             StudyObserver& observer = silentObserver());
 

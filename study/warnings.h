@@ -1,0 +1,77 @@
+// Guards against silent nonsense: checks over a case, its scene and its results that find input
+// which is valid but whose result is probably not what the user meant (docs/warnings.md lists
+// every code, what triggers it and why it matters). Each check appends to a list; the studies
+// return the list in their results (RunResult::data.warnings, PointsResult, RenderResult) and
+// throw the first one as an InputError when the request is strict, before anything is written.
+// The checks that look at geometry cast a handful of rays per sensor or luminaire through the
+// run's own tracer, so they cost little next to the run itself; none changes a number.
+#pragma once
+
+#include "base/warning.h"
+#include "engine/sensors.h"
+#include "engine/tracer.h"
+#include "photometry/epw.h"
+#include "study/case_file.h"
+#include "study/prepared_grid.h"
+
+#include <string>
+#include <vector>
+
+namespace candela {
+
+using Warnings = std::vector<Warning>;
+
+// Sensors checked together: a grid of a case, or the points of `candela points`.
+struct SensorSet {
+  std::string name;                            // "grid 'workplane'", "points"
+  const std::vector<SensorPoint>* points = nullptr;
+  FileLoc loc;                                 // the [[grid]] entry or the points file
+  std::vector<FileLoc> pointLocs;              // per point (points files: its line), or empty
+};
+
+// The case's grids as sensor sets (points files with the line of each point).
+std::vector<SensorSet> sensorSets(const std::vector<PreparedGrid>& grids);
+
+// no_light_source: no luminaire, no emitting surface, no distant source and no sky.
+void checkLightSources(const Scene& scene, const FileLoc& where, Warnings& out);
+
+// luminaire_outside_scene, millimetre_positions, and (with sensors) luminaire_above_ceiling,
+// luminaire_in_closed_volume, luminaire_reaches_no_sensor: up to 16 shadow rays per luminaire
+// and grid towards its sensors, and 6 more when none is reached.
+void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>& luminaires,
+                     const std::vector<SensorSet>& sensors, Warnings& out);
+
+// grid_spacing_exceeds_extent: a plane grid whose spacing is larger than its calculation area
+// (after the border) along a side.
+void checkGridSpacing(const PreparedGrid& grid, Warnings& out);
+
+// sensor_near_surface (a surface within 5 mm that cuts the sensor's hemisphere) and
+// sensor_outside_room (outside the scene's box without a sky, or open to the outside where most
+// sensors of the set are enclosed): 11 rays per sensor.
+void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out);
+
+// site_contradicts_weather: [site] more than 1° of latitude or longitude, or a different time
+// zone, away from the weather file's LOCATION.
+void checkSiteAgainstWeather(const CaseFile& c, const EpwLocation& weather, Warnings& out);
+// The same for a point-in-time [sky] with a weather file (reads the file's LOCATION); nothing
+// without a weather file or a [site].
+void checkCaseSite(const CaseFile& c, Warnings& out);
+
+// untrusted_error_bar: points that read exactly 0 with a standard error of 0 while a glow
+// surface (found by hemisphere samples only, never sampled directly) lies in front of them with
+// nothing in between: no sample found it, so the zero error bar claims a certainty it does not
+// have. `estimates` has one entry per point of the set.
+void checkErrorBars(const Tracer& tracer, const SensorSet& set, const IrradianceEstimate* estimates, Warnings& out);
+
+// The point-in-time study's checks on its input, before tracing, in the order it runs them
+// (`candela run` of a case without an annual sky): light sources, site, luminaires, grids,
+// sensors. The tracer is the study's own.
+Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std::vector<PreparedGrid>& grids);
+
+// The annual study's checks on its input: site against weather, grids, sensors (through a
+// tracer of their own, so the coefficients' ray counts stay theirs). Luminaires play no part in
+// annual metrics.
+Warnings annualInputWarnings(const CaseFile& c, const EpwLocation& weather, const Scene& scene,
+                             const std::vector<PreparedGrid>& grids);
+
+}  // namespace candela

@@ -1,0 +1,261 @@
+// The guards against silent nonsense (study/warnings.h, docs/warnings.md): each case below ran
+// with exit 0 and nothing unusual before; each now carries its warning (code, file, line), and
+// the same case without the problem, and the demo cases, carry none.
+#include "study/warnings.h"
+
+#include "base/units.h"
+#include "photometry/epw.h"
+#include "study/case_file.h"
+#include "study/case_scene.h"
+#include "study/points_study.h"
+#include "study/prepared_grid.h"
+#include "study/run_case.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(CANDELA_TEST_DATA) / "study" / "warnings";
+const fs::path kRoot = fs::path(CANDELA_TEST_DATA).parent_path().parent_path();
+const std::string kPanel = "../../../../cases/luminaires/led_panel_600.ies";
+const std::string kEpw = "../../epw/synthetic_golden_2026.epw";  // LOCATION 39.74, -105.18, UTC-7
+
+// A case written here, as if it were tests/data/study/warnings/case.toml.
+CaseFile caseOf(const std::string& text) { return parseCaseFile(text, kDir / "case.toml"); }
+
+// The point-in-time study's input checks, as runGridStudy runs them.
+Warnings inputWarnings(const CaseFile& c) {
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
+  const Tracer tracer(*scene);
+  return pointInTimeWarnings(c, tracer, grids);
+}
+
+std::vector<std::string> codes(const Warnings& w) {
+  std::vector<std::string> out;
+  for (const Warning& x : w) out.push_back(x.code);
+  return out;
+}
+
+std::string dump(const Warnings& w) {
+  std::string s;
+  for (const Warning& x : w) s += warningLine(x) + "\n";
+  return s;
+}
+
+const std::string kRoom = "[[scene]]\nfile = \"room.rad\"\n";
+const std::string kGrid =
+    "[[grid]]\nname = \"workplane\"\ncorners = [[0.0, 0.0], [4.0, 3.0]]\nheight = 0.8\nspacing = 0.5\nborder = 0.5\n";
+const std::string kLuminaire = "[[luminaire]]\nfile = \"" + kPanel + "\"\nposition = [1.0, 1.5, 2.79]\n";
+
+TEST(Warnings, DemoCasesHaveNone) {
+  for (const char* name : {"small-room", "office", "office-daylight"}) {
+    const Warnings w = inputWarnings(readCaseFile(kRoot / "cases" / name / "case.toml"));
+    EXPECT_TRUE(w.empty()) << name << ":\n" << dump(w);
+  }
+  const CaseFile annual = readCaseFile(kRoot / "cases" / "office-annual" / "case.toml");
+  const EpwFile epw = readEpw(annual.sky.weather.string());
+  const std::unique_ptr<Scene> scene = loadAnnualScene(annual, 0.0);
+  const Warnings w = annualInputWarnings(annual, epw.location, *scene, prepareGrids(annual, gridBounds(*scene)));
+  EXPECT_TRUE(w.empty()) << dump(w);
+}
+
+TEST(Warnings, SceneWithoutAnyLightSource) {
+  const Warnings w = inputWarnings(caseOf(kRoom + kGrid));
+  ASSERT_EQ(codes(w), std::vector<std::string>{"no_light_source"});
+  EXPECT_EQ(w[0].loc.file, (kDir / "case.toml").string());
+  EXPECT_EQ(w[0].loc.line, 0);
+  EXPECT_TRUE(inputWarnings(caseOf(kRoom + kLuminaire + kGrid)).empty());
+  // A sky is a light source too.
+  EXPECT_TRUE(inputWarnings(caseOf(kRoom + "[sky]\ntype = \"cie-overcast\"\n" + kGrid)).empty());
+}
+
+TEST(Warnings, LuminairesOutsideEnclosedOrInMillimetres) {
+  // room.rad: the room 4 × 3 × 2.8 m, a plenum roof at 3.2 m, a closed 0.2 m box around (3, 2.5, 2).
+  const std::string lum = "[[luminaire]]\nfile = \"" + kPanel + "\"\nposition = ";
+  const std::string text = kRoom +                                  // lines 1–2
+                           lum + "[1.0, 1.5, 2.79]\n" +             // line 3: fine
+                           lum + "[1000.0, 1500.0, 2790.0]\n" +     // line 6: millimetres
+                           lum + "[10.0, 1.5, 2.79]\n" +            // line 9: outside the scene
+                           lum + "[1.0, 1.5, 3.0]\n" +              // line 12: in the plenum
+                           lum + "[3.0, 2.5, 2.0]\n" +              // line 15: inside the box
+                           kGrid;
+  const Warnings w = inputWarnings(caseOf(text));
+  ASSERT_EQ(codes(w), (std::vector<std::string>{"millimetre_positions", "luminaire_outside_scene",
+                                                "luminaire_above_ceiling", "luminaire_in_closed_volume"}))
+      << dump(w);
+  EXPECT_EQ(w[0].loc.line, 6);
+  EXPECT_EQ(w[1].loc.line, 9);
+  EXPECT_EQ(w[2].loc.line, 12);
+  EXPECT_EQ(w[3].loc.line, 15);
+  for (const Warning& x : w) EXPECT_EQ(x.loc.file, (kDir / "case.toml").string());
+}
+
+TEST(Warnings, GridSpacingLargerThanItsArea) {
+  const CaseFile c = readCaseFile(kDir / "spacing.toml");
+  const Warnings w = inputWarnings(c);
+  ASSERT_EQ(codes(w), std::vector<std::string>{"grid_spacing_exceeds_extent"}) << dump(w);
+  EXPECT_EQ(w[0].loc.file, (kDir / "spacing.toml").string());
+  EXPECT_EQ(w[0].loc.line, 12);
+  EXPECT_NE(w[0].message.find("grid 'wide': spacing 5 m exceeds its calculation area of 3 × 2 m"), std::string::npos)
+      << w[0].message;
+  EXPECT_TRUE(inputWarnings(caseOf(kRoom + kLuminaire + kGrid)).empty());
+}
+
+TEST(Warnings, SensorsOnASurfaceOrOutsideTheRoom) {
+  // sensors.pts: line 3 in the plenum above the ceiling, line 5 on the corner of two walls; a
+  // sensor on the floor facing up (line 9) and one facing a wall 1.5 m away are fine.
+  const CaseFile c = caseOf(kRoom + kLuminaire + "[[grid]]\nname = \"desk\"\nkind = \"points\"\nfile = \"sensors.pts\"\n");
+  const Warnings w = inputWarnings(c);
+  ASSERT_EQ(codes(w), (std::vector<std::string>{"sensor_near_surface", "sensor_outside_room"})) << dump(w);
+  const std::string pts = (kDir / "sensors.pts").string();
+  EXPECT_EQ(w[0].loc.file, pts);
+  EXPECT_EQ(w[0].loc.line, 5);
+  EXPECT_NE(w[0].message.find("1 of 10 sensor points lies on or within 5 mm"), std::string::npos) << w[0].message;
+  EXPECT_EQ(w[1].loc.file, pts);
+  EXPECT_EQ(w[1].loc.line, 3);
+  // The plenum point and the corner point (open to the outside through the walls' plane).
+  EXPECT_NE(w[1].message.find("2 of 10 sensor points lie outside the room"), std::string::npos) << w[1].message;
+}
+
+TEST(Warnings, ReadmeExamplePointLiesOnAWallCorner) {
+  // `echo "0 0 0.8 0 0 1" | candela points room.rad --sky cie-overcast` read 7 495 lx inside a
+  // closed room: the point is on the corner of two walls and sees the sky beyond them.
+  PointsJob job;
+  job.scenes = {kRoot / "cases" / "small-room" / "room.rad"};
+  job.sky = [](DaylightSpec d) {
+    d.skyType = SkyType{SkyKind::kCieOvercast};
+    return d;
+  };
+  job.trace.quality = Quality::kDraft;
+  const PointsScene scene = loadPointsScene(job);
+  const std::vector<FileLoc> locs = {FileLoc{"<stdin>", 1, 0}};
+  const PointsResult r = computePoints(scene, job.accelerator, {{Vec3(0.0, 0.0, 0.8), Vec3(0.0, 0.0, 1.0)}},
+                                       silentObserver(), locs);
+  ASSERT_EQ(codes(r.warnings), std::vector<std::string>{"sensor_near_surface"}) << dump(r.warnings);
+  EXPECT_EQ(r.warnings[0].loc.str(), "<stdin>:1");
+  EXPECT_GT(r.estimates[0].illuminanceLux(), 1000.0);  // the silent nonsense itself, unchanged
+  // A point in the room: no warning (and 0 lx: the closed room lets no daylight in).
+  const PointsResult inRoom = computePoints(scene, job.accelerator, {{Vec3(2.0, 1.5, 0.8), Vec3(0.0, 0.0, 1.0)}});
+  EXPECT_TRUE(inRoom.warnings.empty()) << dump(inRoom.warnings);
+  // Strict: the first warning is an error before anything is traced.
+  PointsScene strict = loadPointsScene(job);
+  strict.strict = true;
+  EXPECT_THROW(computePoints(strict, job.accelerator, {{Vec3(0.0, 0.0, 0.8), Vec3(0.0, 0.0, 1.0)}}), InputError);
+}
+
+std::string siteCase(const std::string& site) {
+  return kRoom + kLuminaire + site + "[sky]\ntype = \"cie-overcast\"\nweather = \"" + kEpw +
+         "\"\ntime = \"2026-06-21T12:00\"\n" + kGrid;
+}
+
+TEST(Warnings, SiteThatContradictsTheWeatherFile) {
+  // Line 6: [site]. Sydney's coordinates with Golden's weather.
+  const Warnings w = inputWarnings(caseOf(siteCase("[site]\nlatitude = -33.9\nlongitude = 151.2\n")));
+  ASSERT_EQ(codes(w), std::vector<std::string>{"site_contradicts_weather"}) << dump(w);
+  EXPECT_EQ(w[0].loc.line, 6);
+  EXPECT_NE(w[0].message.find("Golden SYNTHETIC: 39.74°, -105.2°"), std::string::npos) << w[0].message;
+  // The right place, but a time zone other than the file's.
+  const Warnings tz = inputWarnings(caseOf(siteCase("[site]\nlatitude = 39.7\nlongitude = -105.0\ntimezone = 1.0\n")));
+  ASSERT_EQ(codes(tz), std::vector<std::string>{"site_contradicts_weather"}) << dump(tz);
+  EXPECT_NE(tz[0].message.find("in its time zone"), std::string::npos) << tz[0].message;
+  // Within 1° and the same time zone: fine.
+  EXPECT_TRUE(inputWarnings(caseOf(siteCase("[site]\nlatitude = 39.5\nlongitude = -105.0\ntimezone = -7\n"))).empty());
+  // Annual studies compare the same way.
+  const CaseFile annual = caseOf(kRoom + "[site]\nlatitude = -33.9\nlongitude = 151.2\n[sky]\ntype = \"annual\"\nweather = \"" +
+                                 kEpw + "\"\n" + kGrid);
+  Warnings aw;
+  checkSiteAgainstWeather(annual, readEpw(annual.sky.weather.string()).location, aw);
+  EXPECT_EQ(codes(aw), std::vector<std::string>{"site_contradicts_weather"});
+}
+
+TEST(Warnings, PointInTimeSkyFromWeatherTakesItsLocationWithoutSite) {
+  // No [site]: the sun was placed at 0°, 0°, UTC+0 before; now at the weather file's LOCATION.
+  const DaylightSpec d = daylightFromCase(caseOf(siteCase("")));
+  ASSERT_TRUE(d.latitudeDeg && d.longitudeDeg);
+  EXPECT_DOUBLE_EQ(*d.latitudeDeg, 39.74);
+  EXPECT_DOUBLE_EQ(*d.longitudeDeg, -105.18);
+  EXPECT_DOUBLE_EQ(d.timezoneHours, -7.0);
+  // A [site] without a time zone takes the file's.
+  const DaylightSpec s = daylightFromCase(caseOf(siteCase("[site]\nlatitude = 39.7\nlongitude = -105.0\n")));
+  EXPECT_DOUBLE_EQ(s.timezoneHours, -7.0);
+  EXPECT_DOUBLE_EQ(*s.latitudeDeg, 39.7);
+}
+
+TEST(Warnings, ZeroWithZeroErrorUnderAnUnfoundGlowBulb) {
+  // glow.toml: a 2 cm glow bulb, draft quality, no interreflection. Points whose samples all
+  // missed it read 0 ± 0 lx.
+  RunRequest request;
+  request.outDir = fs::path(testing::TempDir()) / "warnings_glow";
+  fs::remove_all(request.outDir);
+  const RunResult r = runCase(kDir / "glow.toml", request);
+  int zeros = 0;
+  for (double v : r.data.grids[0].values) zeros += v == 0.0;
+  ASSERT_GT(zeros, 0) << "the fixture no longer reproduces the silent zero";
+  ASSERT_EQ(codes(r.data.warnings), std::vector<std::string>{"untrusted_error_bar"}) << dump(r.data.warnings);
+  EXPECT_EQ(r.data.warnings[0].loc.file, (kDir / "glow.toml").string());
+  EXPECT_EQ(r.data.warnings[0].loc.line, 10);
+  EXPECT_NE(r.data.warnings[0].message.find(std::to_string(zeros) + " of 24 sensor points read 0 ± 0 lx"),
+            std::string::npos)
+      << r.data.warnings[0].message;
+
+  // The criterion alone: a zero facing the bulb warns, a zero facing away (the bulb behind its
+  // hemisphere) or a non-zero value does not.
+  const CaseFile c = readCaseFile(kDir / "glow.toml");
+  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  const Tracer tracer(*scene);
+  const std::vector<SensorPoint> pts = {{Vec3(2.0, 1.5, 0.8), Vec3(0.0, 0.0, 1.0)},
+                                        {Vec3(2.0, 1.5, 0.8), Vec3(0.0, 0.0, -1.0)}};
+  SensorSet set{"points", &pts, FileLoc{"p.pts", 0, 0}, {}};
+  IrradianceEstimate zero[2];
+  Warnings w;
+  checkErrorBars(tracer, set, zero, w);
+  ASSERT_EQ(codes(w), std::vector<std::string>{"untrusted_error_bar"});
+  EXPECT_NE(w[0].message.find("1 of 2 sensor points reads 0 ± 0 lx (first: point 1"), std::string::npos) << w[0].message;
+  IrradianceEstimate lit[2];
+  lit[0].irradiance = Rgb(0.01);
+  lit[1].irradiance = Rgb(0.01);
+  Warnings none;
+  checkErrorBars(tracer, set, lit, none);
+  EXPECT_TRUE(none.empty());
+}
+
+TEST(Warnings, StrictRunWritesNothingAndARunCarriesItsWarnings) {
+  RunRequest request;
+  request.outDir = fs::path(testing::TempDir()) / "warnings_strict";
+  fs::remove_all(request.outDir);
+  request.strict = true;
+  try {
+    runCase(kDir / "spacing.toml", request);
+    FAIL() << "a strict run with a warning must throw";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 12);
+    EXPECT_NE(std::string(e.what()).find("spacing.toml:12: grid 'wide': spacing 5 m"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(request.outDir));
+
+  request.strict = false;
+  const RunResult r = runCase(kDir / "spacing.toml", request);
+  ASSERT_EQ(codes(r.data.warnings), std::vector<std::string>{"grid_spacing_exceeds_extent"});
+  std::ifstream in(request.outDir / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["warnings"].size(), 1u);
+  EXPECT_EQ(j["warnings"][0]["code"], "grid_spacing_exceeds_extent");
+  EXPECT_EQ(j["warnings"][0]["line"], 12);
+  EXPECT_EQ(j["warnings"][0]["file"], (kDir / "spacing.toml").string());
+  std::ifstream html(request.outDir / "report.html");
+  std::stringstream page;
+  page << html.rdbuf();
+  EXPECT_NE(page.str().find("class=\"warnings\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
