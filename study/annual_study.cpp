@@ -310,7 +310,8 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   AnnualInputs in = readAnnualInputs(c);
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
-  const Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
+  Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
+  checkWeatherGaps(in.epw, c.sky.weather.string(), warnings);
   throwIfStrict(warnings, run.request.strict);
   // 2. Sky vectors of the year, then coefficients.
   const AnnualTraces t = traceAnnual(c, in, trace, observer);

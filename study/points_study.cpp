@@ -29,6 +29,7 @@ PointsScene loadPointsScene(const PointsJob& job) {
   checkLightSources(*out.scene, where, out.warnings);
   if (c) {
     out.luminaires = c->luminaires;
+    checkPhotometry(*out.scene, c->luminaires, out.warnings);
     checkCaseSite(*c, out.warnings);  // the case's site and weather hour apply under --sky too
   }
   return out;

@@ -120,6 +120,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   checkLightSources(*scene, atCase, r.warnings);
   checkCaseSite(c, r.warnings);
   checkLuminaires(tracer, c.luminaires, {}, r.warnings);
+  checkPhotometry(*scene, c.luminaires, r.warnings);
   throwIfStrict(r.warnings, request.strict);
   r.caseName = c.name;
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);

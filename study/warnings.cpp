@@ -6,6 +6,7 @@
 #include "study/case_scene.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 
 namespace candela {
@@ -312,12 +313,39 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const Irradiance
                  pointLoc(set, first)});
 }
 
+void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& luminaires, Warnings& out) {
+  std::set<const PhotometricWeb*> seen;
+  for (std::size_t i = 0; i < luminaires.size() && i < scene.luminaires.size(); ++i) {
+    const PhotometricWeb* web = scene.luminaires[i].web.get();
+    if (!web || !seen.insert(web).second) continue;
+    const std::string file = luminaires[i].file.filename().string();
+    const double lor = web->lightOutputRatio();  // NaN for absolute photometry
+    if (web->maxIntensityCd() <= 0.0)
+      out.push_back({"luminaire_photometry", "the photometric file " + file + " has no intensity above 0 cd: the luminaire gives no light",
+                     luminaires[i].loc});
+    else if (lor > 1.0 + 1e-3)
+      out.push_back({"luminaire_photometry",
+                     "the photometric file " + file + " gives a light output ratio of " + formatFixed(100.0 * lor, 1) +
+                         " %: more light than its lamps (check the lamp flux and the multiplier)",
+                     luminaires[i].loc});
+  }
+}
+
+void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warnings& out) {
+  if (weather.missingIrradianceHours == 0) return;
+  out.push_back({"weather_missing_hours",
+                 std::to_string(weather.missingIrradianceHours) + " of " + std::to_string(weather.records.size()) +
+                     " hours have missing irradiance; they are treated as dark",
+                 FileLoc{fileName, 0, 0}});
+}
+
 Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std::vector<PreparedGrid>& grids) {
   Warnings w;
   checkLightSources(tracer.scene(), FileLoc{c.path.string(), 0, 0}, w);
   checkCaseSite(c, w);
   const std::vector<SensorSet> sets = sensorSets(grids);
   checkLuminaires(tracer, c.luminaires, sets, w);
+  checkPhotometry(tracer.scene(), c.luminaires, w);
   for (const PreparedGrid& g : grids) checkGridSpacing(g, w);
   for (const SensorSet& set : sets) checkSensors(tracer, set, w);
   return w;

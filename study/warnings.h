@@ -63,6 +63,15 @@ void checkCaseSite(const CaseFile& c, Warnings& out);
 // have. `estimates` has one entry per point of the set.
 void checkErrorBars(const Tracer& tracer, const SensorSet& set, const IrradianceEstimate* estimates, Warnings& out);
 
+// luminaire_photometry: a photometric file whose light output ratio exceeds 100 % (more light
+// out than the lamps give: a wrong lamp flux or conversion factor) or whose intensities are all
+// zero (the luminaire gives no light). Once per file, at its first [[luminaire]] entry.
+void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& luminaires, Warnings& out);
+
+// weather_missing_hours: records of the weather file with missing irradiance (counted by the
+// EPW reader: a missing mark, an empty field or -999), whose sky is taken as dark.
+void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warnings& out);
+
 // The point-in-time study's checks on its input, before tracing, in the order it runs them
 // (`candela run` of a case without an annual sky): light sources, site, luminaires, grids,
 // sensors. The tracer is the study's own.

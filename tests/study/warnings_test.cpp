@@ -5,6 +5,7 @@
 
 #include "base/units.h"
 #include "photometry/epw.h"
+#include "photometry/ies_lm63.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
 #include "study/points_study.h"
@@ -255,6 +256,46 @@ TEST(Warnings, StrictRunWritesNothingAndARunCarriesItsWarnings) {
   std::stringstream page;
   page << html.rdbuf();
   EXPECT_NE(page.str().find("class=\"warnings\""), std::string::npos);
+}
+
+// A rotationally symmetric distribution falling linearly from I0 at nadir to 0 at 90°: its flux is
+// 2π I0 (1 − 2/π) = 2283 lm for I0 = 1000 cd, against 1000 lm of lamps, so LOR = 228 %.
+std::string iesWith(double nadirCd) {
+  return "IESNA:LM-63-2002\nTILT=NONE\n1 1000 1 2 1 1 2 0 0 0\n1 1 40\n0 90\n0\n" + std::to_string(nadirCd) + " 0\n";
+}
+
+TEST(Warnings, PhotometryThatGivesMoreLightThanItsLampsOrNone) {
+  Scene scene;
+  std::vector<LuminairePlacement> placed(3);
+  const char* names[] = {"bright.ies", "dark.ies", "fine.ies"};
+  const std::string texts[] = {iesWith(1000.0), iesWith(0.0), iesWith(300.0)};  // 228 %, none, 68 %
+  for (int i = 0; i < 3; ++i) {
+    placed[i].file = names[i];
+    placed[i].loc = FileLoc{"case.toml", 10 * (i + 1), 0};
+    LuminaireMounting m;
+    scene.luminaires.push_back(placeLuminaire(std::make_shared<const PhotometricWeb>(parseIes(texts[i], names[i], ".")), m));
+  }
+  Warnings w;
+  checkPhotometry(scene, placed, w);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(w[0].code, "luminaire_photometry");
+  EXPECT_NE(w[0].message.find("light output ratio of 228."), std::string::npos) << w[0].message;
+  EXPECT_EQ(w[0].loc.line, 10);
+  EXPECT_NE(w[1].message.find("no intensity above 0 cd"), std::string::npos) << w[1].message;
+  EXPECT_EQ(w[1].loc.line, 20);
+}
+
+TEST(Warnings, WeatherHoursWithMissingIrradiance) {
+  // "120 of 8760 hours have missing irradiance" once passed without a word (72 hours marked 9999).
+  const EpwFile marked = readEpw((fs::path(CANDELA_TEST_DATA) / "epw" / "missing_marks.epw").string());
+  Warnings w;
+  checkWeatherGaps(marked, "missing_marks.epw", w);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].code, "weather_missing_hours");
+  EXPECT_EQ(w[0].message, "3 of 72 hours have missing irradiance; they are treated as dark");
+  Warnings none;
+  checkWeatherGaps(readEpw((fs::path(CANDELA_TEST_DATA) / "epw" / "synthetic_3day.epw").string()), "x.epw", none);
+  EXPECT_TRUE(none.empty());
 }
 
 }  // namespace
