@@ -13,6 +13,7 @@
 #include "study/blinds.h"
 #include "study/case_scene.h"
 #include "study/prepared_grid.h"
+#include "study/resource_estimate.h"
 #include "study/run_outputs.h"
 
 #include <algorithm>
@@ -134,6 +135,15 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
         throw InputError(a.reportSensorLoc, "report_sensor " + std::to_string(*a.reportSensor) + " is beyond grid '" +
                                     g.spec->name + "' (" + std::to_string(g.grid.size()) + " points)");
   return in;
+}
+
+// What the resource estimate counts: sensors per grid, hours, hours with direct sun.
+AnnualCounts annualCounts(const AnnualInputs& in) {
+  AnnualCounts a;
+  for (const PreparedGrid& g : in.grids) a.gridSensors.push_back(g.grid.size());
+  a.hours = in.epw.records.size();
+  for (const EpwRecord& r : in.epw.records) a.sunHours += r.directNormalWhm2 > 0.0 || r.directNormalLux > 0.0;
+  return a;
 }
 
 // The year traced: blinds open, and closed where LM-83's rule can close them.
@@ -308,6 +318,9 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   AnnualInputs in = readAnnualInputs(c);
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
+  const ResourceEstimate needs = estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads);
+  checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  observer.estimated(needs);
   // 2. Sky vectors of the year, then coefficients.
   const AnnualTraces t = traceAnnual(c, in, trace, observer);
   // 3. Metrics per grid.

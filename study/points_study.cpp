@@ -22,6 +22,8 @@ PointsScene loadPointsScene(const PointsJob& job) {
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);
+  out.limits = job.limits;
+  out.pointsName = job.pointsName;
   return out;
 }
 
@@ -29,6 +31,10 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
                            StudyObserver& observer) {
   PointsResult r;
   r.trace = ps.trace;
+  const FileLoc where{ps.pointsName, 0, 0};
+  const ResourceEstimate needs = estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads);
+  checkResources(needs, ps.limits, where);
+  observer.estimated(needs);
   const Tracer tracer(*ps.scene, accelerator);
   const ObservedStep step(observer, "tracing", points.size());
   r.estimates = computeIrradiance(tracer, points, ps.trace.settings, ps.trace.threads,

@@ -7,6 +7,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 
 #include <filesystem>
@@ -24,6 +25,8 @@ struct PointsJob {
   std::function<DaylightSpec(DaylightSpec)> sky;
   TraceOverrides trace;
   AcceleratorKind accelerator = AcceleratorKind::kEmbree;
+  ResourceLimits limits;            // checked before tracing (study/resource_estimate.h)
+  std::string pointsName = "<stdin>";  // where the points come from, for the estimate's messages
 };
 
 struct PointsResult {
@@ -35,6 +38,8 @@ struct PointsResult {
 struct PointsScene {
   std::unique_ptr<Scene> scene;
   ResolvedTrace trace;
+  ResourceLimits limits;
+  std::string pointsName;
 };
 PointsScene loadPointsScene(const PointsJob& job);
 

@@ -6,6 +6,7 @@
 
 #include "reports/report_data.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 
 #include <chrono>
@@ -17,6 +18,7 @@ namespace candela {
 struct RunRequest {
   std::filesystem::path outDir;  // empty: the case's [output] dir
   TraceOverrides trace;
+  ResourceLimits limits;  // checked before tracing (study/resource_estimate.h)
 };
 
 // What a finished run wrote, for the caller to summarise.

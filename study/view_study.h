@@ -11,6 +11,7 @@
 #include "reports/tonemap.h"
 #include "study/case_file.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 #include "study/view_glare.h"
 
@@ -73,6 +74,7 @@ struct RenderRequest {
   std::filesystem::path outDir;
   TraceOverrides trace;
   ViewOptions options;
+  ResourceLimits limits;  // checked before tracing (study/resource_estimate.h)
 };
 
 struct RenderResult {
