@@ -3,6 +3,8 @@
 // once every point is done.
 #include "cli/case_options.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
+#include "cli/resource_options.h"
 
 #include "base/error.h"
 #include "base/input_file.h"
@@ -27,6 +29,8 @@ struct PointsOptions {
   std::string caseFile;
   std::string pointsFile;
   CaseTraceOptions trace;
+  ResourceOptions resources;
+  bool quiet = false;
   std::string accelerator = "embree";
   bool error = false;
   double targetErrorPct = 0.0;
@@ -73,6 +77,8 @@ int runPoints(const PointsOptions& o) {
   job.trace = o.trace.overrides();
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
   job.accelerator = parseAccelerator(o.accelerator);
+  job.limits = o.resources.limits();
+  job.pointsName = o.pointsFile.empty() || o.pointsFile == "-" ? "<stdin>" : o.pointsFile;
   const PointsScene scene = loadPointsScene(job);
 
   std::vector<SensorPoint> points;
@@ -83,7 +89,8 @@ int runPoints(const PointsOptions& o) {
     std::istringstream in(readInputFile(o.pointsFile, "points file"));
     points = readPoints(in, o.pointsFile);
   }
-  const std::vector<IrradianceEstimate> est = computePoints(scene, job.accelerator, points).estimates;
+  ProgressObserver progress(o.quiet, job.limits.maxMemoryBytes);
+  const std::vector<IrradianceEstimate> est = computePoints(scene, job.accelerator, points, progress).estimates;
 
   std::ostringstream csv;
   csv << "x,y,z,dx,dy,dz,illuminance_lux" << (o.error ? ",error_lux" : "") << "\n";
@@ -116,6 +123,8 @@ void addPointsCommand(CLI::App& app, Action& action) {
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point", "path");
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(parsedBy(parseAccelerator, "ACCELERATOR"));
+  addResourceOptions(cmd, opts->resources);
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress or estimate on stderr (errors only)");
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
   cmd->add_option("--target-error", opts->targetErrorPct,
                   "sample each point until its standard error is below PCT percent of its value")

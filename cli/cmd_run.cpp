@@ -3,6 +3,7 @@
 #include "cli/case_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/resource_options.h"
 
 #include "reports/report_data.h"
 #include "study/run_case.h"
@@ -20,6 +21,7 @@ struct RunOptions {
   std::string caseFile;
   std::string outDir;  // empty: the case's [output] dir
   CaseTraceOptions trace;
+  ResourceOptions resources;
   bool quiet = false;
 };
 
@@ -46,7 +48,8 @@ int runCommand(const RunOptions& o) {
   RunRequest request;
   request.outDir = o.outDir;
   request.trace = o.trace.overrides();
-  ProgressObserver progress(o.quiet);
+  request.limits = o.resources.limits();
+  ProgressObserver progress(o.quiet, request.limits.maxMemoryBytes);
   const RunResult r = runCase(o.caseFile, request, progress);
   if (o.quiet) return 0;
   std::ostringstream s;
@@ -69,6 +72,7 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("case", opts->caseFile, "case file (TOML, docs/case-format.md)")->required();
   cmd->add_option("--out", opts->outDir, "results folder (default: the case's [output] dir)");
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point");
+  addResourceOptions(cmd, opts->resources);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors only)");
   cmd->callback([opts, &action] { action = [opts] { return runCommand(*opts); }; });
 }
