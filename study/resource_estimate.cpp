@@ -329,9 +329,11 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   // sunSamples rays per sensor and sun hour.
   TraceSettings sun = s;
   sun.hemisphereSamples = std::max(64, s.hemisphereSamples / 8);
+  sun.firstBounceSplit = std::max(1, s.firstBounceSplit / 4);
   const double sky = static_cast<double>(sensors) * raysPerSensor(s, n.sampled, n.luminaires);
+  // About one vertex per path tests every sun (the others end by Russian roulette first).
   const double sunPaths = static_cast<double>(sensors) * (raysPerSensor(sun, n.sampled, n.luminaires) +
-                                                          sun.hemisphereSamples * 2.0 * static_cast<double>(suns));
+                                                          sun.hemisphereSamples * static_cast<double>(suns));
   const double direct = static_cast<double>(sensors) * a.sunHours * std::max(1, c.annual.sunSamples);
   e.work.push_back({"sky coefficients", sky});
   e.work.push_back({"sun coefficients", sunPaths + direct});
