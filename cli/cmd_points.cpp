@@ -3,6 +3,8 @@
 // once every point is done.
 #include "cli/case_options.h"
 #include "cli/commands.h"
+#include "cli/progress.h"
+#include "cli/resource_options.h"
 
 #include "base/error.h"
 #include "base/input_file.h"
@@ -27,6 +29,8 @@ struct PointsOptions {
   std::string caseFile;
   std::string pointsFile;
   CaseTraceOptions trace;
+  ResourceOptions resources;
+  bool quiet = false;
   std::string accelerator = "embree";
   bool error = false;
   bool strict = false;
@@ -75,6 +79,8 @@ int runPoints(const PointsOptions& o) {
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
   job.accelerator = parseAccelerator(o.accelerator);
   job.strict = o.strict;
+  job.limits = o.resources.limits();
+  job.pointsName = o.pointsFile.empty() || o.pointsFile == "-" ? "<stdin>" : o.pointsFile;
   const PointsScene scene = loadPointsScene(job);
 
   std::vector<SensorPoint> points;
@@ -90,7 +96,8 @@ int runPoints(const PointsOptions& o) {
   }
   std::vector<FileLoc> locs;
   for (const int line : lines) locs.push_back(FileLoc{source, line, 0});
-  const PointsResult result = computePoints(scene, job.accelerator, points, silentObserver(), locs);
+  ProgressObserver progress(o.quiet, job.limits.maxMemoryBytes);
+  const PointsResult result = computePoints(scene, job.accelerator, points, progress, locs);
   const std::vector<IrradianceEstimate>& est = result.estimates;
   printWarnings(result.warnings);
 
@@ -126,6 +133,8 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(parsedBy(parseAccelerator, "ACCELERATOR"));
   addStrictOption(cmd, opts->strict);
+  addResourceOptions(cmd, opts->resources);
+  cmd->add_flag("--quiet,-q", opts->quiet, "no progress or estimate on stderr (errors and warnings only)");
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
   cmd->add_option("--target-error", opts->targetErrorPct,
                   "sample each point until its standard error is below PCT percent of its value")

@@ -6,6 +6,7 @@
 #include "cli/case_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/resource_options.h"
 
 #include "base/error.h"
 #include "metrics/glare.h"
@@ -35,6 +36,7 @@ struct RenderOptions {
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
   std::vector<double> task, background;   // points (m) for contrast and CRF, seen from the view point
+  ResourceOptions resources;
   bool quiet = false;
   bool strict = false;
 };
@@ -89,8 +91,10 @@ void printGlare(std::ostringstream& s, const ViewResult& r) {
 
 int renderCommand(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  ProgressObserver progress(o.quiet);
-  const RenderResult r = renderCaseView(o.caseFile, requestOf(o), progress);
+  RenderRequest request = requestOf(o);
+  request.limits = o.resources.limits();
+  ProgressObserver progress(o.quiet, request.limits.maxMemoryBytes);
+  const RenderResult r = renderCaseView(o.caseFile, request, progress);
   printWarnings(r.warnings);
   if (o.quiet) return 0;
   const ViewResult& v = r.view;
@@ -148,6 +152,7 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--background", opts->background, "background point X Y Z (m) next to the task")->expected(3);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar or result lines (errors and warnings only)");
   addStrictOption(cmd, opts->strict);
+  addResourceOptions(cmd, opts->resources);
   cmd->callback([opts, &action] { action = [opts] { return renderCommand(*opts); }; });
 }
 

@@ -3,6 +3,7 @@
 #include "cli/case_options.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/resource_options.h"
 
 #include "reports/report_data.h"
 #include "study/run_case.h"
@@ -20,6 +21,7 @@ struct RunOptions {
   std::string caseFile;
   std::string outDir;  // empty: the case's [output] dir
   CaseTraceOptions trace;
+  ResourceOptions resources;
   bool quiet = false;
   bool strict = false;
 };
@@ -48,7 +50,8 @@ int runCommand(const RunOptions& o) {
   request.outDir = o.outDir;
   request.trace = o.trace.overrides();
   request.strict = o.strict;
-  ProgressObserver progress(o.quiet);
+  request.limits = o.resources.limits();
+  ProgressObserver progress(o.quiet, request.limits.maxMemoryBytes);
   const RunResult r = runCase(o.caseFile, request, progress);
   printWarnings(r.data.warnings);
   if (o.quiet) return 0;
@@ -74,6 +77,7 @@ void addRunCommand(CLI::App& app, Action& action) {
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point");
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress bar, notes or result lines (errors and warnings only)");
   addStrictOption(cmd, opts->strict);
+  addResourceOptions(cmd, opts->resources);
   cmd->callback([opts, &action] { action = [opts] { return runCommand(*opts); }; });
 }
 

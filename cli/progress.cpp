@@ -19,65 +19,135 @@ std::string clock(double seconds) {
   return buf;
 }
 
+double fractionOf(std::size_t done, std::size_t total) {
+  return total > 0 ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
+}
+
+// ", ETA 0:23" from the rate so far; while nothing is done, the estimate stands in for it.
+// ", estimated 0:40" when there is an estimate.
+std::string timeLeft(std::size_t done, std::size_t total, double elapsedS, double expectedS) {
+  std::string s;
+  if (done > 0 && done < total)
+    s += ", ETA " + clock(elapsedS * static_cast<double>(total - done) / static_cast<double>(done));
+  else if (done == 0 && total > 0 && expectedS >= 0.0)
+    s += ", ETA " + clock(std::max(0.0, expectedS - elapsedS));
+  if (expectedS >= 0.0) s += ", estimated " + clock(expectedS);
+  return s;
+}
+
 }  // namespace
 
-ProgressBar::ProgressBar(std::string label, std::size_t total, bool enabled, std::FILE* out)
-    : label_(std::move(label)), total_(total), enabled_(enabled), out_(out), start_(std::chrono::steady_clock::now()) {
-  if (enabled_) draw(0);
+double ProgressBar::steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+ProgressBar::ProgressBar(std::string label, std::size_t total, ProgressMode mode, Options options)
+    : label_(std::move(label)),
+      total_(total),
+      mode_(mode),
+      out_(options.out),
+      clock_(options.clock ? std::move(options.clock) : Clock(steadySeconds)),
+      lineIntervalS_(options.lineIntervalS),
+      expectedS_(options.expectedS),
+      start_(clock_()) {
+  if (mode_ == ProgressMode::kBar) draw(0);
+  // A log's first line comes after one interval: work shorter than that prints nothing.
+  if (mode_ == ProgressMode::kLines) nextDrawNs_.store(static_cast<int64_t>(lineIntervalS_ * 1e9));
 }
 
 ProgressBar::~ProgressBar() {
-  // Left without finish() (an exception): end the line without claiming completion.
-  if (enabled_ && !finished_) {
+  // Left without finish() (an exception): end the bar's line without claiming completion.
+  if (mode_ == ProgressMode::kBar && !finished_) {
     std::fputc('\n', out_);
     std::fflush(out_);
   }
 }
 
-bool ProgressBar::wanted(bool quiet) { return !quiet && isatty(STDERR_FILENO) == 1; }
+ProgressMode ProgressBar::modeFor(bool quiet) {
+  if (quiet) return ProgressMode::kOff;
+  return isatty(STDERR_FILENO) == 1 ? ProgressMode::kBar : ProgressMode::kLines;
+}
 
 std::string ProgressBar::format(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                                int width) {
-  const double fraction = total > 0 ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 1.0;
+                                int width, double expectedS) {
+  const double fraction = fractionOf(done, total);
   const int filled = static_cast<int>(fraction * width);
   std::string bar = label + " [" + std::string(filled, '#') + std::string(width - filled, '.') + "]";
   char buf[160];
   std::snprintf(buf, sizeof buf, " %zu/%zu %3d%%  %s elapsed", done, total, static_cast<int>(fraction * 100.0),
                 clock(elapsedS).c_str());
-  bar += buf;
-  // The rate so far predicts the rest; with nothing done yet there is no estimate.
-  if (done > 0 && done < total) bar += ", ETA " + clock(elapsedS * static_cast<double>(total - done) / done);
-  return bar;
+  return bar + buf + timeLeft(done, total, elapsedS, expectedS);
+}
+
+std::string ProgressBar::formatLine(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
+                                    double expectedS) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s: %zu/%zu (%d%%), %s elapsed", label.c_str(), done, total,
+                static_cast<int>(fractionOf(done, total) * 100.0), clock(elapsedS).c_str());
+  return buf + timeLeft(done, total, elapsedS, expectedS);
 }
 
 void ProgressBar::update(std::size_t done) {
-  if (!enabled_) return;
-  const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start_)
-                          .count();
+  if (mode_ == ProgressMode::kOff) return;
+  const int64_t now = static_cast<int64_t>(elapsed() * 1e9);
   int64_t next = nextDrawNs_.load(std::memory_order_relaxed);
   if (now < next) return;
   // One thread wins the right to draw this interval; the others return at once.
-  const int64_t interval = std::chrono::duration_cast<std::chrono::nanoseconds>(kRedrawInterval).count();
+  const int64_t interval = mode_ == ProgressMode::kBar
+                               ? std::chrono::duration_cast<std::chrono::nanoseconds>(kRedrawInterval).count()
+                               : static_cast<int64_t>(lineIntervalS_ * 1e9);
   if (!nextDrawNs_.compare_exchange_strong(next, now + interval, std::memory_order_relaxed)) return;
   std::unique_lock lock(drawMutex_, std::try_to_lock);
   if (lock && !finished_) draw(done);
 }
 
 void ProgressBar::draw(std::size_t done) {
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
-  std::fprintf(out_, "\r%s\033[K", format(label_, done, total_, elapsed).c_str());
+  const double t = elapsed();
+  if (mode_ == ProgressMode::kBar) {
+    // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
+    std::fprintf(out_, "\r%s\033[K", format(label_, done, total_, t, 30, expectedS_).c_str());
+  } else {
+    std::fprintf(out_, "%s\n", formatLine(label_, done, total_, t, expectedS_).c_str());
+  }
   std::fflush(out_);
 }
 
 void ProgressBar::finish() {
-  if (!enabled_) return;
+  if (mode_ == ProgressMode::kOff) return;
   std::lock_guard lock(drawMutex_);
   if (finished_) return;
   finished_ = true;
+  if (mode_ == ProgressMode::kLines) {
+    if (elapsed() >= lineIntervalS_) draw(total_);
+    return;
+  }
   draw(total_);
   std::fputc('\n', out_);
   std::fflush(out_);
+}
+
+std::string estimateLine(const ResourceEstimate& e, uint64_t limitBytes) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "estimate: about %s (%.2g rays on %d thread%s at %.1f M rays/s each), memory about %s",
+                clock(e.seconds()).c_str(), e.rays(), e.threads, e.threads == 1 ? "" : "s",
+                e.raysPerSecondPerThread / 1e6, formatBytes(e.bytes()).c_str());
+  std::string s = buf;
+  if (limitBytes > 0) s += " of " + formatBytes(limitBytes) + " allowed";
+  return s;
+}
+
+void ProgressObserver::estimated(const ResourceEstimate& e) {
+  estimate_ = std::make_unique<ResourceEstimate>(e);
+  if (mode_ == ProgressMode::kOff || e.seconds() < kEstimateShownS) return;
+  std::fprintf(out_, "%s\n", estimateLine(e, limitBytes_).c_str());
+  std::fflush(out_);
+}
+
+void ProgressObserver::begin(const std::string& label, std::size_t total) {
+  ProgressBar::Options o = options_;
+  o.out = out_;
+  o.expectedS = estimate_ ? estimate_->seconds(label) : -1.0;
+  bar_ = std::make_unique<ProgressBar>(label, total, mode_, std::move(o));
 }
 
 }  // namespace candela::cli

@@ -1,11 +1,15 @@
-// A progress bar on stderr for long runs: "points done / total, percent, elapsed, ETA". Only the
-// command line prints; engine loops report through a callback that calls update().
+// Progress on stderr for long runs. On a terminal: a bar redrawn in place ("points done / total,
+// percent, elapsed, ETA"). Without one (a log, a pipe): a plain line at most every 10 s, and only
+// for work that lasts longer than that (docs/reliability.md, "Progress for logs"). Only the command
+// line prints; engine loops report through a callback that calls update().
 #pragma once
 
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -14,50 +18,87 @@
 
 namespace candela::cli {
 
+enum class ProgressMode {
+  kOff,    // --quiet
+  kBar,    // stderr is a terminal
+  kLines,  // stderr is a file or a pipe
+};
+
 class ProgressBar {
  public:
-  // `enabled` false makes every call a no-op (not a terminal, or --quiet). `label` precedes
-  // the bar, e.g. "tracing".
-  ProgressBar(std::string label, std::size_t total, bool enabled, std::FILE* out = stderr);
+  // Seconds on a monotonic clock; injectable for tests.
+  using Clock = std::function<double()>;
+  static double steadySeconds();
+
+  struct Options {
+    std::FILE* out = stderr;
+    Clock clock = steadySeconds;
+    double lineIntervalS = 10.0;  // kLines: seconds between lines, and the work that gets none
+    double expectedS = -1.0;      // the step's estimated duration (< 0: none), shown from the start
+  };
+
+  // `label` precedes the bar, e.g. "tracing".
+  ProgressBar(std::string label, std::size_t total, ProgressMode mode, Options options);
+  ProgressBar(std::string label, std::size_t total, ProgressMode mode)
+      : ProgressBar(std::move(label), total, mode, Options{}) {}
   ~ProgressBar();
 
-  // Safe to call from many threads at once: `done` points finished so far. Redraws at most
-  // every kRedrawInterval; calls in between cost one atomic load and a clock read.
+  // Safe to call from many threads at once: `done` points finished so far. Redraws the bar at
+  // most every kRedrawInterval, prints a line at most every lineIntervalS; calls in between
+  // cost one atomic load and a clock read.
   void update(std::size_t done);
 
-  // Draws the final state and ends the line (idempotent).
+  // Draws the final state and ends the line (idempotent). kLines: a last line only when the
+  // work lasted at least lineIntervalS.
   void finish();
 
-  // True when stderr is a terminal and the user did not ask for quiet.
-  static bool wanted(bool quiet);
+  // The mode for stderr: kOff when quiet, kBar on a terminal, else kLines.
+  static ProgressMode modeFor(bool quiet);
 
   // The bar's text for `done` of `total` after `elapsedS` seconds (no carriage return), e.g.
-  // "tracing [#########...........]  412/1200  34%  0:12 elapsed, ETA 0:23". Pure, for tests.
+  // "tracing [#########...........]  412/1200  34%  0:12 elapsed, ETA 0:23". With an estimate
+  // (expectedS >= 0): ", estimated 0:40" follows, and stands for the ETA while nothing is done.
   static std::string format(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                            int width = 30);
+                            int width = 30, double expectedS = -1.0);
+  // The plain line for logs, e.g. "tracing: 412/1200 (34%), 0:12 elapsed, ETA 0:23, estimated 0:40".
+  static std::string formatLine(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
+                                double expectedS = -1.0);
 
   static constexpr std::chrono::milliseconds kRedrawInterval{200};
 
  private:
   void draw(std::size_t done);
+  double elapsed() const { return clock_() - start_; }
 
   std::string label_;
   std::size_t total_;
-  bool enabled_;
+  ProgressMode mode_;
   std::FILE* out_;
-  std::chrono::steady_clock::time_point start_;
-  std::atomic<int64_t> nextDrawNs_{0};  // steady-clock time (ns since start_) of the next redraw
+  Clock clock_;
+  double lineIntervalS_;
+  double expectedS_;
+  double start_;
+  std::atomic<int64_t> nextDrawNs_{0};  // time (ns since start_) of the next redraw or line
   std::mutex drawMutex_;
   bool finished_ = false;
 };
 
-// A study's steps as progress bars (none when not wanted).
+// "estimate: about 1:23:45 (3.2e11 rays on 2 threads at 2.0 M rays/s each), memory about 1.2 GiB
+// of 22.0 GiB allowed"; `limitBytes` 0: no limit shown.
+std::string estimateLine(const ResourceEstimate& e, uint64_t limitBytes);
+
+// A study's steps as progress bars or log lines (none when quiet). The estimate is printed
+// before tracing when the work is expected to take at least kEstimateShownS (short runs stay
+// quiet), and each step's bar shows its estimated duration.
 class ProgressObserver : public StudyObserver {
  public:
-  explicit ProgressObserver(bool quiet) : enabled_(ProgressBar::wanted(quiet)) {}
-  void begin(const std::string& label, std::size_t total) override {
-    bar_ = std::make_unique<ProgressBar>(label, total, enabled_);
-  }
+  static constexpr double kEstimateShownS = 10.0;
+  explicit ProgressObserver(bool quiet, uint64_t limitBytes = 0, std::FILE* out = stderr)
+      : mode_(ProgressBar::modeFor(quiet)), limitBytes_(limitBytes), out_(out) {}
+  ProgressObserver(ProgressMode mode, ProgressBar::Options options, uint64_t limitBytes = 0)
+      : mode_(mode), limitBytes_(limitBytes), out_(options.out), options_(std::move(options)) {}
+  void estimated(const ResourceEstimate& e) override;
+  void begin(const std::string& label, std::size_t total) override;
   void progress(std::size_t done) override {
     if (bar_) bar_->update(done);
   }
@@ -67,7 +108,11 @@ class ProgressObserver : public StudyObserver {
   }
 
  private:
-  bool enabled_;
+  ProgressMode mode_;
+  uint64_t limitBytes_;
+  std::FILE* out_;
+  ProgressBar::Options options_;
+  std::unique_ptr<ResourceEstimate> estimate_;
   std::unique_ptr<ProgressBar> bar_;
 };
 

@@ -14,6 +14,7 @@
 #include "study/case_scene.h"
 #include "study/finite_results.h"
 #include "study/prepared_grid.h"
+#include "study/resource_estimate.h"
 #include "study/run_outputs.h"
 #include "study/warnings.h"
 
@@ -136,6 +137,15 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
         throw InputError(a.reportSensorLoc, "report_sensor " + std::to_string(*a.reportSensor) + " is beyond grid '" +
                                     g.spec->name + "' (" + std::to_string(g.grid.size()) + " points)");
   return in;
+}
+
+// What the resource estimate counts: sensors per grid, hours, hours with direct sun.
+AnnualCounts annualCounts(const AnnualInputs& in) {
+  AnnualCounts a;
+  for (const PreparedGrid& g : in.grids) a.gridSensors.push_back(g.grid.size());
+  a.hours = in.epw.records.size();
+  for (const EpwRecord& r : in.epw.records) a.sunHours += r.directNormalWhm2 > 0.0 || r.directNormalLux > 0.0;
+  return a;
 }
 
 // The year traced: blinds open, and closed where LM-83's rule can close them.
@@ -313,6 +323,9 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
   checkWeatherGaps(in.epw, c.sky.weather.string(), warnings);
   throwIfStrict(warnings, run.request.strict);
+  const ResourceEstimate needs = estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads);
+  checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  observer.estimated(needs);
   // 2. Sky vectors of the year, then coefficients.
   const AnnualTraces t = traceAnnual(c, in, trace, observer);
   checkFinite(t.open.year.total, "the hourly illuminance");

@@ -467,7 +467,7 @@ void readGrid(const Context& c, const toml::table& t, int index, std::set<std::s
   tab.finish();
   // Border and spacing problems (the border eats the area, a million-point grid) show here,
   // at the grid's line, rather than in the middle of a run.
-  if (g.kind == GridKind::kPlane) makePlaneGrid(g.plane, g.loc);
+  if (g.kind == GridKind::kPlane) countPlaneGrid(g.plane, g.loc);
   out.grids.push_back(std::move(g));
 }
 

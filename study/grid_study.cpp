@@ -11,6 +11,7 @@
 #include "study/case_scene.h"
 #include "study/finite_results.h"
 #include "study/prepared_grid.h"
+#include "study/resource_estimate.h"
 #include "study/run_outputs.h"
 #include "study/view_study.h"
 #include "study/warnings.h"
@@ -124,8 +125,13 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     if (spec.daylightFactor && !(scene->sky && c.sky.type.kind == SkyKind::kCieOvercast))
       throw InputError(spec.loc, "grid '" + spec.name +
                                      "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it)");
-  const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kCache);
+  // The memory check comes before the grids are generated: a grid too large is refused without
+  // being made.
+  const ResourceEstimate needs = estimateGridStudy(c, gridPointCounts(c), *scene, trace.settings, trace.threads);
+  checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
+  observer.estimated(needs);
 
   // 2. All grids as one list (grids in case order): point k of the run uses random stream k, so
   // the numbers depend on the seed only, never on threads.

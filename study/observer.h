@@ -2,6 +2,8 @@
 // these calls into progress bars, a script into whatever it likes.
 #pragma once
 
+#include "study/resource_estimate.h"
+
 #include <cstddef>
 #include <string>
 
@@ -10,6 +12,9 @@ namespace candela {
 class StudyObserver {
  public:
   virtual ~StudyObserver() = default;
+  // What the study will need (memory, rays, seconds), once every input is checked and before
+  // any tracing; the memory was checked against the caller's limit already.
+  virtual void estimated(const ResourceEstimate& estimate) {}
   // A step of `total` items begins ("tracing", "rendering desk", "sky coefficients", ...).
   virtual void begin(const std::string& label, std::size_t total) {}
   // `done` items of the current step are finished. Called from several threads at once: must be

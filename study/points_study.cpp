@@ -32,6 +32,8 @@ PointsScene loadPointsScene(const PointsJob& job) {
     checkPhotometry(*out.scene, c->luminaires, out.warnings);
     checkCaseSite(*c, out.warnings);  // the case's site and weather hour apply under --sky too
   }
+  out.limits = job.limits;
+  out.pointsName = job.pointsName;
   return out;
 }
 
@@ -40,6 +42,10 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
   PointsResult r;
   r.trace = ps.trace;
   r.warnings = ps.warnings;
+  const FileLoc where{ps.pointsName, 0, 0};
+  const ResourceEstimate needs = estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads);
+  checkResources(needs, ps.limits, where);
+  observer.estimated(needs);
   const Tracer tracer(*ps.scene, accelerator);
   SensorSet set;
   set.name = "points";

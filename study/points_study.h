@@ -9,6 +9,7 @@
 #include "base/warning.h"
 #include "study/case_file.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 
 #include <filesystem>
@@ -27,6 +28,8 @@ struct PointsJob {
   TraceOverrides trace;
   AcceleratorKind accelerator = AcceleratorKind::kEmbree;
   bool strict = false;  // every warning an InputError (the first one, before any output)
+  ResourceLimits limits;            // checked before tracing (study/resource_estimate.h)
+  std::string pointsName = "<stdin>";  // where the points come from, for the estimate's messages
 };
 
 struct PointsResult {
@@ -42,6 +45,8 @@ struct PointsScene {
   std::vector<LuminairePlacement> luminaires;  // the case's, for the warnings
   std::vector<Warning> warnings;               // on the scene and the case, found on loading
   bool strict = false;                         // the job's
+  ResourceLimits limits;
+  std::string pointsName;
 };
 PointsScene loadPointsScene(const PointsJob& job);
 

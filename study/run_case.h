@@ -6,6 +6,7 @@
 
 #include "reports/report_data.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 
 #include <chrono>
@@ -19,6 +20,7 @@ struct RunRequest {
   TraceOverrides trace;
   // Every warning becomes an InputError (the first one, before anything is written).
   bool strict = false;
+  ResourceLimits limits;  // checked before tracing (study/resource_estimate.h)
 };
 
 // What a finished run wrote, for the caller to summarise.

@@ -77,7 +77,11 @@ double polygonArea(const std::vector<Vec2>& polygon) {
   return 0.5 * twice;
 }
 
-SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
+namespace {
+
+// makePlaneGrid and countPlaneGrid: the same checks and lattice; the points stored only when
+// `store` (a count alone needs no memory per point).
+SensorGrid planeGrid(const PlaneGridSpec& spec, const FileLoc& loc, bool store, std::size_t& count) {
   const double axisTol = 1e-6;
   if (std::abs(glm::length(spec.uAxis) - 1.0) > axisTol || std::abs(glm::length(spec.vAxis) - 1.0) > axisTol ||
       std::abs(glm::dot(spec.uAxis, spec.vAxis)) > axisTol)
@@ -133,13 +137,28 @@ SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
         if (!insidePolygon(polygon, uv)) continue;
         if (spec.borderM > 0.0 && distanceToOutline(polygon, uv) < spec.borderM) continue;
       }
+      ++count;
+      if (!store) continue;
       g.points.push_back({spec.origin + uv.x * spec.uAxis + uv.y * spec.vAxis, normal});
       g.uv.push_back(uv);
       g.cell.emplace_back(i, j);
     }
   }
-  if (g.points.empty()) throw InputError(loc, "no grid point falls inside the outline; reduce the spacing or border");
+  if (count == 0) throw InputError(loc, "no grid point falls inside the outline; reduce the spacing or border");
   return g;
+}
+
+}  // namespace
+
+SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
+  std::size_t count = 0;
+  return planeGrid(spec, loc, true, count);
+}
+
+std::size_t countPlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc) {
+  std::size_t count = 0;
+  planeGrid(spec, loc, false, count);
+  return count;
 }
 
 namespace {

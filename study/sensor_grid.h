@@ -69,6 +69,9 @@ int cellsAlong(double lengthM, double maxSpacingM);
 // empty, the border eats it, the axes are not orthonormal or the grid would exceed 10 million
 // points.
 SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc = {});
+// The number of points makePlaneGrid would make, with the same checks and errors, without
+// storing them (the case file checks its grids with it; the resource estimate counts them).
+std::size_t countPlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc = {});
 
 // Radiance-style sensor points, one per line "x y z dx dy dz" (m; direction = sensor normal,
 // normalised here). Blank lines and '#' comments are allowed; any other malformed line throws

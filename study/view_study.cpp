@@ -115,6 +115,11 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   // The settings `candela run` gives the case's views.
   const ResolvedTrace trace = resolveTrace(&c.settings, request.trace, Method::kCache);
   const std::filesystem::path outDir = request.outDir.empty() ? c.output.dir : request.outDir;
+  const ResourceEstimate needs =
+      estimateView(c, *view, ViewWork{o.pixelSamples, o.coarseStep, o.irradianceSamples}, *scene, trace.settings,
+                   trace.threads);
+  checkResources(needs, request.limits, atCase);
+  observer.estimated(needs);
   const Tracer tracer(*scene);
   RenderResult r;
   checkLightSources(*scene, atCase, r.warnings);

@@ -11,6 +11,7 @@
 #include "reports/tonemap.h"
 #include "study/case_file.h"
 #include "study/observer.h"
+#include "study/resource_estimate.h"
 #include "study/trace_options.h"
 #include "study/view_glare.h"
 
@@ -74,6 +75,7 @@ struct RenderRequest {
   TraceOverrides trace;
   ViewOptions options;
   bool strict = false;  // every warning an InputError (the first one, before anything is traced)
+  ResourceLimits limits;  // checked before tracing (study/resource_estimate.h)
 };
 
 struct RenderResult {

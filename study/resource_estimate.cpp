@@ -1,0 +1,347 @@
+#include "study/resource_estimate.h"
+
+#include "engine/irradiance_cache.h"
+#include "engine/lights.h"
+#include "photometry/sky_patches.h"
+#include "engine/render.h"
+#include "engine/tracer.h"
+#include "reports/report_data.h"
+#include "study/case_file.h"
+#include "study/sensor_grid.h"
+#include "study/trace_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace candela {
+
+namespace {
+
+// The process before any case data: the executable, its libraries, TBB's and Embree's arenas
+// (measured: peak RSS of `candela run` on a one-point case, docs/reliability.md).
+constexpr uint64_t kProcessBytes = 16ull << 20;
+
+// Text written per CSV row (8 numbers of up to ~12 characters) and the HTML plan's share of a
+// point (one SVG cell); each is built in memory before it is written atomically.
+constexpr uint64_t kCsvRowBytes = 110;
+constexpr uint64_t kReportBytesPerPoint = 120;
+
+// Ward's records are shared by the points near them: a plane grid at EN 12464-1 spacing gets
+// fewer records than points. One record per point is the bound used (dense grids get fewer).
+constexpr uint64_t kCacheBytesPerPoint = sizeof(IrradianceRecord) + 3 * sizeof(uint32_t);
+
+// The expected number of diffuse vertices after the first hit at a mean reflectance of 0.5 under
+// Russian roulette by albedo: ρ/(1 − ρ) = 1.
+constexpr double kMeanReflectance = 0.5;
+// What a sensor ray's cache lookup costs in rays, the records' own rays shared out: calibrated
+// on cases/small-room's floor at draft (13 400 points) and normal (1 200 points) quality.
+constexpr double kCacheRaysPerLookup = 8.0;
+// Views: the share of pixels traced (the rest interpolated) and the rays of one hemisphere sample
+// of a matte surface's irradiance estimate, measured on a 1024 × 1024 view of the small room
+// (36.7 µs of CPU per camera ray with 64 samples) and the test views.
+constexpr double kTracedPixelFraction = 0.7;
+constexpr double kRaysPerIrradianceSample = 1.0;
+// One path vertex's light selection evaluates every source's importance (engine/light_selection.h):
+// a fraction of a ray's cost each, fitted to a 100 × 100 luminaire array over 6 points at draft
+// (docs/reliability.md; it includes the records' own vertices, which few points share out badly).
+constexpr double kSelectionCostPerSource = 0.2;
+
+uint64_t toBytes(double v) { return v <= 0.0 ? 0 : v >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(v); }
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+struct SourceCounts {
+  std::size_t sampled = 0, luminaires = 0;
+};
+
+SourceCounts countSources(const Scene& scene) {
+  SourceCounts n;
+  for (const Light& l : collectSampledSources(scene).lights)
+    (l.kind == Light::Kind::kLuminaire ? n.luminaires : n.sampled) += 1;
+  if (scene.sky) n.sampled += 1;
+  return n;
+}
+
+}  // namespace
+
+uint64_t ResourceEstimate::bytes() const {
+  uint64_t b = baseBytes;
+  for (const MemoryItem& m : memory) b += m.bytes;
+  return b;
+}
+
+double ResourceEstimate::rays() const {
+  double r = 0.0;
+  for (const WorkStep& w : work) r += w.rays;
+  return r;
+}
+
+double ResourceEstimate::seconds() const {
+  return rays() / (raysPerSecondPerThread * std::max(1, threads));
+}
+
+double ResourceEstimate::seconds(const std::string& label) const {
+  double r = 0.0;
+  bool any = false;
+  for (const WorkStep& w : work)
+    if (w.label == label) {
+      r += w.rays;
+      any = true;
+    }
+  return any ? r / (raysPerSecondPerThread * std::max(1, threads)) : -1.0;
+}
+
+const MemoryItem* ResourceEstimate::largest() const {
+  const MemoryItem* best = nullptr;
+  for (const MemoryItem& m : memory)
+    if (!best || m.bytes > best->bytes) best = &m;
+  return best;
+}
+
+std::string formatBytes(uint64_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (b >= 1024.0 * 1024 * 1024) return fixed(b / (1024.0 * 1024 * 1024), 1) + " GiB";
+  if (b >= 1024.0 * 1024) return fixed(b / (1024.0 * 1024), 0) + " MiB";
+  if (b >= 1024.0) return fixed(b / 1024.0, 0) + " KiB";
+  return std::to_string(bytes) + " B";
+}
+
+void checkResources(const ResourceEstimate& e, const ResourceLimits& limits, const FileLoc& where) {
+  if (limits.maxMemoryBytes == 0 || e.bytes() <= limits.maxMemoryBytes) return;
+  const std::string limit = "(--max-memory " + formatBytes(limits.maxMemoryBytes) + ")";
+  const MemoryItem* m = e.largest();
+  if (!m)
+    throw InputError(where, "the case needs about " + formatBytes(e.bytes()) + " of memory, more than allowed " + limit);
+  throw InputError(m->loc, m->what + " needs about " + formatBytes(m->bytes) + " of memory (" + m->detail +
+                               "); the case about " + formatBytes(e.bytes()) + " in all, more than allowed " + limit);
+}
+
+uint64_t bytesPerGridPoint(const TraceSettings& s) {
+  const bool cache = s.method == Method::kCache && s.maxBounces > 0;  // as computeIrradiance
+  // The prepared grid (points, plane coordinates, cells), the list of all points, the estimates,
+  // the report's copies (points, lux, error, values, the sorted copy of the statistics), the CSV
+  // row and the report's cell.
+  // The grid's vectors grow by push_back: 1.5 × their size on average (capacity doubles).
+  const uint64_t grid = 3 * (sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2)) / 2;
+  const uint64_t traced = sizeof(SensorPoint) + sizeof(IrradianceEstimate);
+  const uint64_t report = sizeof(ReportPoint) + 4 * sizeof(double);
+  return grid + traced + report + kCsvRowBytes + kReportBytesPerPoint + (cache ? kCacheBytesPerPoint : 0);
+}
+
+uint64_t bytesPerInputPoint(const TraceSettings& s) {
+  const bool cache = s.method == Method::kCache && s.maxBounces > 0;
+  // The input text and its stream copy (a line each), the points, the estimates and the CSV row.
+  return 2 * 60 + sizeof(SensorPoint) + sizeof(IrradianceEstimate) + kCsvRowBytes + (cache ? kCacheBytesPerPoint : 0);
+}
+
+uint64_t bytesPerPixel(bool keptForReport) {
+  // Kept till the pictures are written: Image (engine/render.h: radiance, luminance, standard
+  // error, inside, traced) and the colour luminance per pixel (ViewResult::rgbCdM2).
+  const uint64_t kept = sizeof(Rgb) + 2 * sizeof(double) + 2 * sizeof(uint8_t) + sizeof(Rgb);
+  // At most one of these phases at a time: rendering (the pixel list of a refinement pass), the
+  // glare rating (view geometry: direction and solid angle; the glare labels), writing (the
+  // EXR's float channels Y, R, G, B with its encoded bytes, and the two 8-bit pictures).
+  const uint64_t rendering = sizeof(std::size_t);
+  const uint64_t glare = sizeof(Vec3) + sizeof(double) + sizeof(int);
+  const uint64_t writing = 2 * 4 * sizeof(float) + 2 * 3;
+  const uint64_t transient = std::max({rendering, glare, writing});
+  // `run` keeps each view's PNGs for the report too (a few bytes a pixel, compressed).
+  return kept + transient + (keptForReport ? 2 * 3 : 0);
+}
+
+uint64_t sceneBytes(const Scene& scene) {
+  // Shapes and names, the accelerator (~150 B per surface, docs/performance.md) and vertices;
+  // the luminaires are an item of their own (addLuminaires).
+  const uint64_t shapes = scene.shapes.size() * (sizeof(Shape) + sizeof(std::string) + 150);
+  const uint64_t vertices = scene.vertices.points.size() * (sizeof(Vec3) + sizeof(Vec2));
+  return kProcessBytes + shapes + vertices + scene.materials.size() * sizeof(Material);
+}
+
+void addLuminaires(ResourceEstimate& e, const CaseFile& c) {
+  if (c.luminaires.empty()) return;
+  // Each fitting: its placement in the case and its source in the scene, both in vectors grown by
+  // push_back (1.5 × on average), its sampled Light in the tracer, two name strings on the heap,
+  // and what the TOML table and copies leave (measured: 1.33 KB a luminaire at 10⁶ and at 10⁴,
+  // docs/reliability.md). The photometric webs are shared per file.
+  const uint64_t per = 3 * (sizeof(LuminaireSource) + sizeof(LuminairePlacement)) / 2 + sizeof(Light) + 2 * 32 + 100;
+  MemoryItem m;
+  m.what = c.luminaires.size() > 1 ? "the " + std::to_string(c.luminaires.size()) + " luminaires" : "the luminaire";
+  m.loc = c.luminaires.front().loc;
+  m.bytes = c.luminaires.size() * per;
+  m.detail = std::to_string(c.luminaires.size()) + " x " + std::to_string(per) + " B";
+  e.memory.push_back(std::move(m));
+}
+
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires) {
+  const double sources = static_cast<double>(sampled + luminaires);
+  const double direct = static_cast<double>(s.lightSamples) * sampled + static_cast<double>(luminaires);
+  const double hemisphere = static_cast<double>(s.hemisphereSamples);
+  if (s.maxBounces <= 0) return hemisphere + direct;  // the rays see glow and sky only
+  // A hemisphere ray: the ray to its first hit and that vertex's shadow ray, then either the
+  // cache (a lookup with its visibility rays and the records' share, kCacheRaysPerLookup) or
+  // firstBounceSplit continuations of ρ/(1 − ρ) further vertices, a ray and a shadow ray each.
+  const double further = std::min<double>(s.maxBounces, kMeanReflectance / (1.0 - kMeanReflectance));
+  const bool cache = s.method == Method::kCache;
+  // The cache's rays are paths too: half of them reach a vertex that selects a light.
+  const double vertices = cache ? 1.0 + kCacheRaysPerLookup / 2.0 : 1.0 + std::max(1, s.firstBounceSplit) * further;
+  const double perRay = cache ? 2.0 + kCacheRaysPerLookup : 2.0 * vertices;
+  const double selection = hemisphere * vertices * kSelectionCostPerSource * sources;
+  return hemisphere * perRay + direct + selection;
+}
+
+uint64_t annualBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
+                     int states) {
+  const uint64_t coefficients = sensors * (patches + sunHours + suns) * sizeof(float);
+  const uint64_t year = sensors * hours * 2 * sizeof(float);
+  // Writing: one grid's hours copied for its file (bounded by all sensors) and the blinds' hours.
+  const uint64_t writing = sensors * hours * (sizeof(float) + sizeof(char));
+  return static_cast<uint64_t>(std::max(1, states)) * (coefficients + year) + writing;
+}
+
+MemoryItem viewMemory(const ViewSpec& view, bool keptForReport) {
+  MemoryItem m;
+  m.what = "view '" + view.name + "'";
+  m.loc = view.loc;
+  const uint64_t pixels = static_cast<uint64_t>(view.resolution.x) * static_cast<uint64_t>(view.resolution.y);
+  const uint64_t per = bytesPerPixel(keptForReport);
+  m.bytes = pixels * per;
+  m.detail = std::to_string(view.resolution.x) + " x " + std::to_string(view.resolution.y) + " pixels x " +
+             std::to_string(per) + " B";
+  return m;
+}
+
+double viewRays(const ViewSpec& view, const ViewWork& w, const TraceSettings& s, std::size_t sampled,
+                std::size_t luminaires) {
+  const double pixels = static_cast<double>(view.resolution.x) * view.resolution.y;
+  // The coarse lattice is traced whole, refinement traces where the image varies or is noisy:
+  // 0.55–0.81 of the pixels in the test views and a 1024 × 1024 view of the small room
+  // (docs/reliability.md); every pixel with coarseStep 1.
+  const double traced = w.coarseStep <= 1 ? pixels : kTracedPixelFraction * pixels;
+  const double sources = static_cast<double>(sampled + luminaires);
+  const double further = std::min<double>(std::max(0, s.maxBounces), kMeanReflectance / (1.0 - kMeanReflectance));
+  double perRay = 1.0;  // the camera ray
+  if (w.irradianceSamples > 0) {
+    // A matte surface seen: a stratified irradiance estimate there (renderView: path traced, no
+    // split, 4 light samples), measured at about one ray per sample beyond its light samples.
+    const double n = w.irradianceSamples;
+    perRay += n * kRaysPerIrradianceSample + 4.0 * sampled + luminaires + n * kSelectionCostPerSource * sources;
+  } else {
+    // One path: its vertices, a ray and a shadow ray each, and their light selection.
+    const double vertices = 1.0 + further;
+    perRay += 2.0 * vertices + vertices * kSelectionCostPerSource * sources;
+  }
+  return traced * std::max(1, w.pixelSamples) * perRay;
+}
+
+std::vector<std::size_t> gridPointCounts(const CaseFile& c) {
+  std::vector<std::size_t> n;
+  for (const GridSpec& g : c.grids)
+    n.push_back(g.kind == GridKind::kPlane ? countPlaneGrid(g.plane, g.loc) : readPointsFile(g.pointsFile).size());
+  return n;
+}
+
+ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
+                                   const TraceSettings& s, int threads) {
+  ResourceEstimate e;
+  e.threads = static_cast<int>(threadsUsed(threads));
+  e.baseBytes = sceneBytes(scene);
+  const SourceCounts n = countSources(scene);
+  const uint64_t perPoint = bytesPerGridPoint(s);
+  double points = 0.0;
+  for (std::size_t i = 0; i < c.grids.size() && i < gridPoints.size(); ++i) {
+    MemoryItem m;
+    m.what = "grid '" + c.grids[i].name + "'";
+    m.loc = c.grids[i].loc;
+    m.bytes = gridPoints[i] * perPoint;
+    m.detail = std::to_string(gridPoints[i]) + " points x " + std::to_string(perPoint) + " B";
+    e.memory.push_back(std::move(m));
+    points += static_cast<double>(gridPoints[i]);
+  }
+  const double batches = s.targetRelativeError > 0.0 ? 4.0 : 1.0;
+  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires)});
+  addLuminaires(e, c);
+  for (const ViewSpec& v : c.views) {
+    e.memory.push_back(viewMemory(v, true));
+    e.work.push_back({"rendering " + v.name, viewRays(v, ViewWork{}, s, n.sampled, n.luminaires)});
+  }
+  return e;
+}
+
+ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const ViewWork& w, const Scene& scene,
+                              const TraceSettings& s, int threads) {
+  ResourceEstimate e;
+  e.threads = static_cast<int>(threadsUsed(threads));
+  e.baseBytes = sceneBytes(scene);
+  addLuminaires(e, c);
+  const SourceCounts n = countSources(scene);
+  e.memory.push_back(viewMemory(view, false));
+  e.work.push_back({"rendering " + view.name, viewRays(view, w, s, n.sampled, n.luminaires)});
+  return e;
+}
+
+ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
+                                int threads) {
+  ResourceEstimate e;
+  e.threads = static_cast<int>(threadsUsed(threads));
+  e.baseBytes = sceneBytes(scene);
+  const SourceCounts n = countSources(scene);
+  const uint64_t per = bytesPerInputPoint(s);
+  e.memory.push_back({"the input of " + std::to_string(points) + " points", where, points * per,
+                      std::to_string(points) + " points x " + std::to_string(per) + " B"});
+  e.memory.back().bytes += scene.luminaires.size() * (sizeof(LuminaireSource) + sizeof(Light) + 32);
+  const double batches = s.targetRelativeError > 0.0 ? 4.0 : 1.0;
+  e.work.push_back({"tracing", static_cast<double>(points) * batches * raysPerSensor(s, n.sampled, n.luminaires)});
+  return e;
+}
+
+ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
+                                     const TraceSettings& s, int threads) {
+  ResourceEstimate e;
+  e.threads = static_cast<int>(threadsUsed(threads));
+  // The scene and the year's sky vectors (hours × patches, float).
+  const uint64_t patches = static_cast<uint64_t>(SkyPatches(c.annual.skySubdivision).count());
+  e.baseBytes = sceneBytes(scene) + a.hours * patches * sizeof(float);
+  addLuminaires(e, c);
+  const SourceCounts n = countSources(scene);
+  // The interreflected sun's set: at most one position per Reinhart MF:2 patch with sun.
+  const uint64_t suns = std::min<uint64_t>(a.sunHours, static_cast<uint64_t>(SkyPatches(2).count()));
+  const int states = c.annual.blinds ? 2 : 1;  // blinds closed: traced again where there is glass
+  uint64_t sensors = 0;
+  for (std::size_t i = 0; i < a.gridSensors.size(); ++i) {
+    const uint64_t k = a.gridSensors[i];
+    sensors += k;
+    MemoryItem m;
+    m.what = "the annual results of grid '" + c.grids[i].name + "'";
+    m.loc = c.grids[i].loc;
+    m.bytes = annualBytes(k, a.hours, patches, a.sunHours, suns, states) +
+              k * (sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2) + 2 * sizeof(Vec3) + 200);
+    m.detail = std::to_string(k) + " sensors x " + std::to_string(a.hours) + " hours x " +
+               std::to_string(states) + (states > 1 ? " states" : " state");
+    e.memory.push_back(std::move(m));
+  }
+  // Sky coefficients: the point estimator. Sun coefficients: fewer paths (annual_study.cpp's
+  // sunSettings), each diffuse vertex with a shadow ray to every sun of the set. Direct sun:
+  // sunSamples rays per sensor and sun hour.
+  TraceSettings sun = s;
+  sun.hemisphereSamples = std::max(64, s.hemisphereSamples / 8);
+  sun.firstBounceSplit = std::max(1, s.firstBounceSplit / 4);
+  const double sky = static_cast<double>(sensors) * raysPerSensor(s, n.sampled, n.luminaires);
+  // About one vertex per path tests every sun (the others end by Russian roulette first).
+  const double sunPaths = static_cast<double>(sensors) * (raysPerSensor(sun, n.sampled, n.luminaires) +
+                                                          sun.hemisphereSamples * static_cast<double>(suns));
+  const double direct = static_cast<double>(sensors) * a.sunHours * std::max(1, c.annual.sunSamples);
+  e.work.push_back({"sky coefficients", sky});
+  e.work.push_back({"sun coefficients", sunPaths + direct});
+  if (states > 1) {
+    e.work.push_back({"blinds closed: sky coefficients", sky});
+    e.work.push_back({"blinds closed: sun coefficients", sunPaths});
+  }
+  return e;
+}
+
+}  // namespace candela

@@ -1,0 +1,128 @@
+// What a case needs before it is traced (docs/reliability.md, "Resource bounds"): the memory its
+// results and scene take, counted from the data structures that hold them, and the work, counted
+// in rays and turned into seconds at a measured rate. The studies compute it once every input is
+// checked, hand it to their observer (study/observer.h) and refuse, with an InputError at the
+// line of the largest item, a case whose memory exceeds the caller's limit. Estimates only add
+// checks and output: no number of a run that passes depends on them.
+#pragma once
+
+#include "base/error.h"
+#include "engine/trace_settings.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+struct Scene;
+struct CaseFile;
+struct ViewSpec;
+
+// One thing of a case that takes memory: a grid, a view, the annual arrays, the luminaires.
+struct MemoryItem {
+  std::string what;    // "grid 'workplane'", "view 'desk'", ...
+  FileLoc loc;         // where the case declares it (refusals point there)
+  uint64_t bytes = 0;
+  std::string detail;  // the count behind it, e.g. "16384 x 16384 pixels x 94 B"
+};
+
+// One step of the work, labelled as the study's StudyObserver step ("tracing", "rendering desk").
+struct WorkStep {
+  std::string label;
+  double rays = 0.0;
+};
+
+// Rays (as raysPerSensor counts them) per CPU second of one thread on the development machine
+// (2 vCPU Xeon at 2.6 GHz): 1.5–2.6 M on the small room's grids at draft and normal quality, path
+// and cache (docs/reliability.md).
+inline constexpr double kRaysPerSecondPerThread = 2.0e6;
+
+struct ResourceEstimate {
+  uint64_t baseBytes = 0;  // the process and the scene (shapes, accelerator, luminaires)
+  std::vector<MemoryItem> memory;
+  std::vector<WorkStep> work;
+  int threads = 1;         // threads the work is spread over (resolved: >= 1)
+  double raysPerSecondPerThread = kRaysPerSecondPerThread;
+
+  uint64_t bytes() const;                        // baseBytes + every item
+  double rays() const;                           // every step
+  double seconds() const;                        // rays / (rate × threads)
+  double seconds(const std::string& label) const;  // of the steps so labelled; < 0 when none
+  const MemoryItem* largest() const;             // nullptr when there is no item
+};
+
+// The caller's bounds: 0 means none.
+struct ResourceLimits {
+  uint64_t maxMemoryBytes = 0;
+};
+
+// Throws InputError when the estimate's memory exceeds the limit: at the largest item's line,
+// "view 'x' needs about 31.5 GiB (16384 x 16384 pixels x 126 B); the case about 31.6 GiB in all,
+// more than allowed (--max-memory 1 GiB)"; at `where` when there is no item.
+void checkResources(const ResourceEstimate& e, const ResourceLimits& limits, const FileLoc& where);
+
+// "1.5 GiB", "340 MiB", "12 KiB", "900 B".
+std::string formatBytes(uint64_t bytes);
+
+// Sizes of what one unit holds, in bytes (from sizeof of the structures that hold it; formulas
+// in docs/reliability.md).
+// The cache's records count where computeIrradiance builds one (method cache, bounces > 0).
+uint64_t bytesPerGridPoint(const TraceSettings& s);   // a point of a point-in-time grid (run)
+uint64_t bytesPerInputPoint(const TraceSettings& s);  // a point of `candela points`
+uint64_t bytesPerPixel(bool keptForReport);  // a pixel of a view (run keeps every view till writing)
+uint64_t sceneBytes(const Scene& scene);
+// The case's luminaires as one item at the first [[luminaire]]'s line (none without luminaires).
+void addLuminaires(ResourceEstimate& e, const CaseFile& c);
+
+// Rays one sensor point costs: hemisphere samples × the rays of a hemisphere ray's path (its hit
+// and shadow ray, then the cache's lookup or firstBounceSplit continuations of ρ/(1 − ρ) further
+// vertices at a mean reflectance ρ = 0.5, capped by maxBounces), the light samples of every
+// source at the sensor (a far-field luminaire takes one shadow ray), and the light selection at
+// every path vertex (a fraction of a ray per source). `sampled` counts the area and distant
+// sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires);
+
+// The annual study's float arrays for `sensors` sensors over `hours` hours: coefficients
+// (sensors × patches), direct sun (sensors × sun hours), interreflected sun (sensors × suns of
+// the set) and the year's total and direct sun (sensors × hours × 2), per state of the blinds
+// (`states` 1 or 2).
+uint64_t annualBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
+                     int states);
+
+// A view's pixels and rays (traced pixels × camera rays × what a camera ray costs).
+struct ViewWork {
+  int pixelSamples = 4;
+  int coarseStep = 4;
+  int irradianceSamples = 64;
+};
+MemoryItem viewMemory(const ViewSpec& view, bool keptForReport);
+double viewRays(const ViewSpec& view, const ViewWork& w, const TraceSettings& s, std::size_t sampled,
+                std::size_t luminaires);
+
+// The points of each [[grid]] of the case, counted without generating them (points files read).
+std::vector<std::size_t> gridPointCounts(const CaseFile& c);
+
+// The point-in-time study of a case: its grids (points per grid, case order; and the cache),
+// views and luminaires.
+ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
+                                   const TraceSettings& s, int threads);
+
+// `candela render`: one view of a case (study/view_study.h).
+ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const ViewWork& w, const Scene& scene,
+                              const TraceSettings& s, int threads);
+
+// `candela points`: `points` sensor points read from `where`.
+ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
+                                int threads);
+
+// The annual study: sensors per grid (case order), the weather year's hours and those with sun.
+struct AnnualCounts {
+  std::vector<uint64_t> gridSensors;
+  uint64_t hours = 0, sunHours = 0;
+};
+ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
+                                     const TraceSettings& s, int threads);
+
+}  // namespace candela

@@ -1,0 +1,105 @@
+// The resource estimate (study/resource_estimate.h): closed counts of bytes, scaling, and the
+// refusal at the largest item's line.
+#include "study/resource_estimate.h"
+
+#include "engine/render.h"
+#include "engine/sensors.h"
+#include "study/case_file.h"
+
+#include <gtest/gtest.h>
+
+namespace candela {
+namespace {
+
+TEST(ResourceEstimate, AnnualBytesAreTheFloatArrays) {
+  // 100 sensors, 8760 hours, 146 patches, 4000 sun hours, 300 suns, blinds (2 states): the
+  // coefficients and the year per state, the write copy once.
+  const uint64_t s = 100, h = 8760, p = 146, sun = 4000, j = 300;
+  const uint64_t want = 2 * (s * (p + sun + j) * 4 + s * h * 2 * 4) + s * h * 5;
+  EXPECT_EQ(annualBytes(s, h, p, sun, j, 2), want);
+  EXPECT_EQ(annualBytes(s, h, p, sun, j, 1), s * (p + sun + j) * 4 + s * h * 2 * 4 + s * h * 5);
+}
+
+TEST(ResourceEstimate, AnnualScalesWithSensorsTimesHours) {
+  // Linear in sensors at fixed hours, and the hourly part linear in hours.
+  EXPECT_EQ(annualBytes(2000, 8760, 146, 4000, 300, 2), 20 * annualBytes(100, 8760, 146, 4000, 300, 2));
+  const uint64_t perHour = annualBytes(1000, 8761, 146, 4000, 300, 2) - annualBytes(1000, 8760, 146, 4000, 300, 2);
+  EXPECT_EQ(perHour, 1000u * (2 * 2 * 4 + 5));  // sensors × (2 arrays × 2 states × float + write copy)
+}
+
+TEST(ResourceEstimate, PixelBytesFromTheImage) {
+  // Kept per pixel: Image's radiance (Rgb), luminance and standard error (double), inside and
+  // traced (byte), and the colour luminance (Rgb).
+  const uint64_t kept = sizeof(Rgb) + 8 + 8 + 1 + 1 + sizeof(Rgb);
+  EXPECT_EQ(kept, 66u);
+  EXPECT_GT(bytesPerPixel(false), kept);
+  EXPECT_EQ(bytesPerPixel(true), bytesPerPixel(false) + 6);
+  ViewSpec v;
+  v.name = "x";
+  v.loc = FileLoc{"case.toml", 12, 1};
+  v.resolution = glm::ivec2(16384, 16384);
+  const MemoryItem m = viewMemory(v, false);
+  EXPECT_EQ(m.bytes, 16384ull * 16384ull * bytesPerPixel(false));
+  EXPECT_EQ(m.detail, "16384 x 16384 pixels x " + std::to_string(bytesPerPixel(false)) + " B");
+}
+
+TEST(ResourceEstimate, RefusedAtTheLargestItem) {
+  ResourceEstimate e;
+  e.baseBytes = 40ull << 20;
+  ViewSpec small, big;
+  small.name = "small";
+  small.loc = FileLoc{"case.toml", 5, 1};
+  small.resolution = glm::ivec2(64, 48);
+  big.name = "x";
+  big.loc = FileLoc{"case.toml", 12, 1};
+  big.resolution = glm::ivec2(16384, 16384);
+  e.memory = {viewMemory(small, false), viewMemory(big, false)};
+  EXPECT_NO_THROW(checkResources(e, ResourceLimits{}, FileLoc{"case.toml", 0, 0}));  // no limit
+  EXPECT_NO_THROW(checkResources(e, ResourceLimits{e.bytes()}, FileLoc{"case.toml", 0, 0}));
+  try {
+    checkResources(e, ResourceLimits{1ull << 30}, FileLoc{"case.toml", 0, 0});
+    FAIL() << "not refused";
+  } catch (const InputError& err) {
+    const std::string msg = err.what();
+    EXPECT_EQ(msg.rfind("case.toml:12: view 'x' needs about ", 0), 0u) << msg;
+    EXPECT_NE(msg.find(" GiB of memory (16384 x 16384 pixels x "), std::string::npos) << msg;
+    EXPECT_NE(msg.find("(--max-memory 1.0 GiB)"), std::string::npos) << msg;
+  }
+}
+
+TEST(ResourceEstimate, RaysPerSensor) {
+  TraceSettings s;
+  s.hemisphereSamples = 1000;
+  s.lightSamples = 10;
+  s.firstBounceSplit = 16;
+  s.maxBounces = 0;  // direct light only: the hemisphere rays, the light samples, no selection
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 + 10.0 * 2 + 5);
+  s.maxBounces = 100;
+  s.method = Method::kPath;  // 1 + 16 × 1 vertices a ray, a ray and a shadow ray each; selection over 7
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 2 * 17 + 25.0 + 1000.0 * 17 * 0.2 * 7);
+  s.method = Method::kCache;  // the hit, its shadow ray and 8 for the lookup; 1 + 4 vertices
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 25.0 + 1000.0 * 5 * 0.2 * 7);
+  // A million luminaires dominate: each path vertex weighs them all.
+  EXPECT_GT(raysPerSensor(s, 0, 1000000), 1e9);
+}
+
+TEST(ResourceEstimate, Seconds) {
+  ResourceEstimate e;
+  e.threads = 2;
+  e.raysPerSecondPerThread = 1e6;
+  e.work = {{"tracing", 4e6}, {"rendering a", 2e6}, {"rendering b", 2e6}};
+  EXPECT_DOUBLE_EQ(e.seconds(), 4.0);
+  EXPECT_DOUBLE_EQ(e.seconds("tracing"), 2.0);
+  EXPECT_DOUBLE_EQ(e.seconds("rendering a"), 1.0);
+  EXPECT_LT(e.seconds("sky coefficients"), 0.0);
+}
+
+TEST(ResourceEstimate, FormatBytes) {
+  EXPECT_EQ(formatBytes(900), "900 B");
+  EXPECT_EQ(formatBytes(12 * 1024), "12 KiB");
+  EXPECT_EQ(formatBytes(340ull << 20), "340 MiB");
+  EXPECT_EQ(formatBytes(3ull << 29), "1.5 GiB");
+}
+
+}  // namespace
+}  // namespace candela
