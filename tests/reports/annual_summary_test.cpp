@@ -1,3 +1,5 @@
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -14,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 // Split on commas; the fields tested here hold no quotes (names are checked in csv_json_test).
 std::vector<std::vector<std::string>> rowsOf(const std::string& text) {

@@ -5,6 +5,8 @@
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 
+#include "tests/support/temp_files.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -19,12 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::slurp;
 
 ReportData withWarnings() {
   ReportData d = testing_sample::sampleReport();
