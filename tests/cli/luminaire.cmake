@@ -13,3 +13,10 @@ candela_cli_test(luminaire.bad_ies 2 "bad_negative.ies:11:" luminaire ies/bad_ne
 candela_cli_test(luminaire.bad_ldt 2 "bad_isym.ldt:3:" luminaire ldt/bad_isym.ldt --svg ${LUM_SVG})
 candela_cli_test(luminaire.missing 2 "cannot open file" luminaire ies/no_such.ies --svg ${LUM_SVG})
 candela_cli_test(luminaire.unknown_type 2 "expected .ies or .ldt" luminaire ies/tilt_table.tlt --svg ${LUM_SVG})
+# An output path named on the command line is a regular file or a new name: as root,
+# `--svg /dev/null` once replaced the device node with a file.
+candela_cli_test(luminaire.svg_device 2 "/dev/null: the output is a device; only a regular file is replaced"
+                 luminaire ies/lambert_full.ies --svg /dev/null)
+# Control characters of a hostile first line are escaped in the one error line.
+candela_cli_test(luminaire.escaped_message 2 "unknown IES edition 'IESNA:LM-63-2002\\x1b]0;pwned"
+                 luminaire ies/escape_sequences.ies --no-svg)

@@ -39,3 +39,7 @@ candela_cli_test(points.folder_points 2 "the points file is a folder, not a regu
 # A finite but huge coordinate once aborted the process inside Embree (exit 134).
 candela_cli_test(points.far_point 2 "points/far_point.pts:2: a sensor point lies beyond 1e7 m from the origin"
                  points points/room.rad --points points/far_point.pts)
+# Points from an endless stdin without newlines (/dev/zero) once ate memory: the line is bounded.
+candela_cli_test(points.endless_stdin 2 "<stdin>:1: a sensor point line is longer than 65536 characters"
+                 points points/room.rad)
+set_tests_properties(cli.points.endless_stdin PROPERTIES ENVIRONMENT "STDIN_FILE=/dev/zero")
