@@ -170,7 +170,7 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c) {
   // docs/reliability.md). The photometric webs are shared per file.
   const uint64_t per = 3 * (sizeof(LuminaireSource) + sizeof(LuminairePlacement)) / 2 + sizeof(Light) + 2 * 32 + 100;
   MemoryItem m;
-  m.what = c.luminaires.size() > 1 ? "the " + std::to_string(c.luminaires.size()) + " luminaires" : "the luminaire";
+  m.what = c.luminaires.size() > 1 ? "the data of " + std::to_string(c.luminaires.size()) + " luminaires" : "the luminaire";
   m.loc = c.luminaires.front().loc;
   m.bytes = c.luminaires.size() * per;
   m.detail = std::to_string(c.luminaires.size()) + " x " + std::to_string(per) + " B";

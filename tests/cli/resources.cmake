@@ -28,3 +28,9 @@ add_test(NAME cli.resources.peak_grid COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/peak_m
          run ${RES}/peak_grid.toml --out ${CMAKE_CURRENT_BINARY_DIR}/res_peak_run --bounces 0 --samples 4 -q)
 set_tests_properties(cli.resources.peak_view cli.resources.peak_grid PROPERTIES SKIP_RETURN_CODE 77
                      WORKING_DIRECTORY ${DATA})
+# A 1000 × 1000 luminaire array is refused before its luminaires are placed (placing them takes
+# about a minute), at its [[luminaire]] line.
+add_test(NAME cli.resources.luminaire_array COMMAND ${RUN_CASE} 2
+         "luminaire_array.toml:3: the data of 1000000 luminaires needs about 1.2 GiB"
+         $<TARGET_FILE:candela> ${RES}/luminaire_array.toml --max-memory 100M)
+set_tests_properties(cli.resources.luminaire_array PROPERTIES TIMEOUT 30)
