@@ -117,12 +117,18 @@ std::vector<GridValues> gridReports(ReportData& data, const std::vector<Prepared
 
 }  // namespace
 
+// From this many luminaires on, placing them costs seconds, so their memory is checked first.
+constexpr std::size_t kLuminairesCheckedFirst = 10000;
+
 RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer) {
-  // 1. Everything that can be wrong with the input is found here, before any tracing. The
-  // luminaires' memory first, before they are placed (a 1000 × 1000 array takes a minute).
-  ResourceEstimate luminaires;
-  addLuminaires(luminaires, c);
-  checkResources(luminaires, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  // 1. Everything that can be wrong with the input is found here, before any tracing. Large
+  // luminaire arrays are checked before they are placed (placing 10⁶ takes about a minute); the
+  // whole case's estimate follows once the scene is loaded.
+  if (c.luminaires.size() >= kLuminairesCheckedFirst) {
+    ResourceEstimate luminaires;
+    addLuminaires(luminaires, c);
+    checkResources(luminaires, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  }
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
   // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent).
   for (const GridSpec& spec : c.grids)
