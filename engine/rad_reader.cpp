@@ -44,6 +44,21 @@ class Tokenizer {
       } else if (c == '!' && atLineStart_) {
         throw InputError(FileLoc{file_, line_, 0},
                          "inline commands ('!') are refused: scene files never run programs");
+      } else if (c == '"' || c == '\'') {
+        // A quoted word (Radiance's fgetword, either quote): everything up to the same closing
+        // quote, blanks included, without the quotes; an expression such as "if(a, 1, 0)".
+        const int line = line_;
+        const size_t start = ++pos_;
+        while (pos_ < text_.size() && text_[pos_] != c) {
+          if (text_[pos_] == '\n') ++line_;
+          ++pos_;
+        }
+        if (pos_ >= text_.size()) throw InputError(FileLoc{file_, line, 0}, "a quoted string is not closed");
+        tok = Token{text_.substr(start, pos_ - start), line};
+        ++pos_;
+        lastTokenLine_ = line_;
+        atLineStart_ = false;
+        return true;
       } else {
         const size_t start = pos_;
         while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;

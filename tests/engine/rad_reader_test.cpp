@@ -212,6 +212,45 @@ TEST(RadReader, ByteOrderMarkIsNotAModifier) {
   EXPECT_EQ(scene.materials[0].name, "panel_light");
 }
 
+TEST(RadReader, QuotedStringsAreOneArgument) {
+  // Radiance's own torus.rad: a quoted expression with blanks and commas is one string argument,
+  // so the diagnosis is the unsupported type, not "'PI/20,' is not a valid count".
+  Scene scene;
+  try {
+    readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\n"
+                     "void mixfunc striped\n4 m m \"if(mod(atan2(Py-A2,Px-A1),PI/10) - PI/20, 1, 0)\" .\n0\n3 -4 2.5 1.5\n",
+                     "torus.rad", scene);
+    FAIL() << "mixfunc is not supported";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 2) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mixfunc"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("valid count"), std::string::npos) << e.what();
+  }
+  // Single quotes too (Radiance's patterns.mat).
+  try {
+    readRadianceText("void brightfunc noisepat\n2 '1 - .35*(1+fnoise3(3*Px,3*Py,3*Pz))' .\n0\n0\n", "patterns.mat", scene);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("brightfunc"), std::string::npos) << e.what();
+  }
+  // A quoted alternate material name of an illum reads as the name.
+  Scene ok;
+  readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\nvoid illum win\n1 \"m\"\n0\n3 1 1 1\n", "q.rad", ok);
+  ASSERT_EQ(ok.materials.size(), 2u);
+  EXPECT_EQ(ok.materials[1].alternate, 0);
+}
+
+TEST(RadReader, UnclosedQuoteNamesItsLine) {
+  Scene scene;
+  try {
+    readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\nvoid mixfunc x\n4 a b \"if(1,\n", "q.rad", scene);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 3) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a quoted string is not closed"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RadReader, NumberThatDoesNotParse) {
   expectError("bad_number.rad", 6, "'0.5x' is not a number");
 }
