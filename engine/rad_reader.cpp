@@ -1,5 +1,6 @@
 #include "engine/rad_reader.h"
 #include "base/input_file.h"
+#include "base/units.h"
 
 #include <algorithm>
 #include <charconv>
@@ -11,7 +12,6 @@
 namespace candela {
 
 namespace {
-constexpr double kMaxCoordinateM = 1e7;
 constexpr double kMaxRadiance = 1e30;
 }  // namespace
 

@@ -22,6 +22,23 @@ namespace candela {
 
 namespace {
 
+// A line without its surrounding blanks.
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return {};
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+// A number as EULUMDAT files write it: a decimal comma is common in files written with a European
+// locale, a leading '+' is allowed. False for anything else (and for NaN or infinity).
+bool parseLdtNumber(std::string s, double& x) {
+  if (s.find('.') == std::string::npos) std::replace(s.begin(), s.end(), ',', '.');
+  std::string_view v = s;
+  if (!v.empty() && v.front() == '+') v.remove_prefix(1);
+  const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  return !v.empty() && ec == std::errc() && p == v.data() + v.size() && std::isfinite(x);
+}
+
 class LdtLines {
  public:
   LdtLines(std::string file, std::string_view text) : file_(std::move(file)), lines_(splitLines(text)) {}
@@ -30,21 +47,17 @@ class LdtLines {
     if (pos_ >= lines_.size())
       throw InputError(FileLoc{file_, int(lines_.size()), 0},
                        "file ends before " + what + " (line " + std::to_string(pos_ + 1) + ", truncated data)");
-    std::string s = lines_[pos_++];
-    const size_t a = s.find_first_not_of(" \t");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+    return trimmed(lines_[pos_++]);
   }
   double number(const std::string& what) {
-    std::string s = text(what);
-    // A decimal comma is common in files written with a European locale.
-    if (s.find('.') == std::string::npos) std::replace(s.begin(), s.end(), ',', '.');
-    std::string_view v = s;
-    if (!v.empty() && v.front() == '+') v.remove_prefix(1);
+    const std::string s = text(what);
     double x = 0.0;
-    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
-    if (v.empty() || ec != std::errc() || p != v.data() + v.size() || !std::isfinite(x))
-      throw InputError(loc(), "bad number '" + s + "' for " + what);
+    if (!parseLdtNumber(s, x)) {
+      // The message shows the value as read, with a decimal comma turned into a point.
+      std::string shown = s;
+      if (shown.find('.') == std::string::npos) std::replace(shown.begin(), shown.end(), ',', '.');
+      throw InputError(loc(), "bad number '" + shown + "' for " + what);
+    }
     return x;
   }
   int integer(const std::string& what) {
@@ -57,16 +70,8 @@ class LdtLines {
   bool done() const { return pos_ >= lines_.size(); }
   // Whether line `index` (0-based, read or not) holds a number, without reading it.
   bool numberAt(size_t index) const {
-    if (index >= lines_.size()) return false;
-    std::string v = lines_[index];
-    const size_t a = v.find_first_not_of(" \t");
-    if (a == std::string::npos) return false;
-    v = v.substr(a, v.find_last_not_of(" \t") - a + 1);
-    if (v.find('.') == std::string::npos) std::replace(v.begin(), v.end(), ',', '.');
-    if (v.front() == '+') v.erase(0, 1);
     double x = 0.0;
-    const auto [p, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
-    return !v.empty() && ec == std::errc() && p == v.data() + v.size();
+    return index < lines_.size() && parseLdtNumber(trimmed(lines_[index]), x);
   }
   size_t position() const { return pos_; }
   // Lines not read yet.

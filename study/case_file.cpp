@@ -1,5 +1,6 @@
 #include "study/case_file.h"
 #include "base/input_file.h"
+#include "base/units.h"
 
 #include <toml++/toml.h>
 
@@ -77,10 +78,9 @@ class Table {
 
 std::string keyText(std::string_view key) { return "'" + std::string(key) + "'"; }
 
-// No value of a case file is larger: coordinates stay within 10 000 km, where ray offsets and the
-// accelerators' single precision keep the surfaces (Embree aborts near 1.8e18 m), and no
-// illuminance, threshold or multiplier comes near it.
-constexpr double kMaxCaseValue = 1e7;
+// No value of a case file is larger: coordinates stay within kMaxCoordinateM (base/units.h), and
+// no illuminance, threshold or multiplier comes near it.
+constexpr double kMaxCaseValue = kMaxCoordinateM;
 
 double asNumber(const Context& c, const toml::node& n, std::string_view key) {
   double v = 0.0;

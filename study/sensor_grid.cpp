@@ -1,5 +1,6 @@
 #include "study/sensor_grid.h"
 #include "base/input_file.h"
+#include "base/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -225,7 +226,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
     // Within 10 000 km of the origin (engine/rad_reader.cpp says why): a point at 1e30 m once
     // aborted the process inside Embree.
     for (int k = 0; k < 3; ++k)
-      if (std::abs(v[k]) > 1e7) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");
+      if (std::abs(v[k]) > kMaxCoordinateM) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");
     const Vec3 dir(v[3], v[4], v[5]);
     if (!(glm::length(dir) > 0.0)) throw InputError(loc, "sensor direction is zero");
     points.push_back({Vec3(v[0], v[1], v[2]), glm::normalize(dir)});
