@@ -1,11 +1,11 @@
 #include "engine/rad_reader.h"
 #include "base/input_file.h"
 #include "base/units.h"
+#include "engine/rad_generators.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <fstream>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -13,169 +13,184 @@ namespace candela {
 
 namespace {
 constexpr double kMaxRadiance = 1e30;
-}  // namespace
-
-namespace {
+// Files included by generators (xform) nest at most this deep: a file that includes itself is
+// refused at this depth instead of recursing without end.
+constexpr int kMaxIncludeDepth = 32;
 
 constexpr const char* kSupported =
     "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source; "
-    "plastic, metal, trans, mirror, glass, dielectric, light, illum, glow";
+    "plastic, metal, trans, mirror, glass, dielectric, light, illum, glow; alias; patterns: see docs/engine.md";
 
-struct Token {
-  std::string_view text;
-  int line;
-};
+using Primitive = RadPrimitive;
+}  // namespace
 
-class Tokenizer {
+class SceneReader::Builder {
  public:
-  Tokenizer(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
-
-  bool next(Token& tok) {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == '\n') {
-        ++line_;
-        ++pos_;
-        atLineStart_ = true;
-      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
-        ++pos_;
-      } else if (c == '#') {
-        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-      } else if (c == '!' && atLineStart_) {
-        throw InputError(FileLoc{file_, line_, 0},
-                         "inline commands ('!') are refused: scene files never run programs");
-      } else if (c == '"' || c == '\'') {
-        // A quoted word (Radiance's fgetword, either quote): everything up to the same closing
-        // quote, blanks included, without the quotes; an expression such as "if(a, 1, 0)".
-        const int line = line_;
-        const size_t start = ++pos_;
-        while (pos_ < text_.size() && text_[pos_] != c) {
-          if (text_[pos_] == '\n') ++line_;
-          ++pos_;
-        }
-        if (pos_ >= text_.size()) throw InputError(FileLoc{file_, line, 0}, "a quoted string is not closed");
-        tok = Token{text_.substr(start, pos_ - start), line};
-        ++pos_;
-        lastTokenLine_ = line_;
-        atLineStart_ = false;
-        return true;
-      } else {
-        const size_t start = pos_;
-        while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-        tok = Token{text_.substr(start, pos_ - start), line_};
-        lastTokenLine_ = line_;
-        atLineStart_ = false;
-        return true;
-      }
-    }
-    return false;
-  }
-
-  // Line of the last token read (where an unexpected end of file is reported).
-  int lastTokenLine() const { return lastTokenLine_; }
-  const std::string& file() const { return file_; }
-
- private:
-  std::string_view text_;
-  std::string file_;
-  size_t pos_ = 0;
-  int line_ = 1;
-  bool atLineStart_ = true;
-  int lastTokenLine_ = 1;
-};
-
-struct Primitive {
-  std::string modifier, type, name;
-  int line = 0;
-  std::vector<std::string> strings;
-  std::vector<double> reals;
-};
-
-class Reader {
- public:
-  Reader(std::string_view text, const std::string& file, Scene& scene) : tok_(text, file), scene_(scene) {
+  Builder(Scene& scene, SceneReadOptions options) : scene_(scene), options_(options) {
     for (size_t i = 0; i < scene.materials.size(); ++i) materials_[scene.materials[i].name] = static_cast<int>(i);
   }
 
-  void run() {
-    Token first;
-    while (tok_.next(first)) {
-      Primitive p;
-      p.line = first.line;
-      p.modifier = std::string(first.text);
-      p.type = std::string(need("a primitive type after '" + p.modifier + "'").text);
-      p.name = std::string(need("an identifier for " + p.type).text);
-      const int ns = count("string");
-      for (int i = 0; i < ns; ++i) p.strings.emplace_back(need("a string argument").text);
-      const int ni = count("integer");
-      for (int i = 0; i < ni; ++i) need("an integer argument");
-      if (ni != 0) fail(p.line, p.type + " '" + p.name + "' takes no integer arguments, got " + std::to_string(ni));
-      const int nr = count("real");
-      for (int i = 0; i < nr; ++i) {
-        const Token t = need("a real argument");
-        p.reals.push_back(number(t));
-      }
-      add(p);
-    }
+  // Parses a file's text, expands its commands (recursively, files relative to `folder`) and
+  // passes every primitive to `sink` in order.
+  void expand(std::string_view text, const std::string& fileName, const std::filesystem::path& folder, int depth,
+              const std::function<void(RadPrimitive&&)>& sink) {
+    RadExpandContext ctx;
+    ctx.folder = folder;
+    ctx.readFile = [this, depth](const std::filesystem::path& file, const FileLoc& from) {
+      if (depth + 1 > kMaxIncludeDepth)
+        throw InputError(from, "files include each other more than " + std::to_string(kMaxIncludeDepth) +
+                                   " levels deep (does a file include itself?)");
+      std::vector<RadPrimitive> out;
+      const std::string text = readInputFile(file, "scene file");
+      expand(text, file.string(), file.parent_path(), depth + 1, [&out](RadPrimitive&& p) { out.push_back(std::move(p)); });
+      return out;
+    };
+    parseRadiance(text, fileName, sink, [&](RadCommand&& cmd) {
+      for (RadPrimitive& p : expandRadCommand(cmd, ctx)) sink(std::move(p));
+    });
+  }
+
+  void read(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
+    expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
   }
 
  private:
-  [[noreturn]] void fail(int line, const std::string& msg) { throw InputError(FileLoc{tok_.file(), line, 0}, msg); }
-
-  Token need(const std::string& what) {
-    Token t;
-    if (!tok_.next(t)) fail(tok_.lastTokenLine(), "unexpected end of file: expected " + what);
-    return t;
-  }
-
-  double number(const Token& t) {
-    double v = 0.0;
-    const char* b = t.text.data();
-    const char* e = b + t.text.size();
-    if (*b == '+') ++b;
-    const auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v))
-      fail(t.line, "'" + std::string(t.text) + "' is not a number");
-    return v;
-  }
-
-  int count(const char* kind) {
-    const Token t = need(std::string("the number of ") + kind + " arguments");
-    int v = 0;
-    const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
-    if (r.ec != std::errc() || r.ptr != t.text.data() + t.text.size() || v < 0)
-      fail(t.line, "'" + std::string(t.text) + "' is not a valid count of " + kind + " arguments");
-    return v;
-  }
+  [[noreturn]] void fail(const Primitive& p, const std::string& msg) { throw InputError(p.loc, msg); }
 
   void expectReals(const Primitive& p, size_t n) {
     if (p.reals.size() != n)
-      fail(p.line, p.type + " '" + p.name + "' needs " + std::to_string(n) + " real arguments, got " +
+      fail(p, p.type + " '" + p.name + "' needs " + std::to_string(n) + " real arguments, got " +
                        std::to_string(p.reals.size()));
   }
   void expectStrings(const Primitive& p, size_t maxN) {
     if (p.strings.size() > maxN)
-      fail(p.line, p.type + " '" + p.name + "' takes at most " + std::to_string(maxN) + " string arguments, got " +
+      fail(p, p.type + " '" + p.name + "' takes at most " + std::to_string(maxN) + " string arguments, got " +
                        std::to_string(p.strings.size()));
   }
 
   Vec3 vec(const Primitive& p, size_t i) const { return Vec3(p.reals[i], p.reals[i + 1], p.reals[i + 2]); }
 
+  // The material a surface's modifier names (-1: void), through patterns replaced by their base.
   int modifierOf(const Primitive& p) {
-    if (p.modifier == "void") return -1;
-    const auto it = materials_.find(p.modifier);
+    std::string name = p.modifier;
+    for (;;) {
+      if (name == "void") return -1;
+      const auto it = materials_.find(name);
+      if (it != materials_.end()) return it->second;
+      const auto pt = patterns_.find(name);
+      if (pt == patterns_.end())
+        fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
+      if (pt->second.pattern >= 0)
+        fail(p, p.type + " '" + p.name + "' has the pattern '" + name +
+                    "' as its modifier: a pattern modifies a material, which surfaces then use");
+      name = pt->second.base;
+    }
+  }
+
+  // A material's modifier: void, a material, a pattern candela implements (returned as a pattern
+  // index) or a pattern replaced by its base (followed).
+  int patternOf(const Primitive& p) {
+    std::string name = p.modifier;
+    for (;;) {
+      if (name == "void" || materials_.count(name)) return -1;
+      const auto pt = patterns_.find(name);
+      if (pt == patterns_.end())
+        fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
+      if (pt->second.pattern >= 0) return pt->second.pattern;
+      name = pt->second.base;
+    }
+  }
+
+  // Types that modify a material's colour, brightness or normal, or mix two materials.
+  static bool isPatternType(const std::string& t) {
+    static const char* const kTypes[] = {"brightfunc", "brightdata", "brighttext", "colorfunc", "colordata",
+                                         "colorpict", "colortext",  "texfunc",    "texdata",   "mixfunc",
+                                         "mixdata",   "mixpict",    "mixtext",    "specfunc",  "specdata",
+                                         "specpict",  "spectrum",   "specfile"};
+    return std::any_of(std::begin(kTypes), std::end(kTypes), [&](const char* k) { return t == k; });
+  }
+
+  // The patterns candela implements, by the function file they name (docs/engine.md).
+  static std::optional<PatternKind> implementedPattern(const Primitive& p) {
+    if (p.type == "brightfunc" && p.strings.size() >= 2) {
+      if (p.strings[0] == "skyfunc" || p.strings[1] == "skybright.cal") {
+        if (p.strings[1] == "skybright.cal") return PatternKind::kSkyBright;
+      }
+      if (p.strings[1] == "perezlum.cal") return PatternKind::kPerezLum;
+    }
+    if (p.type == "brightdata" && p.strings.size() >= 3 && p.strings[2] == "source.cal") {
+      const std::string& f = p.strings[0];
+      if (f == "corr" || f == "flatcorr" || f == "boxcorr" || f == "cylcorr") return PatternKind::kSourceDistribution;
+    }
+    return std::nullopt;
+  }
+
+  static std::string patternFile(const Primitive& p) {
+    // The function file: brightfunc/colorfunc/texfunc/mixfunc name it second, *data and *pict
+    // third (after the data or picture file).
+    const bool third = p.type.size() > 4 && (p.type.compare(p.type.size() - 4, 4, "data") == 0 ||
+                                             p.type.compare(p.type.size() - 4, 4, "pict") == 0);
+    const size_t i = third ? 2 : 1;
+    return p.strings.size() > i ? p.strings[i] : std::string();
+  }
+
+  void addPattern(const Primitive& p) {
+    if (const auto kind = implementedPattern(p)) {
+      ScenePattern sp;
+      sp.kind = *kind;
+      sp.type = p.type;
+      sp.name = p.name;
+      sp.loc = p.loc;
+      sp.strings = p.strings;
+      sp.reals = p.reals;
+      scene_.patterns.push_back(std::move(sp));
+      patterns_[p.name] = PatternEntry{static_cast<int>(scene_.patterns.size() - 1), p.modifier};
+      materials_.erase(p.name);
+      return;
+    }
+    const std::string file = patternFile(p);
+    const std::string what = p.type + " '" + p.name + "'" + (file.empty() ? "" : " (" + file + ")");
+    if (options_.patterns == PatternPolicy::kRefuse)
+      fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
+                     "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
+    scene_.inputWarnings.push_back(Warning{"pattern_replaced",
+                                           what + " is not implemented: the materials it modifies are used unmodified",
+                                           p.loc});
+    // A mixture's base is its first material (a mix of two materials has no single modifier).
+    std::string base = p.modifier;
+    patterns_[p.name] = PatternEntry{-1, base};
+    materials_.erase(p.name);
+  }
+
+  // `mod alias new old`: `new` is `old`, modified by `mod` instead of old's own modifier when
+  // `mod` is not "inherit" (Radiance reference manual, "Alias").
+  void addAlias(const Primitive& p) {
+    const auto it = materials_.find(p.strings[0]);
     if (it == materials_.end())
-      fail(p.line, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
-    return it->second;
+      fail(p, "alias '" + p.name + "' stands for '" + p.strings[0] + "', which is not a material defined before use");
+    int pattern = -1;
+    if (p.modifier != "inherit" && p.modifier != "void") {
+      Primitive probe = p;
+      pattern = patternOf(probe);
+    }
+    Material m = scene_.materials[static_cast<size_t>(it->second)];
+    if (p.modifier != "inherit") m.pattern = pattern;
+    if (m.pattern == scene_.materials[static_cast<size_t>(it->second)].pattern) {
+      materials_[p.name] = it->second;
+    } else {
+      m.name = p.name;
+      m.loc = p.loc;
+      materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+    }
+    patterns_.erase(p.name);
   }
 
   void addMaterial(const Primitive& p, MaterialType type) {
-    if (p.modifier != "void" && materials_.find(p.modifier) == materials_.end())
-      fail(p.line, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
     Material m;
+    m.pattern = patternOf(p);
     m.type = type;
     m.name = p.name;
-    m.loc = FileLoc{tok_.file(), p.line, 0};
+    m.loc = p.loc;
     switch (type) {
       case MaterialType::kPlastic:
       case MaterialType::kMetal:
@@ -203,7 +218,7 @@ class Reader {
         if (!p.strings.empty() && p.strings[0] != "void") {
           const auto it = materials_.find(p.strings[0]);
           if (it == materials_.end())
-            fail(p.line, "alternate material '" + p.strings[0] + "' of " + p.type + " '" + p.name +
+            fail(p, "alternate material '" + p.strings[0] + "' of " + p.type + " '" + p.name +
                              "' is not defined before use");
           m.alternate = it->second;
         }
@@ -211,7 +226,7 @@ class Reader {
       case MaterialType::kGlass:
         expectStrings(p, 0);
         if (p.reals.size() != 3 && p.reals.size() != 4)
-          fail(p.line, "glass '" + p.name + "' needs 3 or 4 real arguments, got " + std::to_string(p.reals.size()));
+          fail(p, "glass '" + p.name + "' needs 3 or 4 real arguments, got " + std::to_string(p.reals.size()));
         m.color = vec(p, 0);
         if (p.reals.size() == 4) m.refractiveIndex = p.reals[3];
         break;
@@ -225,9 +240,9 @@ class Reader {
         m.hartmannConstant = p.reals[4];
         for (int c = 0; c < 3; ++c)
           if (!(m.color[c] > 0.0 && m.color[c] <= 1.0))
-            fail(p.line, "dielectric '" + p.name + "' needs a transmission per metre in (0, 1] for each channel");
+            fail(p, "dielectric '" + p.name + "' needs a transmission per metre in (0, 1] for each channel");
         if (!(m.refractiveIndex > 0.0))
-          fail(p.line, "dielectric '" + p.name + "' needs a refractive index > 0");
+          fail(p, "dielectric '" + p.name + "' needs a refractive index > 0");
         break;
       case MaterialType::kGlow:
         expectStrings(p, 0);
@@ -239,9 +254,10 @@ class Reader {
         break;
     }
     for (int c = 0; c < 3; ++c)
-      if (m.color[c] < 0.0) fail(p.line, p.type + " '" + p.name + "' has a negative colour component");
+      if (m.color[c] < 0.0) fail(p, p.type + " '" + p.name + "' has a negative colour component");
     checkPhysical(p, m);
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+    patterns_.erase(p.name);
   }
 
   // Materials that cannot exist are refused: they would create light or give nonsense, and an
@@ -255,23 +271,23 @@ class Reader {
       case MaterialType::kPlastic:
       case MaterialType::kMetal:
       case MaterialType::kTrans:
-        if (cmax > 1.0) fail(p.line, what + " reflects more than it receives: a colour component above 1");
-        if (!(m.specularity >= 0.0 && m.specularity <= 1.0)) fail(p.line, what + " needs a specularity in [0, 1]");
-        if (m.roughness < 0.0) fail(p.line, what + " has a negative roughness");
+        if (cmax > 1.0) fail(p, what + " reflects more than it receives: a colour component above 1");
+        if (!(m.specularity >= 0.0 && m.specularity <= 1.0)) fail(p, what + " needs a specularity in [0, 1]");
+        if (m.roughness < 0.0) fail(p, what + " has a negative roughness");
         if (m.type == MaterialType::kTrans &&
             !(m.transmissivity >= 0.0 && m.transmissivity <= 1.0 && m.transmittedSpecular >= 0.0 &&
               m.transmittedSpecular <= 1.0))
-          fail(p.line, what + " needs its transmission and transmitted specularity in [0, 1]");
+          fail(p, what + " needs its transmission and transmitted specularity in [0, 1]");
         break;
       case MaterialType::kMirror:
       case MaterialType::kGlass:
-        if (cmax > 1.0) fail(p.line, what + " transmits or reflects more than it receives: a component above 1");
+        if (cmax > 1.0) fail(p, what + " transmits or reflects more than it receives: a component above 1");
         break;
       case MaterialType::kLight:
       case MaterialType::kIllum:
       case MaterialType::kGlow:
         // 1e30 W/sr/m² is far above the sun's 2e7; beyond it the light would overflow in products.
-        if (cmax > kMaxRadiance) fail(p.line, what + " has a radiance above 1e30 W/sr/m2");
+        if (cmax > kMaxRadiance) fail(p, what + " has a radiance above 1e30 W/sr/m2");
         break;
       default:
         break;
@@ -283,16 +299,16 @@ class Reader {
   void checkCoordinates(const Primitive& p) {
     for (double v : p.reals)
       if (std::abs(v) > kMaxCoordinateM)
-        fail(p.line, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + std::to_string(v) + ")");
+        fail(p, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + std::to_string(v) + ")");
   }
 
   void addPolygon(const Primitive& p, uint32_t mat, Scene& target) {
     expectStrings(p, 0);
     if (p.reals.size() % 3 != 0)
-      fail(p.line, "polygon '" + p.name + "' needs a multiple of 3 real arguments, got " +
+      fail(p, "polygon '" + p.name + "' needs a multiple of 3 real arguments, got " +
                        std::to_string(p.reals.size()));
     const size_t nv = p.reals.size() / 3;
-    if (nv < 3) fail(p.line, "polygon '" + p.name + "' needs at least 3 vertices, got " + std::to_string(nv));
+    if (nv < 3) fail(p, "polygon '" + p.name + "' needs at least 3 vertices, got " + std::to_string(nv));
     std::vector<Vec3> pts;
     for (size_t i = 0; i < nv; ++i) pts.push_back(vec(p, 3 * i));
     Box b;
@@ -301,7 +317,7 @@ class Reader {
     const Vec3 nn = newellNormal(pts);
     const double area = 0.5 * glm::length(nn);
     if (!(diameter > 0.0) || area <= kDegenerateTolerance * diameter * diameter)
-      fail(p.line, "polygon '" + p.name + "' is degenerate (zero area)");
+      fail(p, "polygon '" + p.name + "' is degenerate (zero area)");
     const Vec3 n = nn / (2.0 * area);
     Vec3 centroid(0.0);
     for (const Vec3& v : pts) centroid += v;
@@ -312,18 +328,20 @@ class Reader {
         std::ostringstream msg;
         msg << "polygon '" << p.name << "' is not planar: vertex " << (i + 1) << " is " << off
             << " m from its plane (tolerance 0.1 % of its size, " << kPlanarTolerance * diameter << " m)";
-        fail(p.line, msg.str());
+        fail(p, msg.str());
       }
     }
     target.addPolygon(pts, mat, p.name);
   }
 
   void checkRadius(const Primitive& p, double r) {
-    if (r < 0.0) fail(p.line, p.type + " '" + p.name + "' has a negative radius");
+    if (r < 0.0) fail(p, p.type + " '" + p.name + "' has a negative radius");
   }
 
   void add(const Primitive& p) {
     const std::string& t = p.type;
+    if (!p.integers.empty())
+      fail(p, t + " '" + p.name + "' takes no integer arguments, got " + std::to_string(p.integers.size()));
     if (t == "plastic") return addMaterial(p, MaterialType::kPlastic);
     if (t == "metal") return addMaterial(p, MaterialType::kMetal);
     if (t == "trans") return addMaterial(p, MaterialType::kTrans);
@@ -333,21 +351,23 @@ class Reader {
     if (t == "light") return addMaterial(p, MaterialType::kLight);
     if (t == "illum") return addMaterial(p, MaterialType::kIllum);
     if (t == "glow") return addMaterial(p, MaterialType::kGlow);
+    if (t == "alias") return addAlias(p);
+    if (isPatternType(t)) return addPattern(p);
     const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
                            t == "cup" || t == "cylinder" || t == "tube" || t == "source";
-    if (!isSurface) fail(p.line, "primitive type '" + t + "' is not supported (" + kSupported + ")");
+    if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + kSupported + ")");
     const int mod = modifierOf(p);
     if (t == "source") {
       expectStrings(p, 0);
       expectReals(p, 4);
       const Vec3 dir = vec(p, 0);
-      if (glm::length(dir) == 0.0) fail(p.line, "source '" + p.name + "' has a zero direction");
+      if (glm::length(dir) == 0.0) fail(p, "source '" + p.name + "' has a zero direction");
       if (!(p.reals[3] > 0.0 && p.reals[3] <= 360.0))
-        fail(p.line, "source '" + p.name + "' needs an angle in (0, 360] degrees");
+        fail(p, "source '" + p.name + "' needs an angle in (0, 360] degrees");
       if (mod < 0) return;  // void: invisible, as in Radiance
       const MaterialType mt = scene_.materials[mod].type;
       if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
-        fail(p.line, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
+        fail(p, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
       scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
       return;
     }
@@ -362,7 +382,7 @@ class Reader {
       expectStrings(p, 0);
       expectReals(p, 4);
       checkRadius(p, p.reals[3]);
-      if (p.reals[3] == 0.0) fail(p.line, t + " '" + p.name + "' has a zero radius");
+      if (p.reals[3] == 0.0) fail(p, t + " '" + p.name + "' has a zero radius");
       target.addSphere(vec(p, 0), p.reals[3], mat, t == "bubble", p.name);
     } else if (t == "ring") {
       expectStrings(p, 0);
@@ -370,8 +390,8 @@ class Reader {
       checkRadius(p, p.reals[6]);
       checkRadius(p, p.reals[7]);
       if (!(p.reals[7] > p.reals[6]))
-        fail(p.line, "ring '" + p.name + "' needs an outer radius larger than its inner radius");
-      if (glm::length(vec(p, 3)) == 0.0) fail(p.line, "ring '" + p.name + "' has a zero normal");
+        fail(p, "ring '" + p.name + "' needs an outer radius larger than its inner radius");
+      if (glm::length(vec(p, 3)) == 0.0) fail(p, "ring '" + p.name + "' has a zero normal");
       target.addRing(vec(p, 0), vec(p, 3), p.reals[6], p.reals[7], mat, p.name);
     } else {
       const bool isCone = t == "cone" || t == "cup";
@@ -381,25 +401,45 @@ class Reader {
       const double rb = isCone ? p.reals[7] : p.reals[6];
       checkRadius(p, ra);
       checkRadius(p, rb);
-      if (ra == 0.0 && rb == 0.0) fail(p.line, t + " '" + p.name + "' has zero radii");
-      if (glm::length(vec(p, 3) - vec(p, 0)) == 0.0) fail(p.line, t + " '" + p.name + "' has zero length");
+      if (ra == 0.0 && rb == 0.0) fail(p, t + " '" + p.name + "' has zero radii");
+      if (glm::length(vec(p, 3) - vec(p, 0)) == 0.0) fail(p, t + " '" + p.name + "' has zero length");
       target.addCone(vec(p, 0), vec(p, 3), ra, rb, mat, t == "cup" || t == "tube", p.name);
     }
   }
 
-  Tokenizer tok_;
   Scene& scene_;
+  SceneReadOptions options_;
   std::unordered_map<std::string, int> materials_;
+  // Patterns by name: one candela implements (pattern ≥ 0, into Scene::patterns) or one replaced
+  // by the modifier it has (pattern −1, base followed).
+  struct PatternEntry {
+    int pattern = -1;
+    std::string base;
+  };
+  std::unordered_map<std::string, PatternEntry> patterns_;
 };
 
-}  // namespace
+SceneReader::SceneReader(Scene& scene, SceneReadOptions options)
+    : builder_(std::make_unique<Builder>(scene, options)) {}
+SceneReader::~SceneReader() = default;
 
-void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene) {
-  Reader(text, fileName, scene).run();
+void SceneReader::readFile(const std::filesystem::path& path) {
+  builder_->read(readInputFile(path, "scene file"), path.string(), path.parent_path());
 }
 
-void readRadianceFile(const std::filesystem::path& path, Scene& scene) {
-  readRadianceText(readInputFile(path, "scene file"), path.string(), scene);
+void SceneReader::readText(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
+  builder_->read(text, fileName, folder);
+}
+
+void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene) {
+  SceneReader(scene).readText(text, fileName);
+}
+
+void readRadianceFile(const std::filesystem::path& path, Scene& scene) { SceneReader(scene).readFile(path); }
+
+void readSceneFiles(const std::vector<std::filesystem::path>& files, Scene& scene, const SceneReadOptions& options) {
+  SceneReader reader(scene, options);
+  for (const std::filesystem::path& f : files) reader.readFile(f);
 }
 
 }  // namespace candela

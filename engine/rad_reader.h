@@ -1,12 +1,17 @@
 // Reader for Radiance's scene description language (Radiance reference manual, "Scene
 // Description"): primitives `modifier type identifier`, then string, integer and real arguments,
 // each preceded by its count; `#` comments; several files in order, modifiers defined before use.
+// Inline commands of Radiance's generators are expanded (engine/rad_generators.h), never run.
+// docs/engine.md lists what of the language is read, expanded, replaced or refused.
 #pragma once
 
+#include "engine/rad_parse.h"
 #include "engine/scene.h"
 
 #include <filesystem>
+#include <memory>
 #include <string_view>
+#include <vector>
 
 namespace candela {
 
@@ -16,11 +21,45 @@ namespace candela {
 inline constexpr double kPlanarTolerance = 1e-3;
 inline constexpr double kDegenerateTolerance = 1e-10;
 
-// Appends the primitives of one file to the scene. Throws InputError("file:line: ...") on any
-// error; a line starting with '!' (an inline command) is refused, never run.
-void readRadianceFile(const std::filesystem::path& path, Scene& scene);
+// Patterns, textures and mixtures (texfunc, colorpict, brightfunc with a file candela does not
+// implement, mixfunc, ...): refused, or replaced by the material they modify, with a warning each.
+enum class PatternPolicy { kRefuse, kBase };
+// A polygon farther from planar than kPlanarTolerance: refused, or triangulated with a warning.
+enum class NonplanarPolicy { kRefuse, kTriangulate };
 
-// Same for text already in memory; `fileName` is used in error messages.
+struct SceneReadOptions {
+  PatternPolicy patterns = PatternPolicy::kRefuse;
+  NonplanarPolicy nonplanar = NonplanarPolicy::kRefuse;
+};
+
+// Reads scene files, in order, into one scene: modifiers defined in one file serve the next.
+// Warnings (replaced patterns, triangulated polygons) go to scene.inputWarnings.
+class SceneReader {
+ public:
+  explicit SceneReader(Scene& scene, SceneReadOptions options = {});
+  ~SceneReader();
+  SceneReader(const SceneReader&) = delete;
+  SceneReader& operator=(const SceneReader&) = delete;
+
+  // Throws InputError("file:line: ...") on any error.
+  void readFile(const std::filesystem::path& path);
+  // Text already in memory; `fileName` names it in messages, commands' files are resolved
+  // relative to `folder`.
+  void readText(std::string_view text, const std::string& fileName,
+                const std::filesystem::path& folder = std::filesystem::path("."));
+
+  class Builder;
+
+ private:
+  std::unique_ptr<Builder> builder_;
+};
+
+// One file or text with the default options (a reader of its own).
+void readRadianceFile(const std::filesystem::path& path, Scene& scene);
 void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene);
+
+// Every file of a list, in order, through one reader.
+void readSceneFiles(const std::vector<std::filesystem::path>& files, Scene& scene,
+                    const SceneReadOptions& options = {});
 
 }  // namespace candela

@@ -3,6 +3,7 @@
 
 #include "base/error.h"
 #include "base/units.h"
+#include "base/warning.h"
 #include "engine/luminaire_source.h"
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
@@ -34,6 +35,8 @@ struct Material {
   double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
   double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
   int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
+  int pattern = -1;                  // the pattern modifying it that candela implements
+                                     // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):
   Rgb diffuseReflectance{0.0};
   Rgb diffuseTransmittance{0.0};
@@ -45,6 +48,19 @@ struct Material {
   }
   // Light sources sampled explicitly (light, illum); glow is found by hemisphere sampling.
   bool isSampledSource() const { return type == MaterialType::kLight || type == MaterialType::kIllum; }
+};
+
+// The pattern primitives candela implements natively, recognised by their function file:
+// gensky's skybright.cal, gendaylit's perezlum.cal, and ies2rad's source.cal distributions.
+enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution };
+
+// One such pattern as read (its arguments as written, transform arguments included).
+struct ScenePattern {
+  PatternKind kind = PatternKind::kSkyBright;
+  std::string type, name;  // Radiance type (brightfunc, brightdata) and identifier
+  FileLoc loc;
+  std::vector<std::string> strings;
+  std::vector<double> reals;
 };
 
 // A source at infinity: Radiance's `source` primitive (a cone of directions).
@@ -73,12 +89,16 @@ struct SkyDome {
 
 struct Scene {
   std::vector<Material> materials;
+  std::vector<ScenePattern> patterns;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   std::vector<DistantSource> distant;
   std::vector<LuminaireSource> luminaires;  // photometric light sources (no geometry of their own)
   std::optional<SkyDome> sky;               // daylight (engine/daylight.h); none indoors
   VertexStore vertices;
+  // What reading the scene files replaced or repaired (engine/rad_reader.h), for the study's
+  // warnings.
+  std::vector<Warning> inputWarnings;
 
   Box bounds() const;
   // Adds a material and returns its index.

@@ -14,9 +14,17 @@
 
 namespace candela {
 
+namespace {
+std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
+  std::vector<std::filesystem::path> files;
+  for (const ScenePath& s : c.scenes) files.push_back(s.file);
+  return files;
+}
+}  // namespace
+
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
-  for (const ScenePath& s : c.scenes) readRadianceFile(s.file, *scene);
+  readSceneFiles(scenePaths(c), *scene);
   std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
   for (const LuminairePlacement& p : c.luminaires) {
     auto& web = webs[p.file];
@@ -43,7 +51,7 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather) {
 
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   auto scene = std::make_unique<Scene>();
-  for (const ScenePath& s : c.scenes) readRadianceFile(s.file, *scene);
+  readSceneFiles(scenePaths(c), *scene);
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
   SkyDome dome;

@@ -20,7 +20,7 @@ PointsScene loadPointsScene(const PointsJob& job) {
   } else {
     out.scene = std::make_unique<Scene>();
   }
-  for (const std::filesystem::path& f : job.scenes) readRadianceFile(f.string(), *out.scene);
+  readSceneFiles(job.scenes, *out.scene);
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);

@@ -261,12 +261,49 @@ TEST(RadReader, BadNumberOnLaterLineOfMultiLinePrimitive) {
 }
 
 TEST(RadReader, InlineCommandIsRefused) {
-  expectError("inline_command.rad", 6, "inline commands ('!') are refused");
+  expectError("inline_command.rad", 6, "'!pkgBSDF' is not a generator candela can expand");
 }
 
 TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
-  expectError("unsupported_type.rad", 6, "primitive type 'brightfunc' is not supported");
+  expectError("unsupported_type.rad", 6, "primitive type 'antimatter' is not supported");
   expectError("unsupported_type.rad", 6, "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source");
+}
+
+// A pattern is refused by default with a message that says how to proceed; with the base policy
+// the material is used unmodified and the replacement is a warning naming the pattern's line.
+TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
+  expectError("pattern.rad", 2, "brightfunc 'dimmer' (dim.cal) is a pattern, texture or mixture candela does not implement");
+  expectError("pattern.rad", 2, "--patterns base");
+  Scene sc;
+  SceneReadOptions options;
+  options.patterns = PatternPolicy::kBase;
+  readSceneFiles({radDir() / "pattern.rad"}, sc, options);
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_EQ(sc.inputWarnings[0].code, "pattern_replaced");
+  EXPECT_EQ(sc.inputWarnings[0].loc.line, 2);
+  EXPECT_NE(sc.inputWarnings[0].message.find("brightfunc 'dimmer'"), std::string::npos);
+  ASSERT_EQ(sc.shapes.size(), 1u);
+  const Material& grey = material(sc, "grey");
+  EXPECT_EQ(grey.pattern, -1);
+  expectRgb(grey.diffuseReflectance, Rgb(0.5));
+}
+
+// `mod alias new old` stands for old; `inherit` keeps old's modifier.
+TEST(RadReader, AliasStandsForItsMaterial) {
+  Scene sc;
+  readRadianceText("void plastic grey 0 0 5 .5 .5 .5 0 0\ninherit alias g2 grey\nvoid alias g3 grey\n"
+                   "g2 polygon a 0 0 9 0 0 0 1 0 0 0 1 0\ng3 polygon b 0 0 9 0 0 0 1 0 0 0 1 0\n",
+                   "alias.rad", sc);
+  ASSERT_EQ(sc.shapes.size(), 2u);
+  EXPECT_EQ(sc.materials[sc.shapes[0].material].name, "grey");
+  EXPECT_EQ(sc.materials[sc.shapes[1].material].name, "grey");
+  try {
+    Scene bad;
+    readRadianceText("void alias g2 nothing\n", "alias.rad", bad);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "alias.rad:1: alias 'g2' stands for 'nothing', which is not a material defined before use");
+  }
 }
 
 // The sphere starting on line 6 declares 4 reals but the file (9 lines, the last one ending in a

@@ -1,0 +1,48 @@
+#include "engine/rad_generators.h"
+
+#include <map>
+
+namespace candela {
+
+namespace {
+
+using Generator = std::vector<RadPrimitive> (*)(const RadCommand&, const RadExpandContext&);
+
+// Each generator lives in a file of its own (engine/rad_gen_*.cpp); none is registered yet.
+const std::map<std::string, Generator>& generators() {
+  static const std::map<std::string, Generator> table = {};
+  return table;
+}
+
+// "xform" for "xform", "/usr/local/bin/xform" and "xform.exe": the program's own name.
+std::string programName(const std::string& word) {
+  std::string name = word.substr(word.find_last_of("/\\") == std::string::npos ? 0 : word.find_last_of("/\\") + 1);
+  if (name.size() > 4 && name.compare(name.size() - 4, 4, ".exe") == 0) name.resize(name.size() - 4);
+  return name;
+}
+
+}  // namespace
+
+const std::vector<std::string>& radGeneratorNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [name, gen] : generators()) n.push_back(name);
+    return n;
+  }();
+  return names;
+}
+
+std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpandContext& ctx) {
+  const std::string name = programName(cmd.words.front());
+  const auto it = generators().find(name);
+  if (it == generators().end()) {
+    std::string list;
+    for (const std::string& n : radGeneratorNames()) list += (list.empty() ? "" : ", ") + n;
+    throw InputError(cmd.loc, "'!" + name + "' is not a generator candela can expand; it expands: " +
+                                  (list.empty() ? std::string("none yet") : list) +
+                                  " (scene files never run programs)");
+  }
+  return it->second(cmd, ctx);
+}
+
+}  // namespace candela

@@ -1,0 +1,30 @@
+// Radiance's generator programs, interpreted: a scene line `!xform ...`, `!genbox ...`, ... is
+// expanded by candela into the primitives the program would write (same names, same geometry),
+// never run. Any other command is refused; nothing in a scene file ever reaches a shell.
+#pragma once
+
+#include "engine/rad_parse.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// What a generator may ask of the reader: the folder relative to which the command's file names
+// are resolved (the including file's), and the whole expansion of another scene file (its own
+// commands expanded, relative to its own folder).
+struct RadExpandContext {
+  std::filesystem::path folder;
+  std::function<std::vector<RadPrimitive>(const std::filesystem::path& file, const FileLoc& from)> readFile;
+};
+
+// The generators candela expands, in the order the refusal message lists them.
+const std::vector<std::string>& radGeneratorNames();
+
+// The primitives the command writes. Throws InputError(cmd.loc, ...) for a command that is not a
+// generator ("'!NAME' is not a generator candela can expand; it expands: ...") or bad options.
+std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpandContext& ctx);
+
+}  // namespace candela
