@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace candela {
@@ -429,6 +430,18 @@ void SceneReader::readFile(const std::filesystem::path& path) {
 
 void SceneReader::readText(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
   builder_->read(text, fileName, folder);
+}
+
+PatternPolicy parsePatternPolicy(const std::string& name) {
+  if (name == "refuse") return PatternPolicy::kRefuse;
+  if (name == "base") return PatternPolicy::kBase;
+  throw std::invalid_argument("unknown pattern policy '" + name + "' (expected refuse or base)");
+}
+
+NonplanarPolicy parseNonplanarPolicy(const std::string& name) {
+  if (name == "refuse") return NonplanarPolicy::kRefuse;
+  if (name == "triangulate") return NonplanarPolicy::kTriangulate;
+  throw std::invalid_argument("unknown non-planar policy '" + name + "' (expected refuse or triangulate)");
 }
 
 void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene) {

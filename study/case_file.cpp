@@ -548,6 +548,20 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
       c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
     }
   }
+  if (const toml::node* n = tab.get("patterns")) {
+    try {
+      s.scene.patterns = parsePatternPolicy(asString(c, *n, "patterns"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(*n, e.what());
+    }
+  }
+  if (const toml::node* n = tab.get("nonplanar")) {
+    try {
+      s.scene.nonplanar = parseNonplanarPolicy(asString(c, *n, "nonplanar"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(*n, e.what());
+    }
+  }
   tab.finish();
 }
 

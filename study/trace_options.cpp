@@ -5,6 +5,13 @@
 
 namespace candela {
 
+SceneReadOptions sceneReadOptions(const Settings* caseSettings, const TraceOverrides& o) {
+  SceneReadOptions r = caseSettings ? caseSettings->scene : SceneReadOptions{};
+  if (o.patterns) r.patterns = *o.patterns;
+  if (o.nonplanar) r.nonplanar = *o.nonplanar;
+  return r;
+}
+
 ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o, Method defaultMethod) {
   const Settings none;
   const Settings& c = caseSettings ? *caseSettings : none;
