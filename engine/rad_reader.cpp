@@ -150,7 +150,8 @@ class SceneReader::Builder {
       return;
     }
     const std::string file = patternFile(p);
-    const std::string what = p.type + " '" + p.name + "'" + (file.empty() ? "" : " (" + file + ")");
+    const std::string what = p.type + " '" + p.name + "'" +
+                             (file.empty() ? "" : file == "." ? " (its function written inline)" : " (" + file + ")");
     if (options_.patterns == PatternPolicy::kRefuse)
       fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
                      "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");

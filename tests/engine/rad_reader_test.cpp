@@ -264,6 +264,24 @@ TEST(RadReader, InlineCommandIsRefused) {
   expectError("inline_command.rad", 6, "'!pkgBSDF' is not a generator candela can expand");
 }
 
+// A pipeline runs only generators: each stage is looked up, a shell command anywhere is refused,
+// and a dangling '|' is an error on the command's line.
+TEST(RadReader, PipelineStagesAreGeneratorsOnly) {
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"\n!cat /etc/passwd | xform -t 1 0 0\n", "alias.rad:2: '!cat' is not a generator candela can expand"},
+           {"\n!genbox m b 1 1 1 | sh -c 'rm -rf /'\n", "alias.rad:2: '!"},
+           {"\n!genbox m b 1 1 1 |\n", "alias.rad:2: an inline command ends with '|'"},
+           {"\n!| xform\n", "alias.rad:2: an inline command has an empty stage before '|'"}}) {
+    Scene sc;
+    try {
+      readRadianceText(text, "alias.rad", sc);
+      ADD_FAILURE() << text << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(message, 0), 0u) << e.what();
+    }
+  }
+}
+
 TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
   expectError("unsupported_type.rad", 6, "primitive type 'antimatter' is not supported");
   expectError("unsupported_type.rad", 6, "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source");
