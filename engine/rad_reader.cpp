@@ -155,11 +155,16 @@ class SceneReader::Builder {
     if (options_.patterns == PatternPolicy::kRefuse)
       fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
                      "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
-    scene_.inputWarnings.push_back(Warning{"pattern_replaced",
-                                           what + " is not implemented: the materials it modifies are used unmodified",
-                                           p.loc});
-    // A mixture's base is its first material (a mix of two materials has no single modifier).
-    std::string base = p.modifier;
+    // A mixture (mixfunc, mixdata, mixpict, mixtext) is used as a material: it stands for its
+    // foreground material, its first string argument ("void" for none).
+    const bool mixture = p.type.rfind("mix", 0) == 0;
+    if (mixture && p.strings.empty()) fail(p, what + " names no foreground material");
+    const std::string base = mixture ? p.strings[0] : p.modifier;
+    scene_.inputWarnings.push_back(
+        Warning{"pattern_replaced",
+                what + (mixture ? " is not implemented: its foreground material '" + base + "' is used in its place"
+                                : " is not implemented: the materials it modifies are used unmodified"),
+                p.loc});
     patterns_[p.name] = PatternEntry{-1, base};
     materials_.erase(p.name);
   }

@@ -306,6 +306,22 @@ TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
   expectRgb(grey.diffuseReflectance, Rgb(0.5));
 }
 
+// Under the base policy a mixture stands for its foreground material (it is itself a surface's
+// modifier, so its own modifier would make the surface void).
+TEST(RadReader, MixtureReplacedByItsForegroundMaterial) {
+  Scene sc;
+  SceneReadOptions options;
+  options.patterns = PatternPolicy::kBase;
+  SceneReader(sc, options)
+      .readText("void plastic red 0 0 5 .8 .1 .1 0 0\nvoid plastic blue 0 0 5 .1 .1 .8 0 0\n"
+                "void mixfunc mix 4 red blue if(Pz,1,0) .\n0\n0\nmix polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
+                "mix.rad");
+  ASSERT_EQ(sc.shapes.size(), 1u);
+  EXPECT_EQ(sc.materials[sc.shapes[0].material].name, "red");
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_NE(sc.inputWarnings[0].message.find("foreground material 'red'"), std::string::npos);
+}
+
 // `mod alias new old` stands for old; `inherit` keeps old's modifier.
 TEST(RadReader, AliasStandsForItsMaterial) {
   Scene sc;
