@@ -63,8 +63,15 @@ size_t parseRadTransform(const std::vector<std::string>& words, size_t begin, Ra
   RadTransform total;
   RadTransform block;
   long repeat = 1;
+  // total · block^repeat. The powers of one block commute, so squaring gives the same product
+  // in O(log repeat) steps: copy i of an `-a N` array is `-i i`, and an array of 10⁵ copies
+  // would otherwise cost 5·10⁹ products.
   auto flush = [&] {
-    for (long k = 0; k < repeat; ++k) total = thenApply(total, block);
+    RadTransform power = block;
+    for (long k = repeat; k > 0; k >>= 1) {
+      if (k & 1) total = thenApply(total, power);
+      power = thenApply(power, power);
+    }
     block = RadTransform{};
   };
   size_t i = begin;
