@@ -1,4 +1,5 @@
 #include "engine/rad_generators.h"
+#include "engine/rad_gen.h"
 
 #include <map>
 
@@ -8,9 +9,13 @@ namespace {
 
 using Generator = std::vector<RadPrimitive> (*)(const RadCommand&, const RadExpandContext&);
 
-// Each generator lives in a file of its own (engine/rad_gen_*.cpp); none is registered yet.
+// Each generator lives in a file of its own (engine/rad_gen_*.cpp), declared in engine/rad_gen.h.
 const std::map<std::string, Generator>& generators() {
-  static const std::map<std::string, Generator> table = {};
+  static const std::map<std::string, Generator> table = {
+      {"xform", expandXform},
+      {"genbox", expandGenbox},
+      {"genprism", expandGenprism},
+  };
   return table;
 }
 
