@@ -283,7 +283,14 @@ class XformExpansion {
       for (size_t i = 2; i < nav.size() && !named; ++i)
         if (nav[i - 1] == "-n") nav[i] += "." + std::to_string(k), named = true;
       if (!named) nav.insert(nav.begin() + 1, {"-n", "i" + std::to_string(k)});
-      invoke(nav, copies * n, argDepth + 1);
+      try {
+        invoke(nav, copies * n, argDepth + 1);
+      } catch (const InputError& e) {
+        // The command's own errors: say which argument line made them.
+        if (e.loc().file != cmd_.loc.file || e.loc().line != cmd_.loc.line) throw;
+        throw InputError(e.loc(), e.message() + " (argument file '" + av[fi + 1] + "' line " +
+                                      std::to_string(line.line) + ")");
+      }
       ++k;
     }
     multipliers_.pop_back();

@@ -344,6 +344,18 @@ TEST(Xform, NestedFilesResolveRelativeToTheIncludingFile) {
   EXPECT_NE(std::find(sc.shapeNames.begin(), sc.shapeNames.end(), "top.box.6457"), sc.shapeNames.end());
 }
 
+// An array of a file that defines its own material, through the reader: the material's
+// repeated definition replaces itself (Radiance's rule), every copy's surfaces are in the scene.
+TEST(Xform, ArrayOfAFileWithItsMaterialReadsIntoAScene) {
+  Scene sc;
+  SceneReader(sc).readText("!xform -n c -a 3 -t 0 0 2 sub/sub2/c.rad\n", "array.rad", genDir());
+  for (int k = 0; k < 3; ++k)
+    for (const char* id : {"tri", "box.1540", "box.6457"}) {
+      const std::string name = "c." + std::to_string(k) + "." + id;
+      EXPECT_NE(std::find(sc.shapeNames.begin(), sc.shapeNames.end(), name), sc.shapeNames.end()) << name;
+    }
+}
+
 TEST(Xform, SelfInclusionIsRefusedAtTheIncludeDepth) {
   Scene sc;
   const std::string what = errorOf([&] { readRadianceFile(genDir() / "self.rad", sc); });
@@ -361,6 +373,8 @@ TEST(Xform, BadOptionsNameTheCommandLine) {
   EXPECT_HAS(runError("!xform -f - unit.rad"), "standard input");
   EXPECT_HAS(runError("!xform -f nosuch.txt"), "cannot find the argument file 'nosuch.txt'");
   EXPECT_HAS(runError("!xform -f empty.txt"), "the argument file 'empty.txt' has no argument lines");
+  EXPECT_HAS(runError("!xform -f badargs.txt"),
+             "xform: -t needs a number, not 'unit.rad' (argument file 'badargs.txt' line 3)");
   EXPECT_HAS(runError("!xform -t 1 0 0 nosuch.rad"), "cannot find the file 'nosuch.rad'");
   EXPECT_HAS(runError("!xform -s 0 unit.rad"), "-s needs a non-zero factor");
 }
