@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <sstream>
 #include <string>
 
 namespace candela {
@@ -589,6 +590,52 @@ TEST(Genprism, RoundedCornersAreSpheresAndCylindersAboutTheInnerPrism) {
   const RadPrimitive& e1 = find(ps, "sq.e1");  // the vertical edge at vertex 2, (0, 2)
   expectVec(at(e1, 0), Vec3(r, 2 - r, r));
   expectVec(at(e1, 3), Vec3(r, 2 - r, 1 - r));
+}
+
+// Radiance's rect_opening.rad: a wall with a rectangular hole (the outline, a seam, the hole; -c
+// leaves the seam's second side out), through xform -ry -90 -t -8 0 0.
+TEST(Genprism, RadianceTestSceneRectOpening) {
+  const auto ps = expandFile(fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "rect_opening.rad");
+  ASSERT_EQ(ps.size(), 2u + 9u);
+  // The bottom end: 3.2 × 5.2 less the 1 × 3 hole, facing −z; -ry −90 sends (x, y, z) to
+  // (−z, y, x), so it faces +x, and sits at x = −8.
+  const RadPrimitive& b = find(ps, "end_wall.b");
+  expectVec(vectorArea(points(b)), Vec3(3.2 * 5.2 - 3.0, 0, 0), 1e-12);
+  expectVec(points(b)[0], Vec3(-8, -0.1, -0.1));
+  EXPECT_EQ(ps.back().name, "end_wall.9");
+}
+
+// Radiance's sawtooth profile (203 vertices) rounded with -r .1: a sphere at each convex corner,
+// centred a radius away from both edges that meet there.
+TEST(Genprism, RoundedSawtoothCornersAreARadiusFromBothEdges) {
+  const fs::path pts = fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "sawtooth.pts";
+  std::vector<glm::dvec2> v;
+  {
+    std::istringstream in(readInputFile(pts, "points"));
+    double x, y;
+    while (in >> x >> y) v.emplace_back(x, y);
+  }
+  ASSERT_EQ(v.size(), 203u);
+  const size_t n = v.size();
+  auto cross = [](const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; };
+  double area2 = 0.0;
+  for (size_t i = 0; i < n; ++i) area2 += cross(v[i], v[(i + 1) % n]);
+  const auto ps = run("!genprism alum sawtooth " + pts.string() + " -l 0 0 300 -r .1");
+  size_t convex = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const glm::dvec2 p = v[(i + n - 1) % n], c = v[i], q = v[(i + 1) % n];
+    if (cross(c - p, q - c) * area2 <= 0.0) continue;  // turns against the outline: concave
+    ++convex;
+    const RadPrimitive& s = find(ps, "sawtooth.bc" + std::to_string(i + 1));
+    const glm::dvec2 o(s.reals[0], s.reals[1]);
+    for (const glm::dvec2& e : {p, q})
+      EXPECT_NEAR(std::abs(cross(e - c, o - c)) / glm::length(e - c), 0.1, 1e-12) << s.name;
+    EXPECT_DOUBLE_EQ(s.reals[2], 0.1);
+  }
+  size_t spheres = 0;
+  for (const RadPrimitive& p : ps) spheres += p.type == "sphere";
+  EXPECT_GT(convex, 0u);
+  EXPECT_EQ(spheres, 2 * convex);  // bottom and top
 }
 
 TEST(Genprism, BadArgumentsAreRefused) {
