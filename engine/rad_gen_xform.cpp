@@ -8,8 +8,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
+#include <string_view>
 
 namespace candela {
 
