@@ -16,6 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Without throwing on a name the system cannot look up (too long, no permission): the reader
+// then says what is wrong with it.
+bool mayExist(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec) || ec;
+}
+
 constexpr size_t kMaxVertices = 1024;  // genprism.c's MAXVERT
 constexpr double kTiny = 1e-6;         // genprism.c's FTINY
 
@@ -41,7 +48,7 @@ using Vec2 = glm::dvec2;
 // x y pairs, blank-separated, from a vertex file (genprism.c's readverts).
 std::vector<Vec2> readVertexFile(const RadCommand& cmd, const RadExpandContext& ctx, const std::string& name) {
   const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : ctx.folder / name;
-  if (!fs::exists(path)) fail(cmd, "cannot find the vertex file '" + name + "' in '" + ctx.folder.string() + "'");
+  if (!mayExist(path)) fail(cmd, "cannot find the vertex file '" + name + "' in '" + ctx.folder.string() + "'");
   std::istringstream in(readInputFile(path, "genprism vertex file"));
   std::vector<double> xy;
   std::string line;

@@ -19,6 +19,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Without throwing on a name the system cannot look up (too long, no permission): the reader
+// then says what is wrong with it.
+bool mayExist(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec) || ec;
+}
+
 // Argument files naming argument files: refused this deep (a file naming itself).
 constexpr int kMaxArgFileDepth = 32;
 // The largest -a count (the -i count it becomes has the same bound in rad_transform).
@@ -264,7 +271,7 @@ class XformExpansion {
       fail("argument files name each other more than " + std::to_string(kMaxArgFileDepth) +
            " levels deep (does '" + av[fi + 1] + "' name itself?)");
     const fs::path path = resolve(av[fi + 1]);
-    if (!fs::exists(path)) fail("cannot find the argument file '" + av[fi + 1] + "' in '" + ctx_.folder.string() + "'");
+    if (!mayExist(path)) fail("cannot find the argument file '" + av[fi + 1] + "' in '" + ctx_.folder.string() + "'");
     const std::vector<ArgLine> lines = argLines(readInputFile(path, "xform argument file"));
     long n = 0;
     for (const ArgLine& l : lines) n += !l.text.empty() && l.text[0] != '#';
@@ -398,7 +405,7 @@ class XformExpansion {
     const fs::path path = resolve(name);
     const auto it = files_.find(path);
     if (it != files_.end()) return it->second;
-    if (!fs::exists(path)) fail("cannot find the file '" + name + "' in '" + ctx_.folder.string() + "'");
+    if (!mayExist(path)) fail("cannot find the file '" + name + "' in '" + ctx_.folder.string() + "'");
     return files_.emplace(path, ctx_.readFile(path, cmd_.loc)).first->second;
   }
 

@@ -22,23 +22,29 @@ namespace fs = std::filesystem;
 
 fs::path genDir() { return fs::path(CANDELA_TEST_DATA) / "rad" / "gen"; }
 
-std::vector<RadPrimitive> expandText(const std::string& text, const std::string& name, const fs::path& folder);
+std::vector<RadPrimitive> expandText(const std::string& text, const std::string& name, const fs::path& folder,
+                                     int depth = 0);
 
-// The reader's expansion, without the scene: files' commands expanded relative to their folder.
-std::vector<RadPrimitive> expandFile(const fs::path& file) {
-  return expandText(readInputFile(file, "scene file"), file.string(), file.parent_path());
+// The reader's expansion, without the scene: files' commands expanded relative to their folder,
+// at most 32 files deep (the reader's bound, tested through it below).
+std::vector<RadPrimitive> expandFile(const fs::path& file, int depth = 0) {
+  return expandText(readInputFile(file, "scene file"), file.string(), file.parent_path(), depth);
 }
 
-RadExpandContext contextFor(const fs::path& folder) {
+RadExpandContext contextFor(const fs::path& folder, int depth = 0) {
   RadExpandContext ctx;
   ctx.folder = folder;
-  ctx.readFile = [](const fs::path& f, const FileLoc&) { return expandFile(f); };
+  ctx.readFile = [depth](const fs::path& f, const FileLoc& from) {
+    if (depth >= 32) throw InputError(from, "too deep");
+    return expandFile(f, depth + 1);
+  };
   return ctx;
 }
 
-std::vector<RadPrimitive> expandText(const std::string& text, const std::string& name, const fs::path& folder) {
+std::vector<RadPrimitive> expandText(const std::string& text, const std::string& name, const fs::path& folder,
+                                     int depth) {
   std::vector<RadPrimitive> out;
-  const RadExpandContext ctx = contextFor(folder);
+  const RadExpandContext ctx = contextFor(folder, depth);
   parseRadiance(
       text, name, [&](RadPrimitive&& p) { out.push_back(std::move(p)); },
       [&](RadCommand&& c) {
