@@ -136,7 +136,7 @@ void transformArguments(RadPrimitive& p, Args args, const Invocation& v) {
         throw InputError(p.loc, "polygon '" + p.name + "' needs no string arguments and a multiple of 3 reals "
                                 "to be transformed by xform, got " + std::to_string(r.size()));
       for (size_t i = 0; i < r.size(); i += 3) setPoint(r, i, v.xf);
-      if (v.reverse)
+      if (v.reverse && r.size() >= 6)  // fewer vertices: left for the reader to refuse
         for (size_t i = 0, j = r.size() - 3; i < j; i += 3, j -= 3)
           for (size_t c = 0; c < 3; ++c) std::swap(r[i + c], r[j + c]);
       return;

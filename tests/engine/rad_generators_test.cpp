@@ -238,6 +238,18 @@ TEST(Xform, InvertAndMirrorsFlipOrientationAsXformDoes) {
   EXPECT_EQ(find(run("!xform -I -I shapes.rad"), "ball").type, "sphere");
 }
 
+// A polygon without vertices is the reader's to refuse, inverted or not.
+TEST(Xform, PolygonWithoutVerticesPassesToTheReader) {
+  const auto ps = expandText("!xform -I -mz empty.rad\n", "x.rad", genDir());
+  ASSERT_EQ(ps.size(), 1u);
+  EXPECT_TRUE(ps[0].reals.empty());
+  const std::string what = errorOf([] {
+    Scene sc;
+    SceneReader(sc).readText("void plastic grey 0 0 5 .5 .5 .5 0 0\n!xform -I empty.rad\n", "x.rad", genDir());
+  });
+  EXPECT_HAS(what, "empty.rad:2: polygon 'nothing' needs at least 3 vertices");
+}
+
 TEST(Xform, RepeatCountAppliesTheTransformThatFollows) {
   // "-i 3 -t 1 0 0": the translation three times.
   expectVec(points(run("!xform -i 3 -t 1 0 0 unit.rad")[0])[0], Vec3(3, 0, 0));
