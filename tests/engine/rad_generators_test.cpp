@@ -540,7 +540,8 @@ TEST(Genbox, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -r 0.6"), "more than half the smallest size");
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -o"), "-o writes a Wavefront .OBJ file");
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 8 -s"), "-s smooths");
-  EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 100000"), "polygons, more than a command may make");
+  // -n 1024: 2¹⁰ strips, 6 + 12·2¹⁰ + 8·4¹⁰ ≈ 8.4·10⁶ polygons, allowed; -n 1025 rounds up to 2¹¹.
+  EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 1025"), "makes 33579014 polygons, more than a command may make");
 }
 
 // ---------------------------------------------------------------------------------- genprism
