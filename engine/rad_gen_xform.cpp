@@ -290,8 +290,8 @@ class XformExpansion {
       nav.insert(nav.end(), av.begin() + fi + 2, av.end());
       bool named = false;
       for (size_t i = 2; i < nav.size() && !named; ++i)
-        if (nav[i - 1] == "-n") nav[i] += "." + std::to_string(k), named = true;
-      if (!named) nav.insert(nav.begin() + 1, {"-n", "i" + std::to_string(k)});
+        if (nav[i - 1] == "-n") nav[i].append(".").append(std::to_string(k)), named = true;
+      if (!named) nav.insert(nav.begin() + 1, {"-n", std::string("i").append(std::to_string(k))});
       try {
         invoke(nav, copies * n, argDepth + 1);
       } catch (const InputError& e) {
