@@ -126,13 +126,18 @@ class SceneReader::Builder {
     return std::nullopt;
   }
 
+  // The file a pattern needs, for messages: the picture of *pict types, the data file of *data
+  // types, the font of *text types, else the function file (Radiance reference manual, argument
+  // order of each type). "." is a function written inline.
   static std::string patternFile(const Primitive& p) {
-    // The function file: brightfunc/colorfunc/texfunc/mixfunc name it second, *data and *pict
-    // third (after the data or picture file).
-    const bool third = p.type.size() > 4 && (p.type.compare(p.type.size() - 4, 4, "data") == 0 ||
-                                             p.type.compare(p.type.size() - 4, 4, "pict") == 0);
-    const size_t i = third ? 2 : 1;
-    return p.strings.size() > i ? p.strings[i] : std::string();
+    static const std::unordered_map<std::string, size_t> kIndex = {
+        {"brightfunc", 1}, {"colorfunc", 3}, {"texfunc", 3},   {"mixfunc", 3},   {"specfunc", 1},
+        {"brightdata", 1}, {"colordata", 3}, {"texdata", 3},   {"mixdata", 3},   {"specdata", 1},
+        {"colorpict", 3},  {"mixpict", 3},   {"specpict", 1},  {"brighttext", 0}, {"colortext", 0},
+        {"mixtext", 2},    {"specfile", 0}};
+    const auto it = kIndex.find(p.type);
+    if (it == kIndex.end() || p.strings.size() <= it->second) return {};
+    return p.strings[it->second];
   }
 
   void addPattern(const Primitive& p) {
