@@ -1,7 +1,9 @@
 #include "engine/rad_reader.h"
+
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/rad_generators.h"
+#include "engine/source_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -149,6 +151,8 @@ class SceneReader::Builder {
       sp.loc = p.loc;
       sp.strings = p.strings;
       sp.reals = p.reals;
+      if (sp.kind == PatternKind::kSourceDistribution)
+        sp.source = std::make_shared<const SourceDistribution>(SourceDistribution::parse(sp));
       scene_.patterns.push_back(std::move(sp));
       patterns_[p.name] = PatternEntry{static_cast<int>(scene_.patterns.size() - 1), p.modifier};
       materials_.erase(p.name);
@@ -157,6 +161,11 @@ class SceneReader::Builder {
     const std::string file = patternFile(p);
     const std::string what = p.type + " '" + p.name + "'" +
                              (file.empty() ? "" : file == "." ? " (its function written inline)" : " (" + file + ")");
+    if (options_.patterns == PatternPolicy::kRefuse && p.type == "brightdata" && p.strings.size() > 2 &&
+        p.strings[2] == "source.cal")
+      fail(p, what + " calls '" + p.strings[0] +
+                  "', which is not one of source.cal's functions candela implements (corr, flatcorr, boxcorr, "
+                  "cylcorr); run with --patterns base to use the light it modifies unmodified, with a warning");
     if (options_.patterns == PatternPolicy::kRefuse)
       fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
                      "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
@@ -201,6 +210,11 @@ class SceneReader::Builder {
     Material m;
     m.pattern = patternOf(p);
     m.type = type;
+    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source &&
+        type != MaterialType::kLight && type != MaterialType::kIllum && type != MaterialType::kGlow)
+      fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
+                  scene_.patterns[static_cast<size_t>(m.pattern)].name +
+                  "', which candela applies to light, illum and glow only");
     m.name = p.name;
     m.loc = p.loc;
     switch (type) {
@@ -380,6 +394,9 @@ class SceneReader::Builder {
       const MaterialType mt = scene_.materials[mod].type;
       if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
         fail(p, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
+      if (sourceDistributionOf(scene_, scene_.materials[mod]))
+        fail(p, "source '" + p.name + "': its modifier has a source.cal distribution, which candela applies to "
+                    "light surfaces only, not to sources at infinity");
       scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
       return;
     }

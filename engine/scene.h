@@ -15,6 +15,8 @@
 
 namespace candela {
 
+class SourceDistribution;
+
 enum class MaterialType { kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow };
 
 const char* materialTypeName(MaterialType t);
@@ -61,6 +63,9 @@ struct ScenePattern {
   FileLoc loc;
   std::vector<std::string> strings;
   std::vector<double> reals;
+  // kSourceDistribution: the distribution as evaluated (engine/source_distribution.h), read with
+  // its data file when the pattern is read.
+  std::shared_ptr<const SourceDistribution> source;
 };
 
 // A source at infinity: Radiance's `source` primitive (a cone of directions).
