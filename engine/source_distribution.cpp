@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace candela {
 namespace {
@@ -38,6 +39,12 @@ SourceCorrection correctionByName(const std::string& s) {
   return SourceCorrection::kNone;  // corr (the reader passes only the four names)
 }
 
+std::string number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
 // The real arguments: A1 the multiplier, then the box's or cylinder's dimensions in metres.
 void readReals(const ScenePattern& p, const std::string& what, SourceCorrection c, double& a1, double& a2,
                double& a3, double& a4) {
@@ -50,12 +57,11 @@ void readReals(const ScenePattern& p, const std::string& what, SourceCorrection 
                                 "), got " + std::to_string(p.reals.size()));
   a1 = p.reals.empty() ? 1.0 : p.reals[0];
   if (!(a1 >= 0.0) || !std::isfinite(a1))
-    throw InputError(p.loc, what + ": the multiplier (first real argument) must be a number ≥ 0, got " +
-                                std::to_string(a1));
+    throw InputError(p.loc, what + ": the multiplier (first real argument) must be a number ≥ 0, got " + number(a1));
   for (size_t i = 1; i < need; ++i)
     if (!(p.reals[i] > 0.0) || !std::isfinite(p.reals[i]))
       throw InputError(p.loc, what + ": real argument " + std::to_string(i + 1) +
-                                  " (a size in metres) must be > 0, got " + std::to_string(p.reals[i]));
+                                  " (a size in metres) must be > 0, got " + number(p.reals[i]));
   a2 = need > 1 ? p.reals[1] : 0.0;
   a3 = need > 2 ? p.reals[2] : 0.0;
   a4 = need > 3 ? p.reals[3] : 0.0;
