@@ -5,6 +5,7 @@
 // (README.md there: how each corresponds to an ies2rad run).
 #include "engine/light_selection.h"
 #include "engine/rad_reader.h"
+#include "engine/render.h"
 #include "engine/source_distribution.h"
 #include "engine/tracer.h"
 #include "tests/engine/ies2rad_tables.h"
@@ -148,6 +149,30 @@ TEST(SourceDistribution, TransformArgumentsTurnTheFunctionFrame) {
     const double v = bilinear(kBoxH, kBoxV, kBoxI, calTri(calPhi(q), 180.0), calTheta(q)) / 179.0;
     const double proj = std::abs(q.x) * 0.3 * 0.2 + std::abs(q.y) * 0.6 * 0.2 + std::abs(q.z) * 0.6 * 0.3;
     EXPECT_NEAR(d.factor(ray, 0.5), 0.5 * v / proj, 2e-5 * 0.5 * v / proj);
+  }
+}
+
+// Type B coordinates (source.cal): srcB_vert = Atan2(−Dx, Dz), srcB_horiz = Atan2(Dy, Dz) in degrees,
+// the "2" forms their absolute values; and src_phi2+90 for data from 90° to 270°. The tables are
+// linear in their coordinates, so the lookup is exact and only the coordinates are tested.
+TEST(SourceDistribution, TypeBAndShiftedAzimuthCoordinatesAreSourceCals) {
+  auto read = [](const std::string& strings) {
+    Scene sc;
+    readRadianceText("void brightdata d\n" + strings + "\n0\n0\nd light l\n0\n0\n3 1 1 1\n",
+                     (fixtures() / "inline.rad").string(), sc);
+    return sc;
+  };
+  const Scene b = read("5 corr typeb.dat source.cal srcB_horiz srcB_vert");
+  const Scene b2 = read("5 corr typeb.dat source.cal srcB_horiz2 srcB_vert2");
+  const Scene c = read("5 corr phi90.dat source.cal src_phi2+90 src_theta");
+  for (const Vec3& ray : directions(300)) {
+    const double theta = calTheta(ray);
+    const double phi2 = calTri(calPhi(ray), 180.0);
+    EXPECT_NEAR(onlyDistribution(c).factor(ray, 1.0), 10 + 0.1 * (phi2 + 90) + 0.05 * theta, 1e-9);
+    if (ray.z <= 0.0) continue;  // type B tables here cover the front hemisphere (|H|, |V| < 90°)
+    const double vert = std::atan2(-ray.x, ray.z) / kDeg, horiz = std::atan2(ray.y, ray.z) / kDeg;
+    EXPECT_NEAR(onlyDistribution(b).factor(ray, 1.0), 400 + horiz + 2 * vert, 1e-9);
+    EXPECT_NEAR(onlyDistribution(b2).factor(ray, 1.0), 400 + std::abs(horiz) + 2 * std::abs(vert), 1e-9);
   }
 }
 
@@ -345,6 +370,18 @@ TEST(SourceDistribution, RaysThatMeetTheEmitterSeeTheDistribution) {
       const double want = 2.25973 * panelCd(q.u) / 179.0 / std::cos(theta * kDeg);
       EXPECT_NEAR(l.y, want, 2e-5 * want + 1e-12) << theta << " " << phi;
     }
+}
+
+// CRF's reference sphere keeps a luminaire's surface black: its distribution goes with its
+// material (the scene's patterns are copied), so the view sees the sphere's 100 cd/m² reflected
+// nowhere and the surface itself emits nothing.
+TEST(SourceDistribution, ReferenceSphereKeepsTheEmitterBlack) {
+  const Scene sc = readScene(fixtures() / "panel.rad");
+  const Scene ref = referenceSphereScene(sc, {0});
+  const Tracer tracer(ref);
+  Rng rng(1, 0);
+  const Rgb l = tracer.radiance({0, 0, -2}, {0, 0, 1}, kNoShape, true, rng, directOnly(1));
+  EXPECT_EQ(l, Rgb(0.0));
 }
 
 // Light selection at path vertices (one light chosen per sample by its importance) stays
