@@ -358,6 +358,29 @@ TEST(SourceDistribution, SphereBoxAndCylinderSendTheirCandelaTimesTheMultiplier)
   }
 }
 
+// The panel placed by xform (-rz 90 -t 1 2 3): xform appends "-i 1 -rz 90 -t 1 2 3" to the
+// brightdata's strings, so the distribution turns with the polygon: the C0 plane now points to +y.
+// Against the area integral of the turned table (4 standard errors + 1e-5), and far from the
+// C90-plane value it would have unturned.
+TEST(SourceDistribution, PanelMovedByXformTurnsItsDistribution) {
+  Scene sc;
+  SceneReader(sc).readText("!xform -rz 90 -t 1 2 3 panel.rad\n", (fixtures() / "moved.rad").string(), fixtures());
+  ASSERT_EQ(sc.patterns.size(), 1u);
+  const Tracer tracer(sc);
+  const double s = 0.595, z = 3.0 - 0.00025;
+  auto turned = [](const Vec3& u) { return panelCd(Vec3(u.y, -u.x, u.z)); };  // world → panel frame: −90°
+  auto cdPerM2 = [&](const Vec3& u) { return 0.8 * turned(u) / (s * s); };
+  uint64_t index = 0;
+  for (double phi : {0.0, 30.0, 90.0}) {
+    const Probe q = probe({1, 2, z}, 45.0, phi, 4.0, 0.0);
+    const double exact = areaIntegralLux(q.p, q.n, 1 - s / 2, 1 + s / 2, 2 - s / 2, 2 + s / 2, z, cdPerM2);
+    const IrradianceEstimate e = tracer.irradiance(q.p, q.n, index++, directOnly(1024));
+    EXPECT_NEAR(e.illuminanceLux(), exact, 4.0 * e.standardErrorLux() + 1e-5 * exact) << phi;
+    const double unturned = 0.8 * panelCd(q.u) / 16.0;
+    if (phi != 30.0) EXPECT_GT(std::abs(e.illuminanceLux() - unturned), 0.05 * unturned) << phi;
+  }
+}
+
 // A view ray meeting the panel sees its radiance times the distribution: L = A1 · data / cos θ_l.
 TEST(SourceDistribution, RaysThatMeetTheEmitterSeeTheDistribution) {
   const Scene sc = readScene(fixtures() / "panel.rad");
