@@ -3,6 +3,7 @@
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/rad_generators.h"
+#include "engine/rad_sky.h"
 #include "engine/source_distribution.h"
 
 #include <algorithm>
@@ -55,6 +56,7 @@ class SceneReader::Builder {
 
   void read(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
     expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
+    sky_.apply(scene_);
   }
 
  private:
@@ -360,6 +362,14 @@ class SceneReader::Builder {
     target.addPolygon(pts, mat, p.name);
   }
 
+  // The sky function (skybright.cal, perezlum.cal) modifying material `mod`, if any.
+  const ScenePattern* skyPatternOf(int mod) const {
+    if (mod < 0) return nullptr;
+    const int pt = scene_.materials[static_cast<size_t>(mod)].pattern;
+    if (pt < 0 || !isSkyPattern(scene_.patterns[static_cast<size_t>(pt)].kind)) return nullptr;
+    return &scene_.patterns[static_cast<size_t>(pt)];
+  }
+
   void checkRadius(const Primitive& p, double r) {
     if (r < 0.0) fail(p, p.type + " '" + p.name + "' has a negative radius");
   }
@@ -397,9 +407,21 @@ class SceneReader::Builder {
       if (sourceDistributionOf(scene_, scene_.materials[mod]))
         fail(p, "source '" + p.name + "': its modifier has a source.cal distribution, which candela applies to "
                     "light surfaces only, not to sources at infinity");
+      if (const ScenePattern* sky = skyPatternOf(mod)) {
+        // gensky's and gendaylit's hemispheres: the scene's sky, not distant glow sources.
+        if (mt != MaterialType::kGlow)
+          fail(p, "source '" + p.name + "': the sky function '" + sky->name + "' (" + sky->strings[1] +
+                      ") modifies a glow in candela, not " + materialTypeName(mt));
+        sky_.addSource(scene_, static_cast<uint32_t>(mod), dir, p.reals[3], p.name, p.loc);
+        return;
+      }
       scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
       return;
     }
+    if (const ScenePattern* sky = skyPatternOf(mod))
+      fail(p, t + " '" + p.name + "' uses '" + scene_.materials[mod].name + "', modified by the sky function '" +
+                  sky->name + "' (" + sky->strings[1] + "): candela evaluates sky functions on the sky and ground "
+                  "`source` hemispheres only");
     // Geometry is checked even when its modifier is void (void surfaces are invisible in Radiance).
     const uint32_t mat = mod < 0 ? 0 : static_cast<uint32_t>(mod);
     Scene probe;  // void surfaces are validated into a scratch scene and dropped
@@ -446,6 +468,7 @@ class SceneReader::Builder {
     std::string base;
   };
   std::unordered_map<std::string, PatternEntry> patterns_;
+  SceneSkyBuilder sky_;
 };
 
 SceneReader::SceneReader(Scene& scene, SceneReadOptions options)

@@ -88,6 +88,12 @@ struct SkyDome {
   double horizontalSunLux = 0.0;          // sun only, open horizontal plane
   Vec3 sunDirModel{0.0, 0.0, 1.0};
   double sunAltitudeDeg = 90.0, sunAzimuthDeg = 0.0;
+  // A sky read from the scene's own sky functions (engine/rad_sky.h): where it is defined, and
+  // which of Scene::distant is its sun (-1: none), so that a case's sky can replace both
+  // (replaceSceneSky, engine/daylight.h).
+  bool fromScene = false;
+  FileLoc sceneLoc;
+  int sceneSun = -1;
   // Outside horizontal illuminance (sky + sun, no ground): the daylight factor's denominator.
   double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
 };
