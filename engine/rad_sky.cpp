@@ -156,6 +156,13 @@ void SceneSkyBuilder::apply(Scene& scene) {
   if (!changed_) return;
   changed_ = false;
   const ScenePattern& p = scene.patterns[static_cast<size_t>(pattern_)];
+  // A sky that another reader of the same scene set (scene files read in two batches).
+  if (!applied_ && scene.sky && scene.sky->fromScene)
+    throw InputError(sky_.material >= 0 ? sky_.loc : ground_.loc,
+                     "the sky function '" + p.name + "' brings a second sky; the scene's sky is already defined at " +
+                         scene.sky->sceneLoc.file + ":" + std::to_string(scene.sky->sceneLoc.line) +
+                         ": a scene has one sky");
+  applied_ = true;
   if (sky_.material < 0)
     throw InputError(ground_.loc, "source '" + ground_.name + "' is a ground hemisphere with the sky function '" +
                                       p.name + "' but the scene has no sky hemisphere (0 0 1 180) with it");

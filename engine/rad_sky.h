@@ -87,6 +87,7 @@ class SceneSkyBuilder {
   int pattern_ = -1;
   Part sky_, ground_;
   bool changed_ = false;
+  bool applied_ = false;  // scene.sky is this builder's
 };
 
 }  // namespace candela

@@ -594,6 +594,15 @@ TEST(SceneSky, ReaderRules) {
   expectReadError("void brightfunc skyfunc 4 skybr skybright.cal -rx 10 0 3 2 10 2\n"
                   "skyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n",
                   "sky.rad:1: brightfunc 'skyfunc': transform '-rx' of a sky function is not supported (only -rz, -t, -s)");
+  // A second sky read by another reader into the same scene.
+  Scene twice = readSky("gensky 3 21 12 -c -B 55.866");
+  try {
+    readRadianceText(withGlows("gensky 3 21 12 -u -B 50"), "more.rad", twice);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "more.rad:3: the sky function 'skyfunc' brings a second sky; the scene's sky is "
+                                     "already defined at sky.rad:3: a scene has one sky");
+  }
   // A whole-sphere source is sky and ground at once.
   Scene whole;
   readRadianceText("!gensky 3 21 12 -c -B 55.866\nskyfunc glow sky_glow 0 0 4 1 1 1 0\n"
