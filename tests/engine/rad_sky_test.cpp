@@ -225,6 +225,23 @@ TEST(Gensky, SunnySkyAtASite) {
   }
 }
 
+TEST(Gensky, SunnySkyIsTheCieStandardClearSky) {
+  // gensky's sunny sky is the CIE (1973) clear sky (0.91 + 10 e^-3g + 0.45 cos^2 g)(1 - e^-0.32/cos Z),
+  // ISO 15469 type 12 with the indicatrix constant 1 - 10 e^(-3 pi / 2) = 0.91017 for 0.91, and
+  // zenith-normalised by F2 with 0.274 for 1 - e^-0.32 = 0.27385: the shapes agree to ~5e-4
+  // wherever skybright.cal's ground blend is negligible (above 45 degrees).
+  const RadPrimitive f = skyfunc(expand("gensky -ang 40 20 +s"));
+  const Vec3 sun(f.reals[4], f.reals[5], f.reals[6]);
+  const CieGeneralSky cie12(12, sun, 10000.0);
+  const double zenith = skybrRef(f.reals, Vec3(0, 0, 1));
+  for (double az : {0.0, 90.0, 160.0, 200.0, 270.0})
+    for (double alt : {45.0, 60.0, 80.0}) {
+      const Vec3 d = dirAzAlt(az, alt);
+      EXPECT_NEAR(skybrRef(f.reals, d) / zenith, cie12.relativeLuminance(d), 1e-3 * cie12.relativeLuminance(d))
+          << az << " " << alt;
+    }
+}
+
 TEST(Gensky, SolarRadianceOptions) {
   // -R: the sun's horizontal direct irradiance through gensky's sun of 5.98e-5 sr.
   const auto r = expand("gensky 6 21 12 +s -R 500 -a 40 -o 105 -m 105");
