@@ -49,6 +49,9 @@ RadianceSkyFunction::RadianceSkyFunction(const ScenePattern& p) : kind_(p.kind),
     if (t == "-rz") rotationDeg_ += std::atof(p.strings[i + 1].c_str());
     i += values + 1;
   }
+  // Radiances beyond 1e30 W/sr/m2 would overflow in products (as the emitters' bound in the reader).
+  for (double v : a_)
+    if (!(std::abs(v) <= 1e30)) throw InputError(p.loc, what + ": a real argument beyond 1e30");
   if (bright) {
     if (a_.empty() || a_[0] != std::floor(a_[0]) || a_[0] < 1 || a_[0] > 4)
       throw InputError(p.loc, what + ": skybright.cal's first argument is the sky type 1 (CIE clear), 2 (CIE overcast), "
@@ -153,8 +156,10 @@ void SceneSkyBuilder::addSource(const Scene& scene, uint32_t material, const Vec
 }
 
 void SceneSkyBuilder::apply(Scene& scene) {
-  if (!changed_) return;
+  // Rebuilt after a new sky source, or a new distant source that may be the sun.
+  if (!changed_ && !(applied_ && scene.distant.size() != distantSeen_)) return;
   changed_ = false;
+  distantSeen_ = scene.distant.size();
   const ScenePattern& p = scene.patterns[static_cast<size_t>(pattern_)];
   // A sky that another reader of the same scene set (scene files read in two batches).
   if (!applied_ && scene.sky && scene.sky->fromScene)

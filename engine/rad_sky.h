@@ -75,7 +75,8 @@ class SceneSkyBuilder {
                  const FileLoc& loc);
   // Sets scene.sky from what was collected (nothing when no sky source was met); the sun is the
   // brightest small distant `light` source (full angle up to 5 degrees), if any. Called at the
-  // end of every file read; rebuilds only after a change.
+  // end of every file read; rebuilds only after a new sky source or a new distant source (a sun
+  // in a later file).
   void apply(Scene& scene);
 
  private:
@@ -88,6 +89,7 @@ class SceneSkyBuilder {
   Part sky_, ground_;
   bool changed_ = false;
   bool applied_ = false;  // scene.sky is this builder's
+  size_t distantSeen_ = 0;
 };
 
 }  // namespace candela

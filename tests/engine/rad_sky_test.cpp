@@ -628,6 +628,19 @@ TEST(SceneSky, ReaderRules) {
   EXPECT_NEAR(whole.sky->groundLuminanceCdM2, kLumensPerWatt * 0.2 * 55.866 / kPi, 1e-3);
 }
 
+TEST(SceneSky, SunInALaterFileIsTheSkysSun) {
+  Scene scene;
+  SceneReader reader(scene);
+  reader.readText(withGlows("gensky -ang 30 0 -s"), "sky.rad");
+  EXPECT_EQ(scene.sky->sceneSun, -1);
+  EXPECT_EQ(scene.sky->horizontalSunLux, 0.0);
+  EXPECT_NEAR(scene.sky->sunAltitudeDeg, 30.0, 1e-9);  // from skybright.cal's sun direction
+  reader.readText("void light solar 0 0 3 1e6 1e6 1e6\nsolar source sun 0 0 4 0 -0.866025403784 0.5 0.5\n", "sun.rad");
+  EXPECT_EQ(scene.sky->sceneSun, 0);
+  EXPECT_NEAR(scene.sky->horizontalSunLux, kLumensPerWatt * 1e6 * kPi * std::pow(std::sin(degToRad(0.25)), 2) * 0.5, 1e-3);
+  EXPECT_NEAR(scene.sky->sunAzimuthDeg, 180.0, 1e-6);
+}
+
 TEST(SceneSky, CaseSkyReplacesTheScenesSkyAndSun) {
   Scene scene = readSky("gensky 6 21 12 +s -a 40 -o 105 -m 105");
   ASSERT_EQ(scene.distant.size(), 1u);
