@@ -1,6 +1,7 @@
 #include "engine/rad_sky.h"
 
 #include "base/units.h"
+#include "engine/rad_transform.h"
 #include "photometry/site.h"
 
 #include <algorithm>
@@ -36,19 +37,19 @@ RadianceSkyFunction::RadianceSkyFunction(const ScenePattern& p) : kind_(p.kind),
   const std::string function = bright ? "skybr" : "skybright";
   if (p.strings[0] != function)
     throw InputError(p.loc, what + ": " + file + " defines the sky function '" + function + "', not '" + p.strings[0] + "'");
-  // Transform arguments (Radiance reference manual, "Transformations"): a rotation about +Z turns
-  // the sky; a translation or uniform scale leaves directions unchanged; any other would tilt or
-  // mirror it.
-  for (size_t i = 2; i < p.strings.size();) {
-    const std::string& t = p.strings[i];
-    const size_t values = t == "-t" ? 3 : (t == "-rz" || t == "-s") ? 1 : 0;
-    if (values == 0)
-      throw InputError(p.loc, what + ": transform '" + t + "' of a sky function is not supported (only -rz, -t, -s)");
-    if (i + values >= p.strings.size())
-      throw InputError(p.loc, what + ": transform '" + t + "' needs " + std::to_string(values) + " value(s)");
-    if (t == "-rz") rotationDeg_ += std::atof(p.strings[i + 1].c_str());
-    i += values + 1;
-  }
+  // Transform arguments (Radiance reference manual, "Transformations"; xform appends its own,
+  // engine/rad_transform.h): a turn about +Z turns the sky, a translation or scale leaves
+  // directions as they are; a transform that tilts or mirrors the sky is refused.
+  RadTransform xf;
+  const size_t end = parseRadTransform(p.strings, 2, xf, p.loc, what);
+  if (end != p.strings.size())
+    throw InputError(p.loc, what + ": '" + p.strings[end] + "' after the function file is not a transform argument");
+  const glm::dmat3 r = glm::dmat3(xf.matrix) / std::abs(xf.scale);
+  const Vec3 up = r * Vec3(0.0, 0.0, 1.0), east = r * Vec3(1.0, 0.0, 0.0);
+  if (xf.scale < 0.0 || glm::length(up - Vec3(0.0, 0.0, 1.0)) > 1e-9)
+    throw InputError(p.loc, what + ": its transform tilts or mirrors the sky; a sky function may only be turned "
+                                   "about +Z (-rz), moved or scaled");
+  rotationDeg_ = radToDeg(std::atan2(east.y, east.x));
   // Radiances beyond 1e30 W/sr/m2 would overflow in products (as the emitters' bound in the reader).
   for (double v : a_)
     if (!(std::abs(v) <= 1e30)) throw InputError(p.loc, what + ": a real argument beyond 1e30");

@@ -18,8 +18,8 @@ namespace candela {
 bool isSkyPattern(PatternKind kind);
 
 // One sky function with its arguments as written. Throws InputError at the pattern's line for
-// arguments the .cal file cannot use (wrong count, sky type not 1..4, a transform other than
-// -rz, -t, -s, a function the file does not define).
+// arguments the .cal file cannot use (wrong count, sky type not 1..4, a transform that tilts or
+// mirrors the sky, a function the file does not define).
 class RadianceSkyFunction {
  public:
   explicit RadianceSkyFunction(const ScenePattern& pattern);
@@ -33,8 +33,8 @@ class RadianceSkyFunction {
   // The sun direction among the arguments (CIE clear and intermediate, Perez); none for the
   // overcast and uniform skies.
   std::optional<Vec3> sunDirection() const { return sun_; }
-  // Degrees the pattern is turned about +Z (counter-clockwise seen from above) by its -rz
-  // transform arguments.
+  // Degrees the pattern is turned about +Z (counter-clockwise seen from above) by its transform
+  // arguments (-rz, or xform's appended words).
   double rotationDeg() const { return rotationDeg_; }
   // "gensky CIE overcast (skybright.cal)", "gendaylit Perez (perezlum.cal)", ...
   std::string description() const;

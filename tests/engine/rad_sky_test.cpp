@@ -610,7 +610,8 @@ TEST(SceneSky, ReaderRules) {
   // A transform that would tilt the sky.
   expectReadError("void brightfunc skyfunc 4 skybr skybright.cal -rx 10 0 3 2 10 2\n"
                   "skyfunc glow sky_glow 0 0 4 1 1 1 0\nsky_glow source sky 0 0 4 0 0 1 180\n",
-                  "sky.rad:1: brightfunc 'skyfunc': transform '-rx' of a sky function is not supported (only -rz, -t, -s)");
+                  "sky.rad:1: brightfunc 'skyfunc': its transform tilts or mirrors the sky; a sky function may only be "
+                  "turned about +Z (-rz), moved or scaled");
   // A second sky read by another reader into the same scene.
   Scene twice = readSky("gensky 3 21 12 -c -B 55.866");
   try {
@@ -620,6 +621,18 @@ TEST(SceneSky, ReaderRules) {
     EXPECT_EQ(std::string(e.what()), "more.rad:3: the sky function 'skyfunc' brings a second sky; the scene's sky is "
                                      "already defined at sky.rad:3: a scene has one sky");
   }
+  // xform turns the sky file: the sky function carries `-i 1 -rz 30` (engine/rad_transform.h).
+  const std::string dir = std::string(CANDELA_TEST_DATA) + "/rad/sky/";
+  Scene turned;
+  readRadianceText("!xform -rz 30 " + dir + "honeybee_sunny.rad\n", "sky.rad", turned);
+  ASSERT_TRUE(turned.sky.has_value());
+  EXPECT_NEAR(turned.sky->northDeg, -30.0, 1e-9);
+  ASSERT_EQ(turned.distant.size(), 1u);
+  EXPECT_LT(angleDeg(turned.sky->sunDirModel, turned.distant[0].direction), 1e-9);
+  // The turned sky's brightest direction is its (turned) sun's.
+  const Vec3 toSun = turned.distant[0].direction;
+  EXPECT_GT(turned.sky->model->luminance(modelToTrue(glm::normalize(toSun + Vec3(0, 0, 0.02)), turned.sky->northDeg)),
+            10.0 * turned.sky->model->luminance(modelToTrue(Vec3(-toSun.x, -toSun.y, toSun.z + 0.02), turned.sky->northDeg)));
   // A whole-sphere source is sky and ground at once.
   Scene whole;
   readRadianceText("!gensky 3 21 12 -c -B 55.866\nskyfunc glow sky_glow 0 0 4 1 1 1 0\n"
