@@ -102,7 +102,7 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
       // A matte opaque surface seen directly: L = ρ E / π with E the sensor estimator's
       // irradiance just above it (stratified hemisphere, per-light ratio estimators), far less
       // noisy than one path. Its own stream: pixel-sample index above the camera streams.
-      const Shape& shape = tracer.scene().shapes[h.shape];
+      const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
       const Material& mat = tracer.scene().materials[shape.material];
       if (isMatteOpaque(mat)) {
         const Vec3 xh = cam.position() + h.t * *dir;
@@ -371,7 +371,7 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   const Vec3 d = glm::normalize(target - eye);
   RayHit h;
   if (!tracer.accelerator().intersect(eye, d, 0.0, 1e300, h)) return 0.0;
-  const Shape& shape = tracer.scene().shapes[h.shape];
+  const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
   const Material& mat = tracer.scene().materials[shape.material];
   if (isMatteOpaque(mat)) {
     const Vec3 x = eye + h.t * d;
