@@ -270,7 +270,7 @@ class ObjReader {
       if (static_cast<size_t>(v) > count) return false;
       out = v - 1;
     } else {
-      if (static_cast<size_t>(-v) > count) return false;
+      if (v < -static_cast<long>(count)) return false;  // (no negation: -LONG_MIN overflows)
       out = static_cast<long>(count) + v;
     }
     return true;
@@ -331,8 +331,10 @@ class ObjReader {
     tris_.clear();
     if (idx_.size() == 3) {
       tris_.push_back({0, 1, 2});
-    } else {
-      splitPolygon(pts_, n, tris_);
+    } else if (!splitPolygon(pts_, n, tris_)) {
+      fail(line, "face of " + std::to_string(idx_.size()) +
+                     " vertices is too intricate to split into triangles (more than 10^8 point tests); split "
+                     "it in the modelling tool");
     }
     const Material& m = scene_.materials[static_cast<size_t>(mat)];
     if (m.isEmitter() || m.type == MaterialType::kMirror) return addShapes(mat, planar);

@@ -23,7 +23,9 @@ void push(const std::vector<Vec3>& pts, uint32_t a, uint32_t b, uint32_t c, std:
 
 }  // namespace
 
-void splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<std::array<uint32_t, 3>>& out) {
+bool splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<std::array<uint32_t, 3>>& out,
+                  uint64_t maxTests) {
+  uint64_t tests = 0;
   std::vector<uint32_t> idx(pts.size());
   for (uint32_t i = 0; i < idx.size(); ++i) idx[i] = i;
   size_t start = 0;  // where to look for the next ear: just after the last one (fans convex outlines)
@@ -33,6 +35,8 @@ void splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<
       const size_t i = (start + step) % idx.size();
       const uint32_t ip = idx[(i + idx.size() - 1) % idx.size()], ic = idx[i], in = idx[(i + 1) % idx.size()];
       if (!(signedArea(pts[ip], pts[ic], pts[in], normal) > 0.0)) continue;  // reflex or flat corner
+      tests += idx.size();
+      if (tests > maxTests) return false;
       bool ear = true;
       for (uint32_t k : idx)
         if (k != ip && k != ic && k != in && pts[k] != pts[ip] && pts[k] != pts[ic] && pts[k] != pts[in] &&
@@ -49,6 +53,7 @@ void splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<
     if (!clipped) break;
   }
   for (size_t i = 1; i + 1 < idx.size(); ++i) push(pts, idx[0], idx[i], idx[i + 1], out);
+  return true;
 }
 
 double planeDeviation(const std::vector<Vec3>& pts, const Vec3& n, size_t* worst) {

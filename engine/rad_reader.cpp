@@ -410,7 +410,8 @@ class SceneReader::Builder {
   void addTriangulated(const Primitive& p, const std::vector<Vec3>& pts, const Vec3& n, uint32_t mat, Scene& target,
                        const std::string& why) {
     std::vector<std::array<uint32_t, 3>> tris;
-    splitPolygon(pts, n, tris);
+    if (!splitPolygon(pts, n, tris))
+      fail(p, why + "; it is too intricate to split into triangles (more than 10^8 point tests)");
     for (const auto& t : tris) target.addPolygon({pts[t[0]], pts[t[1]], pts[t[2]]}, mat, p.name);
     if (&target == &scene_)
       scene_.inputWarnings.push_back(
