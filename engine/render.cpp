@@ -405,10 +405,12 @@ Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keep
   ref.vertices = scene.vertices;  // shapes index into it: kept whole
   for (std::size_t k = 0; k < keepShapes.size(); ++k) {
     const uint32_t i = keepShapes[k];
-    if (i >= scene.shapes.size()) continue;
+    if (i >= scene.surfaceCount()) continue;
     if (std::find(keepShapes.begin(), keepShapes.begin() + k, i) != keepShapes.begin() + k) continue;  // listed twice
-    ref.shapes.push_back(scene.shapes[i]);
-    ref.shapeNames.push_back(i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string());
+    // A mesh triangle is kept as a triangle Shape: under the uniform sphere a lone surface's
+    // luminance does not depend on its extent, so the triangle seen stands for its object.
+    ref.shapes.push_back(scene.surface(i));
+    ref.shapeNames.push_back(scene.surfaceName(i));
   }
   Material sphere;
   sphere.type = MaterialType::kGlow;
