@@ -128,6 +128,51 @@ void BM_ShapesForComparison(benchmark::State& state) {
 }
 BENCHMARK(BM_ShapesForComparison)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+// Nearest-hit rays per second on the mesh and on the same triangles as Shapes: random rays
+// from 2 m above the terrain, downwards within 45° of the vertical.
+struct RayFixture {
+  std::unique_ptr<Scene> mesh = load(), shapes = std::make_unique<Scene>();
+  std::vector<std::pair<Vec3, Vec3>> rays;
+  RayFixture() {
+    shapes->materials = mesh->materials;
+    for (const auto& t : mesh->mesh.triangles)
+      shapes->addPolygon({mesh->mesh.vertices[t[0]], mesh->mesh.vertices[t[1]], mesh->mesh.vertices[t[2]]}, 0);
+    uint64_t x = 88172645463325252ULL;  // xorshift64: a fixed ray set
+    auto uniform = [&x] {
+      x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+      return static_cast<double>(x >> 11) * 0x1p-53;
+    };
+    for (int i = 0; i < 1 << 16; ++i) {
+      const Vec3 o(20.0 * uniform(), 20.0 * uniform(), 2.0);
+      rays.emplace_back(o, glm::normalize(Vec3(2.0 * uniform() - 1.0, 2.0 * uniform() - 1.0, -1.0)));
+    }
+  }
+};
+
+RayFixture& rayFixture() {
+  static RayFixture f;
+  return f;
+}
+
+template <class Accel>
+void BM_Rays(benchmark::State& state) {
+  RayFixture& f = rayFixture();
+  const Scene& scene = state.range(0) ? *f.mesh : *f.shapes;
+  static std::unique_ptr<Accel> accel[2];
+  if (!accel[state.range(0)]) accel[state.range(0)] = std::make_unique<Accel>(scene);
+  size_t i = 0, hits = 0;
+  for (auto _ : state) {
+    const auto& [o, d] = f.rays[i++ & (f.rays.size() - 1)];
+    RayHit h;
+    hits += accel[state.range(0)]->intersect(o, d, 0.0, 1e30, h);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+  state.SetLabel(state.range(0) ? "mesh" : "shapes");
+  benchmark::DoNotOptimize(hits);
+}
+BENCHMARK_TEMPLATE(BM_Rays, EmbreeAccelerator)->Arg(1)->Arg(0);
+BENCHMARK_TEMPLATE(BM_Rays, Octree)->Arg(1)->Arg(0);
+
 }  // namespace
 }  // namespace candela
 

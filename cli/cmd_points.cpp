@@ -28,6 +28,7 @@ struct PointsOptions {
   std::vector<std::string> scenes;
   std::string caseFile;
   std::string pointsFile;
+  std::string objMap;
   CaseTraceOptions trace;
   ResourceOptions resources;
   bool quiet = false;
@@ -74,6 +75,7 @@ int runPoints(const PointsOptions& o) {
   PointsJob job;
   job.caseFile = o.caseFile;
   job.scenes.assign(o.scenes.begin(), o.scenes.end());
+  job.objMapping = o.objMap;
   if (!o.sky.empty()) job.sky = [&o](DaylightSpec caseDaylight) { return daylightFromOptions(o, caseDaylight); };
   job.trace = o.trace.overrides();
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
@@ -125,7 +127,13 @@ int runPoints(const PointsOptions& o) {
 void addPointsCommand(CLI::App& app, Action& action) {
   auto opts = std::make_shared<PointsOptions>();
   CLI::App* cmd = app.add_subcommand("points", "illuminance (lux) at sensor points 'x y z dx dy dz'; CSV on stdout");
-  cmd->add_option("scenes", opts->scenes, "Radiance scene files, read in order")->check(CLI::ExistingFile);
+  cmd->add_option("scenes", opts->scenes,
+                  "scene files: Radiance, read in order, then Wavefront OBJ (.obj), whose faces take the modifiers "
+                  "they name")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--obj-map", opts->objMap,
+                  "obj2rad mapping file (obj2rad -m rules) naming the modifiers of the OBJ files' faces")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--case", opts->caseFile, "case file: its scenes, luminaires and settings apply")
       ->check(CLI::ExistingFile);
   cmd->add_option("--points", opts->pointsFile, "sensor points file (default: stdin)");

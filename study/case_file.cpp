@@ -548,6 +548,7 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
       c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
     }
   }
+  if (tab.get("obj_map")) s.objMapping = filePath(tab, "obj_map", "OBJ mapping file");
   tab.finish();
 }
 

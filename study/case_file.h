@@ -102,6 +102,7 @@ struct Settings {
   std::optional<int> samples;
   std::optional<Method> method;
   int threads = 0;                      // 0 = all cores
+  std::filesystem::path objMapping;     // obj_map: obj2rad mapping file for the case's OBJ files
 };
 
 // [annual]: settings of a climate-based annual study ([sky] type = "annual"). Defaults are those

@@ -14,13 +14,16 @@ PointsScene loadPointsScene(const PointsJob& job) {
   std::optional<CaseFile> c;
   if (!job.caseFile.empty()) {
     c = readCaseFile(job.caseFile);
+    if (!job.objMapping.empty()) c->settings.objMapping = job.objMapping;
     // A sky asked for replaces the case's; its site and time still come from the case.
     out.scene = loadCaseScene(*c, !job.sky);
     if (job.sky) daylight = daylightFromCase(*c);
   } else {
     out.scene = std::make_unique<Scene>();
   }
-  readSceneFiles(job.scenes, *out.scene);
+  SceneReadOptions read;
+  read.objMapping = !job.objMapping.empty() ? job.objMapping : c ? c->settings.objMapping : std::filesystem::path();
+  readSceneFiles(job.scenes, *out.scene, read);
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);
