@@ -238,6 +238,28 @@ TEST(ObjReader, CompiledMeshesAndInstancesAreRefused) {
               "scene files the octree was made from");
 }
 
+TEST(ObjReader, SourcesAndMirrorsAreShapes) {
+  // Light sampling and the mirrors' virtual sources enumerate Shapes: such faces are stored as
+  // Shapes with obj2rad's names (OBJECT.face), planar faces as one polygon.
+  const fs::path dir = test_support::scratchDir("obj_reader", "shapes");
+  std::ofstream(dir / "m.rad") << "void light lamp 0 0 3 10 10 10\nvoid mirror silver 0 0 3 .9 .9 .9\n"
+                                  "void plastic white 0 0 5 .5 .5 .5 0 0\n";
+  std::ofstream(dir / "s.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\no fixture\nusemtl lamp\nf 1 2 3 4\n"
+                                  "usemtl silver\nf 4 3 2 1\nusemtl white\nf 1 2 3\n";
+  const Scene sc = readFiles({dir / "m.rad", dir / "s.obj"});
+  ASSERT_EQ(sc.shapes.size(), 2u);
+  EXPECT_EQ(sc.shapes[0].type, ShapeType::kPolygon);
+  EXPECT_EQ(sc.shapes[0].material, materialIndex(sc, "lamp"));
+  EXPECT_EQ(sc.shapeNames[0], "fixture.1");
+  EXPECT_EQ(sc.shapes[1].material, materialIndex(sc, "silver"));
+  EXPECT_EQ(sc.shapeNames[1], "fixture.2");
+  EXPECT_DOUBLE_EQ(shapeArea(sc.shapes[0], sc.vertices), 1.0);
+  ASSERT_EQ(sc.mesh.triangles.size(), 1u);
+  EXPECT_EQ(sc.surfaceMaterial(2), materialIndex(sc, "white"));  // surface ids: shapes first
+  const Tracer tracer(sc);
+  EXPECT_EQ(tracer.sources().mirrors.size(), 1u);
+}
+
 TEST(ObjReader, MaterialsListedAfterTheObjFileApply) {
   Scene sc;
   readSceneFiles({objDir() / "constructs.obj", objDir() / "constructs.rad"}, sc);
