@@ -21,6 +21,18 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
       ->check(parsedBy(parseMethod, "METHOD"));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's, else all)")
       ->check(CLI::Range(0, 4096));
+  cmd->add_option("--patterns", o.patterns,
+                  "refuse | base: patterns, textures and mixtures candela does not implement are refused, or "
+                  "replaced by the material they modify, with a warning each (default: the case's, else refuse)")
+      ->check(parsedBy(parsePatternPolicy, "POLICY"));
+  cmd->add_option("--nonplanar", o.nonplanar,
+                  "refuse | triangulate: a polygon beyond the planarity tolerance is refused, or split into "
+                  "triangles with a warning (default: the case's, else refuse)")
+      ->check(parsedBy(parseNonplanarPolicy, "POLICY"));
+  cmd->add_option("--obj-map", o.objMap,
+                  "obj2rad mapping file (obj2rad -m rules) naming the modifiers of the OBJ scene files' faces "
+                  "(default: the case's, else usemtl, group, white)")
+      ->check(CLI::ExistingFile);
 }
 
 TraceOverrides CaseTraceOptions::overrides() const {
@@ -31,6 +43,9 @@ TraceOverrides CaseTraceOptions::overrides() const {
   if (seed >= 0) t.seed = static_cast<uint64_t>(seed);
   if (threads >= 0) t.threads = threads;
   if (!method.empty()) t.method = parseMethod(method);
+  if (!patterns.empty()) t.patterns = parsePatternPolicy(patterns);
+  if (!nonplanar.empty()) t.nonplanar = parseNonplanarPolicy(nonplanar);
+  if (!objMap.empty()) t.objMapping = std::filesystem::path(objMap);
   return t;
 }
 

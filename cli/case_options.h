@@ -21,6 +21,9 @@ struct CaseTraceOptions {
   int64_t seed = -1;    // < 0: the case's
   int threads = -1;     // < 0: the case's
   std::string method;   // empty: the case's, else the command's default
+  std::string patterns;   // empty: the case's ([settings] patterns), else refuse
+  std::string nonplanar;  // empty: the case's ([settings] nonplanar), else refuse
+  std::string objMap;     // empty: the case's ([settings] obj_map), else none
   TraceOverrides overrides() const;
 };
 

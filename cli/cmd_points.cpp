@@ -28,7 +28,6 @@ struct PointsOptions {
   std::vector<std::string> scenes;
   std::string caseFile;
   std::string pointsFile;
-  std::string objMap;
   CaseTraceOptions trace;
   ResourceOptions resources;
   bool quiet = false;
@@ -75,7 +74,6 @@ int runPoints(const PointsOptions& o) {
   PointsJob job;
   job.caseFile = o.caseFile;
   job.scenes.assign(o.scenes.begin(), o.scenes.end());
-  job.objMapping = o.objMap;
   if (!o.sky.empty()) job.sky = [&o](DaylightSpec caseDaylight) { return daylightFromOptions(o, caseDaylight); };
   job.trace = o.trace.overrides();
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
@@ -130,9 +128,6 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("scenes", opts->scenes,
                   "scene files: Radiance, read in order, then Wavefront OBJ (.obj), whose faces take the modifiers "
                   "they name")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--obj-map", opts->objMap,
-                  "obj2rad mapping file (obj2rad -m rules) naming the modifiers of the OBJ files' faces")
       ->check(CLI::ExistingFile);
   cmd->add_option("--case", opts->caseFile, "case file: its scenes, luminaires and settings apply")
       ->check(CLI::ExistingFile);

@@ -253,7 +253,7 @@ class ObjReader {
     for (int k = 0; k < 3; ++k)
       if (!parseDouble(words_[1 + k], p[k]))
         fail(line, "vertex coordinate '" + std::string(words_[1 + k]) + "' is not a number");
-    p = opt_.transform.apply(p);
+    p = opt_.transform.point(p);
     for (int k = 0; k < 3; ++k)
       if (std::abs(p[k]) > kMaxCoordinateM)
         fail(line, "vertex coordinate " + std::to_string(p[k]) + " is beyond 1e7 m");
@@ -296,7 +296,8 @@ class ObjReader {
       }
       idx_.push_back(base_ + static_cast<uint32_t>(v));
     }
-    if (opt_.transform.mirrored()) std::reverse(idx_.begin(), idx_.end());  // xform: a mirror keeps fronts
+    // xform: a mirroring transform (negative scale) reverses the vertex order, so fronts stay fronts.
+    if (opt_.transform.scale < 0.0) std::reverse(idx_.begin(), idx_.end());
   }
 
   void face(int line) {
@@ -482,18 +483,6 @@ class ObjReader {
   std::vector<std::array<uint32_t, 3>> tris_;
 };
 
-glm::dmat3 axisRotation(int axis, double deg) {
-  // Radiance xf.c: a right-handed rotation about the axis, counter-clockwise looking down it.
-  const double r = degToRad(deg), c = std::cos(r), s = std::sin(r);
-  glm::dmat3 m(1.0);
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  m[i][i] = c;  // GLM: m[column][row]
-  m[j][j] = c;
-  m[i][j] = s;   // column i (the image of axis i) gets +sin on axis j
-  m[j][i] = -s;
-  return m;
-}
-
 }  // namespace
 
 ObjMapping parseObjMapping(std::string_view text, const std::string& fileName) {
@@ -503,46 +492,6 @@ ObjMapping parseObjMapping(std::string_view text, const std::string& fileName) {
 ObjMapping readObjMapping(const std::filesystem::path& path) {
   const std::string text = readInputFile(path, "OBJ mapping file");
   return parseObjMapping(text, path.string());
-}
-
-ObjTransform parseObjTransform(const std::vector<std::string>& words, size_t first, const FileLoc& loc,
-                               const std::string& what) {
-  ObjTransform t;
-  auto num = [&](size_t i, const std::string& opt) {
-    double v = 0.0;
-    if (i >= words.size() || !parseDouble(words[i], v))
-      throw InputError(loc, what + ": transform option " + opt + " needs a number" +
-                                (i < words.size() ? ", got '" + words[i] + "'" : ""));
-    return v;
-  };
-  for (size_t i = first; i < words.size(); ++i) {
-    const std::string& w = words[i];
-    glm::dmat3 m(1.0);
-    Vec3 off(0.0);
-    if (w == "-t") {
-      off = Vec3(num(i + 1, w), num(i + 2, w), num(i + 3, w));
-      i += 3;
-    } else if (w == "-rx" || w == "-ry" || w == "-rz") {
-      m = axisRotation(w[2] - 'x', num(i + 1, w));
-      i += 1;
-    } else if (w == "-s") {
-      const double s = num(i + 1, w);
-      if (s == 0.0 || std::abs(s) > kMaxCoordinateM)
-        throw InputError(loc, what + ": scale factor " + words[i + 1] + " must be non-zero and at most 1e7");
-      m = glm::dmat3(s);
-      i += 1;
-    } else if (w == "-mx" || w == "-my" || w == "-mz") {
-      m[w[2] - 'x'][w[2] - 'x'] = -1.0;
-    } else {
-      throw InputError(loc, what + ": '" + w +
-                                "' is not a transform option candela reads here (-t x y z, -rx/-ry/-rz deg, -s f, "
-                                "-mx/-my/-mz)");
-    }
-    // Applied after what came before: p' = m·(L·p + o) + off.
-    t.linear = m * t.linear;
-    t.offset = m * t.offset + off;
-  }
-  return t;
 }
 
 ObjReadStats readObjText(std::string_view text, const std::string& fileName, Scene& scene,

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "base/math.h"
+#include "engine/rad_transform.h"
 #include "engine/scene.h"
 
 #include <filesystem>
@@ -45,26 +46,13 @@ struct ObjMapping {
 ObjMapping parseObjMapping(std::string_view text, const std::string& fileName);
 ObjMapping readObjMapping(const std::filesystem::path& path);
 
-// A transform given as xform's options (Radiance src/common/xf.c, applied left to right):
-// -t x y z, -rx/-ry/-rz degrees, -s factor, -mx/-my/-mz. Points map as p' = linear·p + offset.
-struct ObjTransform {
-  glm::dmat3 linear{1.0};
-  Vec3 offset{0.0};
-  bool mirrored() const { return glm::determinant(linear) < 0.0; }
-  Vec3 apply(const Vec3& p) const { return linear * p + offset; }
-};
-
-// The transform of words[first..]; `what` names the primitive in errors ("mesh 'vase'").
-ObjTransform parseObjTransform(const std::vector<std::string>& words, size_t first, const FileLoc& loc,
-                               const std::string& what);
-
 struct ObjReadOptions {
   const ObjMapping* mapping = nullptr;  // obj2rad -m rules (none: usemtl, group, default)
   std::string defaultModifier = "white";  // obj2rad's default material
   // A `mesh` primitive's non-void modifier: every face takes it (Radiance reference manual,
   // obj2mesh.1: "the given material will be substituted on all the mesh surfaces").
   std::optional<std::string> forcedModifier;
-  ObjTransform transform;
+  RadTransform transform;  // applied to every vertex; a mirroring one reverses each face's order
   // The material a modifier name stands for (-1: void, the face is left out); throws an
   // InputError at `where` when the name is not defined. `why` says where the name came from.
   std::function<int(const std::string& name, const std::string& why, const FileLoc& where)> resolve;

@@ -1,4 +1,5 @@
 #include "engine/rad_generators.h"
+#include "engine/rad_gen.h"
 
 #include <map>
 
@@ -8,9 +9,13 @@ namespace {
 
 using Generator = std::vector<RadPrimitive> (*)(const RadCommand&, const RadExpandContext&);
 
-// Each generator lives in a file of its own (engine/rad_gen_*.cpp); none is registered yet.
+// Each generator lives in a file of its own (engine/rad_gen_*.cpp), declared in engine/rad_gen.h.
 const std::map<std::string, Generator>& generators() {
-  static const std::map<std::string, Generator> table = {};
+  static const std::map<std::string, Generator> table = {
+      {"xform", expandXform},
+      {"genbox", expandGenbox},
+      {"genprism", expandGenprism},
+  };
   return table;
 }
 
@@ -32,7 +37,9 @@ const std::vector<std::string>& radGeneratorNames() {
   return names;
 }
 
-std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpandContext& ctx) {
+namespace {
+
+std::vector<RadPrimitive> expandOne(const RadCommand& cmd, const RadExpandContext& ctx) {
   const std::string name = programName(cmd.words.front());
   const auto it = generators().find(name);
   if (it == generators().end()) {
@@ -43,6 +50,31 @@ std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpan
                                   " (scene files never run programs)");
   }
   return it->second(cmd, ctx);
+}
+
+}  // namespace
+
+std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpandContext& ctx) {
+  // Split at "|" words; a pipe glued to a word ("a|b") is not a pipeline Radiance's files write.
+  std::vector<RadCommand> stages(1);
+  for (const std::string& w : cmd.words) {
+    if (w == "|") {
+      if (stages.back().words.empty()) throw InputError(cmd.loc, "an inline command has an empty stage before '|'");
+      stages.emplace_back();
+    } else {
+      stages.back().words.push_back(w);
+    }
+  }
+  if (stages.back().words.empty()) throw InputError(cmd.loc, "an inline command ends with '|'");
+  std::vector<RadPrimitive> out;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    stages[i].loc = cmd.loc;
+    RadExpandContext stageCtx = ctx;
+    stageCtx.standardInput = i == 0 ? ctx.standardInput : &out;
+    std::vector<RadPrimitive> next = expandOne(stages[i], stageCtx);
+    out = std::move(next);
+  }
+  return out;
 }
 
 }  // namespace candela

@@ -18,12 +18,16 @@ namespace candela {
 struct RadExpandContext {
   std::filesystem::path folder;
   std::function<std::vector<RadPrimitive>(const std::filesystem::path& file, const FileLoc& from)> readFile;
+  // In a pipeline (`!genbox ... | xform -t ...`), what the previous command wrote: a generator
+  // that reads its standard input when given no file (xform) reads this; null when there is none.
+  const std::vector<RadPrimitive>* standardInput = nullptr;
 };
 
 // The generators candela expands, in the order the refusal message lists them.
 const std::vector<std::string>& radGeneratorNames();
 
-// The primitives the command writes. Throws InputError(cmd.loc, ...) for a command that is not a
+// The primitives the command writes. A pipeline `A | B | ...` runs each command on what the one
+// before wrote (RadExpandContext::standardInput); only generators run, never a shell. Throws InputError(cmd.loc, ...) for a command that is not a
 // generator ("'!NAME' is not a generator candela can expand; it expands: ...") or bad options.
 std::vector<RadPrimitive> expandRadCommand(const RadCommand& cmd, const RadExpandContext& ctx);
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace candela {
@@ -139,7 +140,10 @@ class SceneReader::Builder {
       fail(p, "mesh '" + p.name + "' names '" + file + "', which is not an OBJ file (.obj)");
     if (!p.reals.empty()) fail(p, "mesh '" + p.name + "' takes no real arguments, got " + std::to_string(p.reals.size()));
     ObjReadOptions opt;
-    opt.transform = parseObjTransform(p.strings, 1, p.loc, "mesh '" + p.name + "'");
+    const size_t end = parseRadTransform(p.strings, 1, opt.transform, p.loc, "mesh '" + p.name + "'");
+    if (end != p.strings.size())
+      fail(p, "mesh '" + p.name + "': '" + p.strings[end] +
+                  "' is not a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
     if (p.modifier != "void") {
       modifierOf(p);  // defined before use, as every modifier
       opt.forcedModifier = p.modifier;
@@ -197,13 +201,18 @@ class SceneReader::Builder {
     return std::nullopt;
   }
 
+  // The file a pattern needs, for messages: the picture of *pict types, the data file of *data
+  // types, the font of *text types, else the function file (Radiance reference manual, argument
+  // order of each type). "." is a function written inline.
   static std::string patternFile(const Primitive& p) {
-    // The function file: brightfunc/colorfunc/texfunc/mixfunc name it second, *data and *pict
-    // third (after the data or picture file).
-    const bool third = p.type.size() > 4 && (p.type.compare(p.type.size() - 4, 4, "data") == 0 ||
-                                             p.type.compare(p.type.size() - 4, 4, "pict") == 0);
-    const size_t i = third ? 2 : 1;
-    return p.strings.size() > i ? p.strings[i] : std::string();
+    static const std::unordered_map<std::string, size_t> kIndex = {
+        {"brightfunc", 1}, {"colorfunc", 3}, {"texfunc", 3},   {"mixfunc", 3},   {"specfunc", 1},
+        {"brightdata", 1}, {"colordata", 3}, {"texdata", 3},   {"mixdata", 3},   {"specdata", 1},
+        {"colorpict", 3},  {"mixpict", 3},   {"specpict", 1},  {"brighttext", 0}, {"colortext", 0},
+        {"mixtext", 2},    {"specfile", 0}};
+    const auto it = kIndex.find(p.type);
+    if (it == kIndex.end() || p.strings.size() <= it->second) return {};
+    return p.strings[it->second];
   }
 
   void addPattern(const Primitive& p) {
@@ -221,15 +230,21 @@ class SceneReader::Builder {
       return;
     }
     const std::string file = patternFile(p);
-    const std::string what = p.type + " '" + p.name + "'" + (file.empty() ? "" : " (" + file + ")");
+    const std::string what = p.type + " '" + p.name + "'" +
+                             (file.empty() ? "" : file == "." ? " (its function written inline)" : " (" + file + ")");
     if (options_.patterns == PatternPolicy::kRefuse)
       fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
                      "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
-    scene_.inputWarnings.push_back(Warning{"pattern_replaced",
-                                           what + " is not implemented: the materials it modifies are used unmodified",
-                                           p.loc});
-    // A mixture's base is its first material (a mix of two materials has no single modifier).
-    std::string base = p.modifier;
+    // A mixture (mixfunc, mixdata, mixpict, mixtext) is used as a material: it stands for its
+    // foreground material, its first string argument ("void" for none).
+    const bool mixture = p.type.rfind("mix", 0) == 0;
+    if (mixture && p.strings.empty()) fail(p, what + " names no foreground material");
+    const std::string base = mixture ? p.strings[0] : p.modifier;
+    scene_.inputWarnings.push_back(
+        Warning{"pattern_replaced",
+                what + (mixture ? " is not implemented: its foreground material '" + base + "' is used in its place"
+                                : " is not implemented: the materials it modifies are used unmodified"),
+                p.loc});
     patterns_[p.name] = PatternEntry{-1, base};
     materials_.erase(p.name);
   }
@@ -522,6 +537,18 @@ void SceneReader::readFile(const std::filesystem::path& path) {
 
 void SceneReader::readText(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
   builder_->read(text, fileName, folder);
+}
+
+PatternPolicy parsePatternPolicy(const std::string& name) {
+  if (name == "refuse") return PatternPolicy::kRefuse;
+  if (name == "base") return PatternPolicy::kBase;
+  throw std::invalid_argument("unknown pattern policy '" + name + "' (expected refuse or base)");
+}
+
+NonplanarPolicy parseNonplanarPolicy(const std::string& name) {
+  if (name == "refuse") return NonplanarPolicy::kRefuse;
+  if (name == "triangulate") return NonplanarPolicy::kTriangulate;
+  throw std::invalid_argument("unknown non-planar policy '" + name + "' (expected refuse or triangulate)");
 }
 
 void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene) {

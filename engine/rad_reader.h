@@ -27,6 +27,11 @@ enum class PatternPolicy { kRefuse, kBase };
 // A polygon farther from planar than kPlanarTolerance: refused, or triangulated with a warning.
 enum class NonplanarPolicy { kRefuse, kTriangulate };
 
+// The names of the policies as case files and the command line write them ("refuse", "base",
+// "triangulate"); the parsers throw std::invalid_argument naming the accepted names.
+PatternPolicy parsePatternPolicy(const std::string& name);
+NonplanarPolicy parseNonplanarPolicy(const std::string& name);
+
 struct SceneReadOptions {
   PatternPolicy patterns = PatternPolicy::kRefuse;
   NonplanarPolicy nonplanar = NonplanarPolicy::kRefuse;

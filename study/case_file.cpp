@@ -548,7 +548,21 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
       c.fail(*n, "unknown method '" + m + "' (expected cache or path)");
     }
   }
-  if (tab.get("obj_map")) s.objMapping = filePath(tab, "obj_map", "OBJ mapping file");
+  if (const toml::node* n = tab.get("patterns")) {
+    try {
+      s.scene.patterns = parsePatternPolicy(asString(c, *n, "patterns"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(*n, e.what());
+    }
+  }
+  if (const toml::node* n = tab.get("nonplanar")) {
+    try {
+      s.scene.nonplanar = parseNonplanarPolicy(asString(c, *n, "nonplanar"));
+    } catch (const std::invalid_argument& e) {
+      c.fail(*n, e.what());
+    }
+  }
+  if (tab.get("obj_map")) s.scene.objMapping = filePath(tab, "obj_map", "OBJ mapping file");
   tab.finish();
 }
 

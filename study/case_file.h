@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/error.h"
+#include "engine/rad_reader.h"
 #include "engine/trace_settings.h"
 #include "base/math.h"
 #include "engine/camera.h"
@@ -102,7 +103,7 @@ struct Settings {
   std::optional<int> samples;
   std::optional<Method> method;
   int threads = 0;                      // 0 = all cores
-  std::filesystem::path objMapping;     // obj_map: obj2rad mapping file for the case's OBJ files
+  SceneReadOptions scene;               // patterns, nonplanar: how the scene files are read
 };
 
 // [annual]: settings of a climate-based annual study ([sky] type = "annual"). Defaults are those

@@ -20,16 +20,11 @@ std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
   for (const ScenePath& s : c.scenes) files.push_back(s.file);
   return files;
 }
-SceneReadOptions sceneOptions(const CaseFile& c) {
-  SceneReadOptions o;
-  o.objMapping = c.settings.objMapping;
-  return o;
-}
 }  // namespace
 
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
-  readSceneFiles(scenePaths(c), *scene, sceneOptions(c));
+  readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
   for (const LuminairePlacement& p : c.luminaires) {
     auto& web = webs[p.file];
@@ -56,7 +51,7 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather) {
 
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   auto scene = std::make_unique<Scene>();
-  readSceneFiles(scenePaths(c), *scene, sceneOptions(c));
+  readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
   SkyDome dome;

@@ -14,21 +14,20 @@ PointsScene loadPointsScene(const PointsJob& job) {
   std::optional<CaseFile> c;
   if (!job.caseFile.empty()) {
     c = readCaseFile(job.caseFile);
-    if (!job.objMapping.empty()) c->settings.objMapping = job.objMapping;
+    c->settings.scene = sceneReadOptions(&c->settings, job.trace);
     // A sky asked for replaces the case's; its site and time still come from the case.
     out.scene = loadCaseScene(*c, !job.sky);
     if (job.sky) daylight = daylightFromCase(*c);
   } else {
     out.scene = std::make_unique<Scene>();
   }
-  SceneReadOptions read;
-  read.objMapping = !job.objMapping.empty() ? job.objMapping : c ? c->settings.objMapping : std::filesystem::path();
-  readSceneFiles(job.scenes, *out.scene, read);
+  readSceneFiles(job.scenes, *out.scene, sceneReadOptions(c ? &c->settings : nullptr, job.trace));
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);
   out.strict = job.strict;
   const FileLoc where{c ? c->path.string() : !job.scenes.empty() ? job.scenes.front().string() : "command line", 0, 0};
+  checkSceneInput(*out.scene, out.warnings);
   checkLightSources(*out.scene, where, out.warnings);
   if (c) {
     out.luminaires = c->luminaires;

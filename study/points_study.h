@@ -22,9 +22,6 @@ namespace candela {
 struct PointsJob {
   std::filesystem::path caseFile;             // empty: no case
   std::vector<std::filesystem::path> scenes;  // Radiance files read after the case's, in order
-  // --obj-map: an obj2rad mapping file for the OBJ files of `scenes` and of the case (replacing
-  // the case's obj_map); empty: the case's, else none.
-  std::filesystem::path objMapping;
   // A sky asked for by the caller: called with the case's daylight (or the default without a
   // case) and returns the daylight to use instead of it. Unset: the case's daylight.
   std::function<DaylightSpec(DaylightSpec)> sky;

@@ -29,7 +29,8 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   run.request = request;
   run.start = std::chrono::steady_clock::now();
   run.startedAt = localTimeNow();
-  const CaseFile c = readCaseFile(caseFile);
+  CaseFile c = readCaseFile(caseFile);
+  c.settings.scene = sceneReadOptions(&c.settings, request.trace);
   if (c.grids.empty()) throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   checkResultFolder(run.outDir);

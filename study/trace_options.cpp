@@ -5,6 +5,14 @@
 
 namespace candela {
 
+SceneReadOptions sceneReadOptions(const Settings* caseSettings, const TraceOverrides& o) {
+  SceneReadOptions r = caseSettings ? caseSettings->scene : SceneReadOptions{};
+  if (o.patterns) r.patterns = *o.patterns;
+  if (o.nonplanar) r.nonplanar = *o.nonplanar;
+  if (o.objMapping) r.objMapping = *o.objMapping;
+  return r;
+}
+
 ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o, Method defaultMethod) {
   const Settings none;
   const Settings& c = caseSettings ? *caseSettings : none;

@@ -19,7 +19,14 @@ struct TraceOverrides {
   std::optional<int> threads;     // 0 = all cores
   std::optional<Method> method;
   double targetRelativeError = 0.0;  // > 0: sample each point until its standard error is below this fraction
+  // How the scene files are read ([settings] patterns, nonplanar).
+  std::optional<PatternPolicy> patterns;
+  std::optional<NonplanarPolicy> nonplanar;
+  std::optional<std::filesystem::path> objMapping;  // --obj-map: replaces [settings] obj_map
 };
+
+// The scene-reading options of the case's [settings] (or the defaults) with the overrides applied.
+SceneReadOptions sceneReadOptions(const Settings* caseSettings, const TraceOverrides& o);
 
 struct ResolvedTrace {
   Quality quality = Quality::kNormal;

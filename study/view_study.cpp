@@ -96,7 +96,8 @@ ViewLuminance viewLuminance(const ViewResult& v) {
 
 RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderRequest& request,
                             StudyObserver& observer) {
-  const CaseFile c = readCaseFile(caseFile);
+  CaseFile c = readCaseFile(caseFile);
+  c.settings.scene = sceneReadOptions(&c.settings, request.trace);
   const FileLoc atCase{c.path.string(), 0, 0};
   const ViewSpec* view = nullptr;
   for (const ViewSpec& v : c.views)
@@ -122,6 +123,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   observer.estimated(needs);
   const Tracer tracer(*scene);
   RenderResult r;
+  checkSceneInput(*scene, r.warnings);
   checkLightSources(*scene, atCase, r.warnings);
   checkCaseSite(c, r.warnings);
   checkLuminaires(tracer, c.luminaires, {}, r.warnings);

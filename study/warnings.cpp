@@ -138,6 +138,10 @@ std::vector<SensorSet> sensorSets(const std::vector<PreparedGrid>& grids) {
   return out;
 }
 
+void checkSceneInput(const Scene& scene, Warnings& out) {
+  out.insert(out.end(), scene.inputWarnings.begin(), scene.inputWarnings.end());
+}
+
 void checkLightSources(const Scene& scene, const FileLoc& where, Warnings& out) {
   if (!scene.luminaires.empty() || !scene.distant.empty()) return;
   if (scene.sky && scene.sky->model) return;
@@ -341,6 +345,7 @@ void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warni
 
 Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std::vector<PreparedGrid>& grids) {
   Warnings w;
+  checkSceneInput(tracer.scene(), w);
   checkLightSources(tracer.scene(), FileLoc{c.path.string(), 0, 0}, w);
   checkCaseSite(c, w);
   const std::vector<SensorSet> sets = sensorSets(grids);
@@ -354,6 +359,7 @@ Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std:
 Warnings annualInputWarnings(const CaseFile& c, const EpwLocation& weather, const Scene& scene,
                              const std::vector<PreparedGrid>& grids) {
   Warnings w;
+  checkSceneInput(scene, w);
   checkSiteAgainstWeather(c, weather, w);
   const Tracer probe(scene);
   const std::vector<SensorSet> sets = sensorSets(grids);

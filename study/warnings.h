@@ -32,6 +32,10 @@ struct SensorSet {
 // The case's grids as sensor sets (points files with the line of each point).
 std::vector<SensorSet> sensorSets(const std::vector<PreparedGrid>& grids);
 
+// What reading the scene files replaced or repaired (pattern_replaced, nonplanar_triangulated, ...):
+// the scene's inputWarnings, in file order.
+void checkSceneInput(const Scene& scene, Warnings& out);
+
 // no_light_source: no luminaire, no emitting surface, no distant source and no sky.
 void checkLightSources(const Scene& scene, const FileLoc& where, Warnings& out);
 

@@ -51,3 +51,14 @@ candela_cli_test(points.far_point 2 "points/far_point.pts:2: a sensor point lies
 candela_cli_test(points.endless_stdin 2 "<stdin>:1: a sensor point line is longer than 65536 characters"
                  points points/room.rad)
 set_tests_properties(cli.points.endless_stdin PROPERTIES ENVIRONMENT "STDIN_FILE=/dev/zero")
+
+# Patterns candela does not implement: refused with how to proceed; --patterns base uses the
+# material unmodified (room.rad's exact value) and says so in a warning naming the pattern's line.
+candela_cli_test(points.pattern_refused 2
+                 "points/patterned.rad:4: brightfunc 'dimmer' (dim.cal) is a pattern, texture or mixture candela does not implement; run with --patterns base"
+                 ${PTS} points/patterned.rad)
+candela_cli_test(points.pattern_base 0 "1,1,0.75,0,0,1,11218.5,0" ${PTS} points/patterned.rad --patterns base --error)
+candela_cli_test(points.pattern_base_warning 0 "warning: points/patterned.rad:4: brightfunc 'dimmer' (dim.cal) is not implemented"
+                 ${PTS} points/patterned.rad --patterns base)
+candela_cli_test(points.pattern_bad_policy 2 "unknown pattern policy 'ignore' (expected refuse or base)"
+                 ${PTS} points/patterned.rad --patterns ignore)

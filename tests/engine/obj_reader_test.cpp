@@ -223,6 +223,16 @@ TEST(ObjReader, MeshPrimitiveWithTransform) {
   EXPECT_EQ(sc.surfaceMaterial(0), materialIndex(sc, "red"));
 }
 
+TEST(ObjReader, XformOfAMeshAppliesAfterTheMeshsOwnTransform) {
+  const Scene sc = readFiles({objDir() / "xform_mesh.rad"});
+  ASSERT_EQ(sc.mesh.triangles.size(), 2u);
+  // -rz 90 -s 2 -t 10 0 0, then xform's -t 0 0 5: (x, y, z) → (−2y + 10, 2x, z + 5).
+  const Shape turned = sc.surface(0);
+  EXPECT_NEAR(glm::length(turned.a - Vec3(10, 0, 5)), 0.0, 1e-14);
+  EXPECT_NEAR(glm::length(turned.a + turned.c - Vec3(6, 0, 5)), 0.0, 1e-14);
+  EXPECT_NEAR(glm::dot(sc.surface(1).n, Vec3(0, 0, 1)), 1.0, 1e-15);
+}
+
 TEST(ObjReader, CompiledMeshesAndInstancesAreRefused) {
   expectError([&] { readFiles({objDir() / "mesh_rtm.rad"}); }, objDir() / "mesh_rtm.rad", 6,
               "mesh 'compiled' names a Radiance compiled mesh (thing.RTM); pass its source OBJ file instead");

@@ -264,6 +264,24 @@ TEST(RadReader, InlineCommandIsRefused) {
   expectError("inline_command.rad", 6, "'!pkgBSDF' is not a generator candela can expand");
 }
 
+// A pipeline runs only generators: each stage is looked up, a shell command anywhere is refused,
+// and a dangling '|' is an error on the command's line.
+TEST(RadReader, PipelineStagesAreGeneratorsOnly) {
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"\n!cat /etc/passwd | xform -t 1 0 0\n", "alias.rad:2: '!cat' is not a generator candela can expand"},
+           {"\n!genbox m b 1 1 1 | sh -c 'rm -rf /'\n", "alias.rad:2: '!"},
+           {"\n!genbox m b 1 1 1 |\n", "alias.rad:2: an inline command ends with '|'"},
+           {"\n!| xform\n", "alias.rad:2: an inline command has an empty stage before '|'"}}) {
+    Scene sc;
+    try {
+      readRadianceText(text, "alias.rad", sc);
+      ADD_FAILURE() << text << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(message, 0), 0u) << e.what();
+    }
+  }
+}
+
 TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
   expectError("unsupported_type.rad", 6, "primitive type 'antimatter' is not supported");
   expectError("unsupported_type.rad", 6, "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source");
@@ -286,6 +304,22 @@ TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
   const Material& grey = material(sc, "grey");
   EXPECT_EQ(grey.pattern, -1);
   expectRgb(grey.diffuseReflectance, Rgb(0.5));
+}
+
+// Under the base policy a mixture stands for its foreground material (it is itself a surface's
+// modifier, so its own modifier would make the surface void).
+TEST(RadReader, MixtureReplacedByItsForegroundMaterial) {
+  Scene sc;
+  SceneReadOptions options;
+  options.patterns = PatternPolicy::kBase;
+  SceneReader(sc, options)
+      .readText("void plastic red 0 0 5 .8 .1 .1 0 0\nvoid plastic blue 0 0 5 .1 .1 .8 0 0\n"
+                "void mixfunc mix 4 red blue if(Pz,1,0) .\n0\n0\nmix polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
+                "mix.rad");
+  ASSERT_EQ(sc.shapes.size(), 1u);
+  EXPECT_EQ(sc.materials[sc.shapes[0].material].name, "red");
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_NE(sc.inputWarnings[0].message.find("foreground material 'red'"), std::string::npos);
 }
 
 // `mod alias new old` stands for old; `inherit` keeps old's modifier.

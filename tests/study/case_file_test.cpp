@@ -97,7 +97,7 @@ TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   EXPECT_EQ(c.settings.samples.value(), 256);
   EXPECT_EQ(c.settings.method.value(), Method::kPath);
   EXPECT_EQ(c.settings.threads, 2);
-  EXPECT_EQ(c.settings.objMapping, (dir / "geometry" / "faces.map").lexically_normal());
+  EXPECT_EQ(c.settings.scene.objMapping, (dir / "geometry" / "faces.map").lexically_normal());
   EXPECT_EQ(c.output.dir, (dir / "results").lexically_normal());
 }
 

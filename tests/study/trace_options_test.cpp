@@ -49,5 +49,24 @@ TEST(TraceOptions, DefaultMethodOnlyWhenNeitherNamesOne) {
   EXPECT_EQ(preset.settings.seed, 1u);
 }
 
+// [settings] patterns and nonplanar are read like the other keys; the command line's override them.
+TEST(TraceOptions, SceneReadingPoliciesFromCaseAndCaller) {
+  const CaseFile c = parseCaseFile("[settings]\npatterns = \"base\"\nnonplanar = \"triangulate\"\n", "case.toml");
+  EXPECT_EQ(c.settings.scene.patterns, PatternPolicy::kBase);
+  EXPECT_EQ(c.settings.scene.nonplanar, NonplanarPolicy::kTriangulate);
+  EXPECT_EQ(sceneReadOptions(nullptr, {}).patterns, PatternPolicy::kRefuse);
+  EXPECT_EQ(sceneReadOptions(nullptr, {}).nonplanar, NonplanarPolicy::kRefuse);
+  TraceOverrides o;
+  o.patterns = PatternPolicy::kRefuse;
+  EXPECT_EQ(sceneReadOptions(&c.settings, o).patterns, PatternPolicy::kRefuse);
+  EXPECT_EQ(sceneReadOptions(&c.settings, o).nonplanar, NonplanarPolicy::kTriangulate);
+  try {
+    parseCaseFile("[settings]\n\npatterns = \"ignore\"\n", "case.toml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "case.toml:3: unknown pattern policy 'ignore' (expected refuse or base)");
+  }
+}
+
 }  // namespace
 }  // namespace candela

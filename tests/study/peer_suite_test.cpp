@@ -1,0 +1,121 @@
+// The public peer suite: Radiance's own test scenes (../shared/reference/radiance-test-renders, the
+// scene sets of its .rif files in scenes.txt) loaded as a user would pass them to `candela points`,
+// and, where expected.json holds Radiance 6.1a `rtrace -I` illuminances at converged settings, the
+// illuminance at the set's sensor points compared within the suite's tolerance (5 %, README.md).
+// Every set has an expected outcome below: it agrees, or it is refused for a stated reason. A set
+// that starts (or stops) loading fails the test until the table and docs/engine.md say so.
+#include "study/points_study.h"
+#include "study/sensor_grid.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSuite = fs::path(CANDELA_REFERENCE) / "radiance-test-renders";
+constexpr double kTolerance = 0.05;  // the suite's (README.md)
+
+// What candela does with each set: "agrees" (loads; every point within the tolerance), or the
+// message (a part of it) with which loading is refused.
+const std::map<std::string, std::string>& expectedOutcomes() {
+  static const std::map<std::string, std::string> table = {
+      {"combined", "PLACEHOLDER"}, {"dielectric", "PLACEHOLDER"}, {"glass", "PLACEHOLDER"},
+      {"inst", "PLACEHOLDER"},     {"mesh", "PLACEHOLDER"},       {"mirror", "PLACEHOLDER"},
+      {"mist", "PLACEHOLDER"},     {"mixtex", "PLACEHOLDER"},     {"patterns", "PLACEHOLDER"},
+      {"prism1", "PLACEHOLDER"},   {"prism2", "PLACEHOLDER"},     {"spectra", "PLACEHOLDER"},
+      {"tfunc", "PLACEHOLDER"},    {"trans", "PLACEHOLDER"},      {"trans2", "PLACEHOLDER"},
+      {"wgmdf", "PLACEHOLDER"},
+  };
+  return table;
+}
+
+// scenes.txt: "SET: FILE ..." per line, '#' comments.
+std::map<std::string, std::vector<std::string>> sceneSets() {
+  std::ifstream in(kSuite / "scenes.txt");
+  std::map<std::string, std::vector<std::string>> sets;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::istringstream words(line.substr(colon + 1));
+    std::vector<std::string> files;
+    for (std::string f; words >> f;) files.push_back(f);
+    sets[line.substr(0, colon)] = files;
+  }
+  return sets;
+}
+
+// "agrees", "disagrees: ...", "loads; no reference" or the refusal's message.
+std::string outcomeOf(const std::string& name, const std::vector<std::string>& files, const nlohmann::json& set,
+                      PatternPolicy patterns) {
+  PointsJob job;
+  for (const std::string& f : files) job.scenes.push_back(kSuite / f);
+  job.trace.seed = 1;
+  job.trace.patterns = patterns;
+  try {
+    const PointsScene scene = loadPointsScene(job);
+    if (!set.contains("lux")) return "loads; no reference";
+    const std::vector<SensorPoint> points = readPointsFile(kSuite / "points" / (name + ".pts")).points;
+    const std::vector<double> ref = set["lux"].get<std::vector<double>>();
+    if (points.size() != ref.size()) return "points and references differ in number";
+    const PointsResult r = computePoints(scene, job.accelerator, points);
+    std::string out = "agrees";
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double e = r.estimates[i].illuminanceLux();
+      const double dev = (e - ref[i]) / ref[i];
+      std::cout << "  " << name << " point " << i + 1 << ": " << e << " lx ± " << r.estimates[i].standardErrorLux()
+                << ", Radiance " << ref[i] << " (" << 100.0 * dev << " %)\n";
+      // Agreement means something only when candela's own error bar is well inside the tolerance.
+      if (r.estimates[i].standardErrorLux() > 0.01 * ref[i] && out == "agrees")
+        out = "too noisy: point " + std::to_string(i + 1) + " has a standard error above 1 %";
+      if (std::abs(dev) > kTolerance && out == "agrees")
+        out = "disagrees: point " + std::to_string(i + 1) + " " + std::to_string(e) + " lx against " +
+              std::to_string(ref[i]);
+    }
+    return out;
+  } catch (const InputError& e) {
+    // The file's path without the suite's folder.
+    std::string msg = e.what();
+    const std::string prefix = kSuite.string() + "/";
+    if (msg.rfind(prefix, 0) == 0) msg.erase(0, prefix.size());
+    return msg;
+  }
+}
+
+TEST(PeerSuite, EverySetLoadsAndAgreesOrIsRefusedForItsStatedReason) {
+  ASSERT_TRUE(fs::exists(kSuite / "scenes.txt")) << kSuite;
+  const auto sets = sceneSets();
+  ASSERT_EQ(sets.size(), expectedOutcomes().size());
+  std::ifstream js(kSuite / "expected.json");
+  const nlohmann::json expected = nlohmann::json::parse(js);
+  int agreeing = 0;
+  for (const auto& [name, files] : sets) {
+    SCOPED_TRACE(name);
+    const auto want = expectedOutcomes().find(name);
+    ASSERT_NE(want, expectedOutcomes().end());
+    const std::string outcome = outcomeOf(name, files, expected["sets"][name], PatternPolicy::kRefuse);
+    // A set refused for its patterns is also run with them replaced (--patterns base).
+    const std::string withBase = outcome.find("--patterns base") != std::string::npos
+                                     ? "; with --patterns base: " +
+                                           outcomeOf(name, files, expected["sets"][name], PatternPolicy::kBase)
+                                     : "";
+    std::cout << name << ": " << outcome << withBase << "\n";
+    if (outcome == "agrees") ++agreeing;
+    EXPECT_NE((outcome + withBase).find(want->second), std::string::npos) << "outcome: " << outcome << withBase;
+  }
+  std::cout << agreeing << " of " << sets.size() << " sets agree within 5 %\n";
+}
+
+}  // namespace
+}  // namespace candela
