@@ -9,8 +9,21 @@
 
 namespace candela {
 
+void replaceSceneSky(Scene& scene, const FileLoc& by) {
+  if (!scene.sky || !scene.sky->fromScene) return;
+  const SkyDome& old = *scene.sky;
+  const std::string where = old.sceneLoc.file + ":" + std::to_string(old.sceneLoc.line);
+  if (old.sceneSun >= 0) scene.distant.erase(scene.distant.begin() + old.sceneSun);
+  scene.inputWarnings.push_back(Warning{"scene_sky_replaced",
+                                        "the scene's own sky (" + old.model->name() + ", " + where +
+                                            ") and its sun are replaced by the case's sky",
+                                        by});
+  scene.sky.reset();
+}
+
 void addDaylight(Scene& scene, const DaylightSpec& spec) {
   if (spec.skyType.kind == SkyKind::kNone) return;
+  replaceSceneSky(scene, spec.skyLoc);
 
   // Sun position (true frame): explicit, else from the site and time by the NREL SPA.
   double altitude = 90.0, azimuth = 180.0;

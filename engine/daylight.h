@@ -39,6 +39,13 @@ struct DaylightSpec {
 // Builds the sky, adds the sun as a distant `light` source and sets scene.sky. Throws
 // InputError at spec.skyLoc/timeLoc for impossible combinations (a sun position with no way to
 // get it, Perez without irradiances, ...). Does nothing for SkyKind::kNone.
+// A scene whose files define their own sky (gensky, gendaylit: engine/rad_sky.h) first loses it
+// and its sun, with the warning `scene_sky_replaced` at `by` (replaceSceneSky).
 void addDaylight(Scene& scene, const DaylightSpec& spec);
+
+// Removes a sky read from the scene files and its sun (Scene::distant[sky.sceneSun]) and adds the
+// warning `scene_sky_replaced` at `by`, the case's sky that replaces it. Nothing for a scene
+// without such a sky.
+void replaceSceneSky(Scene& scene, const FileLoc& by);
 
 }  // namespace candela

@@ -4,6 +4,7 @@
 #include "engine/materials.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
+#include "engine/source_distribution.h"
 #include "photometry/site.h"
 
 #include <algorithm>
@@ -205,6 +206,12 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   return out + acc / static_cast<double>(k);
 }
 
+// The radiance an emitter sends back along the ray that met it at v (its front side).
+Rgb emitted(const Scene& scene, const Material& m, const Hit& v) {
+  if (m.pattern < 0) return m.color;
+  return emittedRadiance(scene, m, v.inDir, -glm::dot(v.inDir, v.nf));
+}
+
 }  // namespace
 
 Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, PathState st, CacheUse* cache,
@@ -243,9 +250,9 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     switch (m->type) {
       case MaterialType::kLight:
       case MaterialType::kIllum:
-        return (st.countSources && v.front) ? result + ray.beta * m->color : result;
+        return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kGlow:
-        return v.front ? result + ray.beta * m->color : result;
+        return v.front ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kVoid:
         return result;
       case MaterialType::kMirror:

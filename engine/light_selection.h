@@ -6,6 +6,7 @@
 // is exact for wholly visible sources.
 #pragma once
 
+#include "engine/accelerator.h"
 #include "engine/lights.h"
 #include "engine/sampling.h"
 

@@ -38,8 +38,11 @@ Vec3 pointOnTriangles(const std::vector<std::array<Vec3, 3>>& tris, const std::v
 }
 
 // A uniformly sampled point y (front normal ny) of a source of the given area and radiance, seen
-// from p: direction, distance and weight L cos θ_l A / d²; false behind the one-sided source.
-bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radiance, double areaM2, LightSample& out) {
+// from p: direction, distance and weight L f cos θ_l A / d² (f the distribution's factor, 1
+// without one); false behind the one-sided source.
+// 7 parameters: the sample's geometry and the source's three properties.
+bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radiance, double areaM2,
+                const SourceDistribution* distribution, LightSample& out) {
   const Vec3 e = y - p;
   const double dist2 = glm::dot(e, e);
   if (dist2 <= 0.0) return false;
@@ -49,6 +52,7 @@ bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radianc
   const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
   if (cosL <= 0.0) return false;
   out.weight = radiance * (cosL * areaM2 / dist2);
+  if (distribution) out.weight *= distribution->factor(out.dir, cosL);
   return true;
 }
 
@@ -107,6 +111,8 @@ std::vector<Light> collectLights(const Scene& scene) {
     l.shape = i;
     l.radiance = m.color;
     l.areaM2 = shapeArea(s, scene.vertices);
+    l.distribution = sourceDistributionOf(scene, m);
+    if (l.distribution && !l.distribution->emits()) continue;
     if (s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon) {
       if (s.type == ShapeType::kTriangle) {
         l.outline = {s.a, s.a + s.b, s.a + s.c};
@@ -207,6 +213,10 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       out.dir = dir;
       out.distance = b - std::sqrt(disc);
       out.weight = light.radiance * (kTwoPi * (1.0 - cosMax));
+      if (light.distribution) {
+        const Vec3 ny = (p + out.distance * dir - s.a) / s.r0;
+        out.weight *= light.distribution->factor(dir, -glm::dot(dir, ny));
+      }
       return true;
     }
     case ShapeType::kRing: {
@@ -233,7 +243,7 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       break;
     }
   }
-  return areaSample(y, ny, p, light.radiance, light.areaM2, out);
+  return areaSample(y, ny, p, light.radiance, light.areaM2, light.distribution, out);
 }
 
 double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
@@ -266,7 +276,7 @@ bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3,
   size_t k;
   const Vec3 y = pointOnTriangles(tris, cumulative, u1, u2, k);
   // The clipped part lies in the source's plane and p in front of it (unoccludedIrradiance).
-  return areaSample(y, light.normal, p, light.radiance, area, out);
+  return areaSample(y, light.normal, p, light.radiance, area, light.distribution, out);
 }
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
@@ -288,6 +298,8 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     out = light.radiance * psa;
     return true;
   }
+  // A distribution varies the radiance over the source: no closed form; the samples estimate it.
+  if (light.distribution) return false;
   const Shape& s = scene.shapes[light.shape];
   if (s.type == ShapeType::kSphere) {
     const Vec3 toC = s.a - p;
@@ -336,6 +348,18 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
 }  // namespace candela
 
 namespace candela {
+namespace {
+
+// A source distribution's part of the importance: its factor along e (from p to the source's
+// centre) times the emission cosine, plus 5 % of its typical value so that no part of the source
+// that can reach p gets a zero probability.
+double distributionImportance(const SourceDistribution& dist, const Vec3& e, double cosL) {
+  const double d = glm::length(e);
+  const double f = d > 0.0 && cosL > 0.0 ? dist.factor(e / d, cosL) * cosL : 0.0;
+  return f + 0.05 * dist.typicalIntensityFactor();
+}
+
+}  // namespace
 
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n) {
   if (light.kind == Light::Kind::kLuminaire) {
@@ -357,7 +381,8 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
     case ShapeType::kSphere: {
       const Vec3 e = s.a - p;
       const double d2 = std::max(glm::dot(e, e), s.r0 * s.r0);
-      return y * kPi * s.r0 * s.r0 / d2 * (std::max(0.0, glm::dot(n, e) / std::sqrt(d2)) + 0.05);
+      const double f = light.distribution ? distributionImportance(*light.distribution, e, 1.0) : 1.0;
+      return y * f * kPi * s.r0 * s.r0 / d2 * (std::max(0.0, glm::dot(n, e) / std::sqrt(d2)) + 0.05);
     }
     case ShapeType::kRing:
       centre = s.a;
@@ -381,6 +406,8 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
   const double d = std::sqrt(glm::dot(e, e));
   const double cosL = glm::length(normal) > 0.0 && d > 0.0 ? std::max(0.0, -glm::dot(normal, e) / d) : 0.5;
   const double cosI = d > 0.0 ? std::max(0.0, glm::dot(n, e) / d) : 1.0;
+  if (light.distribution)
+    return y * light.areaM2 * distributionImportance(*light.distribution, e, cosL) * (cosI + 0.05) / d2;
   return y * light.areaM2 * (cosL + 0.05) * (cosI + 0.05) / d2;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/scene.h"
+#include "engine/source_distribution.h"
 
 #include <array>
 #include <vector>
@@ -23,6 +24,9 @@ struct Light {
   std::vector<Vec3> outline;  // polygon vertices, for Lambert's formula
   Vec3 normal{0.0};           // polygon: unit front normal (the emitting side)
   double areaM2 = 0.0;
+  // Area: the source distribution modulating the radiance by direction (ies2rad luminaires;
+  // owned by the scene), or none.
+  const SourceDistribution* distribution = nullptr;
 };
 
 // The explicitly sampled lights of a scene.
@@ -54,7 +58,8 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
 // clipped outline is returned in *clipped, to be sampled with sampleClippedPolygon); the
 // vector irradiance of a disk or annulus wholly above the horizon; the cap formula
 // π L sin²α cos θ for spherical and distant sources wholly above the horizon; a far-field
-// luminaire's I cos ι / d². Returns false where no closed form applies.
+// luminaire's I cos ι / d². Returns false where no closed form applies (and for every source
+// with a distribution).
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
                           std::vector<Vec3>* clipped = nullptr);
 

@@ -15,6 +15,8 @@ const std::map<std::string, Generator>& generators() {
       {"xform", expandXform},
       {"genbox", expandGenbox},
       {"genprism", expandGenprism},
+      {"gensky", expandGensky},
+      {"gendaylit", expandGendaylit},
   };
   return table;
 }

@@ -1,9 +1,12 @@
 #include "engine/rad_reader.h"
+
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/obj_reader.h"
 #include "engine/polygon_split.h"
 #include "engine/rad_generators.h"
+#include "engine/rad_sky.h"
+#include "engine/source_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +60,7 @@ class SceneReader::Builder {
     topFile_ = fileName;
     topFolder_ = folder;
     expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
+    sky_.apply(scene_);
   }
 
   // An OBJ file with the modifiers defined so far (obj2rad's naming rules, or the mapping file).
@@ -108,7 +112,13 @@ class SceneReader::Builder {
     for (;;) {
       if (n == "void") return -1;
       const auto it = materials_.find(n);
-      if (it != materials_.end()) return it->second;
+      if (it != materials_.end()) {
+        if (const ScenePattern* sky = skyPatternOf(it->second))
+          throw InputError(where, "modifier '" + name + "' (" + why + ") is modified by the sky function '" +
+                                      sky->name + "' (" + sky->strings[1] + "): candela evaluates sky functions on "
+                                      "the sky and ground `source` hemispheres only");
+        return it->second;
+      }
       const auto pt = patterns_.find(n);
       if (pt == patterns_.end())
         throw InputError(where, "modifier '" + name + "' (" + why +
@@ -224,6 +234,8 @@ class SceneReader::Builder {
       sp.loc = p.loc;
       sp.strings = p.strings;
       sp.reals = p.reals;
+      if (sp.kind == PatternKind::kSourceDistribution)
+        sp.source = std::make_shared<const SourceDistribution>(SourceDistribution::parse(sp));
       scene_.patterns.push_back(std::move(sp));
       patterns_[p.name] = PatternEntry{static_cast<int>(scene_.patterns.size() - 1), p.modifier};
       materials_.erase(p.name);
@@ -232,6 +244,11 @@ class SceneReader::Builder {
     const std::string file = patternFile(p);
     const std::string what = p.type + " '" + p.name + "'" +
                              (file.empty() ? "" : file == "." ? " (its function written inline)" : " (" + file + ")");
+    if (options_.patterns == PatternPolicy::kRefuse && p.type == "brightdata" && p.strings.size() > 2 &&
+        p.strings[2] == "source.cal")
+      fail(p, what + " calls '" + p.strings[0] +
+                  "', which is not one of source.cal's functions candela implements (corr, flatcorr, boxcorr, "
+                  "cylcorr); run with --patterns base to use the light it modifies unmodified, with a warning");
     if (options_.patterns == PatternPolicy::kRefuse)
       fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
                      "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
@@ -276,6 +293,11 @@ class SceneReader::Builder {
     Material m;
     m.pattern = patternOf(p);
     m.type = type;
+    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source &&
+        type != MaterialType::kLight && type != MaterialType::kIllum && type != MaterialType::kGlow)
+      fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
+                  scene_.patterns[static_cast<size_t>(m.pattern)].name +
+                  "', which candela applies to light, illum and glow only");
     m.name = p.name;
     m.loc = p.loc;
     switch (type) {
@@ -433,6 +455,14 @@ class SceneReader::Builder {
           Warning{"nonplanar_triangulated", why + ": split into " + std::to_string(tris.size()) + " triangles", p.loc});
   }
 
+  // The sky function (skybright.cal, perezlum.cal) modifying material `mod`, if any.
+  const ScenePattern* skyPatternOf(int mod) const {
+    if (mod < 0) return nullptr;
+    const int pt = scene_.materials[static_cast<size_t>(mod)].pattern;
+    if (pt < 0 || !isSkyPattern(scene_.patterns[static_cast<size_t>(pt)].kind)) return nullptr;
+    return &scene_.patterns[static_cast<size_t>(pt)];
+  }
+
   void checkRadius(const Primitive& p, double r) {
     if (r < 0.0) fail(p, p.type + " '" + p.name + "' has a negative radius");
   }
@@ -472,9 +502,24 @@ class SceneReader::Builder {
       const MaterialType mt = scene_.materials[mod].type;
       if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
         fail(p, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
+      if (sourceDistributionOf(scene_, scene_.materials[mod]))
+        fail(p, "source '" + p.name + "': its modifier has a source.cal distribution, which candela applies to "
+                    "light surfaces only, not to sources at infinity");
+      if (const ScenePattern* sky = skyPatternOf(mod)) {
+        // gensky's and gendaylit's hemispheres: the scene's sky, not distant glow sources.
+        if (mt != MaterialType::kGlow)
+          fail(p, "source '" + p.name + "': the sky function '" + sky->name + "' (" + sky->strings[1] +
+                      ") modifies a glow in candela, not " + materialTypeName(mt));
+        sky_.addSource(scene_, static_cast<uint32_t>(mod), dir, p.reals[3], p.name, p.loc);
+        return;
+      }
       scene_.addDistant(dir, p.reals[3], static_cast<uint32_t>(mod), p.name);
       return;
     }
+    if (const ScenePattern* sky = skyPatternOf(mod))
+      fail(p, t + " '" + p.name + "' uses '" + scene_.materials[mod].name + "', modified by the sky function '" +
+                  sky->name + "' (" + sky->strings[1] + "): candela evaluates sky functions on the sky and ground "
+                  "`source` hemispheres only");
     // Geometry is checked even when its modifier is void (void surfaces are invisible in Radiance).
     const uint32_t mat = mod < 0 ? 0 : static_cast<uint32_t>(mod);
     Scene probe;  // void surfaces are validated into a scratch scene and dropped
@@ -524,6 +569,7 @@ class SceneReader::Builder {
   std::optional<ObjMapping> mapping_;
   std::string topFile_;  // the file read now, and its folder (readText's may differ from its name's)
   std::filesystem::path topFolder_;
+  SceneSkyBuilder sky_;
 };
 
 SceneReader::SceneReader(Scene& scene, SceneReadOptions options)

@@ -400,6 +400,7 @@ uint32_t shapeToward(const Tracer& tracer, const Vec3& eye, const Vec3& target) 
 Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keepShapes, double luminanceCdM2) {
   Scene ref;
   ref.materials = scene.materials;
+  ref.patterns = scene.patterns;  // materials index into them
   for (Material& m : ref.materials)
     if (m.isEmitter()) m.color = Rgb(0.0);
   ref.vertices = scene.vertices;  // shapes index into it: kept whole

@@ -16,6 +16,8 @@
 
 namespace candela {
 
+class SourceDistribution;
+
 enum class MaterialType { kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow };
 
 const char* materialTypeName(MaterialType t);
@@ -62,6 +64,9 @@ struct ScenePattern {
   FileLoc loc;
   std::vector<std::string> strings;
   std::vector<double> reals;
+  // kSourceDistribution: the distribution as evaluated (engine/source_distribution.h), read with
+  // its data file when the pattern is read.
+  std::shared_ptr<const SourceDistribution> source;
 };
 
 // A source at infinity: Radiance's `source` primitive (a cone of directions).
@@ -84,6 +89,12 @@ struct SkyDome {
   double horizontalSunLux = 0.0;          // sun only, open horizontal plane
   Vec3 sunDirModel{0.0, 0.0, 1.0};
   double sunAltitudeDeg = 90.0, sunAzimuthDeg = 0.0;
+  // A sky read from the scene's own sky functions (engine/rad_sky.h): where it is defined, and
+  // which of Scene::distant is its sun (-1: none), so that a case's sky can replace both
+  // (replaceSceneSky, engine/daylight.h).
+  bool fromScene = false;
+  FileLoc sceneLoc;
+  int sceneSun = -1;
   // Outside horizontal illuminance (sky + sun, no ground): the daylight factor's denominator.
   double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
 };

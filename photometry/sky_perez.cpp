@@ -53,6 +53,38 @@ double linear(const Coef4& k, double z, double delta) { return k.x1 + k.x2 * z +
 
 }  // namespace
 
+int perezClearnessBin(double epsilon) {
+  int bin = 1;
+  while (bin < 8 && epsilon >= kClearnessUpper[bin - 1]) ++bin;
+  return bin;
+}
+
+PerezCoefficients perezCoefficients(int bin, double zenith, double dl) {
+  const int i = std::clamp(bin, 1, 8) - 1;
+  PerezCoefficients k;
+  k.a = linear(kA[i], zenith, dl);
+  k.b = linear(kB[i], zenith, dl);
+  k.e = linear(kE[i], zenith, dl);
+  if (i == 0) {
+    k.c = std::exp(std::pow(dl * (kC[0].x1 + kC[0].x2 * zenith), kC[0].x3)) - kC[0].x4;
+    k.d = -std::exp(dl * (kD[0].x1 + kD[0].x2 * zenith)) + kD[0].x3 + dl * kD[0].x4;
+  } else {
+    k.c = linear(kC[i], zenith, dl);
+    k.d = linear(kD[i], zenith, dl);
+  }
+  return k;
+}
+
+double perezDiffuseEfficacy(int bin, double w, double zenith, double delta) {
+  const Coef4& k = kDiffuseEff[std::clamp(bin, 1, 8) - 1];
+  return k.x1 + k.x2 * w + k.x3 * std::cos(zenith) + k.x4 * std::log(delta);
+}
+
+double perezDirectEfficacy(int bin, double w, double zenith, double delta) {
+  const Coef4& k = kDirectEff[std::clamp(bin, 1, 8) - 1];
+  return k.x1 + k.x2 * w + k.x3 * std::exp(5.73 * zenith - 5.0) + k.x4 * delta;
+}
+
 double extraterrestrialNormalWm2(int dayOfYear) {
   const double g = kTwoPi * (dayOfYear - 1) / 365.0;  // Spencer's day angle
   return 1367.0 * (1.00011 + 0.034221 * std::cos(g) + 0.00128 * std::sin(g) + 0.000719 * std::cos(2 * g) +
@@ -82,8 +114,7 @@ PerezSky::PerezSky(const PerezInput& in, const FileLoc& loc) : sun_(glm::normali
   const double z3 = 1.041 * zenith * zenith * zenith;
   epsilon_ = dhi > 0.0 ? ((dhi + dni) / dhi + z3) / (1.0 + z3) : 1.0;
   delta_ = dhi * relativeAirMass(radToDeg(zenith)) / extraterrestrialNormalWm2(in.dayOfYear);
-  bin_ = 1;
-  while (bin_ < 8 && epsilon_ >= kClearnessUpper[bin_ - 1]) ++bin_;
+  bin_ = perezClearnessBin(epsilon_);
   // Precipitable water from the dew point (Perez 1990, after Wright, Perez & Michalsky 1989).
   w_ = in.dewPointC ? std::exp(0.07 * *in.dewPointC - 0.075) : 2.0;
 
@@ -91,16 +122,12 @@ PerezSky::PerezSky(const PerezInput& in, const FileLoc& loc) : sun_(glm::normali
   // turn positive and grow without bound towards the horizon, so Delta is clamped for it.
   const double dl = std::clamp(delta_, 0.01, 0.6);
   const int i = bin_ - 1;
-  a_ = linear(kA[i], zenith, dl);
-  b_ = linear(kB[i], zenith, dl);
-  e_ = linear(kE[i], zenith, dl);
-  if (bin_ == 1) {
-    c_ = std::exp(std::pow(dl * (kC[0].x1 + kC[0].x2 * zenith), kC[0].x3)) - kC[0].x4;
-    d_ = -std::exp(dl * (kD[0].x1 + kD[0].x2 * zenith)) + kD[0].x3 + dl * kD[0].x4;
-  } else {
-    c_ = linear(kC[i], zenith, dl);
-    d_ = linear(kD[i], zenith, dl);
-  }
+  const PerezCoefficients k = perezCoefficients(bin_, zenith, dl);
+  a_ = k.a;
+  b_ = k.b;
+  c_ = k.c;
+  d_ = k.d;
+  e_ = k.e;
   // A positive b (possible at the extremes of the fitted range) makes exp(b / cos Z) diverge at
   // the horizon; no sky does that, so the gradation is capped at its horizon value for b = 0.
   b_ = std::min(b_, 0.0);

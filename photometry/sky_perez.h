@@ -59,6 +59,22 @@ class PerezSky : public SkyModel {
   double diffuseEfficacy_ = 0, directEfficacy_ = 0, diffuseLux_ = 0, directLux_ = 0;
 };
 
+// The tables behind PerezSky, for callers that follow another program's use of them (engine's
+// gendaylit): no clamping here, the caller decides.
+struct PerezCoefficients {
+  double a = 0, b = 0, c = 0, d = 0, e = 0;
+};
+// Sky clearness bin 1..8 of epsilon (Perez et al. 1990, Table 1 bounds 1.065 ... 6.2).
+int perezClearnessBin(double epsilon);
+// Perez, Seals & Michalsky (1993) Table 1 coefficients for a bin, the solar zenith in radians and
+// the sky brightness Delta.
+PerezCoefficients perezCoefficients(int bin, double zenithRad, double delta);
+// Perez et al. (1990) Table 4 luminous efficacies, lm/W, for a bin, precipitable water W (cm),
+// solar zenith (radians) and Delta: diffuse a + b W + c cos Z + d ln(Delta) (Delta > 0), direct
+// a + b W + c exp(5.73 Z - 5) + d Delta (not clamped at 0).
+double perezDiffuseEfficacy(int bin, double waterCm, double zenithRad, double delta);
+double perezDirectEfficacy(int bin, double waterCm, double zenithRad, double delta);
+
 // Extraterrestrial normal irradiance in W/m2 for a day of the year: 1367 W/m2 times Spencer's
 // (1971) eccentricity correction (as given in Iqbal, An Introduction to Solar Radiation, 1983).
 double extraterrestrialNormalWm2(int dayOfYear);

@@ -1,5 +1,6 @@
 #include "study/case_scene.h"
 
+#include "engine/daylight.h"
 #include "engine/rad_reader.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
@@ -54,6 +55,7 @@ std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
+  replaceSceneSky(*scene, c.sky.loc);
   SkyDome dome;
   dome.model = makeSky({SkyKind::kUniform}, uniform, c.sky.loc);
   dome.northDeg = northDeg;

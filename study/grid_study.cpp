@@ -2,6 +2,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "engine/rad_sky.h"
 #include "engine/sensors.h"
 #include "metrics/grid_stats.h"
 #include "metrics/targets.h"
@@ -64,14 +65,20 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
   if (scene.sky) {
     const SkyDome& sky = *scene.sky;
     char buf[160];
-    data.run.settings.emplace_back("sky", skyTypeName(c.sky.type));
+    // A sky from the scene's own files (gensky, gendaylit) names itself ("scene:gensky ...").
+    data.run.settings.emplace_back("sky", sky.fromScene ? sky.model->name() : skyTypeName(c.sky.type));
     std::snprintf(buf, sizeof buf, "altitude %.2f deg, azimuth %.2f deg", sky.sunAltitudeDeg, sky.sunAzimuthDeg);
     data.run.settings.emplace_back("sun position", buf);
     std::snprintf(buf, sizeof buf, "%.0f lx (sky %.0f lx, sun %.0f lx)", sky.outsideHorizontalLux(),
                   sky.horizontalSkyLux, sky.horizontalSunLux);
     data.run.settings.emplace_back("outside horizontal illuminance", buf);
-    std::snprintf(buf, sizeof buf, "%.2f", c.sky.groundReflectance);
-    data.run.settings.emplace_back("ground reflectance", buf);
+    if (sky.fromScene) {
+      std::snprintf(buf, sizeof buf, "%.1f cd/m2 (the scene's ground glow)", sky.groundLuminanceCdM2);
+      data.run.settings.emplace_back("ground luminance", buf);
+    } else {
+      std::snprintf(buf, sizeof buf, "%.2f", c.sky.groundReflectance);
+      data.run.settings.emplace_back("ground reflectance", buf);
+    }
   }
   if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()));
 }
@@ -130,11 +137,17 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     checkResources(luminaires, run.request.limits, FileLoc{c.path.string(), 0, 0});
   }
   const std::unique_ptr<Scene> scene = loadCaseScene(c);
-  // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent).
+  // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent). The
+  // case's, or the scene's own from `gensky -c` (skybright.cal's sky type 2).
+  const auto* sceneSky = scene->sky && scene->sky->fromScene ? dynamic_cast<const RadianceSky*>(scene->sky->model.get())
+                                                              : nullptr;
+  const bool overcast = scene->sky && (sceneSky ? sceneSky->function().skyType() == 2
+                                                : c.sky.type.kind == SkyKind::kCieOvercast);
   for (const GridSpec& spec : c.grids)
-    if (spec.daylightFactor && !(scene->sky && c.sky.type.kind == SkyKind::kCieOvercast))
+    if (spec.daylightFactor && !overcast)
       throw InputError(spec.loc, "grid '" + spec.name +
-                                     "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it)");
+                                     "': daylight_factor needs [sky] type = \"cie-overcast\" (DF is defined under it), "
+                                     "or a scene sky from gensky -c");
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kCache);
   // The memory check comes before the grids are generated: a grid too large is refused without
   // being made.

@@ -1,6 +1,7 @@
 #include "study/warnings.h"
 
 #include "base/units.h"
+#include "engine/source_distribution.h"
 #include "photometry/site.h"
 #include "reports/report_data.h"
 #include "study/case_scene.h"
@@ -147,7 +148,8 @@ void checkLightSources(const Scene& scene, const FileLoc& where, Warnings& out) 
   if (scene.sky && scene.sky->model) return;
   for (const Shape& s : scene.shapes) {
     const Material& m = scene.materials[s.material];
-    if (m.isEmitter() && photopic(m.color) > 0.0) return;
+    const SourceDistribution* dist = sourceDistributionOf(scene, m);
+    if (m.isEmitter() && photopic(m.color) > 0.0 && (!dist || dist->emits())) return;
   }
   out.push_back({"no_light_source",
                  "the scene has no light source: no luminaire, no light, glow or illum surface and no sky; "

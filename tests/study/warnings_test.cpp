@@ -4,6 +4,7 @@
 #include "study/warnings.h"
 
 #include "base/units.h"
+#include "engine/rad_reader.h"
 #include "photometry/epw.h"
 #include "photometry/ies_lm63.h"
 #include "study/case_file.h"
@@ -77,6 +78,20 @@ TEST(Warnings, SceneWithoutAnyLightSource) {
   EXPECT_TRUE(inputWarnings(caseOf(kRoom + kLuminaire + kGrid)).empty());
   // A sky is a light source too.
   EXPECT_TRUE(inputWarnings(caseOf(kRoom + "[sky]\ntype = \"cie-overcast\"\n" + kGrid)).empty());
+}
+
+// An ies2rad luminaire is a light source unless its distribution is dark throughout.
+TEST(Warnings, Ies2radLuminaireIsALightSourceUnlessItsDataAreZero) {
+  const fs::path dir = fs::path(CANDELA_TEST_DATA) / "rad" / "ies2rad";
+  for (const char* file : {"panel.rad", "dark.rad"}) {
+    Scene sc;
+    readRadianceFile(dir / file, sc);
+    Warnings w;
+    checkLightSources(sc, FileLoc{file, 0, 0}, w);
+    EXPECT_EQ(codes(w), std::string(file) == "dark.rad" ? std::vector<std::string>{"no_light_source"}
+                                                          : std::vector<std::string>{})
+        << file;
+  }
 }
 
 TEST(Warnings, LuminairesOutsideEnclosedOrInMillimetres) {
