@@ -29,6 +29,10 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
                   "refuse | triangulate: a polygon beyond the planarity tolerance is refused, or split into "
                   "triangles with a warning (default: the case's, else refuse)")
       ->check(parsedBy(parseNonplanarPolicy, "POLICY"));
+  cmd->add_option("--obj-map", o.objMap,
+                  "obj2rad mapping file (obj2rad -m rules) naming the modifiers of the OBJ scene files' faces "
+                  "(default: the case's, else usemtl, group, white)")
+      ->check(CLI::ExistingFile);
 }
 
 TraceOverrides CaseTraceOptions::overrides() const {
@@ -41,6 +45,7 @@ TraceOverrides CaseTraceOptions::overrides() const {
   if (!method.empty()) t.method = parseMethod(method);
   if (!patterns.empty()) t.patterns = parsePatternPolicy(patterns);
   if (!nonplanar.empty()) t.nonplanar = parseNonplanarPolicy(nonplanar);
+  if (!objMap.empty()) t.objMapping = std::filesystem::path(objMap);
   return t;
 }
 

@@ -23,6 +23,7 @@ struct CaseTraceOptions {
   std::string method;   // empty: the case's, else the command's default
   std::string patterns;   // empty: the case's ([settings] patterns), else refuse
   std::string nonplanar;  // empty: the case's ([settings] nonplanar), else refuse
+  std::string objMap;     // empty: the case's ([settings] obj_map), else none
   TraceOverrides overrides() const;
 };
 

@@ -125,7 +125,10 @@ int runPoints(const PointsOptions& o) {
 void addPointsCommand(CLI::App& app, Action& action) {
   auto opts = std::make_shared<PointsOptions>();
   CLI::App* cmd = app.add_subcommand("points", "illuminance (lux) at sensor points 'x y z dx dy dz'; CSV on stdout");
-  cmd->add_option("scenes", opts->scenes, "Radiance scene files, read in order")->check(CLI::ExistingFile);
+  cmd->add_option("scenes", opts->scenes,
+                  "scene files: Radiance, read in order, then Wavefront OBJ (.obj), whose faces take the modifiers "
+                  "they name")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--case", opts->caseFile, "case file: its scenes, luminaires and settings apply")
       ->check(CLI::ExistingFile);
   cmd->add_option("--points", opts->pointsFile, "sensor points file (default: stdin)");

@@ -53,7 +53,7 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& fr
     RayHit h;
     ++rays;
     if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
-    const Shape& shape = scene.shapes[h.shape];
+    const Shape shape = scene.surface(h.shape);  // a shape or a mesh triangle
     const Material* m = &scene.materials[shape.material];
     if (m->type == MaterialType::kIllum) {
       if (m->alternate < 0) continue;

@@ -44,7 +44,7 @@ struct EmbreeCallbacks {
           self.toShape(RTCHitN_geomID(args->hit, args->N, i), RTCHitN_primID(args->hit, args->N, i));
       double t;
       if (skipped(q, s) ||
-          (q.exact && !intersectShape(self.scene_.shapes[s], self.scene_.vertices, q.o, q.d, q.tMin, q.tMax, t)))
+          (q.exact && !self.scene_.intersectSurface(s, q.o, q.d, q.tMin, q.tMax, t)))
         args->valid[i] = 0;
     }
   }
@@ -182,6 +182,7 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
     userGeom_ = rtcAttachGeometry(rtcScene_, g);
     rtcReleaseGeometry(g);
   }
+  if (!scene.mesh.empty()) attachMesh(options);
   rtcCommitScene(rtcScene_);
   const RTCError e = rtcGetDeviceError(device_);
   if (e != RTC_ERROR_NONE) {  // the destructor will not run: release here
@@ -189,6 +190,30 @@ EmbreeAccelerator::EmbreeAccelerator(const Scene& scene, EmbreeOptions options) 
     rtcReleaseDevice(device_);
     throw std::runtime_error("Embree: building the scene failed (error " + std::to_string(e) + ")");
   }
+}
+
+// The scene's compact mesh as one more Embree triangle geometry, attached last (the other
+// geometries keep their ids): float vertices relative to the centre, one per mesh vertex, and
+// the mesh's own index array shared with Embree (no copy); primID + meshBase_ is the surface id.
+void EmbreeAccelerator::attachMesh(const EmbreeOptions& options) {
+  const TriangleMesh& mesh = scene_.mesh;
+  meshBase_ = static_cast<uint32_t>(scene_.shapes.size());
+  meshVertices_.reserve(3 * mesh.vertices.size() + 1);
+  for (const Vec3& v : mesh.vertices) {
+    const Vec3 rel = v - centre_;
+    for (int k = 0; k < 3; ++k) meshVertices_.push_back(static_cast<float>(rel[k]));
+  }
+  meshVertices_.push_back(0.0f);  // Embree reads the last vertex with a 16-byte load
+  static_assert(sizeof(mesh.triangles[0]) == 3 * sizeof(uint32_t), "Embree reads the indices as UINT3");
+  RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, meshVertices_.data(), 0,
+                             3 * sizeof(float), mesh.vertices.size());
+  rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
+                             3 * sizeof(uint32_t), mesh.triangles.size());
+  rtcSetGeometryBuildQuality(g, options.highQuality ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
+  rtcCommitGeometry(g);
+  meshGeom_ = rtcAttachGeometry(rtcScene_, g);
+  rtcReleaseGeometry(g);
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() {
@@ -215,7 +240,7 @@ bool EmbreeAccelerator::nearest(Query& q, bool exact, RayHit& hit) const {
     return true;
   }
   double t;
-  if (intersectShape(scene_.shapes[s], scene_.vertices, q.o, q.d, q.tMin, q.tMax, t)) {
+  if (scene_.intersectSurface(s, q.o, q.d, q.tMin, q.tMax, t)) {
     hit.t = t;
     hit.shape = s;
     return true;
@@ -258,10 +283,11 @@ bool EmbreeAccelerator::occluded(const Vec3& o, const Vec3& dir, double tMin, do
 
 EmbreeStats EmbreeAccelerator::stats() const {
   EmbreeStats s;
-  s.triangles = triangleShapes_.size();
+  s.triangles = triangleShapes_.size() + scene_.mesh.triangles.size();
   s.userShapes = userShapes_.size();
   s.memoryBytes = static_cast<size_t>(std::max<int64_t>(0, embreeBytes_.load())) +
-                  sizeof(float) * vertices_.capacity() + sizeof(uint32_t) * indices_.capacity() +
+                  sizeof(float) * (vertices_.capacity() + meshVertices_.capacity()) +
+                  sizeof(uint32_t) * indices_.capacity() +
                   sizeof(uint32_t) * (triangleShapes_.capacity() + userShapes_.capacity());
   return s;
 }

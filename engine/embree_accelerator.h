@@ -1,7 +1,8 @@
 // Ray queries through Intel Embree 3 (a float BVH with SIMD traversal) behind the RayAccelerator
 // interface, with the same answers as the octree: the nearest shape's t is recomputed in double
 // with intersectShape, so the tracer sees the exact value it would get from the octree.
-// Triangles are Embree triangles (float, relative to the scene's bounding-box centre); polygons,
+// Triangles are Embree triangles (float, relative to the scene's bounding-box centre; the scene's
+// compact mesh shares its index array with Embree and its vertices once per vertex); polygons,
 // spheres, rings and cones are Embree user geometry whose callbacks call intersectShape.
 // Speed against the octree: docs/performance.md.
 #pragma once
@@ -60,17 +61,21 @@ class EmbreeAccelerator : public RayAccelerator {
   bool nearest(Query& q, bool exact, RayHit& hit) const;
   // Embree's (geometry, primitive) → index into Scene::shapes.
   uint32_t toShape(unsigned geomID, unsigned primID) const {
+    if (geomID == meshGeom_) return meshBase_ + primID;
     return geomID == triangleGeom_ ? triangleShapes_[primID] : userShapes_[primID];
   }
+  void attachMesh(const EmbreeOptions& options);
 
   const Scene& scene_;
   Vec3 centre_{0.0};  // Embree coordinates are relative to this point (float precision)
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* rtcScene_ = nullptr;
-  unsigned triangleGeom_ = ~0u, userGeom_ = ~0u;
+  unsigned triangleGeom_ = ~0u, userGeom_ = ~0u, meshGeom_ = ~0u;
+  uint32_t meshBase_ = 0;                              // surface id of the mesh's triangle 0
   std::vector<uint32_t> triangleShapes_, userShapes_;  // Embree primID → Scene shape index
   std::vector<float> vertices_;                        // 3 float3 per triangle, relative to centre_
   std::vector<uint32_t> indices_;
+  std::vector<float> meshVertices_;                    // the scene mesh's vertices, relative to centre_
   std::atomic<int64_t> embreeBytes_{0};  // from Embree's memory monitor
 };
 

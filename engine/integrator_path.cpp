@@ -69,7 +69,9 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       // meets one flat mirror keeps not counting them: the mirror's virtual sources were sampled
       // too, with their visibility through transmitting surfaces before and after the mirror.
       // Beyond that one reflection (a second mirror, glass reflection) it counts them again.
-      if (st.countSources || st.mirrorsMet != 0 || !ctx.tracer.sources().isMirrorImage[v.shape])
+      if (st.countSources || st.mirrorsMet != 0 ||
+          v.shape >= ctx.tracer.sources().isMirrorImage.size() ||  // mesh triangles: never mirrors
+          !ctx.tracer.sources().isMirrorImage[v.shape])
         st.countSources = true;
       ++st.mirrorsMet;
       return true;
@@ -230,7 +232,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.inDir = ray.d;
     v.t = h.t;
     v.shape = h.shape;
-    const Shape& shape = scene.shapes[h.shape];
+    const Shape shape = scene.surface(h.shape);  // a shape or a mesh triangle
     const Material* m = &scene.materials[shape.material];
     v.ng = shapeNormal(shape, v.x);
     v.front = glm::dot(ray.d, v.ng) < 0.0;

@@ -46,9 +46,14 @@ class Builder {
     const double h = 0.5 * size;
     for (int c = 0; c < 8; ++c) {
       const Vec3 clo = lo + Vec3((c & 1) ? h : 0.0, (c & 2) ? h : 0.0, (c & 4) ? h : 0.0);
-      if (shapeOverlapsBox(scene_.shapes[surf], scene_.vertices, clo, h))
-        addSurface(nodes_[node].children + c, clo, h, surf, depth + 1);
+      if (overlaps(surf, clo, h)) addSurface(nodes_[node].children + c, clo, h, surf, depth + 1);
     }
+  }
+
+  // Surface `surf` (a shape or a mesh triangle) overlaps the cube [lo, lo + size]³.
+  bool overlaps(uint32_t surf, const Vec3& lo, double size) const {
+    if (surf < scene_.shapes.size()) return shapeOverlapsBox(scene_.shapes[surf], scene_.vertices, lo, size);
+    return shapeOverlapsBox(scene_.surface(surf), scene_.vertices, lo, size);
   }
 
   const Scene& scene_;
@@ -70,8 +75,9 @@ Octree::Octree(const Scene& scene, OctreeOptions options) : scene_(&scene) {
   if (options.minCubeSizeM <= 0.0) options.minCubeSizeM = size / 4096.0;
 
   Builder builder(scene, cube_, options);
-  for (uint32_t i = 0; i < scene.shapes.size(); ++i)
-    if (shapeOverlapsBox(scene.shapes[i], scene.vertices, cube_.lo, size)) builder.addSurface(0, cube_.lo, size, i, 0);
+  meshBase_ = static_cast<uint32_t>(scene.shapes.size());
+  for (uint32_t i = 0; i < scene.surfaceCount(); ++i)
+    if (builder.overlaps(i, cube_.lo, size)) builder.addSurface(0, cube_.lo, size, i, 0);
 
   // Flatten breadth-first so that the eight children of a node are contiguous.
   nodes_.resize(1);
@@ -106,13 +112,15 @@ Octree::Octree(const Scene& scene, OctreeOptions options) : scene_(&scene) {
     }
     for (uint32_t k = 0; k < nd.count; ++k) {
       const uint32_t sh = items_[nd.first + k];
+      if (sh >= meshBase_) continue;  // mesh triangles keep their surface ids
       if (shapeToLocal_[sh] == kNoShape) {
         shapeToLocal_[sh] = static_cast<uint32_t>(localToShape_.size());
         localToShape_.push_back(sh);
       }
     }
   }
-  for (uint32_t& it : items_) it = shapeToLocal_[it];
+  for (uint32_t& it : items_)
+    if (it < meshBase_) it = shapeToLocal_[it];
   triangles_.resize(localToShape_.size());
   isTriangle_.resize(localToShape_.size());
   for (size_t i = 0; i < localToShape_.size(); ++i) {
@@ -170,9 +178,9 @@ bool Octree::traverse(RayState& r, uint32_t ni, const Vec3& t0, const Vec3& t1) 
       const uint32_t s = items_[node.first + k];  // local number
       if (s == r.skipA || s == r.skipB || r.seen(s)) continue;
       double t;
-      const bool h = isTriangle_[s]
-                         ? hitTriangle(triangles_[s], r.o, r.d, r.tMin, r.best, t)
-                         : intersectShape(shapes[localToShape_[s]], vs, r.o, r.d, r.tMin, r.best, t);
+      const bool h = s >= meshBase_  ? scene_->intersectSurface(s, r.o, r.d, r.tMin, r.best, t)
+                     : isTriangle_[s] ? hitTriangle(triangles_[s], r.o, r.d, r.tMin, r.best, t)
+                                      : intersectShape(shapes[localToShape_[s]], vs, r.o, r.d, r.tMin, r.best, t);
       if (h) {
         if (kAnyHit) return true;
         r.best = t;
@@ -241,7 +249,7 @@ bool Octree::intersect(const Vec3& o, const Vec3& dir, double tMin, double tMax,
   RayState r{o, dir, tMin, tMax, kNoShape, local(skipA), local(skipB)};
   if (!run<false>(r) || r.hit == kNoShape) return false;
   hit.t = r.best;
-  hit.shape = localToShape_[r.hit];
+  hit.shape = r.hit >= meshBase_ ? r.hit : localToShape_[r.hit];
   return true;
 }
 

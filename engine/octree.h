@@ -52,12 +52,15 @@ class Octree : public RayAccelerator {
   template <bool kAnyHit>
   bool run(RayState& r) const;
   uint32_t local(uint32_t shape) const {
+    if (shape != kNoShape && shape >= meshBase_) return shape;  // a mesh triangle: its own id
     return shape < shapeToLocal_.size() ? shapeToLocal_[shape] : kNoShape;
   }
 
   // Primitives are renumbered in depth-first leaf order (items_ holds these local numbers), so
   // that the triangles a ray meets in neighbouring voxels lie close together in memory. Triangles
-  // are repeated compactly (v0, e1, e2); other shapes go through intersectShape.
+  // are repeated compactly (v0, e1, e2); other shapes go through intersectShape. Mesh triangles
+  // (surface ids from meshBase_ on) are not renumbered nor copied: items_ hold their surface ids
+  // and the test reads the scene's mesh (Scene::intersectSurface), so they cost only items_.
  public:
   struct Triangle {
     Vec3 v0, e1, e2;
@@ -67,6 +70,7 @@ class Octree : public RayAccelerator {
   std::vector<uint32_t> localToShape_, shapeToLocal_;
 
   const Scene* scene_ = nullptr;
+  uint32_t meshBase_ = 0;  // Scene::shapes.size(): surface ids from here on are mesh triangles
   Box cube_;
   std::vector<Triangle> triangles_;
   std::vector<uint8_t> isTriangle_;

@@ -2,6 +2,8 @@
 
 #include "base/input_file.h"
 #include "base/units.h"
+#include "engine/obj_reader.h"
+#include "engine/polygon_split.h"
 #include "engine/rad_generators.h"
 #include "engine/rad_sky.h"
 #include "engine/source_distribution.h"
@@ -22,7 +24,7 @@ constexpr double kMaxRadiance = 1e30;
 constexpr int kMaxIncludeDepth = 32;
 
 constexpr const char* kSupported =
-    "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source; "
+    "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source, mesh (of an OBJ file); "
     "plastic, metal, trans, mirror, glass, dielectric, light, illum, glow; alias; patterns: see docs/engine.md";
 
 using Primitive = RadPrimitive;
@@ -55,8 +57,20 @@ class SceneReader::Builder {
   }
 
   void read(std::string_view text, const std::string& fileName, const std::filesystem::path& folder) {
+    topFile_ = fileName;
+    topFolder_ = folder;
     expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
     sky_.apply(scene_);
+  }
+
+  // An OBJ file with the modifiers defined so far (obj2rad's naming rules, or the mapping file).
+  void readObj(const std::filesystem::path& path, ObjReadOptions opt = {}) {
+    if (!options_.objMapping.empty() && !mapping_) mapping_ = readObjMapping(options_.objMapping);
+    if (!opt.forcedModifier && mapping_) opt.mapping = &*mapping_;
+    opt.resolve = [this](const std::string& name, const std::string& why, const FileLoc& where) {
+      return objModifier(name, why, where);
+    };
+    readObjFile(path, scene_, opt);
   }
 
  private:
@@ -90,6 +104,73 @@ class SceneReader::Builder {
                     "' as its modifier: a pattern modifies a material, which surfaces then use");
       name = pt->second.base;
     }
+  }
+
+  // The material an OBJ face's modifier name stands for (-1: void), as modifierOf.
+  int objModifier(const std::string& name, const std::string& why, const FileLoc& where) {
+    std::string n = name;
+    for (;;) {
+      if (n == "void") return -1;
+      const auto it = materials_.find(n);
+      if (it != materials_.end()) {
+        if (const ScenePattern* sky = skyPatternOf(it->second))
+          throw InputError(where, "modifier '" + name + "' (" + why + ") is modified by the sky function '" +
+                                      sky->name + "' (" + sky->strings[1] + "): candela evaluates sky functions on "
+                                      "the sky and ground `source` hemispheres only");
+        return it->second;
+      }
+      const auto pt = patterns_.find(n);
+      if (pt == patterns_.end())
+        throw InputError(where, "modifier '" + name + "' (" + why +
+                                    ") is not defined in the Radiance files read before: define it in a .rad "
+                                    "file given with the OBJ file, or map names with an obj2rad mapping file");
+      if (pt->second.pattern >= 0)
+        throw InputError(where, "modifier '" + name + "' (" + why +
+                                    ") is a pattern: a pattern modifies a material, which faces then use");
+      n = pt->second.base;
+    }
+  }
+
+  // The folder a primitive's files are relative to: its own file's.
+  std::filesystem::path folderOf(const Primitive& p) const {
+    return p.loc.file == topFile_ ? topFolder_ : std::filesystem::path(p.loc.file).parent_path();
+  }
+
+  // `mod mesh id 1+ file [transform]` (Radiance reference manual, "Mesh"): an OBJ file is read
+  // with the transform applied; a void modifier lets the faces' own names apply, any other
+  // replaces them all (obj2mesh.1). Compiled meshes (.rtm) are refused: candela reads the source.
+  void addMesh(const Primitive& p) {
+    if (p.strings.empty()) fail(p, "mesh '" + p.name + "' needs its file as first string argument");
+    const std::string& file = p.strings[0];
+    const std::string ext = lower(std::filesystem::path(file).extension().string());
+    if (ext == ".rtm")
+      fail(p, "mesh '" + p.name + "' names a Radiance compiled mesh (" + file +
+                  "); pass its source OBJ file instead (mesh ... model.obj, the file obj2mesh compiled it from)");
+    if (!isObjPath(file))
+      fail(p, "mesh '" + p.name + "' names '" + file + "', which is not an OBJ file (.obj)");
+    if (!p.reals.empty()) fail(p, "mesh '" + p.name + "' takes no real arguments, got " + std::to_string(p.reals.size()));
+    ObjReadOptions opt;
+    const size_t end = parseRadTransform(p.strings, 1, opt.transform, p.loc, "mesh '" + p.name + "'");
+    if (end != p.strings.size())
+      fail(p, "mesh '" + p.name + "': '" + p.strings[end] +
+                  "' is not a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
+    if (p.modifier != "void") {
+      modifierOf(p);  // defined before use, as every modifier
+      opt.forcedModifier = p.modifier;
+    }
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = folderOf(p) / path;
+    try {
+      checkInputFile(path, "OBJ file");
+    } catch (const InputError&) {
+      fail(p, "mesh '" + p.name + "': cannot read its OBJ file " + path.string());
+    }
+    readObj(path, opt);
+  }
+
+  static std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
   }
 
   // A material's modifier: void, a material, a pattern candela implements (returned as a pattern
@@ -347,19 +428,31 @@ class SceneReader::Builder {
     if (!(diameter > 0.0) || area <= kDegenerateTolerance * diameter * diameter)
       fail(p, "polygon '" + p.name + "' is degenerate (zero area)");
     const Vec3 n = nn / (2.0 * area);
-    Vec3 centroid(0.0);
-    for (const Vec3& v : pts) centroid += v;
-    centroid /= static_cast<double>(nv);
-    for (size_t i = 0; i < nv; ++i) {
-      const double off = std::abs(glm::dot(n, pts[i] - centroid));
-      if (off > kPlanarTolerance * diameter) {
-        std::ostringstream msg;
-        msg << "polygon '" << p.name << "' is not planar: vertex " << (i + 1) << " is " << off
-            << " m from its plane (tolerance 0.1 % of its size, " << kPlanarTolerance * diameter << " m)";
-        fail(p, msg.str());
-      }
+    size_t worst = 0;
+    const double off = planeDeviation(pts, n, &worst);
+    if (off > kPlanarTolerance * diameter) {
+      std::ostringstream msg;
+      msg << "polygon '" << p.name << "' is not planar: vertex " << (worst + 1) << " is " << off
+          << " m from its plane (tolerance 0.1 % of its size, " << kPlanarTolerance * diameter << " m)";
+      if (options_.nonplanar == NonplanarPolicy::kRefuse)
+        fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
+      return addTriangulated(p, pts, n, mat, target, msg.str());
     }
     target.addPolygon(pts, mat, p.name);
+  }
+
+  // A non-planar polygon as the triangles of its outline seen along its Newell normal (ear
+  // clipping, engine/polygon_split.h): each vertex is kept where it is, so the surface passes
+  // through every vertex; each triangle is planar by construction.
+  void addTriangulated(const Primitive& p, const std::vector<Vec3>& pts, const Vec3& n, uint32_t mat, Scene& target,
+                       const std::string& why) {
+    std::vector<std::array<uint32_t, 3>> tris;
+    if (!splitPolygon(pts, n, tris))
+      fail(p, why + "; it is too intricate to split into triangles (more than 10^8 point tests)");
+    for (const auto& t : tris) target.addPolygon({pts[t[0]], pts[t[1]], pts[t[2]]}, mat, p.name);
+    if (&target == &scene_)
+      scene_.inputWarnings.push_back(
+          Warning{"nonplanar_triangulated", why + ": split into " + std::to_string(tris.size()) + " triangles", p.loc});
   }
 
   // The sky function (skybright.cal, perezlum.cal) modifying material `mod`, if any.
@@ -389,6 +482,11 @@ class SceneReader::Builder {
     if (t == "glow") return addMaterial(p, MaterialType::kGlow);
     if (t == "alias") return addAlias(p);
     if (isPatternType(t)) return addPattern(p);
+    if (t == "mesh") return addMesh(p);
+    if (t == "instance")
+      fail(p, "instance '" + p.name + "' places a Radiance octree (" + (p.strings.empty() ? "" : p.strings[0]) +
+                  "), which candela does not read; pass the scene files the octree was made from instead "
+                  "(through !xform with the instance's transform)");
     const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
                            t == "cup" || t == "cylinder" || t == "tube" || t == "source";
     if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + kSupported + ")");
@@ -468,6 +566,9 @@ class SceneReader::Builder {
     std::string base;
   };
   std::unordered_map<std::string, PatternEntry> patterns_;
+  std::optional<ObjMapping> mapping_;
+  std::string topFile_;  // the file read now, and its folder (readText's may differ from its name's)
+  std::filesystem::path topFolder_;
   SceneSkyBuilder sky_;
 };
 
@@ -476,6 +577,7 @@ SceneReader::SceneReader(Scene& scene, SceneReadOptions options)
 SceneReader::~SceneReader() = default;
 
 void SceneReader::readFile(const std::filesystem::path& path) {
+  if (isObjPath(path)) return builder_->readObj(path);
   builder_->read(readInputFile(path, "scene file"), path.string(), path.parent_path());
 }
 
@@ -503,7 +605,10 @@ void readRadianceFile(const std::filesystem::path& path, Scene& scene) { SceneRe
 
 void readSceneFiles(const std::vector<std::filesystem::path>& files, Scene& scene, const SceneReadOptions& options) {
   SceneReader reader(scene, options);
-  for (const std::filesystem::path& f : files) reader.readFile(f);
+  for (const std::filesystem::path& f : files)
+    if (!isObjPath(f)) reader.readFile(f);
+  for (const std::filesystem::path& f : files)
+    if (isObjPath(f)) reader.readFile(f);
 }
 
 }  // namespace candela

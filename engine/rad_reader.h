@@ -35,6 +35,9 @@ NonplanarPolicy parseNonplanarPolicy(const std::string& name);
 struct SceneReadOptions {
   PatternPolicy patterns = PatternPolicy::kRefuse;
   NonplanarPolicy nonplanar = NonplanarPolicy::kRefuse;
+  // An obj2rad mapping file (obj2rad -m; engine/obj_reader.h) for every OBJ file read, plain or
+  // through a `mesh` with a void modifier; empty: usemtl, then group, then "white".
+  std::filesystem::path objMapping;
 };
 
 // Reads scene files, in order, into one scene: modifiers defined in one file serve the next.
@@ -46,7 +49,8 @@ class SceneReader {
   SceneReader(const SceneReader&) = delete;
   SceneReader& operator=(const SceneReader&) = delete;
 
-  // Throws InputError("file:line: ...") on any error.
+  // Throws InputError("file:line: ...") on any error. A file ending in .obj (any case) is read
+  // as Wavefront OBJ (engine/obj_reader.h) with the modifiers read so far.
   void readFile(const std::filesystem::path& path);
   // Text already in memory; `fileName` names it in messages, commands' files are resolved
   // relative to `folder`.
@@ -63,7 +67,8 @@ class SceneReader {
 void readRadianceFile(const std::filesystem::path& path, Scene& scene);
 void readRadianceText(std::string_view text, const std::string& fileName, Scene& scene);
 
-// Every file of a list, in order, through one reader.
+// Every file of a list through one reader: the Radiance files in their order, then the OBJ
+// files in theirs, so that `model.obj materials.rad` finds its materials (docs/engine.md).
 void readSceneFiles(const std::vector<std::filesystem::path>& files, Scene& scene,
                     const SceneReadOptions& options = {});
 

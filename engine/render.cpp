@@ -102,7 +102,7 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
       // A matte opaque surface seen directly: L = ρ E / π with E the sensor estimator's
       // irradiance just above it (stratified hemisphere, per-light ratio estimators), far less
       // noisy than one path. Its own stream: pixel-sample index above the camera streams.
-      const Shape& shape = tracer.scene().shapes[h.shape];
+      const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
       const Material& mat = tracer.scene().materials[shape.material];
       if (isMatteOpaque(mat)) {
         const Vec3 xh = cam.position() + h.t * *dir;
@@ -371,7 +371,7 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   const Vec3 d = glm::normalize(target - eye);
   RayHit h;
   if (!tracer.accelerator().intersect(eye, d, 0.0, 1e300, h)) return 0.0;
-  const Shape& shape = tracer.scene().shapes[h.shape];
+  const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
   const Material& mat = tracer.scene().materials[shape.material];
   if (isMatteOpaque(mat)) {
     const Vec3 x = eye + h.t * d;
@@ -406,10 +406,12 @@ Scene referenceSphereScene(const Scene& scene, const std::vector<uint32_t>& keep
   ref.vertices = scene.vertices;  // shapes index into it: kept whole
   for (std::size_t k = 0; k < keepShapes.size(); ++k) {
     const uint32_t i = keepShapes[k];
-    if (i >= scene.shapes.size()) continue;
+    if (i >= scene.surfaceCount()) continue;
     if (std::find(keepShapes.begin(), keepShapes.begin() + k, i) != keepShapes.begin() + k) continue;  // listed twice
-    ref.shapes.push_back(scene.shapes[i]);
-    ref.shapeNames.push_back(i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string());
+    // A mesh triangle is kept as a triangle Shape: under the uniform sphere a lone surface's
+    // luminance does not depend on its extent, so the triangle seen stands for its object.
+    ref.shapes.push_back(scene.surface(i));
+    ref.shapeNames.push_back(scene.surfaceName(i));
   }
   Material sphere;
   sphere.type = MaterialType::kGlow;

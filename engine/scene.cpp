@@ -1,5 +1,6 @@
 #include "engine/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace candela {
@@ -60,7 +61,47 @@ Vec3 newellNormal(const std::vector<Vec3>& pts) {
 Box Scene::bounds() const {
   Box b;
   for (const Shape& s : shapes) b.extend(shapeBounds(s, vertices));
+  for (const auto& t : mesh.triangles)
+    for (uint32_t v : t) b.extend(mesh.vertices[v]);
   return b;
+}
+
+const TriangleMesh::Run& TriangleMesh::runOf(uint32_t tri) const {
+  const auto it = std::upper_bound(runs.begin(), runs.end(), tri,
+                                   [](uint32_t t, const Run& r) { return t < r.firstTriangle; });
+  return *(it - 1);
+}
+
+size_t TriangleMesh::memoryBytes() const {
+  size_t n = vertices.capacity() * sizeof(Vec3) + triangles.capacity() * sizeof(triangles[0]) +
+             runs.capacity() * sizeof(Run) + names.capacity() * sizeof(std::string);
+  for (const std::string& s : names) n += s.capacity();
+  return n;
+}
+
+Shape Scene::surface(uint32_t id) const {
+  if (id < shapes.size()) return shapes[id];
+  const uint32_t k = id - static_cast<uint32_t>(shapes.size());
+  const auto& tri = mesh.triangles[k];
+  Shape s;
+  s.type = ShapeType::kTriangle;
+  s.material = mesh.runOf(k).material;
+  s.a = mesh.vertices[tri[0]];
+  s.b = mesh.vertices[tri[1]] - s.a;
+  s.c = mesh.vertices[tri[2]] - s.a;
+  s.n = glm::normalize(glm::cross(s.b, s.c));
+  return s;
+}
+
+uint32_t Scene::surfaceMaterial(uint32_t id) const {
+  if (id < shapes.size()) return shapes[id].material;
+  return mesh.runOf(id - static_cast<uint32_t>(shapes.size())).material;
+}
+
+const std::string& Scene::surfaceName(uint32_t id) const {
+  static const std::string kNone;
+  if (id < shapes.size()) return id < shapeNames.size() ? shapeNames[id] : kNone;
+  return mesh.names[mesh.runOf(id - static_cast<uint32_t>(shapes.size())).name];
 }
 
 uint32_t Scene::addMaterial(Material m) {

@@ -8,6 +8,7 @@
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -98,11 +99,36 @@ struct SkyDome {
   double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
 };
 
+// Triangles stored compactly (OBJ files and `mesh` primitives, engine/obj_reader.h): shared
+// vertices, three vertex indices per triangle, and runs of consecutive triangles that share a
+// material and a name (obj2rad's object name: the `o` name or the groups). No Shape and no name
+// per triangle: a triangle costs 12 bytes plus its share of the vertices (docs/engine.md).
+struct TriangleMesh {
+  struct Run {
+    uint32_t firstTriangle = 0;  // the run holds triangles [firstTriangle, next run's first)
+    uint32_t material = 0;       // index into Scene::materials
+    uint32_t name = 0;           // index into names
+  };
+  std::vector<Vec3> vertices;  // m
+  std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise seen from the front
+  std::vector<Run> runs;
+  std::vector<std::string> names;
+
+  bool empty() const { return triangles.empty(); }
+  // The run holding triangle `tri` (binary search over the runs).
+  const Run& runOf(uint32_t tri) const;
+  // Bytes held by the vectors (capacity), names included.
+  size_t memoryBytes() const;
+};
+
+// Surfaces are numbered shapes first, then mesh triangles: surface id = shapes.size() + triangle.
+// The accelerators return these ids (RayHit::shape); Scene::surface gives either as a Shape.
 struct Scene {
   std::vector<Material> materials;
   std::vector<ScenePattern> patterns;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
+  TriangleMesh mesh;
   std::vector<DistantSource> distant;
   std::vector<LuminaireSource> luminaires;  // photometric light sources (no geometry of their own)
   std::optional<SkyDome> sky;               // daylight (engine/daylight.h); none indoors
@@ -112,6 +138,22 @@ struct Scene {
   std::vector<Warning> inputWarnings;
 
   Box bounds() const;
+  uint32_t surfaceCount() const { return static_cast<uint32_t>(shapes.size() + mesh.triangles.size()); }
+  bool isMeshSurface(uint32_t id) const { return id >= shapes.size(); }
+  // Surface `id` as a Shape: a copy of shapes[id], or a mesh triangle as a kTriangle Shape
+  // (a = v0, b = v1 − v0, c = v2 − v0, n = unit b × c, its run's material).
+  Shape surface(uint32_t id) const;
+  uint32_t surfaceMaterial(uint32_t id) const;
+  const std::string& surfaceName(uint32_t id) const;
+  // intersectShape for surface `id`; a mesh triangle gives the value a kTriangle Shape of the
+  // same vertices gives, to the last bit (the same intersectTriangle on the same doubles).
+  // 6 parameters: a ray query's own (surface, ray, interval, result).
+  bool intersectSurface(uint32_t id, const Vec3& o, const Vec3& dir, double tMin, double tMax, double& t) const {
+    if (id < shapes.size()) return intersectShape(shapes[id], vertices, o, dir, tMin, tMax, t);
+    const auto& tri = mesh.triangles[id - shapes.size()];
+    const Vec3& v0 = mesh.vertices[tri[0]];
+    return intersectTriangle(v0, mesh.vertices[tri[1]] - v0, mesh.vertices[tri[2]] - v0, o, dir, tMin, tMax, t);
+  }
   // Adds a material and returns its index.
   uint32_t addMaterial(Material m);
   // Adds a polygon (≥ 3 vertices, planar; checked by the reader) or triangle; returns its index.

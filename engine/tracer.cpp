@@ -87,7 +87,7 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     RayHit h;
     if (i > 0) ++rays;
     if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
-    const Shape& s = scene_.shapes[h.shape];
+    const Shape s = scene_.surface(h.shape);  // a shape or a mesh triangle
     const Material& m = scene_.materials[s.material];
     const Vec3 x = o + h.t * dir;
     if (m.type == MaterialType::kGlass) {

@@ -27,7 +27,7 @@ if [ "${CANDELA_SKIP_FUZZ:-0}" = "1" ]; then
 fi
 seconds="${FUZZ_SECONDS:-60}"
 jobs="${FUZZ_JOBS:-2}"
-readers=(${FUZZ_READERS:-rad_reader sensor_points ies eulumdat epw case_file})
+readers=(${FUZZ_READERS:-rad_reader obj_reader sensor_points ies eulumdat epw case_file})
 unit_tests=(base_test photometry_test engine_test metrics_test reports_test study_test)
 
 # Unit tests left out under the sanitizers (docs/reliability.md says why): statistical checks
@@ -100,7 +100,7 @@ fi
 # inputs kept in tests/fuzz/<reader>/.
 seed_pattern() {
   case "$1" in
-    rad_reader) echo '*.rad' ;; sensor_points) echo '*.pts' ;; ies) echo '*.[iI][eE][sS]' ;;
+    rad_reader) echo '*.rad' ;; obj_reader) echo '*.[oO][bB][jJ]' ;; sensor_points) echo '*.pts' ;; ies) echo '*.[iI][eE][sS]' ;;
     eulumdat) echo '*.[lL][dD][tT]' ;; epw) echo '*.epw' ;; case_file) echo '*.toml' ;;
   esac
 }

@@ -562,6 +562,7 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
       c.fail(*n, e.what());
     }
   }
+  if (tab.get("obj_map")) s.scene.objMapping = filePath(tab, "obj_map", "OBJ mapping file");
   tab.finish();
 }
 

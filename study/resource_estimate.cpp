@@ -159,7 +159,11 @@ uint64_t sceneBytes(const Scene& scene) {
   // the luminaires are an item of their own (addLuminaires).
   const uint64_t shapes = scene.shapes.size() * (sizeof(Shape) + sizeof(std::string) + 150);
   const uint64_t vertices = scene.vertices.points.size() * (sizeof(Vec3) + sizeof(Vec2));
-  return kProcessBytes + shapes + vertices + scene.materials.size() * sizeof(Material);
+  // The compact mesh as held (docs/engine.md) plus its accelerator: at most 67 B per triangle
+  // and a float copy of each vertex (Embree; the octree's 58 B, docs/performance.md).
+  const uint64_t mesh = scene.mesh.memoryBytes() + scene.mesh.triangles.size() * 70 +
+                        scene.mesh.vertices.size() * 3 * sizeof(float);
+  return kProcessBytes + shapes + vertices + mesh + scene.materials.size() * sizeof(Material);
 }
 
 void addLuminaires(ResourceEstimate& e, const CaseFile& c) {

@@ -9,6 +9,7 @@ SceneReadOptions sceneReadOptions(const Settings* caseSettings, const TraceOverr
   SceneReadOptions r = caseSettings ? caseSettings->scene : SceneReadOptions{};
   if (o.patterns) r.patterns = *o.patterns;
   if (o.nonplanar) r.nonplanar = *o.nonplanar;
+  if (o.objMapping) r.objMapping = *o.objMapping;
   return r;
 }
 

@@ -22,6 +22,7 @@ struct TraceOverrides {
   // How the scene files are read ([settings] patterns, nonplanar).
   std::optional<PatternPolicy> patterns;
   std::optional<NonplanarPolicy> nonplanar;
+  std::optional<std::filesystem::path> objMapping;  // --obj-map: replaces [settings] obj_map
 };
 
 // The scene-reading options of the case's [settings] (or the defaults) with the overrides applied.

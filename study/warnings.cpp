@@ -225,7 +225,7 @@ void checkGridSpacing(const PreparedGrid& g, Warnings& out) {
 
 void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out) {
   const std::vector<SensorPoint>& pts = *set.points;
-  if (pts.empty() || tracer.scene().shapes.empty()) return;
+  if (pts.empty() || tracer.scene().surfaceCount() == 0) return;
   const RayAccelerator& accel = tracer.accelerator();
   std::size_t near = 0, firstNear = 0;
   std::vector<int> open(pts.size());

@@ -18,6 +18,14 @@ candela_cli_test(points.no_scene 0 "1,1,0.75,0,0,1,0,0" ${PTS} --error)
 candela_cli_test(points.stdin 0 "1,1,0.75,0,0,1,11218.5,0" points points/room.rad --quality draft --error)
 set_tests_properties(cli.points.stdin PROPERTIES ENVIRONMENT "STDIN_FILE=${DATA}/points/desk.pts")
 
+# The same panel as a Wavefront OBJ face listed before the file of its material (OBJ files are
+# read after the Radiance files): its usemtl lamp has half the radiance, so half the value
+# (5609.24825 lux); mapped to room.rad's material by a mapping file, room.rad's value.
+candela_cli_test(points.obj 0 "1,1,0.75,0,0,1,5609.248,0" ${PTS} points/panel.obj points/panel_materials.rad --error)
+candela_cli_test(points.obj_map 0 "1,1,0.75,0,0,1,11218.5,0"
+                 ${PTS} points/panel.obj points/panel_materials.rad --obj-map points/panel.map --error)
+candela_cli_test(points.obj_undefined 2 "panel.obj:7: modifier 'lamp' (usemtl) is not defined" ${PTS} points/panel.obj)
+
 # Bad input: exit 2, one line on stderr naming the file and line, nothing on stdout.
 candela_cli_test(points.bad_line 2 "points/bad_line.pts:3: a sensor point needs 6 numbers"
                  points points/room.rad --points points/bad_line.pts)

@@ -97,6 +97,7 @@ TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   EXPECT_EQ(c.settings.samples.value(), 256);
   EXPECT_EQ(c.settings.method.value(), Method::kPath);
   EXPECT_EQ(c.settings.threads, 2);
+  EXPECT_EQ(c.settings.scene.objMapping, (dir / "geometry" / "faces.map").lexically_normal());
   EXPECT_EQ(c.output.dir, (dir / "results").lexically_normal());
 }
 
@@ -189,6 +190,7 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"missing_scene.toml", 6, "scene file 'geometry/nowhere.rad' not found"},
                     ErrorCase{"missing_luminaire.toml", 3, "luminaire file 'no_such.ies' not found"},
                     ErrorCase{"missing_weather.toml", 3, "weather file 'no_such.epw' not found"},
+                    ErrorCase{"missing_obj_map.toml", 3, "OBJ mapping file 'no_such.map' not found"},
                     ErrorCase{"missing_points.toml", 5, "sensor points file 'no_such.pts' not found"},
                     ErrorCase{"negative_spacing.toml", 4, "'spacing' must be greater than 0"},
                     ErrorCase{"zero_area.toml", 3, "zero area"},
