@@ -1,6 +1,7 @@
 #include "study/view_study.h"
 
 #include "engine/camera.h"
+#include "base/atomic_file.h"
 #include "reports/png_writer.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"
@@ -77,6 +78,46 @@ ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResul
   return writeViewImages(dir, v.stem, img.width, img.height, img.luminance, v.rgbCdM2, img.inside, v.scale, comment);
 }
 
+namespace {
+
+// The three pictures of `render` as one set: written into a fresh temporary folder inside `dir`
+// (created exclusively, base/atomic_file.h), then each renamed into place, so a failure while
+// writing (a full disk, an encoder error) leaves the previous pictures as they were and no
+// mix of old and new; only the renames, which write nothing, follow the first replaced file.
+ViewImagePaths writeViewSet(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path staging = createTemporaryFolder(dir, v.stem);
+  ViewImagePaths staged;
+  try {
+    staged = writeViewResult(staging, v, comment);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove_all(staging, ignored);
+    throw;
+  }
+  // A folder (or anything not a file) where a picture goes would fail its rename after the
+  // others had been replaced: refused before any is.
+  for (const std::filesystem::path* f : {&staged.exr, &staged.falseColor, &staged.preview}) {
+    const std::filesystem::path target = dir / f->filename();
+    const auto st = std::filesystem::symlink_status(target);
+    if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_symlink(st)) {
+      std::error_code ignored;
+      std::filesystem::remove_all(staging, ignored);
+      throw std::runtime_error("'" + target.string() + "' exists and is not a file; the pictures were not replaced");
+    }
+  }
+  ViewImagePaths out;
+  for (auto [from, to] : {std::pair{&staged.exr, &out.exr}, std::pair{&staged.falseColor, &out.falseColor},
+                          std::pair{&staged.preview, &out.preview}}) {
+    *to = dir / from->filename();
+    std::filesystem::rename(*from, *to);
+  }
+  std::filesystem::remove(staging);
+  return out;
+}
+
+}  // namespace
+
 ViewLuminance viewLuminance(const ViewResult& v) {
   const Camera cam(v.view);
   const Image& img = v.image;
@@ -133,8 +174,8 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
   checkFinite(r.view.image.luminance, "view '" + view->name + "'");
   try {
-    r.paths = writeViewResult(outDir, r.view,
-                              "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
+    r.paths = writeViewSet(outDir, r.view,
+                           "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);
   } catch (const std::filesystem::filesystem_error& e) {
     throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the images: ") + e.what());
   } catch (const std::runtime_error& e) {

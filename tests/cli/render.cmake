@@ -19,3 +19,6 @@ candela_cli_test(render.contrast 0 ", CRF " render ${RENDER_CASE} --view door --
                  --task 2.0 2.5 0.0 --background 2.0 3.0 0.3)
 candela_cli_test(render.contrast_same_material 2 "task and background look alike under the reference sphere"
                  render ${RENDER_CASE} --view door --out ${RENDER_OUT} --task 2.0 2.0 0.0 --background 2.0 2.5 0.0)
+# The three pictures are one set: a render that cannot replace one of them replaces none.
+add_test(NAME cli.render.keeps_previous_set COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/render_keeps_set.sh
+         $<TARGET_FILE:candela> ${RENDER_CASE} door)
