@@ -38,11 +38,10 @@ Vec3 pointOnTriangles(const std::vector<std::array<Vec3, 3>>& tris, const std::v
 }
 
 // A uniformly sampled point y (front normal ny) of a source of the given area and radiance, seen
-// from p: direction, distance and weight L f cos θ_l A / d² (f the distribution's factor, 1
-// without one); false behind the one-sided source.
-// 7 parameters: the sample's geometry and the source's three properties.
-bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radiance, double areaM2,
-                const SourceDistribution* distribution, LightSample& out) {
+// from p: direction, distance and weight L f s cos θ_l A / d² (f the distribution's factor, s the
+// spotlight's, 1 without them); false behind the one-sided source.
+bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Light& light, double areaM2,
+                LightSample& out) {
   const Vec3 e = y - p;
   const double dist2 = glm::dot(e, e);
   if (dist2 <= 0.0) return false;
@@ -51,8 +50,9 @@ bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Rgb& radianc
   out.distance = dist;
   const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
   if (cosL <= 0.0) return false;
-  out.weight = radiance * (cosL * areaM2 / dist2);
-  if (distribution) out.weight *= distribution->factor(out.dir, cosL);
+  out.weight = light.radiance * (cosL * areaM2 / dist2);
+  if (light.distribution) out.weight *= light.distribution->factor(out.dir, cosL);
+  if (light.spot) out.weight *= light.spot->spotFactor(-out.dir, dist);
   return true;
 }
 
@@ -112,6 +112,7 @@ std::vector<Light> collectLights(const Scene& scene) {
     l.radiance = m.color;
     l.areaM2 = shapeArea(s, scene.vertices);
     l.distribution = sourceDistributionOf(scene, m);
+    if (m.spot) l.spot = &m;
     if (l.distribution && !l.distribution->emits()) continue;
     if (s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon) {
       if (s.type == ShapeType::kTriangle) {
@@ -217,6 +218,7 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
         const Vec3 ny = (p + out.distance * dir - s.a) / s.r0;
         out.weight *= light.distribution->factor(dir, -glm::dot(dir, ny));
       }
+      if (light.spot) out.weight *= light.spot->spotFactor(-dir, out.distance);
       return true;
     }
     case ShapeType::kRing: {
@@ -243,7 +245,7 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       break;
     }
   }
-  return areaSample(y, ny, p, light.radiance, light.areaM2, light.distribution, out);
+  return areaSample(y, ny, p, light, light.areaM2, out);
 }
 
 double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
@@ -276,7 +278,7 @@ bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3,
   size_t k;
   const Vec3 y = pointOnTriangles(tris, cumulative, u1, u2, k);
   // The clipped part lies in the source's plane and p in front of it (unoccludedIrradiance).
-  return areaSample(y, light.normal, p, light.radiance, area, light.distribution, out);
+  return areaSample(y, light.normal, p, light, area, out);
 }
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
@@ -299,7 +301,7 @@ bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p,
     return true;
   }
   // A distribution varies the radiance over the source: no closed form; the samples estimate it.
-  if (light.distribution) return false;
+  if (light.distribution || light.spot) return false;
   const Shape& s = scene.shapes[light.shape];
   if (s.type == ShapeType::kSphere) {
     const Vec3 toC = s.a - p;

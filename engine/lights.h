@@ -27,6 +27,8 @@ struct Light {
   // Area: the source distribution modulating the radiance by direction (ies2rad luminaires;
   // owned by the scene), or none.
   const SourceDistribution* distribution = nullptr;
+  // Area: the spotlight material (its cone and focal distance; owned by the scene), or none.
+  const Material* spot = nullptr;
 };
 
 // The explicitly sampled lights of a scene.

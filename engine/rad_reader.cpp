@@ -25,7 +25,7 @@ constexpr int kMaxIncludeDepth = 32;
 
 constexpr const char* kSupported =
     "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source, mesh (of an OBJ file); "
-    "plastic, metal, trans, mirror, glass, dielectric, light, illum, glow; alias; patterns: see docs/engine.md";
+    "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow; alias; patterns: see docs/engine.md";
 
 using Primitive = RadPrimitive;
 }  // namespace
@@ -322,7 +322,21 @@ class SceneReader::Builder {
       case MaterialType::kIllum:
       case MaterialType::kLight:
         expectStrings(p, type == MaterialType::kLight ? 0 : 1);
-        expectReals(p, 3);
+        if (p.type == "spotlight") {
+          // `mod spotlight id 0 0 7 red green blue angle xdir ydir zdir` (Radiance reference manual)
+          expectReals(p, 7);
+          if (!(p.reals[3] > 0.0 && p.reals[3] <= 360.0))
+            fail(p, "spotlight '" + p.name + "' needs a cone angle in (0, 360] degrees");
+          const Vec3 aim = vec(p, 4);
+          const double focal = glm::length(aim);
+          if (!(focal > 0.0)) fail(p, "spotlight '" + p.name + "' has a zero direction");
+          m.spot = true;
+          m.spotCosHalf = std::cos(p.reals[3] * kPi / 360.0);
+          m.spotAim = aim / focal;
+          m.spotFocalM = focal;
+        } else {
+          expectReals(p, 3);
+        }
         m.color = vec(p, 0);
         if (!p.strings.empty() && p.strings[0] != "void") {
           const auto it = materials_.find(p.strings[0]);
@@ -477,7 +491,7 @@ class SceneReader::Builder {
     if (t == "mirror") return addMaterial(p, MaterialType::kMirror);
     if (t == "glass") return addMaterial(p, MaterialType::kGlass);
     if (t == "dielectric") return addMaterial(p, MaterialType::kDielectric);
-    if (t == "light") return addMaterial(p, MaterialType::kLight);
+    if (t == "light" || t == "spotlight") return addMaterial(p, MaterialType::kLight);
     if (t == "illum") return addMaterial(p, MaterialType::kIllum);
     if (t == "glow") return addMaterial(p, MaterialType::kGlow);
     if (t == "alias") return addAlias(p);
@@ -502,6 +516,8 @@ class SceneReader::Builder {
       const MaterialType mt = scene_.materials[mod].type;
       if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
         fail(p, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
+      if (scene_.materials[mod].spot)
+        fail(p, "source '" + p.name + "': a spotlight as a distant source is not supported (use light)");
       if (sourceDistributionOf(scene_, scene_.materials[mod]))
         fail(p, "source '" + p.name + "': its modifier has a source.cal distribution, which candela applies to "
                     "light surfaces only, not to sources at infinity");

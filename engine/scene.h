@@ -38,6 +38,14 @@ struct Material {
   double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
   double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
   int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
+  // spotlight (a `light` with a cone, Radiance reference manual "Spotlight"): light leaves only
+  // within spotCosHalf of spotAim (unit); the aim's length as given is the focal distance behind
+  // the source, which scales the direct light at distance d by d²/(d + focal)² (Radiance
+  // src/rt/source.c). spot false: an ordinary light.
+  bool spot = false;
+  double spotCosHalf = -1.0;
+  Vec3 spotAim{0.0, 0.0, -1.0};
+  double spotFocalM = 0.0;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):
@@ -45,6 +53,18 @@ struct Material {
   Rgb diffuseTransmittance{0.0};
   Rgb specularTransmittance{0.0};
   Rgb specularReflectance{0.0};
+
+  // The spotlight's factor for light leaving towards unit direction `out` to a receiver at
+  // distance d (1 for other materials): 0 outside the cone, d²/(d + focal)² inside.
+  double spotFactor(const Vec3& out, double d) const {
+    if (!spot) return 1.0;
+    if (glm::dot(spotAim, out) < spotCosHalf) return 0.0;
+    const double r = d / (d + spotFocalM);
+    return r * r;
+  }
+  // Whether light leaves towards `out` at all (rays that meet the source see its radiance inside
+  // the cone, black outside, as Radiance's srcvalue).
+  bool emitsTowards(const Vec3& out) const { return !spot || glm::dot(spotAim, out) >= spotCosHalf; }
 
   bool isEmitter() const {
     return type == MaterialType::kLight || type == MaterialType::kIllum || type == MaterialType::kGlow;

@@ -108,6 +108,7 @@ const SourceDistribution* sourceDistributionOf(const Scene& scene, const Materia
 }
 
 Rgb emittedRadiance(const Scene& scene, const Material& m, const Vec3& rayDir, double cosEmit) {
+  if (!m.emitsTowards(-rayDir)) return Rgb(0.0);
   const SourceDistribution* s = sourceDistributionOf(scene, m);
   return s ? m.color * s->factor(rayDir, cosEmit) : m.color;
 }
