@@ -452,7 +452,28 @@ class SceneReader::Builder {
         fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
       return addTriangulated(p, pts, n, mat, target, msg.str());
     }
+    checkSpotAim(p, mat, n);
     target.addPolygon(pts, mat, p.name);
+  }
+
+  // A spotlight on a flat surface whose cone lies wholly behind the surface's front (the angle
+  // from the front normal to the aim at least 90° + the half angle) sends no light at all, here
+  // as in Radiance (a light emits from its front only): valid, but surely not meant, so a
+  // warning (Radiance's own check, srcsupp.c checkspot, is another formula that lets an aim
+  // straight back pass).
+  void checkSpotAim(const Primitive& p, uint32_t mat, const Vec3& frontNormal) {
+    if (mat >= scene_.materials.size()) return;
+    const Material& m = scene_.materials[mat];
+    if (!m.spot || m.spotCosHalf <= 0.0) return;  // a cone of 180° or more always reaches out
+    const double d = glm::dot(m.spotAim, frontNormal);
+    const double sinHalf = std::sqrt(std::max(0.0, 1.0 - m.spotCosHalf * m.spotCosHalf));
+    if (d > -sinHalf) return;
+    scene_.inputWarnings.push_back(Warning{
+        "spotlight_behind_surface",
+        p.type + " '" + p.name + "' uses the spotlight '" + m.name +
+            "', whose cone lies wholly behind the surface's front: it sends no light (check the spotlight's "
+            "direction and the surface's orientation)",
+        p.loc});
   }
 
   // A non-planar polygon as the triangles of its outline seen along its Newell normal (ear
@@ -557,6 +578,7 @@ class SceneReader::Builder {
       if (!(p.reals[7] > p.reals[6]))
         fail(p, "ring '" + p.name + "' needs an outer radius larger than its inner radius");
       if (glm::length(vec(p, 3)) == 0.0) fail(p, "ring '" + p.name + "' has a zero normal");
+      checkSpotAim(p, mat, glm::normalize(vec(p, 3)));
       target.addRing(vec(p, 0), vec(p, 3), p.reals[6], p.reals[7], mat, p.name);
     } else {
       const bool isCone = t == "cone" || t == "cup";

@@ -86,6 +86,30 @@ TEST(Spotlight, BadArgumentsNameTheLine) {
   }
 }
 
+// A spotlight whose cone lies wholly behind its surface's front sends nothing: read, with a
+// warning at the surface's line. A cone that reaches past the horizon is not warned of.
+TEST(Spotlight, AConeWhollyBehindItsSurfaceIsWarnedOf) {
+  auto warnings = [](const std::string& text) {
+    Scene sc;
+    readRadianceText(text, "spot.rad", sc);
+    EXPECT_EQ(sc.shapes.size(), 1u);
+    return sc.inputWarnings;
+  };
+  // Aimed down, 40° cone, on a disk and a polygon facing up.
+  const auto ring = warnings("void spotlight s\n0\n0\n7 1 1 1 40 0 0 -1\n\ns ring r\n0\n0\n8 0 0 0 0 0 1 0 .1\n");
+  ASSERT_EQ(ring.size(), 1u);
+  EXPECT_EQ(ring[0].code, "spotlight_behind_surface");
+  EXPECT_EQ(ring[0].loc.line, 6);
+  const auto polygon = warnings("void spotlight s\n0\n0\n7 1 1 1 40 0 0 -1\ns polygon q\n0\n0\n9 0 0 0 1 0 0 0 1 0\n");
+  ASSERT_EQ(polygon.size(), 1u);
+  EXPECT_EQ(polygon[0].loc.line, 5);
+  // Aimed 60° below the surface's plane with a 160° cone: 20° of it rises above the plane.
+  EXPECT_TRUE(warnings("void spotlight s\n0\n0\n7 1 1 1 160 0.5 0 -0.8660254\ns ring r\n0\n0\n8 0 0 0 0 0 1 0 .1\n")
+                  .empty());
+  // Aimed along the front: nothing to say.
+  EXPECT_TRUE(warnings("void spotlight s\n0\n0\n7 1 1 1 40 0 0 1\ns ring r\n0\n0\n8 0 0 0 0 0 1 0 .1\n").empty());
+}
+
 // xform turns the aim with the scene and scales the focal distance (xform.c multiplies the
 // direction by the whole transform): -ry 90 takes (0, 0, −2) to (−2, 0, 0), -s 2 to (−4, 0, 0).
 TEST(Spotlight, XformTurnsTheAimAndScalesTheFocalDistance) {
