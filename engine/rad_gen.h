@@ -13,6 +13,15 @@ std::vector<RadPrimitive> expandGenprism(const RadCommand& cmd, const RadExpandC
 std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext& ctx);   // rad_gen_sky.cpp
 std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext& ctx); // rad_gen_sky.cpp
 
+// A primitive as a generator writes it (no integer arguments).
+// 6 parameters: a primitive's own fields.
+RadPrimitive generatedPrimitive(const std::string& modifier, const std::string& type, const std::string& name,
+                                const FileLoc& loc, std::vector<std::string> strings, std::vector<double> reals);
+
+// Whether a file a command names may exist: true also when the system cannot look the name up
+// (too long, no permission), so that the reader, not a filesystem_error, says what is wrong.
+bool mayExist(const std::filesystem::path& p);
+
 // Refused above this many primitives from one command (about 300 bytes each once read).
 inline constexpr double kMaxGeneratedPrimitives = 1e7;
 

@@ -38,13 +38,7 @@ struct GenBox {
   }
 
   RadPrimitive primitive(const char* type, const std::string& suffix, std::vector<double> reals) const {
-    RadPrimitive p;
-    p.modifier = mat;
-    p.type = type;
-    p.name = name + "." + suffix;
-    p.loc = loc;
-    p.reals = std::move(reals);
-    return p;
+    return generatedPrimitive(mat, type, name + "." + suffix, loc, {}, std::move(reals));
   }
 
   static void append(std::vector<double>& r, const Vec3& p) { r.insert(r.end(), {p.x, p.y, p.z}); }

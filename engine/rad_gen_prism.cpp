@@ -16,12 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Without throwing on a name the system cannot look up (too long, no permission): the reader
-// then says what is wrong with it.
-bool mayExist(const fs::path& p) {
-  std::error_code ec;
-  return fs::exists(p, ec) || ec;
-}
 
 constexpr size_t kMaxVertices = 1024;  // genprism.c's MAXVERT
 constexpr double kTiny = 1e-6;         // genprism.c's FTINY
@@ -80,13 +74,7 @@ struct Prism {
   std::vector<double> a;  // corner trims, signed by the turn
 
   RadPrimitive primitive(const char* type, const std::string& suffix, std::vector<double> reals) const {
-    RadPrimitive p;
-    p.modifier = mat;
-    p.type = type;
-    p.name = name + "." + suffix;
-    p.loc = loc;
-    p.reals = std::move(reals);
-    return p;
+    return generatedPrimitive(mat, type, name + "." + suffix, loc, {}, std::move(reals));
   }
 
   // Where the rounded outline passes near vertex i: inside the corner by the radius.

@@ -221,22 +221,10 @@ Vec3 sunVector(double altitudeRad, double azimuthRad) {
               std::sin(altitudeRad));
 }
 
-RadPrimitive primitive(const std::string& modifier, const std::string& type, const std::string& name,
-                       const FileLoc& loc, std::vector<std::string> strings, std::vector<double> reals) {
-  RadPrimitive p;
-  p.modifier = modifier;
-  p.type = type;
-  p.name = name;
-  p.loc = loc;
-  p.strings = std::move(strings);
-  p.reals = std::move(reals);
-  return p;
-}
-
 // `void light solar` and `solar source sun` as both programs write them.
 void addSun(std::vector<RadPrimitive>& out, const FileLoc& loc, double radiance, const Vec3& dir, double angleDeg) {
-  out.push_back(primitive("void", "light", "solar", loc, {}, {radiance, radiance, radiance}));
-  out.push_back(primitive("solar", "source", "sun", loc, {}, {dir.x, dir.y, dir.z, angleDeg}));
+  out.push_back(generatedPrimitive("void", "light", "solar", loc, {}, {radiance, radiance, radiance}));
+  out.push_back(generatedPrimitive("solar", "source", "sun", loc, {}, {dir.x, dir.y, dir.z, angleDeg}));
 }
 
 // Sky-dependent normalisation polynomial E0 F2 / L0 of both programs (gensky.c, normsc), for the
@@ -385,7 +373,7 @@ std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandCon
   if (withSun) addSun(out, cmd.loc, solar, sun, 0.5);
   std::vector<double> args = {static_cast<double>(o.sky), zenith, ground};
   if (!overcast) args.insert(args.end(), {f2, sun.x, sun.y, sun.z});
-  out.push_back(primitive("void", "brightfunc", "skyfunc", cmd.loc, {"skybr", "skybright.cal"}, args));
+  out.push_back(generatedPrimitive("void", "brightfunc", "skyfunc", cmd.loc, {"skybr", "skybright.cal"}, args));
   return out;
 }
 
@@ -634,7 +622,7 @@ void resolveInputs(Daylit& d, const DaylitOptions& o) {
 }
 
 std::vector<RadPrimitive> errorSky(const FileLoc& loc, const Vec3& sun) {
-  return {primitive("void", "brightfunc", "skyfunc", loc, {"skybright", "perezlum.cal"},
+  return {generatedPrimitive("void", "brightfunc", "skyfunc", loc, {"skybright", "perezlum.cal"},
                     {0, 0, 0, 0, 0, 0, 0, sun.x, sun.y, sun.z})};
 }
 
@@ -698,7 +686,7 @@ std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpand
 
     std::vector<RadPrimitive> out;
     if (o.sun) addSun(out, cmd.loc, d.epsilon > 1.0 ? solar : 0.0, sun, 2.0 * kHalfSunDeg);
-    out.push_back(primitive("void", "brightfunc", "skyfunc", cmd.loc, {"skybright", "perezlum.cal"},
+    out.push_back(generatedPrimitive("void", "brightfunc", "skyfunc", cmd.loc, {"skybright", "perezlum.cal"},
                             {diffNorm, ground, k.a, k.b, k.c, k.d, k.e, sun.x, sun.y, sun.z}));
     return out;
   } catch (const ErrorSky&) {

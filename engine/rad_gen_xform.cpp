@@ -19,12 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Without throwing on a name the system cannot look up (too long, no permission): the reader
-// then says what is wrong with it.
-bool mayExist(const fs::path& p) {
-  std::error_code ec;
-  return fs::exists(p, ec) || ec;
-}
 
 // Argument files naming argument files: refused this deep (a file naming itself).
 constexpr int kMaxArgFileDepth = 32;

@@ -30,6 +30,23 @@ std::string programName(const std::string& word) {
 
 }  // namespace
 
+RadPrimitive generatedPrimitive(const std::string& modifier, const std::string& type, const std::string& name,
+                                const FileLoc& loc, std::vector<std::string> strings, std::vector<double> reals) {
+  RadPrimitive p;
+  p.modifier = modifier;
+  p.type = type;
+  p.name = name;
+  p.loc = loc;
+  p.strings = std::move(strings);
+  p.reals = std::move(reals);
+  return p;
+}
+
+bool mayExist(const std::filesystem::path& p) {
+  std::error_code ec;
+  return std::filesystem::exists(p, ec) || ec;
+}
+
 const std::vector<std::string>& radGeneratorNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
