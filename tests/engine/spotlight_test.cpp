@@ -8,6 +8,7 @@
 #include "engine/rad_reader.h"
 #include "engine/source_distribution.h"
 #include "engine/tracer.h"
+#include "tests/support/direct_only.h"
 
 #include <gtest/gtest.h>
 
@@ -21,15 +22,6 @@ namespace {
 const char* kSpot =
     "void spotlight spot\n0\n0\n7 1000 1000 1000 60 0 0 -2\n"
     "spot ring disk\n0\n0\n8 0 0 0  0 0 -1  0 .02\n";
-
-TraceSettings directOnly() {
-  TraceSettings s;
-  s.lightSamples = 256;
-  s.hemisphereSamples = 16;
-  s.maxBounces = 0;
-  s.adaptiveFraction = 0.0;
-  return s;
-}
 
 TEST(Spotlight, ReadsTheConeAndTheFocalDistance) {
   Scene sc;
@@ -63,7 +55,7 @@ TEST(Spotlight, IlluminanceInsideTheConeFollowsTheFocalLawAndIsZeroOutside) {
       const double ratio = d / (d + focal);
       const double expected =
           inside * kLumensPerWatt * radiance * kPi * r * r * std::cos(t) / (d * d) * ratio * ratio;
-      const IrradianceEstimate e = tracer.irradiance(p, n, index++, directOnly());
+      const IrradianceEstimate e = tracer.irradiance(p, n, index++, test_support::directOnlySettings(256));
       EXPECT_NEAR(e.illuminanceLux(), expected, 4.0 * e.standardErrorLux() + (r / d) * (r / d) * expected)
           << "d " << d << " θ " << thetaDeg;
     }
