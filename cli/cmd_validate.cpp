@@ -1,6 +1,8 @@
 // candela validate [--quick] [--out DIR]: runs the validation cases at the default (or given)
 // quality and prints case, reference, result, errors, tolerance, verdict and wall time; writes
-// validation.csv and validation.html. Exit code 1 when any case fails.
+// validation.csv and validation.html into DIR (default validation-results/, never the current
+// folder itself). Exit code 1 when any case fails; 2 when DIR cannot be a folder, found before
+// any case runs.
 #include "cli/case_options.h"
 #include "cli/commands.h"
 
@@ -19,7 +21,7 @@ namespace {
 
 struct ValidateOptions {
   bool quick = false;
-  std::string out = ".";
+  std::string out = "validation-results";
   std::string quality = "normal";
   int threads = 0;
   uint64_t seed = 1;
@@ -27,10 +29,11 @@ struct ValidateOptions {
 };
 
 int runValidate(const ValidateOptions& o) {
+  // A folder that cannot be made is reported before minutes of tracing, not after.
+  validation::prepareOutputFolder(o.out);
   if (o.chart) {
     // The speed–accuracy study (docs/accuracy.md): CSV and SVG chart in --out.
     const auto rows = validation::runSpeedAccuracy(o.threads, o.quick);
-    std::filesystem::create_directories(o.out);
     writeFileAtomic(std::filesystem::path(o.out) / "speed_accuracy.csv", validation::speedAccuracyCsv(rows));
     writeFileAtomic(std::filesystem::path(o.out) / "speed_accuracy.svg", validation::speedAccuracySvg(rows));
     std::cout << validation::speedAccuracyCsv(rows) << std::flush;
@@ -52,7 +55,7 @@ void addValidateCommand(CLI::App& app, Action& action) {
   auto opts = std::make_shared<ValidateOptions>();
   CLI::App* cmd = app.add_subcommand("validate", "validation cases against closed forms, with errors and times");
   cmd->add_flag("--quick", opts->quick, "only the quick subset (run by CI)");
-  cmd->add_option("--out", opts->out, "directory for validation.csv (default: current directory)");
+  cmd->add_option("--out", opts->out, "folder for validation.csv and validation.html (default validation-results)");
   cmd->add_option("--quality", opts->quality, "draft | normal | high (default normal)")
       ->check(parsedBy(parseQuality, "QUALITY"));
   cmd->add_option("--threads", opts->threads, "threads, 0 = all cores")->check(CLI::NonNegativeNumber);

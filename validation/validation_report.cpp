@@ -54,14 +54,18 @@ std::string validationCsv(const std::vector<CaseResult>& results) {
   return csv.str();
 }
 
-void writeValidationOutputs(const std::filesystem::path& dir, const std::vector<CaseResult>& results,
-                            const std::string& quality, uint64_t seed) {
+void prepareOutputFolder(const std::filesystem::path& dir) {
   // An --out that is not a folder (a file, a device) is the user's to fix: exit 2, not 1.
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw InputError(FileLoc{dir.string(), 0, 0}, "the output folder cannot be created (" +
                                                       (ec ? ec.message() : std::string("not a folder")) + ")");
+}
+
+void writeValidationOutputs(const std::filesystem::path& dir, const std::vector<CaseResult>& results,
+                            const std::string& quality, uint64_t seed) {
+  prepareOutputFolder(dir);
   writeFileAtomic(dir / "validation.csv", validationCsv(results));
   ValidationPage page;
   page.quality = quality;

@@ -17,6 +17,9 @@ std::string validationTable(const std::vector<CaseResult>& results);
 // validation.csv: one row per point.
 std::string validationCsv(const std::vector<CaseResult>& results);
 
+// Creates `dir` (and its parents) if needed; InputError (exit 2) when it cannot be a folder.
+void prepareOutputFolder(const std::filesystem::path& dir);
+
 // Writes validation.csv and validation.html into `dir` (created if needed), each atomically. The
 // page embeds the speed–accuracy chart when `candela validate --chart` has left one in `dir`.
 void writeValidationOutputs(const std::filesystem::path& dir, const std::vector<CaseResult>& results,
