@@ -118,6 +118,7 @@ Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse
   next.skip = v.flatSkip;
   next.countSources = true;
   next.diffuse = diffuse + 1;
+  next.lighting = true;
   return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
@@ -174,6 +175,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   PathState bounce;  // a diffuse continuation: cosine-sampled, sources sampled here
   bounce.skip = v.flatSkip;
   bounce.diffuse = st.diffuse + 1;
+  bounce.lighting = true;
   Rgb acc(0.0);
   for (int j = 0; j < k; ++j) {
     const Vec2 u12 = strata.sample(j, ctx.rng);
@@ -182,11 +184,13 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
       const TallyFactor tf(ctx.tally, rho * (norm / pRho / k));
       bounce.misCosPdf = glm::dot(dir, nf) * kInvPi;
+      bounce.litPoint = xf;
       acc += rho * (norm / pRho) * pathRadiance(ctx, xf, dir, bounce);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
       const TallyFactor tf(ctx.tally, tauD * (norm / pTd / k));
       bounce.misCosPdf = -glm::dot(dir, nf) * kInvPi;
+      bounce.litPoint = xb;
       acc += tauD * (norm / pTd) * pathRadiance(ctx, xb, dir, bounce);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
@@ -210,6 +214,18 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
 Rgb emitted(const Scene& scene, const Material& m, const Hit& v) {
   if (m.pattern < 0) return m.color;
   return emittedRadiance(scene, m, v.inDir, -glm::dot(v.inDir, v.nf));
+}
+
+// Whether a ray in state st counts the glow `shape` it met. A glow of negative radius lights
+// nothing (only eyes see it); a glow sampled from the ray's litPoint is counted by that sample
+// instead — unless a flat mirror was met since (glows are not sampled in mirrors,
+// integrator_direct.cpp) or sources count anyway (after specular reflection, camera rays).
+bool countsGlow(const TraceContext& ctx, const Material& m, uint32_t shape, const PathState& st) {
+  if (m.glowRadiusM < 0.0) return !st.lighting;
+  if (st.countSources || st.mirrorsMet != 0) return true;
+  const SampledSources& src = ctx.tracer.sources();
+  if (shape >= src.glowLight.size() || src.glowLight[shape] < 0) return true;
+  return !glowSampledFrom(src.lights[src.glowLight[shape]], st.litPoint, ctx.smallSin2);
 }
 
 }  // namespace
@@ -252,7 +268,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       case MaterialType::kIllum:
         return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kGlow:
-        return v.front ? result + ray.beta * emitted(scene, *m, v) : result;
+        return v.front && countsGlow(ctx, *m, h.shape, st) ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kVoid:
         return result;
       case MaterialType::kMirror:

@@ -23,17 +23,20 @@ namespace candela {
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
 
 // `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray; `cdf` is
-// the caller's scratch (TraceContext), reused from call to call.
-// 8 parameters: the scene and point, the sample count and stream, the scratch and the visibility
-// test are separate inputs of one estimate.
+// the caller's scratch (TraceContext), reused from call to call. A glow not sampled from p
+// (glowSampledFrom with smallSin2, TraceContext::smallSin2) gets no probability.
+// 9 parameters: the scene and point, the sample count and stream, the scratch, the visibility
+// test and the small-emitter bound are separate inputs of one estimate.
 template <class Visibility>
 Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scene, const Vec3& p, const Vec3& n,
-                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility) {
+                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility,
+                             double smallSin2 = 0.0) {
   const size_t count = lights.size();
   if (count == 0) return Rgb(0.0);
   cdf.resize(count);
   double total = 0.0;
-  for (size_t l = 0; l < count; ++l) total += cdf[l] = lightImportance(lights[l], scene, p, n);
+  for (size_t l = 0; l < count; ++l)
+    total += cdf[l] = glowSampledFrom(lights[l], p, smallSin2) ? lightImportance(lights[l], scene, p, n) : 0.0;
   if (total <= 0.0) return Rgb(0.0);
   double acc = 0.0;
   const double floor = 0.1 / static_cast<double>(count);

@@ -28,7 +28,7 @@ struct LightScratch {
 
 struct TraceContext {
   TraceContext(const Tracer& t, const TraceSettings& s, Rng& r, SkyTally* observer = nullptr)
-      : tracer(t), settings(s), rng(r), tally(observer) {}
+      : tracer(t), settings(s), rng(r), tally(observer), smallSin2(smallEmitterSin2(s.hemisphereSamples)) {}
   // The call ends: its rays join the tracer's total (Tracer::raysTraced).
   ~TraceContext() { tracer.addRays(rays); }
   TraceContext(const TraceContext&) = delete;
@@ -49,6 +49,8 @@ struct TraceContext {
   Rng& rng;          // the stream paths and light samples draw from
   SkyTally* tally;   // daylight-coefficient observer (engine/sky_tally.h), or none
   uint64_t rays = 0;  // rays cast by this call so far
+  // The small-emitter bound of this call's settings (lights.h: glowSampledFrom), computed once.
+  const double smallSin2;
   LightScratch light;
 };
 
