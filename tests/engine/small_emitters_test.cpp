@@ -235,6 +235,22 @@ TEST(SmallEmitters, SmallEmitterRuleChangingAlongAPathCountsTheBulbOnce) {
   }
 }
 
+TEST(SmallEmitters, SameNumbersForAnyThreadCount) {
+  // The rule is a function of the point alone: sampling a glow or not never depends on threads.
+  for (Method m : {Method::kPath, Method::kCache}) {
+    const Scene sc = floorWith(true, 0.0);
+    const Tracer tracer(sc);
+    TraceSettings s = settingsForQuality(Quality::kDraft);
+    s.method = m;
+    const auto one = computeIrradiance(tracer, floorSensors(), s, 1);
+    const auto two = computeIrradiance(tracer, floorSensors(), s, 2);
+    for (size_t i = 0; i < one.size(); ++i) {
+      EXPECT_EQ(one[i].illuminanceLux(), two[i].illuminanceLux()) << i;
+      EXPECT_EQ(one[i].standardErrorLux(), two[i].standardErrorLux()) << i;
+    }
+  }
+}
+
 TEST(SmallEmitters, NegativeRadiusLightsNothingButIsSeen) {
   // Radiance's ray.1: "If maxrad is negative, then the surface will never contribute to scene
   // illumination." A sensor under it gets nothing; an eye ray sees its radiance.
