@@ -215,7 +215,7 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf,
                                      [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
                                        return ctx.transmittance(o, dir, tMax, at.skip, lightShape);
-                                     }, ctx.smallSin2);
+                                     }, ctx.smallSin2, ctx.light.useGlowShare ? ctx.light.glowShare.data() : nullptr);
   }
   for (const Light& light : lights) {
     if (atPathVertex) break;

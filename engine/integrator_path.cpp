@@ -130,8 +130,25 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
   cache.scratch.weights.clear();
   if (!cache.cache->interpolate(v.x, v.nf, e, &cache.scratch, v.shape, &ctx.rays)) return std::nullopt;
   const Vec3 xf = v.x + v.off * v.nf;
+  // A record's hemisphere left out the glows sampled from the record's point: the lookup samples
+  // each glow with the weight of those records, so that none is lost or counted twice where the
+  // records lie on both sides of its rule (docs/estimator.md#small-emitters).
+  const SampledSources& src = ctx.tracer.sources();
+  if (!src.glowLight.empty()) {
+    LightScratch& sc = ctx.light;
+    sc.glowShare.assign(src.lights.size(), 0.0);
+    for (size_t l = 0; l < src.lights.size(); ++l) {
+      if (!src.lights[l].glow) continue;
+      for (const auto& [i, w] : cache.scratch.weights) {
+        const IrradianceRecord& r = cache.cache->record(i);
+        if (glowSampledFrom(src.lights[l], r.p + Tracer::originOffset(r.p) * r.n, ctx.smallSin2)) sc.glowShare[l] += w;
+      }
+    }
+    sc.useGlowShare = true;
+  }
   const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
                                       nullptr, 1.0);
+  ctx.light.useGlowShare = false;
   const Rgb f = beta * m.diffuseReflectance * kInvPi;
   const double fy = photopic(f);
   for (const auto& [i, w] : cache.scratch.weights) {

@@ -24,6 +24,11 @@ struct LightScratch {
   std::vector<double> cumulative;         // the triangles' cumulative areas
   std::vector<double> zRatio, zRest, fyS, vyS;  // per-stratum terms of the variance
   std::vector<double> cdf;                // light selection at path vertices (light_selection.h)
+  // At a cache lookup: per light, the interpolation weight of the records that left that glow
+  // out (sampled from them), which the lookup's direct light then carries instead of the rule at
+  // its own point (engine/integrator_path.cpp, cachedVertex); used while useGlowShare is set.
+  std::vector<double> glowShare;
+  bool useGlowShare = false;
 };
 
 struct TraceContext {

@@ -214,12 +214,15 @@ TEST(SmallEmitters, RadiusRuleChangingAlongAPathCountsTheGlowOnce) {
     expectAgree(always[i], never[i], "disk, path: always against never", i);
     expectAgree(mixed[i], never[i], "disk, path: radius 1 m against never", i);
   }
-  // The cache method, the glow sampled everywhere or nowhere.
+  // The cache method, the glow sampled everywhere or nowhere, and from part of the floor: a
+  // lookup samples the glow with the weight of the records that left it out (cachedVertex).
   const auto cacheNever = floorRun(floorWith(false, 0.0), Method::kCache, 4);
   const auto cacheAlways = floorRun(floorWith(false, 100.0), Method::kCache, 5);
+  const auto cacheMixed = floorRun(floorWith(false, 1.0), Method::kCache, 6);
   for (size_t i = 0; i < never.size(); ++i) {
     expectAgree(cacheAlways[i], cacheNever[i], "disk, cache: always against never", i);
     expectAgree(cacheAlways[i], always[i], "disk: cache against path", i);
+    expectAgree(cacheMixed[i], always[i], "disk: cache radius 1 m against path always", i);
   }
 }
 
