@@ -174,6 +174,10 @@ void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, c
     st.skip = r.skip;
     st.diffuse = level;
     st.misCosPdf = h.local[c].z * kInvPi;
+    // Glows that a lookup samples from here are left out (glowSampledFrom at o; a lookup at
+    // x samples by its own x: see docs/estimator.md#small-emitters).
+    st.litPoint = o;
+    st.lighting = true;
     h.radiance[c] = pathRadiance(ctx, o, dir, st, deeper ? &use : nullptr, &h.distanceM[c]);
   }
   setRecordValue(r, h, frame);

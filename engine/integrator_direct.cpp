@@ -137,7 +137,8 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     const Vec3 side = dp > 0.0 ? nm : -nm;
     const Receiver image{pi, ni, skip};
     for (const Light& light : ctx.tracer.sources().lights) {
-      if (light.kind == Light::Kind::kArea && light.shape == ms) continue;
+      // Glows are not sampled in mirrors: paths count them there (pathRadiance).
+      if (light.glow || (light.kind == Light::Kind::kArea && light.shape == ms)) continue;
       total += colour * lightEstimate(ctx, light, image, k, variance, [&](const LightSample& ls, uint32_t lightShape) {
         const Vec3 dir = ls.dir - 2.0 * glm::dot(ls.dir, nm) * nm;
         // Both legs pass transmitting surfaces (glass, trans, illum without alternate) as shadow
@@ -214,10 +215,11 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf,
                                      [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
                                        return ctx.transmittance(o, dir, tMax, at.skip, lightShape);
-                                     });
+                                     }, ctx.smallSin2, ctx.light.useGlowShare ? ctx.light.glowShare.data() : nullptr);
   }
   for (const Light& light : lights) {
     if (atPathVertex) break;
+    if (!glowSampledFrom(light, at.p, ctx.smallSin2)) continue;
     total += lightEstimate(ctx, light, at, k, variance, [&](const LightSample& ls, uint32_t lightShape) {
       const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
       return ctx.transmittance(at.p, ls.dir, tMax, at.skip, lightShape);

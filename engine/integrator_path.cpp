@@ -118,6 +118,7 @@ Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse
   next.skip = v.flatSkip;
   next.countSources = true;
   next.diffuse = diffuse + 1;
+  next.lighting = true;
   return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
@@ -129,8 +130,25 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
   cache.scratch.weights.clear();
   if (!cache.cache->interpolate(v.x, v.nf, e, &cache.scratch, v.shape, &ctx.rays)) return std::nullopt;
   const Vec3 xf = v.x + v.off * v.nf;
+  // A record's hemisphere left out the glows sampled from the record's point: the lookup samples
+  // each glow with the weight of those records, so that none is lost or counted twice where the
+  // records lie on both sides of its rule (docs/estimator.md#small-emitters).
+  const SampledSources& src = ctx.tracer.sources();
+  if (!src.glowLight.empty()) {
+    LightScratch& sc = ctx.light;
+    sc.glowShare.assign(src.lights.size(), 0.0);
+    for (size_t l = 0; l < src.lights.size(); ++l) {
+      if (!src.lights[l].glow) continue;
+      for (const auto& [i, w] : cache.scratch.weights) {
+        const IrradianceRecord& r = cache.cache->record(i);
+        if (glowSampledFrom(src.lights[l], r.p + Tracer::originOffset(r.p) * r.n, ctx.smallSin2)) sc.glowShare[l] += w;
+      }
+    }
+    sc.useGlowShare = true;
+  }
   const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
                                       nullptr, 1.0);
+  ctx.light.useGlowShare = false;
   const Rgb f = beta * m.diffuseReflectance * kInvPi;
   const double fy = photopic(f);
   for (const auto& [i, w] : cache.scratch.weights) {
@@ -174,6 +192,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   PathState bounce;  // a diffuse continuation: cosine-sampled, sources sampled here
   bounce.skip = v.flatSkip;
   bounce.diffuse = st.diffuse + 1;
+  bounce.lighting = true;
   Rgb acc(0.0);
   for (int j = 0; j < k; ++j) {
     const Vec2 u12 = strata.sample(j, ctx.rng);
@@ -182,11 +201,13 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
       const TallyFactor tf(ctx.tally, rho * (norm / pRho / k));
       bounce.misCosPdf = glm::dot(dir, nf) * kInvPi;
+      bounce.litPoint = xf;
       acc += rho * (norm / pRho) * pathRadiance(ctx, xf, dir, bounce);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
       const TallyFactor tf(ctx.tally, tauD * (norm / pTd / k));
       bounce.misCosPdf = -glm::dot(dir, nf) * kInvPi;
+      bounce.litPoint = xb;
       acc += tauD * (norm / pTd) * pathRadiance(ctx, xb, dir, bounce);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
@@ -210,6 +231,18 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
 Rgb emitted(const Scene& scene, const Material& m, const Hit& v) {
   if (m.pattern < 0) return m.color;
   return emittedRadiance(scene, m, v.inDir, -glm::dot(v.inDir, v.nf));
+}
+
+// Whether a ray in state st counts the glow `shape` it met. A glow of negative radius lights
+// nothing (only eyes see it); a glow sampled from the ray's litPoint is counted by that sample
+// instead — unless a flat mirror was met since (glows are not sampled in mirrors,
+// integrator_direct.cpp) or sources count anyway (after specular reflection, camera rays).
+bool countsGlow(const TraceContext& ctx, const Material& m, uint32_t shape, const PathState& st) {
+  if (m.glowRadiusM < 0.0) return !st.lighting;
+  if (st.countSources || st.mirrorsMet != 0) return true;
+  const SampledSources& src = ctx.tracer.sources();
+  if (shape >= src.glowLight.size() || src.glowLight[shape] < 0) return true;
+  return !glowSampledFrom(src.lights[src.glowLight[shape]], st.litPoint, ctx.smallSin2);
 }
 
 }  // namespace
@@ -252,7 +285,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       case MaterialType::kIllum:
         return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kGlow:
-        return v.front ? result + ray.beta * emitted(scene, *m, v) : result;
+        return v.front && countsGlow(ctx, *m, h.shape, st) ? result + ray.beta * emitted(scene, *m, v) : result;
       case MaterialType::kVoid:
         return result;
       case MaterialType::kMirror:

@@ -26,6 +26,13 @@ struct PathState {
   // Flat mirrors met since the last diffuse vertex, carried through a trans surface's specular
   // transmission (which keeps the direction).
   int mirrorsMet = 0;
+  // Where the sources were sampled that this ray must not count again (while countSources is
+  // false): the receiver point of the last diffuse vertex or sensor, exactly as passed to
+  // directIrradiance, so that a glow met is left out exactly when glowSampledFrom sampled it.
+  Vec3 litPoint{0.0};
+  // The ray carries light to a receiver (sensor, record, diffuse or glossy vertex) rather than
+  // to an eye: a glow of negative radius sends nothing along it (Radiance's ray.1 "Glow").
+  bool lighting = false;
 };
 
 // A frozen cache serving the diffuse vertex at diffuse count `depth`, and what the lookups used

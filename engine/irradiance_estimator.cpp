@@ -50,6 +50,8 @@ Rgb sampleCell(SensorEstimate& e, int cell, double su, double sv, int sub) {
   PathState st;
   st.misCosPdf = glm::dot(dir, e.n) * kInvPi;
   st.misRatio = e.misRatio;
+  st.litPoint = e.p;  // where estimateIrradiance sampled the sources
+  st.lighting = true;
   if (e.cache) return pathRadiance(e.ctx, e.p, dir, st, &e.use);
   st.split = e.ctx.settings.firstBounceSplit;
   return pathRadiance(e.ctx, e.p, dir, st);

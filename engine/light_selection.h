@@ -23,17 +23,28 @@ namespace candela {
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
 
 // `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray; `cdf` is
-// the caller's scratch (TraceContext), reused from call to call.
-// 8 parameters: the scene and point, the sample count and stream, the scratch and the visibility
-// test are separate inputs of one estimate.
+// the caller's scratch (TraceContext), reused from call to call. A glow counts with the share
+// glowShare[l] of its light when given (a cache lookup: LightScratch::glowShare), else fully
+// where glowSampledFrom(smallSin2) samples it from p and not at all elsewhere.
+// 10 parameters: the scene and point, the sample count and stream, the scratch, the visibility
+// test and the glows' rule are separate inputs of one estimate.
 template <class Visibility>
 Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scene, const Vec3& p, const Vec3& n,
-                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility) {
+                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility,
+                             double smallSin2 = 0.0, const double* glowShare = nullptr) {
   const size_t count = lights.size();
   if (count == 0) return Rgb(0.0);
+  auto share = [&](size_t l) {
+    if (!lights[l].glow) return 1.0;
+    if (glowShare) return glowShare[l];
+    return glowSampledFrom(lights[l], p, smallSin2) ? 1.0 : 0.0;
+  };
   cdf.resize(count);
   double total = 0.0;
-  for (size_t l = 0; l < count; ++l) total += cdf[l] = lightImportance(lights[l], scene, p, n);
+  for (size_t l = 0; l < count; ++l) {
+    const double s = share(l);
+    total += cdf[l] = s > 0.0 ? s * lightImportance(lights[l], scene, p, n) : 0.0;
+  }
   if (total <= 0.0) return Rgb(0.0);
   double acc = 0.0;
   const double floor = 0.1 / static_cast<double>(count);
@@ -62,7 +73,7 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
     const uint32_t lightShape = lights[l].kind == Light::Kind::kArea ? lights[l].shape : kNoShape;
     const double tMax = std::isinf(ls.distance) ? std::numeric_limits<double>::infinity()
                                                 : ls.distance * (1.0 - 1e-9);
-    sum += ls.weight * cosI * visibility(p, ls.dir, tMax, lightShape) / pl;
+    sum += ls.weight * (cosI * share(l) / pl) * visibility(p, ls.dir, tMax, lightShape);
   }
   return sum / static_cast<double>(k);
 }

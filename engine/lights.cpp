@@ -65,6 +65,43 @@ bool capProjectedSolidAngle(const Vec3& axis, double sinAlpha, const Vec3& n, do
   return true;
 }
 
+// A sphere enclosing shape s (centre, radius in m), for the small-emitter and radius rules of
+// glowSampledFrom: the shape itself for a sphere; the vertices' mean and farthest vertex for a
+// polygon; the centre and outer radius for a ring; the axis midpoint for a cone.
+void boundingSphere(const Shape& s, const VertexStore& vertices, Vec3& centre, double& radiusM) {
+  switch (s.type) {
+    case ShapeType::kSphere:
+      centre = s.a;
+      radiusM = s.r0;
+      return;
+    case ShapeType::kRing:
+      centre = s.a;
+      radiusM = s.r1;
+      return;
+    case ShapeType::kCone: {
+      centre = s.a + 0.5 * s.d * s.n;
+      const double half = 0.5 * s.d, r = std::max(s.r0, s.r1);
+      radiusM = std::sqrt(half * half + r * r);
+      return;
+    }
+    case ShapeType::kTriangle:
+    case ShapeType::kPolygon: {
+      std::vector<Vec3> pts;
+      if (s.type == ShapeType::kTriangle) {
+        pts = {s.a, s.a + s.b, s.a + s.c};
+      } else {
+        pts.assign(vertices.points.begin() + s.firstVertex, vertices.points.begin() + s.firstVertex + s.vertexCount);
+      }
+      centre = Vec3(0.0);
+      for (const Vec3& v : pts) centre += v;
+      centre /= static_cast<double>(pts.size());
+      radiusM = 0.0;
+      for (const Vec3& v : pts) radiusM = std::max(radiusM, glm::length(v - centre));
+      return;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::array<Vec3, 3>> triangulatePolygon(const std::vector<Vec3>& poly, const Vec3& normal) {
@@ -105,7 +142,11 @@ std::vector<Light> collectLights(const Scene& scene) {
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& s = scene.shapes[i];
     const Material& m = scene.materials[s.material];
-    if (!m.isSampledSource() || photopic(m.color) <= 0.0) continue;
+    const bool glow = m.type == MaterialType::kGlow;
+    if (!(m.isSampledSource() || glow) || photopic(m.color) <= 0.0) continue;
+    // A glow of negative radius lights nothing (pathRadiance); an inward sphere (bubble) has no
+    // outside to sample from: hemisphere rays find it.
+    if (glow && (m.glowRadiusM < 0.0 || (s.type == ShapeType::kSphere && s.inward))) continue;
     Light l;
     l.kind = Light::Kind::kArea;
     l.shape = i;
@@ -114,6 +155,12 @@ std::vector<Light> collectLights(const Scene& scene) {
     l.distribution = sourceDistributionOf(scene, m);
     if (m.spot) l.spot = &m;
     if (l.distribution && !l.distribution->emits()) continue;
+    if (glow) {
+      l.glow = true;
+      l.glowRadiusM = m.glowRadiusM;
+      boundingSphere(s, scene.vertices, l.boundCentre, l.boundRadiusM);
+      l.sphereGlow = s.type == ShapeType::kSphere;
+    }
     if (s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon) {
       if (s.type == ShapeType::kTriangle) {
         l.outline = {s.a, s.a + s.b, s.a + s.c};
@@ -422,6 +469,11 @@ SampledSources collectSampledSources(const Scene& scene) {
   }
   out.isMirrorImage.assign(scene.shapes.size(), 0);
   for (uint32_t i : out.mirrors) out.isMirrorImage[i] = 1;
+  for (size_t l = 0; l < out.lights.size(); ++l) {
+    if (!out.lights[l].glow) continue;
+    if (out.glowLight.empty()) out.glowLight.assign(scene.shapes.size(), -1);
+    out.glowLight[out.lights[l].shape] = static_cast<int32_t>(l);
+  }
   return out;
 }
 

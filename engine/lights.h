@@ -1,6 +1,7 @@
 // Light sources sampled explicitly: `light`/`illum` surfaces (area sources), `light` distant
-// sources (e.g. the sun) and photometric luminaires. `glow` is not sampled; hemisphere rays
-// find it.
+// sources (e.g. the sun), photometric luminaires, and `glow` surfaces from the points where
+// glowSampledFrom says so (elsewhere hemisphere rays find them). Distant glows (a glow sky
+// `source`) are never sampled, as in Radiance (src/rt/source.c, distantsources: SSKIP).
 #pragma once
 
 #include "engine/scene.h"
@@ -29,7 +30,42 @@ struct Light {
   const SourceDistribution* distribution = nullptr;
   // Area: the spotlight material (its cone and focal distance; owned by the scene), or none.
   const Material* spot = nullptr;
+  // Area, a `glow` surface: sampled only from the points glowSampledFrom accepts. Its radius
+  // argument (Material::glowRadiusM) and a sphere bounding the shape (centre, radius in m).
+  bool glow = false;
+  double glowRadiusM = 0.0;
+  Vec3 boundCentre{0.0};
+  double boundRadiusM = 0.0;
+  bool sphereGlow = false;  // the bound is the (outward) sphere itself
 };
+
+// The small-emitter rule's bound: an emitter whose bounding sphere subtends a cap of solid angle
+// below one hemisphere stratum, 2π / hemisphereSamples, is one the stratified hemisphere cannot
+// resolve. Returns sin² of that cap's half-angle α (1 − cos α = 1 / hemisphereSamples), so that
+// the test is R² < sin²α · d², one product per light and receiver.
+inline double smallEmitterSin2(int hemisphereSamples) {
+  const double c = 1.0 / static_cast<double>(hemisphereSamples > 1 ? hemisphereSamples : 1);
+  return c * (2.0 - c);
+}
+
+// Whether `light` is sampled explicitly from point p, so that rays leaving p must not count it
+// when they meet it (both sides ask this one function with the same p: no light is counted
+// twice or lost). Every source but a glow: always. A glow (Radiance's ray.1 "Glow" and
+// src/rt/source.c): with a negative radius never (nor does it light anything: pathRadiance);
+// otherwise when p lies within its radius of the glow's bounding sphere (radius > 0; Radiance
+// tests the distance to each sample point instead) or when the glow is small from p (its
+// bounding sphere within one hemisphere stratum: smallEmitterSin2). Never from inside a
+// spherical glow or for an inward one (nothing to sample there).
+inline bool glowSampledFrom(const Light& light, const Vec3& p, double smallSin2) {
+  if (!light.glow) return true;
+  if (light.glowRadiusM < 0.0) return false;
+  const Vec3 e = p - light.boundCentre;
+  const double d2 = glm::dot(e, e), r = light.boundRadiusM;
+  if (light.sphereGlow && d2 <= r * r) return false;
+  if (r * r < smallSin2 * d2) return true;
+  const double reach = light.glowRadiusM + r;
+  return light.glowRadiusM > 0.0 && d2 <= reach * reach;
+}
 
 // The explicitly sampled lights of a scene.
 std::vector<Light> collectLights(const Scene& scene);
@@ -40,6 +76,8 @@ struct SampledSources {
   std::vector<Light> lights;
   std::vector<uint32_t> mirrors;    // flat mirror shapes
   std::vector<char> isMirrorImage;  // per shape: 1 for a flat mirror with virtual sources
+  // Per shape: the index into `lights` of its glow, or -1; empty when the scene samples no glow.
+  std::vector<int32_t> glowLight;
 };
 SampledSources collectSampledSources(const Scene& scene);
 

@@ -24,11 +24,16 @@ struct LightScratch {
   std::vector<double> cumulative;         // the triangles' cumulative areas
   std::vector<double> zRatio, zRest, fyS, vyS;  // per-stratum terms of the variance
   std::vector<double> cdf;                // light selection at path vertices (light_selection.h)
+  // At a cache lookup: per light, the interpolation weight of the records that left that glow
+  // out (sampled from them), which the lookup's direct light then carries instead of the rule at
+  // its own point (engine/integrator_path.cpp, cachedVertex); used while useGlowShare is set.
+  std::vector<double> glowShare;
+  bool useGlowShare = false;
 };
 
 struct TraceContext {
   TraceContext(const Tracer& t, const TraceSettings& s, Rng& r, SkyTally* observer = nullptr)
-      : tracer(t), settings(s), rng(r), tally(observer) {}
+      : tracer(t), settings(s), rng(r), tally(observer), smallSin2(smallEmitterSin2(s.hemisphereSamples)) {}
   // The call ends: its rays join the tracer's total (Tracer::raysTraced).
   ~TraceContext() { tracer.addRays(rays); }
   TraceContext(const TraceContext&) = delete;
@@ -49,6 +54,8 @@ struct TraceContext {
   Rng& rng;          // the stream paths and light samples draw from
   SkyTally* tally;   // daylight-coefficient observer (engine/sky_tally.h), or none
   uint64_t rays = 0;  // rays cast by this call so far
+  // The small-emitter bound of this call's settings (lights.h: glowSampledFrom), computed once.
+  const double smallSin2;
   LightScratch light;
 };
 

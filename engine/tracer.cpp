@@ -114,6 +114,9 @@ Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, b
   PathState st;
   st.skip = skip;
   st.countSources = countSources;
+  // Without sources counted the caller samples them at the origin: a ray carrying light.
+  st.litPoint = origin;
+  st.lighting = !countSources;
   return pathRadiance(ctx, origin, direction, st);
 }
 

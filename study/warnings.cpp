@@ -314,8 +314,9 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const Irradiance
   out.push_back({"untrusted_error_bar",
                  set.name + ": " + countOf(count, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
                      " although the glow surface '" + glowName + "' faces " + (count == 1 ? "it" : "them") +
-                     " unobstructed: no hemisphere sample found it (glow is never sampled directly), so the value "
-                     "and its zero error bar are not to be trusted; raise the samples or make it a light",
+                     " unobstructed: no hemisphere sample found it (a glow is sampled directly only within its radius "
+                     "or where its bounding sphere is smaller than a hemisphere stratum), so the value and its zero "
+                     "error bar are not to be trusted; raise the samples, give the glow a radius or make it a light",
                  pointLoc(set, first)});
 }
 

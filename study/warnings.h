@@ -62,7 +62,7 @@ void checkSiteAgainstWeather(const CaseFile& c, const EpwLocation& weather, Warn
 void checkCaseSite(const CaseFile& c, Warnings& out);
 
 // untrusted_error_bar: points that read exactly 0 with a standard error of 0 while a glow
-// surface (found by hemisphere samples only, never sampled directly) lies in front of them with
+// surface (one not sampled directly from them: engine/lights.h, glowSampledFrom) lies in front of them with
 // nothing in between: no sample found it, so the zero error bar claims a certainty it does not
 // have. `estimates` has one entry per point of the set.
 void checkErrorBars(const Tracer& tracer, const SensorSet& set, const IrradianceEstimate* estimates, Warnings& out);
