@@ -188,7 +188,8 @@ TEST(LuminaireSource, FarUnoccludedOpeningGivesTheAreaAveragedPointLaw) {
   const double d0 = glm::length(e0);
   const double pointLaw = lum.intensityCd(e0 / d0) * glm::dot(n, -e0) / d0 / (d0 * d0);
   const Tracer tracer(sc);
-  TraceSettings s;  // the default 64 light samples
+  TraceSettings s;
+  s.lightSamples = 4096;  // the point law is only 0.13 % off here: resolve it
   const IrradianceEstimate est = tracer.irradiance(p, n, 0, s);
   EXPECT_NEAR(est.illuminanceLux(), want, 4.0 * est.standardErrorLux() + 1e-6 * want);
   EXPECT_GT(std::abs(pointLaw - want), 4.0 * est.standardErrorLux());

@@ -320,8 +320,8 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   EXPECT_TRUE(glare.sources.empty());
 }
 
-// CRF end to end: a matte card on a matte desk lit by a far-field Lambertian panel (the engine's
-// point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
+// CRF end to end: a matte card on a matte desk lit by a point luminaire of Lambertian intensity
+// (the engine's point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
 // Matte surfaces have L = ρE/π, so C = (ρt E_t − ρb E_b)/(ρb E_b), with E_t/E_b from the web's
 // intensities; under the sphere (task and desk alone, the wall added afterwards left out) both
 // points see the whole sky over a 40 m floor, E = π L exactly, so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
@@ -331,8 +331,9 @@ TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::kPlastic, rb));
   addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::kPlastic, rt));
   LuminaireMounting lp;
-  lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
-  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
+  lp.positionM = {0.0, 1.0, 3.5};
+  // A point luminaire (no opening): the point law below is exact, not an opening's sampled average.
+  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(1000.0, 0.0, 0.0), lp));
   // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the
   // sphere out, so the reference keeps only the two surfaces seen.
   sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::kPlastic, 0.7));
