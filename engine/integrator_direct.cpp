@@ -57,8 +57,10 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
   }
   Rgb sumFvc(0.0), sumFc(0.0), sumRest(0.0);
   double yF2 = 0.0, yF2V = 0.0, yF2V2 = 0.0, yFc = 0.0, yRest = 0.0, yRest2 = 0.0;
-  const uint32_t lightShape = light.kind == Light::Kind::kArea ? light.shape : kNoShape;
-  // A far-field luminaire is one point: one shadow ray says all there is.
+  const uint32_t lightShape = light.ownShape;
+  // A point luminaire (no opening; the only luminaire with a closed form) is one point: one
+  // shadow ray says all there is. A luminaire with an opening is sampled over it at every
+  // distance (lights.cpp), k stratified points, by the plain mean below.
   const bool point = light.kind == Light::Kind::kLuminaire && haveExact;
   const int kk = point ? 1 : k;
   // Per-stratum terms for the variance (zero where a sample tells nothing).
@@ -77,6 +79,9 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
     const double cosI = glm::dot(n, ls.dir);
     if (cosI <= 0.0) continue;
     const Rgb f = ls.weight * cosI;
+    // Nothing sent this way (a downlight seen from above its opening): no shadow ray; the sums
+    // would add 0.
+    if (f.x <= 0.0 && f.y <= 0.0 && f.z <= 0.0) continue;
     const Rgb v = visibility(ls, lightShape);
     const double c = haveExact ? 1.0 : 0.0;
     sumFvc += f * v * c;

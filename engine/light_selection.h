@@ -70,7 +70,7 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
     if (!sampleLight(lights[l], scene, p, v1, u.y, ls)) continue;
     const double cosI = glm::dot(n, ls.dir);
     if (cosI <= 0.0) continue;
-    const uint32_t lightShape = lights[l].kind == Light::Kind::kArea ? lights[l].shape : kNoShape;
+    const uint32_t lightShape = lights[l].ownShape;
     const double tMax = std::isinf(ls.distance) ? std::numeric_limits<double>::infinity()
                                                 : ls.distance * (1.0 - 1e-9);
     sum += ls.weight * (cosI * share(l) / pl) * visibility(p, ls.dir, tMax, lightShape);

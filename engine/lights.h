@@ -8,6 +8,8 @@
 #include "engine/source_distribution.h"
 
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace candela {
@@ -19,6 +21,9 @@ struct Light {
   uint32_t distant = 0;  // Distant: index into Scene::distant
   uint32_t luminaire = 0;  // Luminaire: index into Scene::luminaires
   Rgb radiance{0.0};     // W/sr/m²
+  // The shape the light's own shadow rays pass through (they end on it): an area source's shape,
+  // a luminaire's opening surface (LuminaireSource::openingShape), else kNoShape.
+  uint32_t ownShape = std::numeric_limits<uint32_t>::max();
   // Polygon sources: triangulation (for uniform area sampling) with cumulative areas.
   std::vector<std::array<Vec3, 3>> triangles;
   std::vector<double> cumulativeArea;
@@ -98,7 +103,7 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
 // clipped outline is returned in *clipped, to be sampled with sampleClippedPolygon); the
 // vector irradiance of a disk or annulus wholly above the horizon; the cap formula
 // π L sin²α cos θ for spherical and distant sources wholly above the horizon; a far-field
-// luminaire's I cos ι / d². Returns false where no closed form applies (and for every source
+// luminaire's I cos ι / d² (a point luminaire only: an opening is sampled, lights.cpp). Returns false where no closed form applies (and for every source
 // with a distribution).
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
                           std::vector<Vec3>* clipped = nullptr);

@@ -1,7 +1,8 @@
 // A luminaire placed in a scene: its candlepower distribution, position and orientation.
-// The tracer samples it as a light source (see lights.cpp): far from the fitting as a point,
-// E = I(θ, φ) cos ι / d²; within kNearFieldFactor × its size, over its luminous opening, each
-// point of the opening carrying I/A so that the opening as a whole reproduces I.
+// The tracer samples it as a light source (see lights.cpp) over its luminous opening at every
+// distance, each point of the opening carrying I/A so that the opening as a whole reproduces I
+// and a screen that hides part of the opening gives the right penumbra; a point luminaire (no
+// opening) follows the point law E = I(θ, φ) cos ι / d².
 #pragma once
 
 #include "base/math.h"
@@ -9,14 +10,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
 namespace candela {
-
-// Closer than this multiple of the opening's largest dimension, the opening is sampled as an
-// area source (the usual photometric "five times the size" rule for the inverse-square law).
-inline constexpr double kNearFieldFactor = 5.0;
 
 struct LuminaireSource {
   std::shared_ptr<const PhotometricWeb> web;
@@ -29,6 +28,9 @@ struct LuminaireSource {
   // diameter widthM (circular), or a point (both zero).
   double widthM = 0.0, lengthM = 0.0;
   bool circular = false;
+  // The opening as a surface of the scene (`opening_reflectance`, addOpeningSurface): its shape
+  // index, which the luminaire's own shadow rays pass through; UINT32_MAX (kNoShape): none.
+  uint32_t openingShape = std::numeric_limits<uint32_t>::max();
 
   // Largest intensity (cd, scaled) over all C planes in each of kCosBins bands of cos γ (γ from
   // the nadir), for cheap light selection without trigonometry (engine/light_selection.h).
@@ -47,6 +49,7 @@ struct LuminaireSource {
     return scale * web->intensityCd(Vec3(glm::dot(dir, axisX), glm::dot(dir, axisY), glm::dot(dir, axisZ)));
   }
   double sizeM() const { return std::max(widthM, lengthM); }
+  double openingAreaM2() const { return circular ? 0.25 * kPi * widthM * widthM : widthM * lengthM; }
 };
 
 // Orients a luminaire: `aim` is the direction of the photometric nadir (world), `spinDeg` turns

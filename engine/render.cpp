@@ -40,7 +40,8 @@ Rgb luminaireRadiance(const std::vector<LuminaireSource>& lums, const Vec3& o, c
     const double dn = glm::dot(d, l.axisZ);
     if (std::abs(dn) < 1e-9) continue;
     const double t = glm::dot(l.position - o, l.axisZ) / dn;
-    if (!(t > 0.0) || t >= tMax) continue;
+    // Within 1e-9 of tMax: the opening's own surface (opening_reflectance) in the same plane.
+    if (!(t > 0.0) || t >= tMax * (1.0 + 1e-9)) continue;
     const Vec3 q = o + t * d - l.position;
     const double u = glm::dot(q, l.axisX), v = glm::dot(q, l.axisY);
     double area;
@@ -95,7 +96,8 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
       const Rgb lum = luminaireRadiance(tracer.scene().luminaires, cam.position(), *dir, tMax);
       if (photopic(lum) > 0.0) {
         value = lum;
-        done = true;
+        // Met on its opening surface (opening_reflectance): its luminance plus what it reflects.
+        done = !(hit && tMax >= h.t * (1.0 - 1e-9));
       }
     }
     if (!done && hit && r.irradianceSamples > 0) {
@@ -110,11 +112,11 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
         const Vec3 nf = glm::dot(*dir, ng) < 0.0 ? ng : -ng;
         const Vec3 p = xh + Tracer::originOffset(xh) * nf;
         const uint64_t stream = kIrradianceStreamBase + (static_cast<uint64_t>(y) * cam.width() + x) * n + k;
-        value = mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, irradianceSettings).irradiance;
+        value += mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, irradianceSettings).irradiance;
         done = true;
       }
     }
-    if (!done) value = pathRadiance(ctx, cam.position(), *dir, cameraRay);
+    if (!done) value += pathRadiance(ctx, cam.position(), *dir, cameraRay);
     sum += value;
     const double l = luminanceFromRadiance(value);
     y1 += l;
@@ -342,7 +344,7 @@ std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye,
         if (cosI <= 0.0 || !(dq > 0.0)) continue;
         const double de = l.intensityCd(-dirQ) / (kCells * kCells) * cosI / (dq * dq);
         eFree += de;
-        e += de * photopic(tracer.transmittance(eye, dirQ, dq * (1.0 - 1e-9), kNoShape, kNoShape));
+        e += de * photopic(tracer.transmittance(eye, dirQ, dq * (1.0 - 1e-9), kNoShape, l.openingShape));
       }
     s.illuminanceLux = e;
     s.transmittance = eFree > 0.0 ? e / eFree : 0.0;

@@ -233,6 +233,10 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
       c.fail(*tab.get("maintenance_factor"), "'maintenance_factor' must be in (0, 1], got " +
                                                  std::to_string(p.maintenanceFactor));
   }
+  if (tab.get("opening_reflectance")) {
+    p.openingReflectance = numberOr(tab, "opening_reflectance", 0.0);
+    checkRange(tab, "opening_reflectance", *p.openingReflectance, 0.0, 1.0, " (a diffuse reflectance)");
+  }
 
   int rows = 1, columns = 1;
   Vec2 spacing(0.0);

@@ -34,6 +34,9 @@ struct LuminairePlacement {
   double spinDeg = 0.0;                 // rotation about the aim; 0: C0 plane towards +X
   double multiplier = 1.0;              // scales intensities
   double maintenanceFactor = 1.0;       // MF in (0, 1]; intensities scale by multiplier × MF
+  // `opening_reflectance` in [0, 1]: the luminous opening becomes an opaque diffuse surface of
+  // this reflectance (engine/luminaire_opening.h); absent: no surface (light passes the opening).
+  std::optional<double> openingReflectance;
   int entry = 0;                        // index of the [[luminaire]] entry (0-based)
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry

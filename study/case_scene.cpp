@@ -1,6 +1,7 @@
 #include "study/case_scene.h"
 
 #include "engine/daylight.h"
+#include "engine/luminaire_opening.h"
 #include "engine/rad_reader.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
@@ -31,6 +32,8 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
     auto& web = webs[p.file];
     if (!web) web = std::make_shared<const PhotometricWeb>(readPhotometricFile(p.file));
     scene->luminaires.push_back(placeLuminaire(web, p.mounting()));
+    if (p.openingReflectance)
+      addOpeningSurface(*scene, static_cast<uint32_t>(scene->luminaires.size() - 1), *p.openingReflectance);
   }
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));
   return scene;

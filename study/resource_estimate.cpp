@@ -183,7 +183,9 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c) {
 
 double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires) {
   const double sources = static_cast<double>(sampled + luminaires);
-  const double direct = static_cast<double>(s.lightSamples) * sampled + static_cast<double>(luminaires);
+  // A luminaire's opening is sampled as an area source's (lights.cpp; a point luminaire takes one
+  // ray, but most have an opening).
+  const double direct = static_cast<double>(s.lightSamples) * static_cast<double>(sampled + luminaires);
   const double hemisphere = static_cast<double>(s.hemisphereSamples);
   if (s.maxBounces <= 0) return hemisphere + direct;  // the rays see glow and sky only
   // A hemisphere ray: the ray to its first hit and that vertex's shadow ray, then either the

@@ -4,6 +4,7 @@
 // names; a Lambertian luminaire opening shows I/(A cos γ); the adaptive sampler refines only
 // where the luminance changes, and images do not depend on the thread count.
 #include "engine/luminaire_source.h"
+#include "engine/luminaire_opening.h"
 #include "engine/render.h"
 #include "metrics/contrast.h"
 #include "metrics/glare.h"
@@ -160,35 +161,42 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
 
 // A Lambertian 600 mm panel (I = 1000 cos γ cd) seen from below: its opening has luminance
 // I/(A cos γ) = 1000/0.36 cd/m² from every direction, in the image and for glare ratings.
+// With the opening as a surface (opening_reflectance; lit by nothing here, so it reflects 0) the
+// same: the ray meets the surface in the opening's plane and still sees the luminance, and the
+// glare source's shadow rays pass its own surface.
 TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
-  Scene sc;
-  LuminaireMounting lp;
-  lp.name = "panel";
-  lp.positionM = {0, 2, 2.8};
-  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
-  const Tracer tracer(sc);
-  const Vec3 eye(0, 0, 1.2);
-  const Vec3 d = lp.positionM - eye;
-  const double dist = glm::length(d), cosG = d.z / dist;
-  // I/(A cos γ) with I from the placed web itself (its 5° linear interpolation of the cosine
-  // puts it 0.07 % below 1000/0.36 here; the formula, not the web, is under test).
-  const double want = sc.luminaires[0].intensityCd(-d / dist) / (0.36 * cosG);
-  EXPECT_NEAR(want, 1000.0 / 0.36, 1e-3 * want);
-  const View v = view(ViewType::kPerspective, eye, {0, 1, 0.8}, {0, 0, 1}, {60, 60}, 41, 41);
-  RenderSettings r;
-  r.coarseStep = 1;
-  const Image img = renderView(tracer, v, TraceSettings{}, 2, r);
-  const auto p = Camera(v).project(lp.positionM - eye);
-  ASSERT_TRUE(p);
-  // The sample rays of the pixel at the panel's centre all hit the opening (it spans several pixels).
-  // Its sample rays meet the opening at directions up to a pixel apart, where the web's
-  // interpolation error (at most h²/8 = 0.095 % of the cosine for 5° steps) differs: 0.2 %.
-  EXPECT_NEAR(img.luminance[img.index(static_cast<int>(p->x), static_cast<int>(p->y))], want, 2e-3 * want);
-  const std::vector<SeenLuminaire> seen = seenLuminaires(tracer, eye, v.direction);
-  ASSERT_EQ(seen.size(), 1u);
-  EXPECT_NEAR(seen[0].luminanceCdM2, want, 1e-9 * want);
-  EXPECT_NEAR(seen[0].solidAngleSr, 0.36 * cosG / (dist * dist), 1e-12);
-  EXPECT_NEAR(seen[0].transmittance, 1.0, 1e-12);
+  for (const bool surface : {false, true}) {
+    SCOPED_TRACE(surface ? "opening surface of reflectance 0.5" : "no opening surface");
+    Scene sc;
+    LuminaireMounting lp;
+    lp.name = "panel";
+    lp.positionM = {0, 2, 2.8};
+    sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
+    if (surface) ASSERT_EQ(addOpeningSurface(sc, 0, 0.5), 0u);
+    const Tracer tracer(sc);
+    const Vec3 eye(0, 0, 1.2);
+    const Vec3 d = lp.positionM - eye;
+    const double dist = glm::length(d), cosG = d.z / dist;
+    // I/(A cos γ) with I from the placed web itself (its 5° linear interpolation of the cosine
+    // puts it 0.07 % below 1000/0.36 here; the formula, not the web, is under test).
+    const double want = sc.luminaires[0].intensityCd(-d / dist) / (0.36 * cosG);
+    EXPECT_NEAR(want, 1000.0 / 0.36, 1e-3 * want);
+    const View v = view(ViewType::kPerspective, eye, {0, 1, 0.8}, {0, 0, 1}, {60, 60}, 41, 41);
+    RenderSettings r;
+    r.coarseStep = 1;
+    const Image img = renderView(tracer, v, TraceSettings{}, 2, r);
+    const auto p = Camera(v).project(lp.positionM - eye);
+    ASSERT_TRUE(p);
+    // The sample rays of the pixel at the panel's centre all hit the opening (it spans several pixels).
+    // Its sample rays meet the opening at directions up to a pixel apart, where the web's
+    // interpolation error (at most h²/8 = 0.095 % of the cosine for 5° steps) differs: 0.2 %.
+    EXPECT_NEAR(img.luminance[img.index(static_cast<int>(p->x), static_cast<int>(p->y))], want, 2e-3 * want);
+    const std::vector<SeenLuminaire> seen = seenLuminaires(tracer, eye, v.direction);
+    ASSERT_EQ(seen.size(), 1u);
+    EXPECT_NEAR(seen[0].luminanceCdM2, want, 1e-9 * want);
+    EXPECT_NEAR(seen[0].solidAngleSr, 0.36 * cosG / (dist * dist), 1e-12);
+    EXPECT_NEAR(seen[0].transmittance, 1.0, 1e-12);
+  }
 }
 
 // Half the plane dark, half lit (a black strip): refinement traces along the edge and leaves the
@@ -320,8 +328,8 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   EXPECT_TRUE(glare.sources.empty());
 }
 
-// CRF end to end: a matte card on a matte desk lit by a far-field Lambertian panel (the engine's
-// point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
+// CRF end to end: a matte card on a matte desk lit by a point luminaire of Lambertian intensity
+// (the engine's point law I cos ι / d² is exact for it), reference the uniform sphere of referenceSphereScene.
 // Matte surfaces have L = ρE/π, so C = (ρt E_t − ρb E_b)/(ρb E_b), with E_t/E_b from the web's
 // intensities; under the sphere (task and desk alone, the wall added afterwards left out) both
 // points see the whole sky over a 40 m floor, E = π L exactly, so C_ref = (ρt − ρb)/ρb and CRF = 1 to the small illuminance difference between the two points.
@@ -331,8 +339,9 @@ TEST(Render, ReferenceSphereGivesTheMatteReferenceContrast) {
   addUpRect(sc, -20, -20, 20, 20, 0.0, addMaterial(sc, MaterialType::kPlastic, rb));
   addUpRect(sc, -0.1, 0.9, 0.1, 1.1, 1e-3, addMaterial(sc, MaterialType::kPlastic, rt));
   LuminaireMounting lp;
-  lp.positionM = {0.0, 1.0, 3.5};  // 3.5 m > 5 × 0.6 m: far field
-  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
+  lp.positionM = {0.0, 1.0, 3.5};
+  // A point luminaire (no opening): the point law below is exact, not an opening's sampled average.
+  sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(1000.0, 0.0, 0.0), lp));
   // A wall behind (no light reflected with 0 bounces, no shadow cast); walls around would shut the
   // sphere out, so the reference keeps only the two surfaces seen.
   sc.addPolygon({{-3, 3, 0}, {3, 3, 0}, {3, 3, 3}, {-3, 3, 3}}, addMaterial(sc, MaterialType::kPlastic, 0.7));

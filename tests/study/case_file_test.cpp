@@ -39,6 +39,9 @@ TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   EXPECT_EQ(single.name, "luminaire2");
   EXPECT_EQ(single.aim, Vec3(0, 0, -1));  // normalised from [0, 0, -2]
   EXPECT_EQ(single.file, (dir / "luminaires/downlight.ies").lexically_normal());
+  ASSERT_TRUE(single.openingReflectance.has_value());
+  EXPECT_DOUBLE_EQ(*single.openingReflectance, 0.5);
+  EXPECT_FALSE(last.openingReflectance.has_value());  // absent: no opening surface
 
   EXPECT_TRUE(c.site.present);
   EXPECT_EQ(c.site.latitudeText, "37d52'N");  // kept as written
@@ -200,6 +203,9 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"unknown_quality.toml", 3, "unknown quality 'ultra'"},
                     ErrorCase{"duplicate_grid.toml", 6, "two grids are named 'a'"},
                     ErrorCase{"missing_position.toml", 2, "needs the key 'position'"},
+                    ErrorCase{"bad_opening_reflectance.toml", 5,
+                              "'opening_reflectance' must be between 0 and 1 (a diffuse reflectance), got 1.2"},
+                    ErrorCase{"negative_opening_reflectance.toml", 4, "'opening_reflectance' must be between 0 and 1"},
                     ErrorCase{"bad_time.toml", 3, "'time' must read YYYY-MM-DDTHH:MM"},
                     ErrorCase{"border_eats_grid.toml", 3, "leaves no area"},
                     ErrorCase{"bad_latitude.toml", 2, "'latitude' must be between -90 and 90"},

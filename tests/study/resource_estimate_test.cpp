@@ -73,12 +73,12 @@ TEST(ResourceEstimate, RaysPerSensor) {
   s.lightSamples = 10;
   s.firstBounceSplit = 16;
   s.maxBounces = 0;  // direct light only: the hemisphere rays, the light samples, no selection
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 + 10.0 * 2 + 5);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 + 10.0 * (2 + 5));  // openings sampled as areas
   s.maxBounces = 100;
   s.method = Method::kPath;  // 1 + 16 × 1 vertices a ray, a ray and a shadow ray each; selection over 7
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 2 * 17 + 25.0 + 1000.0 * 17 * 0.2 * 7);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 2 * 17 + 70.0 + 1000.0 * 17 * 0.2 * 7);
   s.method = Method::kCache;  // the hit, its shadow ray and 8 for the lookup; 1 + 4 vertices
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 25.0 + 1000.0 * 5 * 0.2 * 7);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 70.0 + 1000.0 * 5 * 0.2 * 7);
   // A million luminaires dominate: each path vertex weighs them all.
   EXPECT_GT(raysPerSensor(s, 0, 1000000), 1e9);
 }

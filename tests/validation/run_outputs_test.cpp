@@ -273,8 +273,8 @@ TEST_F(RunOutputs, BlackRoomGivesTheDirectLightOfThePanels) {
     // 1 %: the engine samples each opening with 64 stratified points (8 × 8 jittered); over
     // this smooth integrand (I/d² varies by tens of percent across the opening) that errs by
     // a few tenths of a percent (measured: at most 0.5 %). The error_lux it reports (~1.5 %)
-    // ignores the stratification and is an upper bound, too loose to test against. A panel
-    // farther than 5 sizes (2.975 m) is a point, which the five-times rule keeps well below 1 %.
+    // ignores the stratification and is an upper bound, too loose to test against. Every panel
+    // is sampled over its opening, however far (engine/lights.cpp).
     EXPECT_NEAR(lux[i], ref, 0.01 * ref) << "point " << i << " at (" << p.x << ", " << p.y << ")";
   }
 }
