@@ -30,10 +30,11 @@ struct RenderOptions {
   std::string view;
   std::string outDir;   // empty: the case's [output] dir
   CaseTraceOptions trace;
-  int pixelSamples = 4;
-  int coarseStep = 4;
-  int irradianceSamples = 64;
-  int glossySamples = 8;
+  // The view pipeline's defaults (study/view_study.h), which `candela run` uses: one estimator.
+  int pixelSamples = ViewOptions{}.pixelSamples;
+  int coarseStep = ViewOptions{}.coarseStep;
+  int irradianceSamples = ViewOptions{}.irradianceSamples;
+  int glossySamples = ViewOptions{}.glossySamples;
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
@@ -149,8 +150,8 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("--irradiance-samples", opts->irradianceSamples,
-                  "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray "
-                  "(0 = off; default 64, as candela run)")
+                  "diffuse surfaces seen (directly, through or in glass): rho E / pi from this many hemisphere "
+                  "samples (0 = plain paths, one per camera ray; default 64, as candela run)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--glossy-samples", opts->glossySamples,
                   "glossy surfaces seen: paths per camera ray on their specular lobe (default 8, as candela run)")
