@@ -134,6 +134,30 @@ TEST(RenderEstimator, MatteFloorSeenThroughGlassOrInAMirrorReadsRhoLInEveryPixel
   }
 }
 
+// A glossy floor (Ward lobe of roughness 0.05, ρs = 0.1, diffuse ρd = 0.4) under the upper-
+// hemisphere sky, seen from above within 30° of the normal: its diffuse part is ρd L (E = πL, the
+// floor sees only sky), and every sample of its lobe leaves upwards (a sample would have to tilt
+// the half vector by 30°: probability e^(−tan²30°/α²) = e^(−133)) and sees L, carrying ρs. So
+// every pixel reads (ρd + ρs) L to rounding: the lobe counted once, with the diffuse part.
+TEST(RenderEstimator, GlossyFloorReadsDiffusePlusSpecularReflectanceTimesTheSky) {
+  constexpr double kRhoD = 0.4, kRhoS = 0.1;
+  Scene sc;
+  Material m;
+  m.type = MaterialType::kPlastic;
+  m.name = "glossy";
+  m.color = Rgb(kRhoD / (1.0 - kRhoS));  // Radiance's plastic: diffuse colour·(1 − spec), specular spec
+  m.specularity = kRhoS;
+  m.roughness = 0.05;
+  sc.addPolygon({{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}}, sc.addMaterial(m));
+  sc.addDistant({0, 0, 1}, 180.0, addMaterial(sc, MaterialType::kGlow, kSkyRadiance, "sky"));
+  const Tracer tracer(sc);
+  const View v = perspective({0, 0, 1}, {0, 0, -1}, {0, 1, 0}, {60.0, 60.0}, 12, 12);
+  TraceSettings s;
+  const Image img = renderView(tracer, v, s, 1, viewEstimator());
+  const double want = (kRhoD + kRhoS) * kLumensPerWatt * kSkyRadiance;
+  for (std::size_t i = 0; i < img.luminance.size(); ++i) EXPECT_NEAR(img.luminance[i], want, 1e-9 * want) << i;
+}
+
 // The weighted mean's standard error: three pixels in a row, the middle one interpolated half
 // and half from the outer two. Mean = (L0 + (L0 + L2)/2 + L2)/3 = (L0 + L2)/2, so its standard
 // error is √(s0² + s2²)/2, not the √(s0² + ((s0 + s2)/2)² + s2²)/3 of independent pixels.
