@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -29,9 +30,11 @@ struct RenderOptions {
   std::string view;
   std::string outDir;   // empty: the case's [output] dir
   CaseTraceOptions trace;
-  int pixelSamples = 4;
-  int coarseStep = 4;
-  int irradianceSamples = 64;
+  // The view pipeline's defaults (study/view_study.h), which `candela run` uses: one estimator.
+  int pixelSamples = ViewOptions{}.pixelSamples;
+  int coarseStep = ViewOptions{}.coarseStep;
+  int irradianceSamples = ViewOptions{}.irradianceSamples;
+  int glossySamples = ViewOptions{}.glossySamples;
   std::string scale = "log";
   double minCdM2 = -1.0, maxCdM2 = -1.0;  // < 0: automatic
   double glareThresholdCdM2 = 0.0;        // 0: 5 × the image's mean luminance
@@ -47,6 +50,12 @@ std::string num(double v, int decimals) {
   return buf;
 }
 
+// A relative standard error as the report gives it, in ASCII as the other lines.
+std::string asciiError(double relativeStandardError) {
+  if (!std::isfinite(relativeStandardError)) return "(standard error unknown)";
+  return "+/- " + num(100.0 * relativeStandardError, 2) + " % (standard error)";
+}
+
 RenderRequest requestOf(const RenderOptions& o) {
   RenderRequest r;
   r.view = o.view;
@@ -57,6 +66,7 @@ RenderRequest requestOf(const RenderOptions& o) {
   v.pixelSamples = o.pixelSamples;
   v.coarseStep = o.coarseStep;
   v.irradianceSamples = o.irradianceSamples;
+  v.glossySamples = o.glossySamples;
   v.logScale = o.scale == "log";
   if (o.minCdM2 >= 0.0) v.minCdM2 = o.minCdM2;
   if (o.maxCdM2 > 0.0) v.maxCdM2 = o.maxCdM2;
@@ -87,6 +97,9 @@ void printGlare(std::ostringstream& s, const ViewResult& r) {
   if (g.dgp)
     s << "DGP " << num(g.dgp->dgp, 3) << " (Ev from the image " << num(g.dgp->verticalIlluminanceLux, 1) << " lx, "
       << g.dgp->sources.size() << " glare sources above " << num(g.dgp->thresholdCdM2, 0) << " cd/m2)\n";
+  if (g.sourceLuminanceCdM2)
+    s << "glare sources' luminance " << num(*g.sourceLuminanceCdM2, 0) << " cd/m2 "
+      << asciiError(*g.sourceLuminanceRelativeStandardError) << "\n";
 }
 
 int renderCommand(const RenderOptions& o) {
@@ -105,10 +118,12 @@ int renderCommand(const RenderOptions& o) {
     << (v.view.type == ViewType::kFisheye ? "fisheye" : "perspective") << ", " << img.tracedPixels << " of "
     << img.width * img.height << " pixels traced (" << v.render.samplesPerPixel << " rays each"
     << (v.render.irradianceSamples > 0
-            ? ", irradiance from " + std::to_string(v.render.irradianceSamples) + " samples at matte surfaces"
+            ? ", irradiance from " + std::to_string(v.render.irradianceSamples) +
+                  " samples at diffuse surfaces seen, directly or through glass"
             : "")
     << ")\n";
-  s << "luminance: mean " << num(lum.meanCdM2, 1) << " cd/m2, max " << num(lum.maxCdM2, 1) << " cd/m2\n";
+  s << "luminance: mean " << num(lum.meanCdM2, 1) << " cd/m2 " << asciiError(lum.meanRelativeStandardError)
+    << ", max " << num(lum.maxCdM2, 1) << " cd/m2\n";
   s << "vertical illuminance at the eye " << num(v.glare.verticalLux, 1) << " lx\n";
   printGlare(s, v);
   if (v.contrast)
@@ -135,9 +150,12 @@ void addRenderCommand(CLI::App& app, Action& action) {
   cmd->add_option("--coarse-step", opts->coarseStep, "pixels between first-pass samples, 1 = trace every pixel (default 4)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("--irradiance-samples", opts->irradianceSamples,
-                  "matte surfaces seen: rho E / pi from this many hemisphere samples instead of one path per ray "
-                  "(0 = off; default 64, as candela run)")
+                  "diffuse surfaces seen (directly, through or in glass): rho E / pi from this many hemisphere "
+                  "samples (0 = plain paths, one per camera ray; default 64, as candela run)")
       ->check(CLI::Range(0, 65536));
+  cmd->add_option("--glossy-samples", opts->glossySamples,
+                  "glossy surfaces seen: paths per camera ray on their specular lobe (default 8, as candela run)")
+      ->check(CLI::Range(1, 4096));
   cmd->add_option("--scale", opts->scale, "false-colour scale: log | linear (default log)")
       ->check(CLI::IsMember({"log", "linear"}));
   cmd->add_option("--min", opts->minCdM2, "false-colour scale minimum, cd/m2 (default automatic)")

@@ -2,7 +2,11 @@
 
 #include "base/rng.h"
 #include "base/parallel.h"
+#include "engine/fresnel.h"
+#include "engine/integrator_direct.h"
 #include "engine/integrator_path.h"
+#include "engine/materials.h"
+#include "engine/source_distribution.h"
 #include "engine/trace_context.h"
 
 #include <algorithm>
@@ -61,16 +65,171 @@ Rgb luminaireRadiance(const std::vector<LuminaireSource>& lums, const Vec3& o, c
   return out;
 }
 
+// A camera ray as the view's estimator follows it: specular events (mirror, thin glass,
+// dielectric, trans's straight-on part) deterministically, splitting into both branches while
+// each carries a useful share of the pixel; at a diffusely reflecting or transmitting surface
+// ρ E / π (and τd E_back / π) from the sensor estimator's irradiance, and a glossy lobe from
+// `glossySamples` paths. Paths elsewhere (and beyond the limits) as the path tracer's.
+struct CameraRay {
+  TraceContext& ctx;
+  const TraceSettings& irradianceSettings;  // the irradiance estimates at surfaces seen
+  const RenderSettings& render;
+  bool showLuminaires = false;
+  uint64_t nextStream = 0;  // the next irradiance estimate's random stream
+  int estimatesLeft = 0;    // irradiance estimates this camera ray may still take
+};
+
+// Both branches of a specular event are followed while each carries at least this share of the
+// camera ray (clear glass at normal incidence: 0.88 transmitted, 0.08 reflected, both followed;
+// a reflection of a reflection, 0.006, is chosen by roulette: unbiased, rarely noisy in print).
+constexpr double kSplitShare = 0.02;
+// Specular events followed per branch before the path tracer takes over (it has its own cap).
+constexpr int kMaxSpecularEvents = 16;
+// Irradiance estimates per camera ray (each branch that meets a diffuse surface takes one); the
+// irradiance streams of a camera ray are kMaxEstimates consecutive ones.
+constexpr int kMaxEstimates = 32;
+
+Rgb cameraRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip, double share, int events);
+Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip, const RayHit& h, double share,
+                        int events);
+
+// The path tracer's answer for the ray (o, d), as seen from the camera (sources count).
+Rgb plainPath(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip) {
+  PathState st;
+  st.skip = skip;
+  st.countSources = true;
+  return pathRadiance(cr.ctx, o, d, st);
+}
+
+// A two-way specular event: weights wa, wb (RGB) of the branches (oa, da) and (ob, db). Both
+// followed while each keeps kSplitShare of the camera ray; else one chosen by its photopic share.
+Rgb specularSplit(CameraRay& cr, const Rgb& wa, const Vec3& oa, const Vec3& da, const Rgb& wb, const Vec3& ob,
+                  const Vec3& db, uint32_t skip, double share, int events) {
+  const double pa = photopic(wa), pb = photopic(wb);
+  if (pa + pb <= 0.0) return Rgb(0.0);
+  if (share * pa >= kSplitShare && share * pb >= kSplitShare)
+    return wa * cameraRadiance(cr, oa, da, skip, share * pa, events + 1) +
+           wb * cameraRadiance(cr, ob, db, skip, share * pb, events + 1);
+  if (cr.ctx.rng.uniform() * (pa + pb) < pa)
+    return wa * ((pa + pb) / pa) * cameraRadiance(cr, oa, da, skip, share * (pa + pb), events + 1);
+  return wb * ((pa + pb) / pb) * cameraRadiance(cr, ob, db, skip, share * (pa + pb), events + 1);
+}
+
+// Light leaving a plastic, metal or trans surface at x towards the camera ray d: the diffuse
+// parts from irradiance estimates, the straight-on transmission followed, the glossy lobe
+// sampled. The decomposition is diffuseVertex's (engine/integrator_path.cpp), term by term.
+Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3& d, const Vec3& nf, double off,
+                    uint32_t flatSkip, double share, int events) {
+  const Tracer& tracer = cr.ctx.tracer;
+  const Vec3 xf = x + off * nf, xb = x - off * nf;
+  Rgb out(0.0);
+  if (photopic(m.diffuseReflectance) > 0.0)
+    out += m.diffuseReflectance * kInvPi * tracer.irradiance(xf, nf, cr.nextStream++, cr.irradianceSettings).irradiance;
+  if (photopic(m.diffuseTransmittance) > 0.0)
+    out += m.diffuseTransmittance * kInvPi *
+           tracer.irradiance(xb, -nf, cr.nextStream++, cr.irradianceSettings).irradiance;
+  const double pTs = photopic(m.specularTransmittance);
+  if (pTs > 0.0) out += m.specularTransmittance * cameraRadiance(cr, xb, d, flatSkip, share * pTs, events + 1);
+  if (photopic(m.specularReflectance) > 0.0) {
+    // As the path tracer's glossyBounce: a sample carries ρ_s, counts sources and is a bounce.
+    const int n = m.roughness > 0.0 ? std::max(1, cr.render.glossySamples) : 1;
+    PathState next;
+    next.skip = flatSkip;
+    next.countSources = true;
+    next.diffuse = 1;
+    Rgb sum(0.0);
+    for (int k = 0; k < n; ++k) {
+      Vec3 dir(0.0);
+      if (sampleWardLobe(m, d, nf, cr.ctx.rng, dir)) sum += pathRadiance(cr.ctx, xf, dir, next);
+    }
+    out += m.specularReflectance * sum / static_cast<double>(n);
+  }
+  return out;
+}
+
+// The radiance the camera ray (o, d) sees, `share` its photopic weight in the pixel so far and
+// `events` the specular events on its way.
+Rgb cameraRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip, double share, int events) {
+  if (events > kMaxSpecularEvents) return plainPath(cr, o, d, skip);
+  const Scene& scene = cr.ctx.tracer.scene();
+  RayHit h;
+  const bool hit = cr.ctx.intersect(o, d, 0.0, 1e300, h, skip);
+  Rgb emitted(0.0);
+  if (cr.showLuminaires) {
+    double tMax = hit ? h.t : 1e300;
+    emitted = luminaireRadiance(scene.luminaires, o, d, tMax);
+    // An opening met before any surface is all the ray sees; met on its own opening surface
+    // (opening_reflectance, in the same plane), its luminance plus what that surface reflects.
+    if (photopic(emitted) > 0.0 && !(hit && tMax >= h.t * (1.0 - 1e-9))) return emitted;
+  }
+  if (!hit) return distantRadiance(scene, d, true, 0.0, 1.0);
+  return emitted + seenSurfaceRadiance(cr, o, d, skip, h, share, events);
+}
+
+// The radiance of the surface the camera ray (o, d) meets at h (cameraRadiance's part after
+// the luminaires' openings).
+Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip, const RayHit& h, double share,
+                        int events) {
+  const Scene& scene = cr.ctx.tracer.scene();
+  const Shape shape = scene.surface(h.shape);  // a shape or a mesh triangle
+  const Material* m = &scene.materials[shape.material];
+  const Vec3 x = o + h.t * d;
+  const Vec3 ng = shapeNormal(shape, x);
+  const bool front = glm::dot(d, ng) < 0.0;
+  const Vec3 nf = front ? ng : -ng;
+  const double off = Tracer::originOffset(x);
+  const uint32_t flatSkip = isFlat(shape) ? h.shape : kNoShape;
+  if (m->type == MaterialType::kIllum) {
+    if (m->alternate < 0) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // invisible
+    m = &scene.materials[m->alternate];
+  }
+  switch (m->type) {
+    case MaterialType::kLight:
+    case MaterialType::kIllum:
+    case MaterialType::kGlow:
+      if (!front) return Rgb(0.0);
+      return m->pattern < 0 ? m->color : emittedRadiance(scene, *m, d, -glm::dot(d, nf));
+    case MaterialType::kVoid:
+      return Rgb(0.0);
+    case MaterialType::kMirror:
+      return m->color * cameraRadiance(cr, x + off * nf, mirrorDirection(d, ng), flatSkip,
+                                       share * photopic(m->color), events + 1);
+    case MaterialType::kGlass: {
+      Rgb tr(0.0), rf(0.0);
+      thinGlass(m->color, m->refractiveIndex, glm::dot(d, ng), tr, rf);
+      return specularSplit(cr, tr, x - off * nf, d, rf, x + off * nf, mirrorDirection(d, ng), flatSkip, share, events);
+    }
+    case MaterialType::kDielectric: {
+      Rgb absorbed(1.0);
+      if (!front) absorbInDielectric(*m, h.t, absorbed);
+      const double eta = front ? m->refractiveIndex : 1.0 / m->refractiveIndex;
+      const Fresnel f = fresnel(-glm::dot(d, nf), eta);
+      const double r = f.unpolarised();
+      const Vec3 refl = mirrorDirection(d, nf);
+      if (f.tir || r >= 1.0)
+        return absorbed * cameraRadiance(cr, x + off * nf, refl, flatSkip, share * photopic(absorbed), events + 1);
+      return absorbed * specularSplit(cr, Rgb(r), x + off * nf, refl, Rgb(1.0 - r), x - off * nf,
+                                      refractDirection(d, nf, eta, f.cosT), flatSkip,
+                                      share * photopic(absorbed), events);
+    }
+    default:
+      break;
+  }
+  // plastic, metal, trans.
+  if (cr.estimatesLeft < 2) return plainPath(cr, o, d, skip);
+  cr.estimatesLeft -= 2;  // at most two estimates (front and back)
+  return surfaceRadiance(cr, *m, x, d, nf, off, flatSkip, share, events);
+}
+
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.
 // 8 parameters: the pixel, its camera, both settings (paths, seen surfaces) and the shared ray count.
 PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, const TraceSettings& s,
                       const TraceSettings& irradianceSettings, const RenderSettings& r,
                       std::atomic<std::size_t>& rays) {
-  Rng rng(s.seed, kCameraStreamBase + static_cast<uint64_t>(y) * cam.width() + x);
+  const uint64_t pixel = static_cast<uint64_t>(y) * cam.width() + x;
+  Rng rng(s.seed, kCameraStreamBase + pixel);
   // The pixel's camera rays share one context (its rays, scratch), as Tracer::radiance's own.
   TraceContext ctx(tracer, s, rng);
-  PathState cameraRay;
-  cameraRay.countSources = true;
   const int n = std::max(1, r.samplesPerPixel);
   const int m = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
   const bool showLums = r.showLuminaires && !tracer.scene().luminaires.empty();
@@ -86,37 +245,23 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
     }
     const auto dir = cam.direction(x + ju, y + jv);
     if (!dir) continue;
+    CameraRay cr{ctx, irradianceSettings, r, showLums,
+                 kIrradianceStreamBase + (pixel * static_cast<uint64_t>(n) + k) * kMaxEstimates,
+                 r.irradianceSamples > 0 ? kMaxEstimates : 0};
     Rgb value(0.0);
-    bool done = false;
-    RayHit h;
-    bool hit = false;
-    if (showLums || r.irradianceSamples > 0) hit = tracer.accelerator().intersect(cam.position(), *dir, 0.0, 1e300, h);
-    if (showLums) {
-      double tMax = hit ? h.t : 1e300;
-      const Rgb lum = luminaireRadiance(tracer.scene().luminaires, cam.position(), *dir, tMax);
-      if (photopic(lum) > 0.0) {
-        value = lum;
-        // Met on its opening surface (opening_reflectance): its luminance plus what it reflects.
-        done = !(hit && tMax >= h.t * (1.0 - 1e-9));
-      }
+    if (r.irradianceSamples > 0) {
+      value = cameraRadiance(cr, cam.position(), *dir, kNoShape, 1.0, 0);
+    } else {
+      // Plain paths: one per camera ray (the luminaires' openings drawn where the ray meets them).
+      // An opening on its own surface (opening_reflectance) adds that surface's reflection.
+      double tMax = 1e300;
+      RayHit h;
+      const bool hit = showLums && tracer.accelerator().intersect(cam.position(), *dir, 0.0, 1e300, h);
+      if (hit) tMax = h.t;
+      value = showLums ? luminaireRadiance(tracer.scene().luminaires, cam.position(), *dir, tMax) : Rgb(0.0);
+      if (!(photopic(value) > 0.0) || (hit && tMax >= h.t * (1.0 - 1e-9)))
+        value += plainPath(cr, cam.position(), *dir, kNoShape);
     }
-    if (!done && hit && r.irradianceSamples > 0) {
-      // A matte opaque surface seen directly: L = ρ E / π with E the sensor estimator's
-      // irradiance just above it (stratified hemisphere, per-light ratio estimators), far less
-      // noisy than one path. Its own stream: pixel-sample index above the camera streams.
-      const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
-      const Material& mat = tracer.scene().materials[shape.material];
-      if (isMatteOpaque(mat)) {
-        const Vec3 xh = cam.position() + h.t * *dir;
-        const Vec3 ng = shapeNormal(shape, xh);
-        const Vec3 nf = glm::dot(*dir, ng) < 0.0 ? ng : -ng;
-        const Vec3 p = xh + Tracer::originOffset(xh) * nf;
-        const uint64_t stream = kIrradianceStreamBase + (static_cast<uint64_t>(y) * cam.width() + x) * n + k;
-        value += mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, irradianceSettings).irradiance;
-        done = true;
-      }
-    }
-    if (!done) value += pathRadiance(ctx, cam.position(), *dir, cameraRay);
     sum += value;
     const double l = luminanceFromRadiance(value);
     y1 += l;
@@ -269,7 +414,17 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
         p.standardError += w[k] * img.standardError[c[k]];
       }
       p.luminance = luminanceFromRadiance(p.radiance);
-      if (!img.inside[i]) p = PixelValue{};
+      if (!img.inside[i]) {
+        p = PixelValue{};
+      } else {
+        Image::Interpolation r;
+        r.pixel = static_cast<uint32_t>(i);
+        for (int k = 0; k < 4; ++k) {
+          r.corner[k] = static_cast<uint32_t>(c[k]);
+          r.weight[k] = w[k];
+        }
+        img.interpolations.push_back(r);
+      }
       store(i, p);
     }
     report(toInterpolate.size());
@@ -280,7 +435,27 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
 
   for (uint8_t t : img.traced) img.tracedPixels += t;
   img.cameraRays = rays.load();
+  img.samplesPerPixel = std::max(1, render.samplesPerPixel);
   return img;
+}
+
+double meanStandardError(const Image& img, const std::vector<double>& weights) {
+  if (img.samplesPerPixel < 2 || weights.size() != img.luminance.size()) return std::nan("");
+  // Each pixel's coefficient in the mean: an interpolated pixel's passes to its corners, the
+  // latest first (corners were settled before the pixels interpolated from them).
+  std::vector<double> c = weights;
+  double total = 0.0;
+  for (double w : weights) total += w;
+  if (!(total > 0.0)) return std::nan("");
+  for (auto it = img.interpolations.rbegin(); it != img.interpolations.rend(); ++it) {
+    const double ci = c[it->pixel];
+    c[it->pixel] = 0.0;
+    for (int k = 0; k < 4; ++k) c[it->corner[k]] += it->weight[k] * ci;
+  }
+  double variance = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (img.traced[i]) variance += c[i] * c[i] * img.standardError[i] * img.standardError[i];
+  return std::sqrt(variance) / total;
 }
 
 ViewGeometry viewGeometry(const View& view) {

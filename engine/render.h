@@ -24,6 +24,16 @@ struct Image {
   std::vector<uint8_t> traced;     // 1 where the pixel was traced, 0 where interpolated
   std::size_t tracedPixels = 0;
   std::size_t cameraRays = 0;
+  int samplesPerPixel = 0;         // camera rays per traced pixel (its standard error needs 2 or more)
+  // How each interpolated pixel inside the image was made from four settled pixels (bilinear
+  // weights), in the order made: what meanStandardError needs to carry their errors back to the
+  // traced pixels they came from.
+  struct Interpolation {
+    uint32_t pixel = 0;
+    uint32_t corner[4] = {0, 0, 0, 0};
+    double weight[4] = {0.0, 0.0, 0.0, 0.0};
+  };
+  std::vector<Interpolation> interpolations;
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 };
@@ -44,8 +54,14 @@ struct RenderSettings {
   // this many hemisphere samples and `irradianceLightSamples` per source, instead of following
   // one path: direct light exact where a source is wholly visible, indirect stratified. Costs
   // about irradianceSamples paths per camera ray; other surfaces are path traced.
+  // The same estimator then follows what the camera sees through specular events: a mirror,
+  // thin glass (transmitted and reflected both followed while each carries 2 % of the ray, the
+  // rest by roulette), a dielectric boundary, trans's straight-on part; matte surfaces seen in
+  // a window or through it take ρ E / π as well, so a window is not salt-and-pepper. A glossy
+  // (Ward) lobe of a surface seen takes `glossySamples` paths per camera ray.
   int irradianceSamples = 0;
   int irradianceLightSamples = 4;
+  int glossySamples = 8;
   // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
   // area) so that they appear in images and glare evaluations.
   bool showLuminaires = true;
@@ -61,6 +77,14 @@ using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
 // (0 = all cores).
 Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render = {}, const RenderProgress& progress = {});
+
+// Standard error (cd/m²) of the weighted mean Σ wᵢ Lᵢ / Σ wᵢ of the image's luminances
+// (`weights` one per pixel, e.g. solid angles; 0 leaves a pixel out), from the traced pixels'
+// standard errors (independent: each pixel its own random stream) with every interpolated pixel's
+// weight carried back to the traced pixels it came from. Monte Carlo noise only: the error of
+// interpolating between lattice points is not in it. NaN when the traced pixels have fewer than
+// two camera rays each (no spread to estimate from) or the weights sum to 0.
+double meanStandardError(const Image& img, const std::vector<double>& weights);
 
 // Direction (view frame: x right, y up, z forward) and solid angle (sr) of every pixel centre of
 // a view, for glare evaluations from the image; pixels without a ray get solid angle 0.

@@ -71,6 +71,16 @@ std::string summaryJson(const ReportData& data) {
     grids.push_back(o);
   }
   j["grids"] = grids;
+  json views = json::array();
+  for (const ViewReport& v : data.views)
+    views.push_back({{"name", v.name},
+                     {"mean_luminance_cd_m2", number(v.meanLuminanceCdM2)},
+                     {"mean_luminance_relative_standard_error", number(v.meanLuminanceRelativeStandardError)},
+                     {"glare_source_luminance_cd_m2", optionalNumber(v.glareSourceLuminanceCdM2)},
+                     {"glare_source_luminance_relative_standard_error",
+                      v.glareSourceLuminanceRelativeStandardError ? number(*v.glareSourceLuminanceRelativeStandardError)
+                                                                  : json()}});
+  j["views"] = views;
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();
   for (const Warning& w : data.warnings)

@@ -18,7 +18,11 @@ namespace candela {
 //              "UDI_autonomous", "UDI_exceeded" (grid means, % of occupied hours), "sDA300_50",
 //              "ASE1000_250" (% of sensors), "sun_hours_mean" (h), "sensors", "occupied_hours",
 //              "coefficients_time_s", "product_time_s" (s, null if unset)}],
-//   annual runs only: "coefficients_time_s", "product_time_s"
+//   annual runs only: "coefficients_time_s", "product_time_s",
+//   "views": [{"name", "mean_luminance_cd_m2" (solid-angle weighted mean over the image),
+//              "mean_luminance_relative_standard_error", "glare_source_luminance_cd_m2" (the
+//              image's DGP glare sources pooled), "glare_source_luminance_relative_standard_error"
+//              (fractions; null when unknown, or the view has no image glare source)}]
 // }
 // Values are in each grid's unit (lux, or % for daylight-factor grids); verdicts "pass",
 // "fail" or "n/a".

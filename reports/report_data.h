@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -101,6 +102,14 @@ struct ViewReport {
   std::vector<uint8_t> falseColorPng;  // luminance in false colour with its legend
   std::vector<uint8_t> previewPng;     // tone-mapped
   std::vector<std::pair<std::string, std::string>> metrics;  // {"UGR", "18.5"}, ...
+  // The picture's noise (docs/views.md): the solid-angle weighted mean luminance in cd/m² and its
+  // relative standard error (a fraction; NaN when the image has no error estimate), and the same
+  // for the image's glare sources pooled (unset when the view has none: not a fisheye, or no
+  // pixel above the DGP threshold).
+  double meanLuminanceCdM2 = 0.0;
+  double meanLuminanceRelativeStandardError = std::numeric_limits<double>::quiet_NaN();
+  std::optional<double> glareSourceLuminanceCdM2;
+  std::optional<double> glareSourceLuminanceRelativeStandardError;
 };
 
 struct ReportData {

@@ -20,6 +20,20 @@ ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const Tra
     GlareDetection det;
     det.thresholdCdM2 = glareThresholdCdM2;
     g.dgp = evaluateImageGlare(img.luminance, geo.directionView, geo.solidAngleSr, img.width, img.height, det);
+    // The pixels evaluateImageGlare groups into sources (metrics/glare.cpp: inside, above the
+    // threshold, in front of the eye), all together.
+    std::vector<double> w(img.luminance.size(), 0.0);
+    double sum = 0.0, omega = 0.0;
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (geo.solidAngleSr[i] > 0.0 && img.luminance[i] > g.dgp->thresholdCdM2 && geo.directionView[i].z > 0.0) {
+        w[i] = geo.solidAngleSr[i];
+        sum += w[i] * img.luminance[i];
+        omega += w[i];
+      }
+    if (omega > 0.0) {
+      g.sourceLuminanceCdM2 = sum / omega;
+      g.sourceLuminanceRelativeStandardError = meanStandardError(img, w) / *g.sourceLuminanceCdM2;
+    }
   }
   return g;
 }

@@ -18,6 +18,12 @@ struct ViewGlare {
   double verticalLux = 0.0;         // illuminance at the eye, lux
   double backgroundCdM2 = 0.0;      // UGR background luminance
   std::optional<ImageGlare> dgp;    // fisheye views only
+  // The image's glare sources (DGP's, fisheye views with any) pooled: their pixels' solid-angle
+  // weighted mean luminance, cd/m², and its relative standard error (meanStandardError over the
+  // mean; NaN when the image has no error estimate). Unset without image glare sources (UGR's
+  // luminaires have closed-form luminances, no Monte Carlo error).
+  std::optional<double> sourceLuminanceCdM2;
+  std::optional<double> sourceLuminanceRelativeStandardError;
 };
 
 ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,

@@ -8,6 +8,7 @@
 #include "study/warnings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace candela {
@@ -18,6 +19,15 @@ std::string fixed(double v, int decimals) { return formatFixed(v, decimals); }
 
 }  // namespace
 
+std::string relativeErrorText(double relativeStandardError) {
+  if (!std::isfinite(relativeStandardError)) return "(standard error unknown)";
+  return "± " + fixed(100.0 * relativeStandardError, 2) + " % (standard error)";
+}
+
+namespace {
+
+}  // namespace
+
 ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
                        int threads, const ViewOptions& options, StudyObserver& observer) {
   ViewResult v;
@@ -25,6 +35,7 @@ ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec&
   v.render.samplesPerPixel = options.pixelSamples;
   v.render.coarseStep = options.coarseStep;
   v.render.irradianceSamples = options.irradianceSamples;
+  v.render.glossySamples = options.glossySamples;
   {
     const ObservedStep step(observer, "rendering " + view.name,
                             static_cast<std::size_t>(view.resolution.x) * view.resolution.y);
@@ -57,6 +68,17 @@ ViewReport viewReport(const ViewResult& v) {
   vr.falseColorPng = encodePng(luminanceFalseColor(img.width, img.height, img.luminance, v.scale));
   vr.previewPng = encodePng(toneMap(img.width, img.height, img.luminance, v.rgbCdM2, img.inside));
   const ViewGlare& glare = v.glare;
+  const ViewLuminance lum = viewLuminance(v);
+  vr.meanLuminanceCdM2 = lum.meanCdM2;
+  vr.meanLuminanceRelativeStandardError = lum.meanRelativeStandardError;
+  vr.glareSourceLuminanceCdM2 = glare.sourceLuminanceCdM2;
+  vr.glareSourceLuminanceRelativeStandardError = glare.sourceLuminanceRelativeStandardError;
+  vr.metrics.emplace_back("Mean luminance", fixed(lum.meanCdM2, 1) + " cd/m² " +
+                                                relativeErrorText(lum.meanRelativeStandardError));
+  if (glare.sourceLuminanceCdM2)
+    vr.metrics.emplace_back("Glare sources' luminance (DGP's, pooled)",
+                            fixed(*glare.sourceLuminanceCdM2, 0) + " cd/m² " +
+                                relativeErrorText(*glare.sourceLuminanceRelativeStandardError));
   vr.metrics.emplace_back("Vertical illuminance at the eye", fixed(glare.verticalLux, 1) + " lx");
   vr.metrics.emplace_back("UGR (CIE 117)", glare.sources.empty() ? "no luminaire in view"
                                                                  : fixed(glare.ugr, 1) + " (" +
@@ -123,15 +145,18 @@ ViewLuminance viewLuminance(const ViewResult& v) {
   const Image& img = v.image;
   double sum = 0.0, omega = 0.0;
   ViewLuminance out;
+  std::vector<double> weights(img.luminance.size(), 0.0);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
       const std::size_t i = img.index(x, y);
       const double w = cam.pixelSolidAngleSr(x, y);
+      weights[i] = w;
       sum += img.luminance[i] * w;
       omega += w;
       out.maxCdM2 = std::max(out.maxCdM2, img.luminance[i]);
     }
   out.meanCdM2 = omega > 0.0 ? sum / omega : 0.0;
+  out.meanRelativeStandardError = meanStandardError(img, weights) / out.meanCdM2;
   return out;
 }
 

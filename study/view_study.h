@@ -30,6 +30,7 @@ struct ViewOptions {
   // (0: one path per camera ray). A path per ray leaves salt-and-pepper noise at the few rays per
   // pixel a report can afford, under a sky (through windows) as under electric light (docs/views.md).
   int irradianceSamples = 64;
+  int glossySamples = 8;  // paths per camera ray on a glossy (Ward) lobe seen (engine/render.h)
   bool logScale = true;
   std::optional<double> minCdM2, maxCdM2;   // false-colour range; unset: automatic
   double glareThresholdCdM2 = 0.0;          // DGP glare sources; 0: 5 × the image's mean luminance
@@ -61,11 +62,18 @@ ViewReport viewReport(const ViewResult& v);
 // Writes the view's three pictures into `dir` (atomically, each); `comment` goes into the EXR.
 ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment);
 
-// Mean luminance over the image weighted by each pixel's solid angle, and the largest, cd/m².
+// Mean luminance over the image weighted by each pixel's solid angle, and the largest, cd/m²;
+// the mean's relative standard error (engine/render.h meanStandardError over the mean: Monte
+// Carlo noise of the traced pixels; NaN when the image has no error estimate).
 struct ViewLuminance {
   double meanCdM2 = 0.0, maxCdM2 = 0.0;
+  double meanRelativeStandardError = 0.0;
 };
 ViewLuminance viewLuminance(const ViewResult& v);
+
+// "± 0.52 % (standard error)" for a relative standard error of 0.0052; says it is unknown when
+// it is not finite (the report's and `candela render`'s wording).
+std::string relativeErrorText(double relativeStandardError);
 
 // `candela render`: one [[view]] of a case, named `view`, through the same pipeline and settings
 // as `candela run` gives it, its pictures written into `outDir` (empty: the case's [output] dir).

@@ -22,3 +22,8 @@ candela_cli_test(render.contrast_same_material 2 "task and background look alike
 # The three pictures are one set: a render that cannot replace one of them replaces none.
 add_test(NAME cli.render.keeps_previous_set COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/render_keeps_set.sh
          $<TARGET_FILE:candela> ${RENDER_CASE} door)
+# The issue's contract from the command line: a matte floor (rho 0.5) under a uniform sky of
+# 179 x 10 = 1790 cd/m2 reads rho L = 895 cd/m2 (E = pi L, L = rho E / pi) in every pixel, so the
+# mean is 895.0 and its standard error 0 (tests/study/run_case_test.cpp checks every pixel).
+candela_cli_test(render.glow_floor_exact 0 "luminance: mean 895.0 cd/m2 +/- 0.00 % (standard error)"
+                 render ${PROJECT_SOURCE_DIR}/tests/data/study/glow_floor.toml --view down --out ${RENDER_OUT})

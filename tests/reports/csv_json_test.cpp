@@ -139,6 +139,36 @@ TEST(Summary, CsvAndJsonCarryTheMetrics) {
   EXPECT_EQ(j["grids"][1]["verdict"], "fail");
 }
 
+// Each view's noise under the names docs/reports.md gives; unknown or absent values are null.
+TEST(Summary, JsonCarriesEachViewsNoise) {
+  ReportData data = testing_sample::sampleReport();
+  ViewReport a;
+  a.name = "desk";
+  a.meanLuminanceCdM2 = 97.5;
+  a.meanLuminanceRelativeStandardError = 0.0016;
+  a.glareSourceLuminanceCdM2 = 2436.0;
+  a.glareSourceLuminanceRelativeStandardError = 0.0025;
+  ViewReport b;
+  b.name = "overview";
+  b.meanLuminanceCdM2 = 50.0;  // one ray per pixel: no error estimate; a perspective: no image glare sources
+  data.views = {a, b};
+  const nlohmann::json j = nlohmann::json::parse(summaryJson(data));
+  ASSERT_EQ(j["views"].size(), 2u);
+  const nlohmann::json& ja = j["views"][0];
+  EXPECT_EQ(ja["name"], "desk");
+  EXPECT_DOUBLE_EQ(ja["mean_luminance_cd_m2"].get<double>(), 97.5);
+  EXPECT_DOUBLE_EQ(ja["mean_luminance_relative_standard_error"].get<double>(), 0.0016);
+  EXPECT_DOUBLE_EQ(ja["glare_source_luminance_cd_m2"].get<double>(), 2436.0);
+  EXPECT_DOUBLE_EQ(ja["glare_source_luminance_relative_standard_error"].get<double>(), 0.0025);
+  const nlohmann::json& jb = j["views"][1];
+  EXPECT_TRUE(jb["mean_luminance_relative_standard_error"].is_null());
+  EXPECT_TRUE(jb["glare_source_luminance_cd_m2"].is_null());
+  EXPECT_TRUE(jb["glare_source_luminance_relative_standard_error"].is_null());
+  // No views: an empty array, so scripts need no key check.
+  data.views.clear();
+  EXPECT_TRUE(nlohmann::json::parse(summaryJson(data))["views"].is_array());
+}
+
 TEST(Summary, CsvFieldQuoting) {
   EXPECT_EQ(csvField("plain"), "plain");
   EXPECT_EQ(csvField("a,b"), "\"a,b\"");
