@@ -174,6 +174,8 @@ void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, c
     st.skip = r.skip;
     st.diffuse = level;
     st.misCosPdf = h.local[c].z * kInvPi;
+    st.misOrigin = o;
+    st.misNormal = r.n;
     h.radiance[c] = pathRadiance(ctx, o, dir, st, deeper ? &use : nullptr, &h.distanceM[c]);
   }
   setRecordValue(r, h, frame);

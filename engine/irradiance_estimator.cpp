@@ -50,6 +50,9 @@ Rgb sampleCell(SensorEstimate& e, int cell, double su, double sv, int sub) {
   PathState st;
   st.misCosPdf = glm::dot(dir, e.n) * kInvPi;
   st.misRatio = e.misRatio;
+  st.misPortalRatio = e.misRatio * kSensorPortalFactor;
+  st.misOrigin = e.p;
+  st.misNormal = e.n;
   if (e.cache) return pathRadiance(e.ctx, e.p, dir, st, &e.use);
   st.split = e.ctx.settings.firstBounceSplit;
   return pathRadiance(e.ctx, e.p, dir, st);

@@ -24,6 +24,7 @@ struct LightScratch {
   std::vector<double> cumulative;         // the triangles' cumulative areas
   std::vector<double> zRatio, zRest, fyS, vyS;  // per-stratum terms of the variance
   std::vector<double> cdf;                // light selection at path vertices (light_selection.h)
+  PortalView portals;                     // the portals seen from the receiver (engine/portals.h)
 };
 
 struct TraceContext {

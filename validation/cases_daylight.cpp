@@ -90,12 +90,20 @@ constexpr const char* kRoofWithOpening =
     "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
     "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n";
 
+// The roof's opening as a declared portal (docs/daylight.md#portals): a hole, so nothing finds
+// it in the scene, and sky samples are drawn through it.
+void addRoofPortal(Scene& scene) {
+  scene.portals.push_back({{Vec3(-0.5, -0.75, 3.0), Vec3(0.5, -0.75, 3.0), Vec3(0.5, 0.75, 3.0), Vec3(-0.5, 0.75, 3.0)},
+                           "roof opening", {}});
+}
+
 CaseResult roofOpening(const RunConfig& cfg) {
   // A 1 m × 1.5 m opening in an infinite black roof 3 m up, uniform sky of 10000 lux: a floor
   // sensor sees the sky only through it, E = E_h · F, F the configuration factor of the opening.
   Scene scene;
   readRadianceText(kRoofWithOpening,
                    "<roof>", scene);
+  addRoofPortal(scene);
   addDaylight(scene, skySpec("uniform"));
   const double L = 10000.0 / kPi;  // luminance of a uniform sky of E_h = 10000 lux
   std::vector<std::pair<std::string, SensorPoint>> probes;
@@ -128,6 +136,7 @@ CaseResult roofOpeningOvercastDf(const RunConfig& cfg) {
   Scene scene;
   readRadianceText(kRoofWithOpening,
                    "<roof>", scene);
+  addRoofPortal(scene);
   addDaylight(scene, skySpec("cie-overcast"));
   std::vector<std::pair<std::string, SensorPoint>> probes;
   std::vector<double> refs;
@@ -153,6 +162,8 @@ CaseResult sideWindow(const RunConfig& cfg) {
                    "black polygon w4 0 0 12 0 1 1  0 1e4 1  0 1e4 2  0 1 2\n"
                    "black polygon ceiling 0 0 12 0 -1e4 2  1e4 -1e4 2  1e4 1e4 2  0 1e4 2\n",
                    "<wall>", scene);
+  // The window is a hole: a declared portal.
+  scene.portals.push_back({{Vec3(0, -1, 1), Vec3(0, 1, 1), Vec3(0, 1, 2), Vec3(0, -1, 2)}, "window", {}});
   addDaylight(scene, skySpec("cie-overcast"));
   std::vector<std::pair<std::string, SensorPoint>> probes;
   std::vector<double> refs;
