@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace candela {
@@ -44,6 +45,33 @@ bool sampleSphericalTriangle(const Vec3& a, const Vec3& b, const Vec3& c, double
   const double lw = glm::length(w);
   dir = lw > 0.0 ? glm::normalize(z * b + std::sqrt(std::max(0.0, 1.0 - z * z)) * (w / lw)) : b;
   return true;
+}
+
+std::string portalOutlineProblem(const std::vector<Vec3>& outline, size_t* badVertex) {
+  if (badVertex) *badVertex = outline.size();
+  if (outline.size() < 3) return "a portal needs at least 3 vertices, got " + std::to_string(outline.size());
+  const Vec3 nn = newellNormal(outline);
+  if (!(glm::length(nn) > 0.0)) return "the portal's outline encloses no area";
+  // Blamed: the first vertex off the plane of the first three (Newell's plane when those are
+  // in a line), beyond 0.1 % of the outline's size.
+  Vec3 n = glm::cross(outline[1] - outline[0], outline[2] - outline[0]);
+  n = glm::length(n) > 1e-9 * glm::length(nn) ? glm::normalize(n) : glm::normalize(nn);
+  Vec3 c(0.0);
+  for (const Vec3& v : outline) c += v;
+  c /= static_cast<double>(outline.size());
+  double size = 0.0;
+  for (const Vec3& v : outline) size = std::max(size, glm::length(v - c));
+  for (size_t i = 3; i < outline.size(); ++i) {
+    const double off = std::abs(glm::dot(outline[i] - outline[0], n));
+    if (off > 1e-3 * 2.0 * size) {
+      if (badVertex) *badVertex = i;
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "portal vertex %zu lies %.4g m off the plane of the first three (it must be planar)",
+                    i + 1, off);
+      return buf;
+    }
+  }
+  return "";
 }
 
 PortalSet::PortalSet(const Scene& scene) {

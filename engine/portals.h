@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace candela {
@@ -64,6 +65,12 @@ class PortalSet {
   std::vector<std::array<Vec3, 3>> tris_;
   size_t found_ = 0;
 };
+
+// What is wrong with a portal's outline as given ("" when nothing): fewer than 3 vertices, no
+// area, or a vertex off the polygon's plane by more than 0.1 % of its size (as the scene
+// reader's planarity tolerance); *badVertex (when given) the index of the vertex to blame, or
+// the vertex count when none is.
+std::string portalOutlineProblem(const std::vector<Vec3>& outline, size_t* badVertex = nullptr);
 
 // Solid angle (sr) of the triangle (a, b, c) seen from the origin; a, b, c need not be unit
 // (Van Oosterom & Strackee 1983, "The solid angle of a plane triangle", IEEE Trans. Biomed. Eng. 30).
