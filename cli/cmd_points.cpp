@@ -28,6 +28,7 @@ struct PointsOptions {
   std::vector<std::string> scenes;
   std::string caseFile;
   std::string pointsFile;
+  std::vector<std::string> portalFiles;
   CaseTraceOptions trace;
   ResourceOptions resources;
   bool quiet = false;
@@ -74,6 +75,7 @@ int runPoints(const PointsOptions& o) {
   PointsJob job;
   job.caseFile = o.caseFile;
   job.scenes.assign(o.scenes.begin(), o.scenes.end());
+  job.portalFiles.assign(o.portalFiles.begin(), o.portalFiles.end());
   if (!o.sky.empty()) job.sky = [&o](DaylightSpec caseDaylight) { return daylightFromOptions(o, caseDaylight); };
   job.trace = o.trace.overrides();
   job.trace.targetRelativeError = o.targetErrorPct / 100.0;
@@ -132,6 +134,11 @@ void addPointsCommand(CLI::App& app, Action& action) {
   cmd->add_option("--case", opts->caseFile, "case file: its scenes, luminaires and settings apply")
       ->check(CLI::ExistingFile);
   cmd->add_option("--points", opts->pointsFile, "sensor points file (default: stdin)");
+  cmd->add_option("--portal", opts->portalFiles,
+                  "file of openings without glazing that guide sky sampling (repeatable): one planar polygon "
+                  "per line, 'x1 y1 z1 x2 y2 z2 x3 y3 z3 ...' in m, '#' comments; glazing is found by itself "
+                  "(docs/daylight.md#portals)")
+      ->group("Daylight");
   addCaseTraceOptions(cmd, opts->trace, "hemisphere samples per point", "path");
   cmd->add_option("--accelerator", opts->accelerator, "embree (default) | octree (the paper's)")
       ->check(parsedBy(parseAccelerator, "ACCELERATOR"));

@@ -178,6 +178,8 @@ void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, c
     // x samples by its own x: see docs/estimator.md#small-emitters).
     st.litPoint = o;
     st.lighting = true;
+    st.misOrigin = o;
+    st.misNormal = r.n;
     h.radiance[c] = pathRadiance(ctx, o, dir, st, deeper ? &use : nullptr, &h.distanceM[c]);
   }
   setRecordValue(r, h, frame);

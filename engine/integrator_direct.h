@@ -22,13 +22,49 @@ struct Receiver {
 // Direct irradiance at `at` from every sampled source with k stratified samples each; adds the
 // variance of its photopic value to *variance when given (sensors; nullptr at path vertices,
 // which choose one light per sample instead). With a sky, k sky samples by luminance are taken
-// too, weighted against the cosine-sampled rays that accompany them by the power heuristic with
-// misRatio = k / (number of cosine-sampled rays). Reports to ctx.tally's sky bins and suns.
+// too, and where portals are seen (engine/portals.h) kSensorPortalFactor·k (sensors) or k (path
+// vertices) samples through them, all weighted against the cosine-sampled rays that accompany
+// them by the power heuristic with misRatio = k / (number of cosine-sampled rays). Reports to
+// ctx.tally's sky bins and suns.
+// Portal samples per sky sample at a sensor (path vertices take one each): at normal quality
+// 4 × 64 shadow rays beside 2048 hemisphere rays, where portals are seen (docs/daylight.md#portals).
+constexpr int kSensorPortalFactor = 4;
+
 Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance, double misRatio);
 
-// Radiance of the sky and the distant sources seen along an escaping ray of direction dir.
-// misCosPdf: density (per sr) of the cosine sampling that drew dir (0: not cosine-sampled, the
-// sky counts in full); misRatio as for directIrradiance.
-Rgb distantRadiance(const Scene& scene, const Vec3& dir, bool countSources, double misCosPdf, double misRatio);
+// How an escaping ray was drawn, for the sky's MIS weight: the density (per sr) of the cosine
+// sampling that drew it (0: not cosine-sampled, the sky counts in full), misRatio as for
+// directIrradiance, and the receiver the ray left (point, unit normal), on which the portals'
+// density depends.
+struct SkyMis {
+  double cosPdf = 0.0;
+  double ratio = 1.0;
+  double portalRatio = 1.0;  // (portal samples) / (cosine rays) at the receiver
+  Vec3 origin{0.0};
+  Vec3 normal{0.0, 0.0, 1.0};
+};
+
+// The sky strategies' terms of the power heuristic for direction dir at receiver (p, n), per
+// unit cosine-ray density (docs/daylight.md#portals): the sky's luminance density p_s times
+// misRatio, and, when a portal is above the receiver's horizon, the portals' density p_P times
+// portalRatio (portal samples / cosine rays) times a boost (kPortalBoost in the .cpp: inside a
+// small opening the portal samples then take nearly all the weight, where the stratified cosine
+// rays' error sits in the strata the opening's edge cuts). The three weights sum to 1 for every
+// direction, so the estimate stays unbiased whatever the portals.
+struct SkyMisTerms {
+  double ps = 0.0, pp = 0.0;  // the densities (per sr): sky by luminance, portals
+  double sky = 0.0;           // misRatio · p_s
+  double portal = 0.0;        // boost · portalRatio · p_P (0 without portals)
+};
+SkyMisTerms skyMisTerms(const Tracer& tracer, const Vec3& dir, const Vec3& p, const Vec3& n, double misRatio,
+                        double portalRatio);
+
+// The power-heuristic weight of a cosine-sampled escaping ray along dir (sky or ground) against
+// the sky samples; 1 when mis.cosPdf is 0.
+double skyMisWeight(const Tracer& tracer, const Vec3& dir, const SkyMis& mis);
+
+// Radiance of the sky, the ground and the distant sources seen along an escaping ray of
+// direction dir, the sky and ground weighted by skyMisWeight.
+Rgb distantRadiance(const Tracer& tracer, const Vec3& dir, bool countSources, const SkyMis& mis);
 
 }  // namespace candela

@@ -39,19 +39,14 @@ struct Ray {
 Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st);
 
 // The radiance of sky and distant sources seen by a ray escaping along d; tallies it as the sky
-// tally asks (MIS-weighted as distantRadiance weighs it, the ground always in full).
+// tally asks (MIS-weighted as distantRadiance weighs it, sky and ground alike).
 Rgb escapeRadiance(TraceContext& ctx, const Vec3& d, const PathState& st, const Ray& ray) {
   const Scene& scene = ctx.tracer.scene();
   SkyTally* tally = ctx.tally;
-  if (tally && tally->patches && scene.sky && !(tally->directApart && st.diffuse == 0 && !ray.reflected)) {
-    double w = 1.0;
-    if (d.z > 0.0 && st.misCosPdf > 0.0) {
-      const double ps = st.misRatio * scene.sky->model->pdf(modelToTrue(d, scene.sky->northDeg));
-      w = st.misCosPdf * st.misCosPdf / (st.misCosPdf * st.misCosPdf + ps * ps);
-    }
-    tallySky(*tally, d, ray.beta * w, st.diffuse == 0 && !ray.reflected);
-  }
-  return distantRadiance(scene, d, st.countSources, st.misCosPdf, st.misRatio);
+  const SkyMis mis{st.misCosPdf, st.misRatio, st.misPortalRatio, st.misOrigin, st.misNormal};
+  if (tally && tally->patches && scene.sky && !(tally->directApart && st.diffuse == 0 && !ray.reflected))
+    tallySky(*tally, d, ray.beta * skyMisWeight(ctx.tracer, d, mis), st.diffuse == 0 && !ray.reflected);
+  return distantRadiance(ctx.tracer, d, st.countSources, mis);
 }
 
 // Follows a mirror, thin glass or dielectric at v: the ray and the path's state after it; false
@@ -202,12 +197,16 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       const TallyFactor tf(ctx.tally, rho * (norm / pRho / k));
       bounce.misCosPdf = glm::dot(dir, nf) * kInvPi;
       bounce.litPoint = xf;
+      bounce.misOrigin = xf;
+      bounce.misNormal = nf;
       acc += rho * (norm / pRho) * pathRadiance(ctx, xf, dir, bounce);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
       const TallyFactor tf(ctx.tally, tauD * (norm / pTd / k));
       bounce.misCosPdf = -glm::dot(dir, nf) * kInvPi;
       bounce.litPoint = xb;
+      bounce.misOrigin = xb;
+      bounce.misNormal = -nf;
       acc += tauD * (norm / pTd) * pathRadiance(ctx, xb, dir, bounce);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.

@@ -23,6 +23,11 @@ struct PathState {
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
   double misCosPdf = 0.0;
   double misRatio = 1.0;
+  double misPortalRatio = 1.0;  // (portal samples) / (cosine rays), for the portals' MIS term
+  // The receiver the cosine-sampled ray left (point, unit normal): the portals' density in the
+  // MIS weight depends on it (engine/portals.h).
+  Vec3 misOrigin{0.0};
+  Vec3 misNormal{0.0, 0.0, 1.0};
   // Flat mirrors met since the last diffuse vertex, carried through a trans surface's specular
   // transmission (which keeps the direction).
   int mirrorsMet = 0;

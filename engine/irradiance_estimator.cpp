@@ -52,6 +52,9 @@ Rgb sampleCell(SensorEstimate& e, int cell, double su, double sv, int sub) {
   st.misRatio = e.misRatio;
   st.litPoint = e.p;  // where estimateIrradiance sampled the sources
   st.lighting = true;
+  st.misPortalRatio = e.misRatio * kSensorPortalFactor;
+  st.misOrigin = e.p;
+  st.misNormal = e.n;
   if (e.cache) return pathRadiance(e.ctx, e.p, dir, st, &e.use);
   st.split = e.ctx.settings.firstBounceSplit;
   return pathRadiance(e.ctx, e.p, dir, st);

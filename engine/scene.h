@@ -119,6 +119,16 @@ struct SkyDome {
   double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
 };
 
+// An opening declared to guide sky sampling (docs/daylight.md#portals): a planar polygon through
+// which the sky is seen, e.g. a hole in a roof. Not a surface: rays pass it untouched. Glazing
+// (glass, trans, dielectric, illum polygons) is found as portals without being declared
+// (engine/portals.h).
+struct Portal {
+  std::vector<Vec3> outline;  // m, ≥ 3 vertices, planar
+  std::string name;
+  FileLoc loc;
+};
+
 // Triangles stored compactly (OBJ files and `mesh` primitives, engine/obj_reader.h): shared
 // vertices, three vertex indices per triangle, and runs of consecutive triangles that share a
 // material and a name (obj2rad's object name: the `o` name or the groups). No Shape and no name
@@ -152,6 +162,7 @@ struct Scene {
   std::vector<DistantSource> distant;
   std::vector<LuminaireSource> luminaires;  // photometric light sources (no geometry of their own)
   std::optional<SkyDome> sky;               // daylight (engine/daylight.h); none indoors
+  std::vector<Portal> portals;              // declared openings (sky sampling only)
   VertexStore vertices;
   // What reading the scene files replaced or repaired (engine/rad_reader.h), for the study's
   // warnings.

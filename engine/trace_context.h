@@ -29,6 +29,7 @@ struct LightScratch {
   // its own point (engine/integrator_path.cpp, cachedVertex); used while useGlowShare is set.
   std::vector<double> glowShare;
   bool useGlowShare = false;
+  PortalView portals;                     // the portals seen from the receiver (engine/portals.h)
 };
 
 struct TraceContext {

@@ -63,6 +63,7 @@ Tracer::Tracer(const Scene& scene, OctreeOptions octree) : Tracer(scene, std::ma
 
 Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
     : scene_(scene), accel_(std::move(accelerator)), sources_(collectSampledSources(scene)) {
+  if (scene.sky) portals_ = PortalSet(scene);
   for (const Material& m : scene.materials)
     if (m.type == MaterialType::kGlass || m.type == MaterialType::kIllum ||
         (m.type == MaterialType::kTrans && photopic(m.specularTransmittance) > 0.0))

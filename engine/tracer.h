@@ -11,6 +11,7 @@
 #include "engine/irradiance_cache.h"
 #include "engine/lights.h"
 #include "engine/octree.h"
+#include "engine/portals.h"
 #include "engine/trace_settings.h"
 #include "engine/scene.h"
 #include "photometry/sky_patches.h"
@@ -112,6 +113,9 @@ class Tracer {
   const RayAccelerator& accelerator() const { return *accel_; }
   // The lights and mirror images the direct integrator samples.
   const SampledSources& sources() const { return sources_; }
+  // The openings the sky is sampled through (declared and found; engine/portals.h). Empty
+  // without a sky.
+  const PortalSet& portals() const { return portals_; }
 
   // Offset of a ray origin from the surface it leaves, in metres (see docs/engine.md).
   static double originOffset(const Vec3& p);
@@ -121,6 +125,7 @@ class Tracer {
   std::unique_ptr<RayAccelerator> accel_;
   mutable std::atomic<uint64_t> rays_{0};
   SampledSources sources_;
+  PortalSet portals_;
   bool hasTransmitters_ = false;
 };
 

@@ -1,6 +1,7 @@
 #include "study/case_file.h"
 #include "base/input_file.h"
 #include "base/units.h"
+#include "engine/portals.h"
 
 #include <toml++/toml.h>
 
@@ -212,6 +213,28 @@ void readScene(const Context& c, const toml::table& t, CaseFile& out) {
   s.file = filePath(tab, "file", "scene file");
   tab.finish();
   out.scenes.push_back(std::move(s));
+}
+
+// [[portal]]: an opening without glazing, as a planar polygon of [x, y, z] vertices (m); it only
+// guides sky sampling (docs/daylight.md#portals).
+void readPortal(const Context& c, const toml::table& t, int index, CaseFile& out) {
+  Table tab(t, c, "[[portal]]");
+  Portal p;
+  p.loc = tab.loc();
+  p.name = "portal" + std::to_string(index + 1);
+  if (auto n = tab.get("name")) p.name = asString(c, *n, "name");
+  const toml::node& on = tab.require("outline");
+  const toml::array& a = asArray(c, on, "outline", 0, "an array of [x, y, z] vertices");
+  std::vector<const toml::node*> nodes;
+  for (const toml::node& e : a) {
+    p.outline.push_back(asVec3(c, e, "outline"));
+    nodes.push_back(&e);
+  }
+  size_t bad = 0;
+  const std::string why = portalOutlineProblem(p.outline, &bad);
+  if (!why.empty()) c.fail(bad < nodes.size() ? *nodes[bad] : on, why);
+  tab.finish();
+  out.portals.push_back(std::move(p));
 }
 
 void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& out) {
@@ -652,12 +675,12 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   out.name = path.stem().string();
   out.output.dir = (c.dir / "out").lexically_normal();
 
-  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "site", "sky",    "grid",
+  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "portal", "site", "sky", "grid",
                                                   "view", "settings", "annual", "output"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
-                                               "' (expected case, scene, luminaire, site, sky, grid, view, settings, annual or output)");
+                                               "' (expected case, scene, luminaire, portal, site, sky, grid, view, settings, annual or output)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -665,6 +688,10 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "luminaire")) {
     int entry = 0;
     for (const toml::node& n : *a) readLuminaire(c, *n.as_table(), entry++, out);
+  }
+  if (auto a = tableArray(c, root, "portal")) {
+    int index = 0;
+    for (const toml::node& n : *a) readPortal(c, *n.as_table(), index++, out);
   }
   if (auto t = singleTable(c, root, "site")) readSite(c, *t, out.site);
   if (auto t = singleTable(c, root, "sky")) readSky(c, *t, out.sky);

@@ -139,6 +139,7 @@ struct CaseFile {
   std::string description;
   std::vector<ScenePath> scenes;
   std::vector<LuminairePlacement> luminaires;
+  std::vector<Portal> portals;          // [[portal]]: openings that guide sky sampling
   SiteSpec site;
   SkySpec sky;
   std::vector<GridSpec> grids;

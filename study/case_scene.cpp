@@ -27,6 +27,7 @@ std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
+  scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
   std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
   for (const LuminairePlacement& p : c.luminaires) {
     auto& web = webs[p.file];
@@ -56,6 +57,7 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather) {
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   auto scene = std::make_unique<Scene>();
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
+  scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
   replaceSceneSky(*scene, c.sky.loc);

@@ -1,4 +1,5 @@
 #include "study/points_study.h"
+#include "study/portal_file.h"
 
 #include "engine/rad_reader.h"
 #include "study/case_file.h"
@@ -22,6 +23,8 @@ PointsScene loadPointsScene(const PointsJob& job) {
     out.scene = std::make_unique<Scene>();
   }
   readSceneFiles(job.scenes, *out.scene, sceneReadOptions(c ? &c->settings : nullptr, job.trace));
+  for (const auto& f : job.portalFiles)
+    for (Portal& p : readPortalFile(f)) out.scene->portals.push_back(std::move(p));
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);

@@ -2,6 +2,7 @@
 // Each states its reference; docs/validation.md reports the measured error at the default
 // settings. Near contact is covered by the sphere-on-plane cases (0.25 m from the contact point,
 // sensors 1 cm up) and by tests/engine/stability_test.cpp (5 mm from the sphere).
+#include "engine/daylight.h"
 #include "engine/rad_reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
@@ -220,6 +221,49 @@ CaseResult cube(const RunConfig& cfg, double rho) {
   return res;
 }
 
+CaseResult roofOpeningBlackRoom(const RunConfig& cfg) {
+  // A 1 m × 1 m opening in the middle of the ceiling of a black 4 × 4 × 3 m room, uniform sky of
+  // 10000 lux: the floor sees the sky only through the opening, E = π L F. The opening is a hole,
+  // declared as a portal (docs/daylight.md#portals); without it, cosine and luminance sampling
+  // rarely meet the 0.1 sr it spans.
+  Scene scene;
+  readRadianceText("void plastic black 0 0 5 0 0 0 0 0\n"
+                   "black polygon floor 0 0 12 0 0 0  0 4 0  4 4 0  4 0 0\n"
+                   "black polygon south 0 0 12 0 0 0  4 0 0  4 0 3  0 0 3\n"
+                   "black polygon north 0 0 12 0 4 0  0 4 3  4 4 3  4 4 0\n"
+                   "black polygon west 0 0 12 0 0 0  0 0 3  0 4 3  0 4 0\n"
+                   "black polygon east 0 0 12 4 0 0  4 4 0  4 4 3  4 0 3\n"
+                   "black polygon c1 0 0 12 0 0 3  0 1.5 3  4 1.5 3  4 0 3\n"
+                   "black polygon c2 0 0 12 0 2.5 3  0 4 3  4 4 3  4 2.5 3\n"
+                   "black polygon c3 0 0 12 0 1.5 3  0 2.5 3  1.5 2.5 3  1.5 1.5 3\n"
+                   "black polygon c4 0 0 12 2.5 1.5 3  2.5 2.5 3  4 2.5 3  4 1.5 3\n",
+                   "<stability>", scene);
+  scene.portals.push_back({{Vec3(1.5, 1.5, 3), Vec3(2.5, 1.5, 3), Vec3(2.5, 2.5, 3), Vec3(1.5, 2.5, 3)}, "opening", {}});
+  DaylightSpec d;
+  d.skyType = parseSkyType("uniform").value();
+  d.diffuseHorizontalLux = 10000.0;
+  d.groundReflectance = 0.0;
+  d.sun = false;
+  addDaylight(scene, d);
+  const Tracer tracer(scene);
+  const double L = 10000.0 / kPi;
+  std::vector<SensorPoint> pts;
+  CaseResult r;
+  std::vector<std::pair<std::string, Vec3>> probes = {
+      {"centre", Vec3(2.0, 2.0, 0.0)}, {"(1,2)", Vec3(1.0, 2.0, 0.0)}, {"corner (0.5,0.5)", Vec3(0.5, 0.5, 0.0)}};
+  for (const auto& p : probes) pts.push_back({p.second, Vec3(0, 0, 1)});
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto est = computeIrradiance(tracer, pts, cfg.settings, cfg.threads);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.reference = "E = pi L F (configuration factor of the opening)";
+  r.tolerance = 0.03;
+  for (size_t i = 0; i < probes.size(); ++i)
+    r.points.push_back({probes[i].first,
+                        analytic::rectangleAbove(L, {1.5, 1.5, 2.5, 2.5}, 3.0, probes[i].second.x, probes[i].second.y),
+                        est[i].illuminanceLux(), est[i].standardErrorLux()});
+  return r;
+}
+
 }  // namespace
 
 std::vector<Case> stabilityCases() {
@@ -229,6 +273,7 @@ std::vector<Case> stabilityCases() {
       {"stability-tiny-lamp-and-mirror", "stability", true, tinyLamp},
       {"stability-grazing-sensor", "stability", true, grazingSensor},
       {"stability-coplanar-source", "stability", true, coplanarSource},
+      {"stability-roof-opening-black-room", "stability", true, roofOpeningBlackRoom},
       {"cie171-cube-interreflection-rho0.5", "cie171", true, [](const RunConfig& c) { return cube(c, 0.5); }},
       {"cie171-cube-interreflection-rho0.8", "cie171", false, [](const RunConfig& c) { return cube(c, 0.8); }},
   };

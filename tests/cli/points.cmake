@@ -62,3 +62,10 @@ candela_cli_test(points.pattern_base_warning 0 "warning: points/patterned.rad:4:
                  ${PTS} points/patterned.rad --patterns base)
 candela_cli_test(points.pattern_bad_policy 2 "unknown pattern policy 'ignore' (expected refuse or base)"
                  ${PTS} points/patterned.rad --patterns ignore)
+
+# --portal: openings that guide sky sampling (docs/daylight.md#portals). Open sky, no scene: a
+# portal changes nothing but the noise; a bad line is an error at its line.
+candela_cli_test(points.portal 0 "x,y,z,dx,dy,dz,illuminance_lux" ${PTS} --sky uniform --portal points/roof_portal.txt)
+candela_cli_test(points.portal_bad_line 2 "points/bad_portal.txt:2: 'x' is not a number"
+                 ${PTS} --sky uniform --portal points/bad_portal.txt)
+candela_cli_test(points.portal_missing 2 "no_such_portals.txt" ${PTS} --sky uniform --portal points/no_such_portals.txt)
