@@ -99,6 +99,31 @@ void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, ui
   tracer.addRays(rays);
 }
 
+// Radiance's radius clamp (src/rt/ambcomp.c, doambient(): a radius times the position gradient
+// relative to the value is at most 1; after Schwarzhaupt, Jensen & Jarosz 2012): R_i ≤
+// E_i/|∇_t E_i|, so that the first-order extrapolation changes the value by at most a·E_i within
+// the record's valid radius a·R_i. Where E grows steeply (towards the sunlit side of a contact)
+// the split-sphere radius alone lets curvature bias the extrapolation (docs/accuracy.md
+// #near-contact-cache-bias-cause-and-fix). The gradient counts beyond twice its standard error
+// only (the record's covariance along the gradient): in an even field (an integrating sphere) the
+// sampled gradient is noise alone and would shrink radii for nothing. True when R_i shrank.
+bool limitRadiusByGradient(IrradianceRecord& r, const CacheSettings& c) {
+  if (!c.gradients) return false;
+  const double e = photopic(r.e);
+  const Vec3 g = 0.265 * r.gradT[0] + 0.670 * r.gradT[1] + 0.065 * r.gradT[2];
+  const double len = glm::length(g);
+  if (e <= 0.0 || len <= 0.0) return false;
+  const Vec3 u = g / len;
+  RecordVector b{};
+  for (int i = 0; i < 3; ++i) b[4 + i] = u[i];
+  const double gl = len - 2.0 * std::sqrt(recordQuadratic(r, b));
+  if (gl * r.radiusM <= e) return false;
+  const double limited = std::max(c.minSpacingM / c.accuracy, e / gl);
+  if (limited >= r.radiusM) return false;
+  r.radiusM = limited;
+  return true;
+}
+
 }  // namespace
 
 void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
@@ -222,6 +247,23 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
   parallelFor(cache.size(), threads, [&](size_t i) {
     computeRecord(tracer, cache.record(i), kRecordStream + i, settings, d, 1);
   });
+  // The radii limited by the gradients, and records where the smaller radii left gaps (phases A
+  // and B again over the new records only), twice at most.
+  size_t from = 0;
+  for (int round = 0; round < 2; ++round) {
+    bool shrunk = false;
+    for (size_t i = from; i < cache.size(); ++i) shrunk |= limitRadiusByGradient(cache.record(i), settings.cache);
+    if (!shrunk) break;
+    const size_t before = cache.size();
+    placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
+                 [&](size_t i, std::vector<CacheQuery>& out) {
+                   cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
+                 });
+    parallelFor(cache.size() - before, threads, [&](size_t k) {
+      computeRecord(tracer, cache.record(before + k), kRecordStream + before + k, settings, d, 1);
+    });
+    from = before;
+  }
   return cache;
 }
 

@@ -22,6 +22,8 @@ class Tracer;
 // phase B computes record i from random stream i on `threads` threads. With two levels, between
 // the two phases: phase A over the first level's record rays gives the second level's records,
 // whose values are computed (phase B) and frozen; the first level's values then use them.
+// After phase B, radii are limited by the records' gradients (R_i ≤ E_i/|∇_t E_i|) and phases A
+// and B run again for the queries that left uncovered (twice at most).
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads);
 

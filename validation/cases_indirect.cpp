@@ -15,16 +15,17 @@ namespace candela::validation {
 
 namespace {
 
-// The converged reference of a scene, computed once per process (cases run one after another).
-const std::vector<double>& referenceLux(const IndirectScene& sc, int threads) {
-  static std::map<std::string, std::vector<double>> done;
-  auto it = done.find(sc.name);
+// The converged reference of a scene for a tolerance (referenceEstimates), computed once per
+// process and tolerance (cases run one after another; both methods of a scene share it).
+const std::vector<double>& referenceLux(const IndirectScene& sc, double tolerance, int threads) {
+  static std::map<std::pair<std::string, double>, std::vector<double>> done;
+  const auto key = std::make_pair(sc.name, tolerance);
+  auto it = done.find(key);
   if (it != done.end()) return it->second;
   std::vector<double> ref = sc.closedFormLux;
   if (ref.empty())
-    for (const IrradianceEstimate& e : runIndirectScene(sc, referenceSettings(), threads, nullptr))
-      ref.push_back(e.illuminanceLux());
-  return done[sc.name] = ref;
+    for (const IrradianceEstimate& e : referenceEstimates(sc, tolerance, threads)) ref.push_back(e.illuminanceLux());
+  return done[key] = ref;
 }
 
 IndirectScene sceneNamed(const std::string& name) {
@@ -35,12 +36,13 @@ IndirectScene sceneNamed(const std::string& name) {
 
 CaseResult runIndirect(const RunConfig& cfg, const std::string& scene, Method method, double tolerance) {
   const IndirectScene sc = sceneNamed(scene);
-  const std::vector<double>& ref = referenceLux(sc, cfg.threads);
+  const std::vector<double>& ref = referenceLux(sc, tolerance, cfg.threads);
   TraceSettings s = cfg.settings;
   s.method = method;
   CaseResult r;
   const std::vector<IrradianceEstimate> est = runIndirectScene(sc, s, cfg.threads, &r.seconds);
-  r.reference = sc.closedFormLux.empty() ? "path tracer, 8192 samples, all bounces" : sc.reference;
+  r.reference = sc.closedFormLux.empty() ? "path tracer, 8192 samples, all bounces, batches to a standard error of tolerance/10"
+                                         : sc.reference;
   r.tolerance = tolerance;
   for (size_t i = 0; i < est.size(); ++i) {
     char label[64];
