@@ -31,6 +31,6 @@ set_tests_properties(cli.resources.peak_view cli.resources.peak_grid PROPERTIES 
 # A 1000 × 1000 luminaire array is refused before its luminaires are placed (placing them takes
 # about a minute), at its [[luminaire]] line.
 add_test(NAME cli.resources.luminaire_array COMMAND ${RUN_CASE} 2
-         "luminaire_array.toml:3: the data of 1000000 luminaires needs about 1.2 GiB"
+         "luminaire_array.toml:3: the data of 1000000 luminaires needs about 1.3 GiB"
          $<TARGET_FILE:candela> ${RES}/luminaire_array.toml --max-memory 100M)
 set_tests_properties(cli.resources.luminaire_array PROPERTIES TIMEOUT 30)
