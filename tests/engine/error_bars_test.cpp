@@ -15,6 +15,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"
+#include "tests/support/aperture_scenes.h"
 #include "tests/engine/test_materials.h"
 
 #include <gtest/gtest.h>
@@ -226,19 +227,8 @@ Scene apertureScene(const char* rad, const char* sky) {
   addDaylight(scene, d);
   return scene;
 }
-constexpr const char* kRoof =
-    "void plastic black 0 0 5 0 0 0 0 0\n"
-    "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
-    "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
-    "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
-    "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n";
-constexpr const char* kWindow =
-    "void plastic black 0 0 5 0 0 0 0 0\n"
-    "black polygon w1 0 0 12 0 -1e4 -1e4  0 1e4 -1e4  0 1e4 1  0 -1e4 1\n"
-    "black polygon w2 0 0 12 0 -1e4 2  0 1e4 2  0 1e4 1e4  0 -1e4 1e4\n"
-    "black polygon w3 0 0 12 0 -1e4 1  0 -1 1  0 -1 2  0 -1e4 2\n"
-    "black polygon w4 0 0 12 0 1 1  0 1e4 1  0 1e4 2  0 1 2\n"
-    "black polygon ceiling 0 0 12 0 -1e4 2  1e4 -1e4 2  1e4 1e4 2  0 1e4 2\n";
+using test_support::kRoofOpening;
+using test_support::kSideWindow;
 
 TEST(ErrorBars, SmallSkyOpeningsCoverTheirShareAtNormalQuality) {
   // Normal quality's settings (2048 hemisphere samples, 64 sky samples, adaptive fraction 0.5).
@@ -247,7 +237,7 @@ TEST(ErrorBars, SmallSkyOpeningsCoverTheirShareAtNormalQuality) {
   // Before, their second differences of means divided by the count covered 41 % at (0, 0).
   // Through the side window the sky samples and unrefined strata matter too (upper bounds):
   // the path tracer's band (59–90 %).
-  const Scene roof = apertureScene(kRoof, "uniform"), window = apertureScene(kWindow, "cie-overcast");
+  const Scene roof = apertureScene(kRoofOpening, "uniform"), window = apertureScene(kSideWindow, "cie-overcast");
   const Tracer tr(roof), tw(window);
   const TraceSettings s = settingsForQuality(Quality::kNormal);
   auto at = [&](const Tracer& t, const Vec3& p) {

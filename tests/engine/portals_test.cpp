@@ -9,6 +9,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"
+#include "tests/support/aperture_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -103,13 +104,7 @@ TEST(Portals, DensityIntegratesToOneAndMatchesItsSamples) {
   }
 }
 
-// The validation case's roof: an infinite black plane 3 m up with a 1 × 1.5 m hole.
-constexpr const char* kRoof =
-    "void plastic black 0 0 5 0 0 0 0 0\n"
-    "black polygon r1 0 0 12 -1e4 -1e4 3  1e4 -1e4 3  1e4 -0.75 3  -1e4 -0.75 3\n"
-    "black polygon r2 0 0 12 -1e4 0.75 3  1e4 0.75 3  1e4 1e4 3  -1e4 1e4 3\n"
-    "black polygon r3 0 0 12 -1e4 -0.75 3  -0.5 -0.75 3  -0.5 0.75 3  -1e4 0.75 3\n"
-    "black polygon r4 0 0 12 0.5 -0.75 3  1e4 -0.75 3  1e4 0.75 3  0.5 0.75 3\n";
+using test_support::kRoofOpening;  // the validation case's roof
 
 Scene daylit(const char* rad, const std::vector<std::vector<Vec3>>& portals, const char* sky, double rhoGround) {
   Scene scene = sceneWithPortals(portals);
@@ -150,7 +145,7 @@ TEST(Portals, SkyThroughARoofOpeningIsUnbiasedWhateverThePortals) {
   const std::vector<std::pair<const char*, std::vector<std::vector<Vec3>>>> sets = {
       {"exact", {exact}}, {"half", {half}}, {"beside", {beside}}, {"below", {below}}, {"half+beside", {half, beside}}};
   for (const auto& [what, portals] : sets) {
-    const Scene scene = daylit(kRoof, portals, "uniform", 0.0);
+    const Scene scene = daylit(kRoofOpening, portals, "uniform", 0.0);
     for (auto [x, y] : {std::pair{0.0, 0.0}, {2.0, 1.0}}) {
       const double ref = analytic::rectangleAbove(L, {-0.5, -0.75, 0.5, 0.75}, 3.0, x, y);
       const auto [mean, se] = overSeeds(scene, Vec3(x, y, 0), Vec3(0, 0, 1), 24);

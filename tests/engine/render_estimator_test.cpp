@@ -5,6 +5,7 @@
 // reports for the image's mean luminance is the spread of that mean over seeds.
 #include "engine/camera.h"
 #include "engine/render.h"
+#include "tests/support/test_views.h"
 
 #include <gtest/gtest.h>
 
@@ -36,14 +37,7 @@ uint32_t addPlastic(Scene& sc, double rho) {
 }
 
 View perspective(Vec3 pos, Vec3 dir, Vec3 up, Vec2 fov, int w, int h) {
-  View v;
-  v.type = ViewType::kPerspective;
-  v.positionM = pos;
-  v.direction = dir;
-  v.up = up;
-  v.fovDeg = fov;
-  v.resolution = {w, h};
-  return v;
+  return test_support::makeView(ViewType::kPerspective, pos, dir, up, fov, w, h);
 }
 
 // Thin glass's transmittance for unpolarised light at incidence cos θ, written out from Radiance's

@@ -12,6 +12,7 @@
 #include "validation/analytic.h"
 
 #include "tests/engine/lambertian_panel.h"
+#include "tests/support/test_views.h"
 
 #include <gtest/gtest.h>
 
@@ -34,16 +35,7 @@ void addUpRect(Scene& sc, double x0, double y0, double x1, double y1, double z, 
   sc.addPolygon({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}}, mat);
 }
 
-View view(ViewType type, Vec3 pos, Vec3 dir, Vec3 up, Vec2 fov, int w, int h) {
-  View v;
-  v.type = type;
-  v.positionM = pos;
-  v.direction = dir;
-  v.up = up;
-  v.fovDeg = fov;
-  v.resolution = {w, h};
-  return v;
-}
+constexpr auto view = test_support::makeView;
 
 // The sun (0.533° disc, radiance L) over a plane of reflectance ρ: E = π L sin²α cos θs
 // (W/m², times 179 for lux) and every point of the plane has luminance ρE/π.
