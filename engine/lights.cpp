@@ -86,12 +86,7 @@ void boundingSphere(const Shape& s, const VertexStore& vertices, Vec3& centre, d
     }
     case ShapeType::kTriangle:
     case ShapeType::kPolygon: {
-      std::vector<Vec3> pts;
-      if (s.type == ShapeType::kTriangle) {
-        pts = {s.a, s.a + s.b, s.a + s.c};
-      } else {
-        pts.assign(vertices.points.begin() + s.firstVertex, vertices.points.begin() + s.firstVertex + s.vertexCount);
-      }
+      const std::vector<Vec3> pts = polygonOutline(s, vertices);
       centre = Vec3(0.0);
       for (const Vec3& v : pts) centre += v;
       centre /= static_cast<double>(pts.size());
@@ -163,12 +158,7 @@ std::vector<Light> collectLights(const Scene& scene) {
       l.sphereGlow = s.type == ShapeType::kSphere;
     }
     if (s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon) {
-      if (s.type == ShapeType::kTriangle) {
-        l.outline = {s.a, s.a + s.b, s.a + s.c};
-      } else {
-        l.outline.assign(scene.vertices.points.begin() + s.firstVertex,
-                         scene.vertices.points.begin() + s.firstVertex + s.vertexCount);
-      }
+      l.outline = polygonOutline(s, scene.vertices);
       l.normal = s.n;
       l.triangles = triangulatePolygon(l.outline, s.n);
       double acc = 0.0;

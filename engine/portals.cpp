@@ -85,15 +85,8 @@ PortalSet::PortalSet(const Scene& scene) {
                         (m.type == MaterialType::kIllum && m.alternate < 0);
     if (!passes) continue;
     const Shape s = scene.surface(id);
-    std::vector<Vec3> outline;
-    if (s.type == ShapeType::kTriangle) {
-      outline = {s.a, s.a + s.b, s.a + s.c};
-    } else if (s.type == ShapeType::kPolygon) {
-      outline.assign(scene.vertices.points.begin() + s.firstVertex,
-                     scene.vertices.points.begin() + s.firstVertex + s.vertexCount);
-    } else {
-      continue;
-    }
+    std::vector<Vec3> outline = polygonOutline(s, scene.vertices);
+    if (outline.empty()) continue;
     found.emplace_back(0.5 * glm::length(newellNormal(outline)), std::move(outline));
   }
   std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first > y.first; });

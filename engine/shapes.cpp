@@ -268,6 +268,13 @@ Box shapeBounds(const Shape& s, const VertexStore& vs) {
   return b;
 }
 
+std::vector<Vec3> polygonOutline(const Shape& s, const VertexStore& vs) {
+  if (s.type == ShapeType::kTriangle) return {s.a, s.a + s.b, s.a + s.c};
+  if (s.type == ShapeType::kPolygon)
+    return std::vector<Vec3>(vs.points.begin() + s.firstVertex, vs.points.begin() + s.firstVertex + s.vertexCount);
+  return {};
+}
+
 bool shapeOverlapsBox(const Shape& s, const VertexStore& vs, const Vec3& lo, double size) {
   // A hair of slack so that surfaces lying exactly on a cube face belong to both cubes.
   const double eps = 1e-9 * size;
@@ -277,11 +284,8 @@ bool shapeOverlapsBox(const Shape& s, const VertexStore& vs, const Vec3& lo, dou
     return false;
   switch (s.type) {
     case ShapeType::kTriangle:
-      return polygonOverlapsBox({s.a, s.a + s.b, s.a + s.c}, l, h);
     case ShapeType::kPolygon:
-      return polygonOverlapsBox(
-          std::vector<Vec3>(vs.points.begin() + s.firstVertex, vs.points.begin() + s.firstVertex + s.vertexCount),
-          l, h);
+      return polygonOverlapsBox(polygonOutline(s, vs), l, h);
     case ShapeType::kSphere: {
       const double r2 = s.r0 * s.r0;
       return pointBoxDistance2(s.a, l, h) <= r2 && pointBoxMaxDistance2(s.a, l, h) >= r2;

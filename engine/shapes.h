@@ -70,6 +70,9 @@ inline bool isFlat(const Shape& s) {
   return s.type == ShapeType::kTriangle || s.type == ShapeType::kPolygon || s.type == ShapeType::kRing;
 }
 
+// The vertices of a triangle or polygon, in order; empty for every other shape.
+std::vector<Vec3> polygonOutline(const Shape& s, const VertexStore& vs);
+
 // Axis-aligned bounds of the shape.
 Box shapeBounds(const Shape& s, const VertexStore& vs);
 
