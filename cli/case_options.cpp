@@ -19,6 +19,10 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
                   "path (unbiased path tracer) | cache (Ward's irradiance cache) (default: the case's, else " +
                       methodDefault + ")")
       ->check(parsedBy(parseMethod, "METHOD"));
+  cmd->add_option("--target-error", o.targetErrorPct,
+                  "sample each point until its standard error is below PCT percent of its value, 0 = one "
+                  "batch (default: the case's, else quality: normal and high 0.25, draft none)")
+      ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's, else all)")
       ->check(CLI::Range(0, 4096));
   cmd->add_option("--patterns", o.patterns,
@@ -42,6 +46,7 @@ TraceOverrides CaseTraceOptions::overrides() const {
   if (samples > 0) t.samples = samples;
   if (seed >= 0) t.seed = static_cast<uint64_t>(seed);
   if (threads >= 0) t.threads = threads;
+  if (targetErrorPct >= 0.0) t.targetRelativeError = targetErrorPct / 100.0;
   if (!method.empty()) t.method = parseMethod(method);
   if (!patterns.empty()) t.patterns = parsePatternPolicy(patterns);
   if (!nonplanar.empty()) t.nonplanar = parseNonplanarPolicy(nonplanar);

@@ -20,6 +20,7 @@ struct CaseTraceOptions {
   int samples = -1;     // <= 0: the case's, else the preset's
   int64_t seed = -1;    // < 0: the case's
   int threads = -1;     // < 0: the case's
+  double targetErrorPct = -1.0;  // < 0: the case's, else the preset's
   std::string method;   // empty: the case's, else the command's default
   std::string patterns;   // empty: the case's ([settings] patterns), else refuse
   std::string nonplanar;  // empty: the case's ([settings] nonplanar), else refuse

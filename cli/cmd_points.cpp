@@ -35,7 +35,6 @@ struct PointsOptions {
   std::string accelerator = "embree";
   bool error = false;
   bool strict = false;
-  double targetErrorPct = 0.0;
   // Daylight: used when --sky is given; else the case's [sky] applies.
   std::string sky;
   std::optional<double> sunAltitude, sunAzimuth, timezone, elevation, north;
@@ -78,7 +77,6 @@ int runPoints(const PointsOptions& o) {
   job.portalFiles.assign(o.portalFiles.begin(), o.portalFiles.end());
   if (!o.sky.empty()) job.sky = [&o](DaylightSpec caseDaylight) { return daylightFromOptions(o, caseDaylight); };
   job.trace = o.trace.overrides();
-  job.trace.targetRelativeError = o.targetErrorPct / 100.0;
   job.accelerator = parseAccelerator(o.accelerator);
   job.strict = o.strict;
   job.limits = o.resources.limits();
@@ -146,9 +144,6 @@ void addPointsCommand(CLI::App& app, Action& action) {
   addResourceOptions(cmd, opts->resources);
   cmd->add_flag("--quiet,-q", opts->quiet, "no progress or estimate on stderr (errors and warnings only)");
   cmd->add_flag("--error", opts->error, "add a column error_lux: one standard error of each value");
-  cmd->add_option("--target-error", opts->targetErrorPct,
-                  "sample each point until its standard error is below PCT percent of its value")
-      ->check(CLI::Range(0.01, 100.0));
   // Daylight.
   cmd->add_option("--sky", opts->sky, "uniform | cie-overcast | cie-clear | cie:1..15 | perez | none")
       ->group("Daylight");

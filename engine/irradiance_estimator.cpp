@@ -194,8 +194,10 @@ IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const
   est.irradiance += kPi * sum / static_cast<double>(cells);
   var += stratifiedVariance(e.y, e.mTheta, e.nPhi, &e.ownBetween, &e.ownWithin, in.cache ? &e.dRec : nullptr);
   // The cached share, by the law of total variance (docs/estimator.md#the-records-share).
-  if (in.cache && !e.use.tally.empty())
-    var += e.use.tally.recordVariance(*in.cache, kPi / static_cast<double>(cells), &e.counts);
+  if (in.cache && !e.use.tally.empty()) {
+    est.varianceRecordsPhotopic = e.use.tally.recordVariance(*in.cache, kPi / static_cast<double>(cells), &e.counts);
+    var += est.varianceRecordsPhotopic;
+  }
   est.variancePhotopic = var;
   return est;
 }

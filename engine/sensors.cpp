@@ -6,47 +6,96 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace candela {
 
 namespace {
 
-// Batch b > 0 of point i draws from stream i + b·2^40 (far from every point's own stream).
+// Batch b > 0 of point i draws from stream i + b·2^40 (far from every point's own stream); the
+// path-method batches of a cache-method point (below) from i + 2^39 + b·2^40.
 constexpr uint64_t kBatchStride = 1ULL << 40;
+constexpr uint64_t kWithoutCacheStream = 1ULL << 39;
 
-// One point: a single estimate, or with a target error, batches until the standard error of
-// their mean is at most target × the mean. After each round the batches still needed are
-// predicted from the current error (n ∝ σ²), so few rounds are needed; the stopping rule looks at
-// the estimate itself, a small bias that the test ErrorBarsCoverTheirShare checks stays within
-// the error bars.
+// Batches of one point until the standard error of their mean is at most target × the mean, or
+// maxBatches are spent. After each round the batches still needed are predicted from the
+// current error (n ∝ σ²), so few rounds are needed; the stopping rule looks at the estimate
+// itself, a small bias that the test ErrorBarsCoverTheirShare checks stays within the error
+// bars. The records' share of each batch's variance (cache method) is the same frozen cache's,
+// so it is not divided by the batches: Var = Σ (σ²_b − r_b)/B² + (Σ √r_b / B)² (the records
+// fully correlated from batch to batch, an upper bound).
+class Batches {
+ public:
+  explicit Batches(const IrradianceEstimate& first) { add(first); }
+  void add(const IrradianceEstimate& e) {
+    sum_ += e.irradiance;
+    sumOwn_ += std::max(0.0, e.variancePhotopic - e.varianceRecordsPhotopic);
+    sumRecordsSd_ += std::sqrt(std::max(0.0, e.varianceRecordsPhotopic));
+    ++n_;
+  }
+  int count() const { return n_; }
+  double mean() const { return photopic(sum_) / n_; }
+  double ownVariance() const { return sumOwn_ / (static_cast<double>(n_) * n_); }
+  double recordsVariance() const { return (sumRecordsSd_ / n_) * (sumRecordsSd_ / n_); }
+  double variance() const { return ownVariance() + recordsVariance(); }
+  // Batches (in all) that should bring the standard error to `goal` (σ² ∝ 1/B for the own part).
+  double wanted(double goal) const {
+    const double left = goal * goal - recordsVariance();
+    if (left <= 0.0) return std::numeric_limits<double>::infinity();
+    return std::ceil(sumOwn_ / n_ / left);
+  }
+  IrradianceEstimate result(bool withoutCache) const {
+    IrradianceEstimate out;
+    out.irradiance = sum_ / static_cast<double>(n_);
+    out.variancePhotopic = variance();
+    out.varianceRecordsPhotopic = recordsVariance();
+    out.withoutCache = withoutCache;
+    return out;
+  }
+
+ private:
+  Rgb sum_{0.0};
+  double sumOwn_ = 0.0, sumRecordsSd_ = 0.0;
+  int n_ = 0;
+};
+
+// Batches of the point from `first` on (streams base + b·2^40, b ≥ 1) until the target or the
+// cap; false when the records' share alone keeps the error above the target (more batches of the
+// frozen cache cannot help).
+bool sampleToTarget(const Tracer& tracer, const SensorPoint& pt, uint64_t base, const TraceSettings& s,
+                    const IrradianceCache* cache, Batches& b) {
+  const int maxBatches = std::max(1, s.maxBatches);
+  while (b.count() < maxBatches) {
+    const double mean = b.mean();
+    const double goal = s.targetRelativeError * mean;
+    if (mean <= 0.0 || b.variance() <= goal * goal) return true;
+    // Half the target's variance is what the records may take and still leave the own part
+    // enough room (docs/accuracy.md#the-presets-per-point-target).
+    if (cache && b.recordsVariance() > 0.5 * goal * goal) return false;
+    const int target = std::min<double>(maxBatches, std::max<double>(b.count() + 1, b.wanted(goal)));
+    while (b.count() < target)
+      b.add(tracer.irradiance(pt.position, pt.normal, base + kBatchStride * static_cast<uint64_t>(b.count()), s,
+                              cache));
+  }
+  return true;
+}
+
+// One point: a single estimate, or with a target error, batches until it is met (above). A
+// cache-method point whose cached share alone is above the target is estimated again by the
+// path method (unbiased, and its batches do reduce every part of the error).
 IrradianceEstimate estimatePoint(const Tracer& tracer, const SensorPoint& pt, size_t i, const TraceSettings& s,
                                  const IrradianceCache* cache) {
   IrradianceEstimate first = tracer.irradiance(pt.position, pt.normal, i, s, cache);
   if (s.targetRelativeError <= 0.0) return first;
-  Rgb sum = first.irradiance;
-  double sumVar = first.variancePhotopic;
-  int batches = 1;
-  const int maxBatches = std::max(1, s.maxBatches);
-  while (batches < maxBatches) {
-    const double mean = photopic(sum) / batches;
-    const double se = std::sqrt(std::max(0.0, sumVar)) / batches;
-    if (mean <= 0.0 || se <= s.targetRelativeError * mean) break;
-    // The standard error of a mean of B batches is √(Σ var)/B ≈ σ₁/√B: B = (se₁ / (t·mean))².
-    const double perBatch = std::sqrt(sumVar / batches);
-    const double want = std::ceil(std::pow(perBatch / (s.targetRelativeError * mean), 2.0));
-    const int target = std::min<double>(maxBatches, std::max<double>(batches + 1, want));
-    for (; batches < target; ++batches) {
-      const IrradianceEstimate e =
-          tracer.irradiance(pt.position, pt.normal, i + kBatchStride * static_cast<uint64_t>(batches), s, cache);
-      sum += e.irradiance;
-      sumVar += e.variancePhotopic;
-    }
-  }
-  IrradianceEstimate out;
-  out.irradiance = sum / static_cast<double>(batches);
-  out.variancePhotopic = sumVar / (static_cast<double>(batches) * batches);
-  return out;
+  Batches b(first);
+  if (sampleToTarget(tracer, pt, i, s, cache, b)) return b.result(false);
+  TraceSettings path = s;
+  path.method = Method::kPath;
+  const uint64_t base = i + kWithoutCacheStream;
+  Batches p(tracer.irradiance(pt.position, pt.normal, base, path, nullptr));
+  sampleToTarget(tracer, pt, base, path, nullptr, p);
+  return p.result(true);
 }
 
 }  // namespace

@@ -51,12 +51,24 @@ struct TraceSettings {
   uint64_t seed = 1;
   Method method = Method::kPath;
   CacheSettings cache;           // used by Method::kCache
-  // --target-error: when > 0, each point takes further independent batches of samples (each
-  // as above, its own random stream) until its standard error is at most this fraction of its
-  // value, or maxBatches are spent.
+  // When > 0, each sensor point takes further independent batches of samples (each as above,
+  // its own random stream) until its standard error is at most this fraction of its value, or
+  // maxBatches are spent. The normal and high presets set a target that the typical point meets
+  // with its first batch, so that only points far noisier than the rest (near contact, in a
+  // shadow lit by interreflection) take more; --target-error sets another (docs/accuracy.md).
   double targetRelativeError = 0.0;
   int maxBatches = 256;
 };
+
+// What --target-error (and [settings] target_error) may spend: 256 batches of the point's
+// settings. The presets' own target stops at kPresetMaxBatches.
+inline constexpr int kExplicitTargetMaxBatches = 256;
+inline constexpr int kPresetMaxBatches = 16;
+
+// The expected batches per point, for resource estimates: 1 without a target; with a preset's
+// target the few points above it (the office demo: 1.1–1.2 batches per point on average,
+// docs/accuracy.md); 4 with an explicit target, whose cost depends on the scene.
+double expectedBatchesPerPoint(const TraceSettings& s);
 
 // The sample counts a preset stands for (see docs/engine.md for why).
 TraceSettings settingsForQuality(Quality q);

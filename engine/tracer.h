@@ -29,6 +29,10 @@ namespace candela {
 struct IrradianceEstimate {
   Rgb irradiance{0.0};
   double variancePhotopic = 0.0;
+  // The part of variancePhotopic due to the irradiance cache's records (cache method): the
+  // cache is frozen, so every batch of a point shares it and more batches do not reduce it.
+  double varianceRecordsPhotopic = 0.0;
+  bool withoutCache = false;  // cache method: the point was estimated by the path method instead
   double illuminanceLux() const { return illuminanceFromIrradiance(irradiance); }
   double standardErrorLux() const;
 };

@@ -567,6 +567,11 @@ void readSettings(const Context& c, const toml::table& t, Settings& s) {
   s.bounces = count("bounces", 0, 100);
   s.samples = count("samples", 1, 1'000'000);
   s.threads = count("threads", 0, 4096).value_or(0);
+  if (const toml::node* n = tab.get("target_error")) {
+    const double pct = asNumber(c, *n, "target_error");
+    if (!(pct >= 0.0 && pct <= 100.0)) c.fail(*n, "'target_error' must be between 0 and 100 (percent)");
+    s.targetRelativeError = pct / 100.0;
+  }
   if (const toml::node* n = tab.get("method")) {
     const std::string m = asString(c, *n, "method");
     try {

@@ -105,6 +105,7 @@ struct Settings {
   std::optional<int> bounces;
   std::optional<int> samples;
   std::optional<Method> method;
+  std::optional<double> targetRelativeError;  // target_error (percent in the file): per-point target
   int threads = 0;                      // 0 = all cores
   SceneReadOptions scene;               // patterns, nonplanar: how the scene files are read
 };

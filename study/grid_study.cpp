@@ -57,6 +57,10 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
       {"hemisphere samples per point", std::to_string(s.hemisphereSamples)},
       {"light samples per source", std::to_string(s.lightSamples)},
       {"first-bounce split", std::to_string(s.firstBounceSplit)},
+      {"per-point target error", s.targetRelativeError > 0.0
+                                     ? formatFixed(100.0 * s.targetRelativeError, 3) + " % (at most " +
+                                           std::to_string(s.maxBatches) + " batches)"
+                                     : "none (one batch)"},
       {"threads", trace.threads > 0 ? std::to_string(trace.threads)
                                     : "all (" + std::to_string(threadsUsed(trace.threads)) + ")"},
       {"luminaires", std::to_string(c.luminaires.size())},
@@ -186,6 +190,11 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
   describeSettings(data, c, *scene, trace, all.size());
+  if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0) {
+    std::size_t without = 0;
+    for (const IrradianceEstimate& e : est) without += e.withoutCache;
+    data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)", std::to_string(without));
+  }
   data.warnings = warnings;
   const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
   std::vector<ViewResult> views;

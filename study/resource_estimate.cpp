@@ -268,7 +268,7 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
     e.memory.push_back(std::move(m));
     points += static_cast<double>(gridPoints[i]);
   }
-  const double batches = s.targetRelativeError > 0.0 ? 4.0 : 1.0;
+  const double batches = expectedBatchesPerPoint(s);
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires)});
   addLuminaires(e, c);
   for (const ViewSpec& v : c.views) {
@@ -300,7 +300,7 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
   e.memory.push_back({"the input of " + std::to_string(points) + " points", where, points * per,
                       std::to_string(points) + " points x " + std::to_string(per) + " B"});
   e.memory.back().bytes += scene.luminaires.size() * (sizeof(LuminaireSource) + sizeof(Light) + 32);
-  const double batches = s.targetRelativeError > 0.0 ? 4.0 : 1.0;
+  const double batches = expectedBatchesPerPoint(s);
   e.work.push_back({"tracing", static_cast<double>(points) * batches * raysPerSensor(s, n.sampled, n.luminaires)});
   return e;
 }

@@ -23,7 +23,10 @@ ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o
   if (const std::optional<int> n = o.samples ? o.samples : c.samples) r.settings.hemisphereSamples = *n;
   r.settings.seed = o.seed.value_or(c.seed);
   r.settings.method = o.method.value_or(c.method.value_or(defaultMethod));
-  r.settings.targetRelativeError = o.targetRelativeError;
+  if (const std::optional<double> t = o.targetRelativeError ? o.targetRelativeError : c.targetRelativeError) {
+    r.settings.targetRelativeError = *t;
+    r.settings.maxBatches = kExplicitTargetMaxBatches;
+  }
   r.threads = o.threads.value_or(c.threads);
   return r;
 }

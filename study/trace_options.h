@@ -18,7 +18,9 @@ struct TraceOverrides {
   std::optional<uint64_t> seed;
   std::optional<int> threads;     // 0 = all cores
   std::optional<Method> method;
-  double targetRelativeError = 0.0;  // > 0: sample each point until its standard error is below this fraction
+  // Sample each point until its standard error is below this fraction of its value (0: one
+  // batch); unset: the case's target_error, else the preset's.
+  std::optional<double> targetRelativeError;
   // How the scene files are read ([settings] patterns, nonplanar).
   std::optional<PatternPolicy> patterns;
   std::optional<NonplanarPolicy> nonplanar;

@@ -208,6 +208,7 @@ std::vector<ChartRow> runSpeedAccuracy(int threads, bool quick) {
     }
     for (const Setting& st : settings) {
       TraceSettings s = settingsForQuality(Quality::kNormal);
+      s.targetRelativeError = 0.0;  // the chart is of fixed sample counts
       s.method = st.method;
       s.hemisphereSamples = st.samples;
       if (st.method == Method::kCache) {

@@ -99,6 +99,7 @@ TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   EXPECT_EQ(c.settings.bounces.value(), 3);
   EXPECT_EQ(c.settings.samples.value(), 256);
   EXPECT_EQ(c.settings.method.value(), Method::kPath);
+  EXPECT_DOUBLE_EQ(c.settings.targetRelativeError.value(), 0.005);
   EXPECT_EQ(c.settings.threads, 2);
   EXPECT_EQ(c.settings.scene.objMapping, (dir / "geometry" / "faces.map").lexically_normal());
   EXPECT_EQ(c.output.dir, (dir / "results").lexically_normal());
@@ -201,6 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"contrast_half.toml", 5, "needs both 'task' and 'background'"},
                     ErrorCase{"unknown_sky.toml", 5, "unknown sky type 'cloudy'"},
                     ErrorCase{"unknown_quality.toml", 3, "unknown quality 'ultra'"},
+                    ErrorCase{"bad_target_error.toml", 2, "'target_error' must be between 0 and 100 (percent)"},
                     ErrorCase{"duplicate_grid.toml", 6, "two grids are named 'a'"},
                     ErrorCase{"missing_position.toml", 2, "needs the key 'position'"},
                     ErrorCase{"bad_opening_reflectance.toml", 5,

@@ -49,6 +49,29 @@ TEST(TraceOptions, DefaultMethodOnlyWhenNeitherNamesOne) {
   EXPECT_EQ(preset.settings.seed, 1u);
 }
 
+// The per-point target: the preset's (normal and high 0.25 %, at most 16 batches; draft none),
+// else the case's target_error, else the caller's --target-error, which may spend 256 batches.
+TEST(TraceOptions, TargetErrorFromPresetCaseAndCaller) {
+  const ResolvedTrace normal = resolveTrace(nullptr, {}, Method::kPath);
+  EXPECT_DOUBLE_EQ(normal.settings.targetRelativeError, 0.0025);
+  EXPECT_EQ(normal.settings.maxBatches, kPresetMaxBatches);
+  TraceOverrides draft;
+  draft.quality = Quality::kDraft;
+  EXPECT_EQ(resolveTrace(nullptr, draft, Method::kPath).settings.targetRelativeError, 0.0);
+
+  Settings c;
+  c.targetRelativeError = 0.01;
+  const ResolvedTrace fromCase = resolveTrace(&c, {}, Method::kPath);
+  EXPECT_DOUBLE_EQ(fromCase.settings.targetRelativeError, 0.01);
+  EXPECT_EQ(fromCase.settings.maxBatches, kExplicitTargetMaxBatches);
+  TraceOverrides off;
+  off.targetRelativeError = 0.0;
+  EXPECT_EQ(resolveTrace(&c, off, Method::kPath).settings.targetRelativeError, 0.0);
+  EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(normal.settings), 1.25);
+  EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(fromCase.settings), 4.0);
+  EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(resolveTrace(&c, off, Method::kPath).settings), 1.0);
+}
+
 // [settings] patterns and nonplanar are read like the other keys; the command line's override them.
 TEST(TraceOptions, SceneReadingPoliciesFromCaseAndCaller) {
   const CaseFile c = parseCaseFile("[settings]\npatterns = \"base\"\nnonplanar = \"triangulate\"\n", "case.toml");
