@@ -138,18 +138,25 @@ TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
   EXPECT_LE(a, kHi);
 }
 
+// The cache method's settings of the integrating-sphere tests: 4 light samples, the given
+// hemisphere samples, accuracy a and record rays.
+TraceSettings sphereCacheSettings(int samples, double a, int recordSamples) {
+  TraceSettings s;
+  s.hemisphereSamples = samples;
+  s.lightSamples = 4;
+  s.method = Method::kCache;
+  s.cache.accuracy = a;
+  s.cache.recordSamples = recordSamples;
+  return s;
+}
+
 TEST(ErrorBars, IrradianceCacheCoversItsShare) {
   // The cache's error bar is the law of total variance: the hemisphere's strata with the records
   // held fixed, plus the records' own noise through (E, G_r, G_t) and their covariance.
   for (double rho : {0.5, 0.8}) {
     const Scene sphere = integratingSphere(rho);
     const Tracer ts(sphere);
-    TraceSettings s;
-    s.hemisphereSamples = 128;
-    s.lightSamples = 4;
-    s.method = Method::kCache;
-    s.cache.accuracy = 0.3;
-    s.cache.recordSamples = 64;
+    const TraceSettings s = sphereCacheSettings(128, 0.3, 64);
     const std::vector<SensorPoint> pts = {{Vec3(0.9, 0, 0), Vec3(-1, 0, 0)}};
     const std::string what = "cache, integrating sphere rho " + std::to_string(rho).substr(0, 3);
     const double a = coverage([&](uint64_t seed) {
@@ -170,12 +177,7 @@ TEST(ErrorBars, IrradianceCacheCoversItsShareAtNormalLikeSettings) {
   // (engine/tracer.cpp), 59.2 % of 400 seeds fell within one bar (variance ratio 0.79).
   const Scene sphere = integratingSphere(0.5);
   const Tracer ts(sphere);
-  TraceSettings s;
-  s.hemisphereSamples = 512;
-  s.lightSamples = 4;
-  s.method = Method::kCache;
-  s.cache.accuracy = 0.2;
-  s.cache.recordSamples = 256;
+  const TraceSettings s = sphereCacheSettings(512, 0.2, 256);
   const std::vector<SensorPoint> pts = {{Vec3(0.9, 0, 0), Vec3(-1, 0, 0)}};
   const double a = coverage([&](uint64_t seed) {
     TraceSettings t = s;
@@ -216,13 +218,8 @@ TEST(ErrorBars, TargetErrorReachesItsTargetAndCoversItsShare) {
 TEST(ErrorBars, TargetErrorUnderTheCacheCoversItsShare) {
   const Scene sphere = integratingSphere(0.5);
   const Tracer ts(sphere);
-  TraceSettings s;
-  s.hemisphereSamples = 128;
-  s.lightSamples = 4;
+  TraceSettings s = sphereCacheSettings(128, 0.3, 64);
   s.firstBounceSplit = 4;
-  s.method = Method::kCache;
-  s.cache.accuracy = 0.3;
-  s.cache.recordSamples = 64;
   s.targetRelativeError = 0.002;
   const std::vector<SensorPoint> pts = {{Vec3(0.9, 0, 0), Vec3(-1, 0, 0)}};
   double worst = 0.0;
