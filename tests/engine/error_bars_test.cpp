@@ -188,6 +188,26 @@ TEST(ErrorBars, IrradianceCacheCoversItsShareAtNormalLikeSettings) {
   EXPECT_LE(a, kBandHi);
 }
 
+// coverage() of one point with a target error, with the largest relative error bar seen and
+// how many seeds the cache method left to the path method.
+struct TargetRun {
+  double share = 0.0, worst = 0.0;
+  int withoutCache = 0;
+};
+TargetRun coverageWithTarget(const Tracer& tracer, const SensorPoint& p, const TraceSettings& s, double exact,
+                             const char* what) {
+  TargetRun r;
+  r.share = coverage([&](uint64_t seed) {
+    TraceSettings t = s;
+    t.seed = seed;
+    const IrradianceEstimate e = computeIrradiance(tracer, {p}, t, 1)[0];
+    r.worst = std::max(r.worst, e.standardErrorLux() / e.illuminanceLux());
+    r.withoutCache += e.withoutCache;
+    return e;
+  }, exact, what);
+  return r;
+}
+
 TEST(ErrorBars, TargetErrorReachesItsTargetAndCoversItsShare) {
   const Scene ground = skyOverGround();
   const Tracer tg(ground);
@@ -196,15 +216,8 @@ TEST(ErrorBars, TargetErrorReachesItsTargetAndCoversItsShare) {
   s.lightSamples = 4;
   s.firstBounceSplit = 4;
   s.targetRelativeError = 0.01;
-  const std::vector<SensorPoint> pts = {tiltedSensor()};
-  double worst = 0.0;
-  const double a = coverage([&](uint64_t seed) {
-    TraceSettings t = s;
-    t.seed = seed;
-    const IrradianceEstimate e = computeIrradiance(tg, pts, t, 1)[0];
-    worst = std::max(worst, e.standardErrorLux() / e.illuminanceLux());
-    return e;
-  }, tiltedExact(), "path with --target-error 1 %, tilted sensor");
+  const TargetRun r = coverageWithTarget(tg, tiltedSensor(), s, tiltedExact(), "path with --target-error 1 %, tilted sensor");
+  const double worst = r.worst, a = r.share;
   EXPECT_LE(worst, 0.01);
   EXPECT_GE(a, kLo);
   EXPECT_LE(a, kHi);
@@ -221,17 +234,10 @@ TEST(ErrorBars, TargetErrorUnderTheCacheCoversItsShare) {
   TraceSettings s = sphereCacheSettings(128, 0.3, 64);
   s.firstBounceSplit = 4;
   s.targetRelativeError = 0.002;
-  const std::vector<SensorPoint> pts = {{Vec3(0.9, 0, 0), Vec3(-1, 0, 0)}};
-  double worst = 0.0;
-  int withoutCache = 0;
-  const double a = coverage([&](uint64_t seed) {
-    TraceSettings t = s;
-    t.seed = seed;
-    const IrradianceEstimate e = computeIrradiance(ts, pts, t, 1)[0];
-    worst = std::max(worst, e.standardErrorLux() / e.illuminanceLux());
-    withoutCache += e.withoutCache;
-    return e;
-  }, sphereExact(0.5), "cache with a 0.2 % target, integrating sphere rho 0.5");
+  const TargetRun r = coverageWithTarget(ts, {Vec3(0.9, 0, 0), Vec3(-1, 0, 0)}, s, sphereExact(0.5),
+                                         "cache with a 0.2 % target, integrating sphere rho 0.5");
+  const double worst = r.worst, a = r.share;
+  const int withoutCache = r.withoutCache;
   std::printf("[ measured ] %d of %d seeds estimated without the cache\n", withoutCache, kSeeds);
   EXPECT_EQ(withoutCache, kSeeds);
   EXPECT_LE(worst, 0.002);
