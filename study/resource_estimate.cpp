@@ -47,8 +47,6 @@ constexpr double kRaysPerIrradianceSample = 1.0;
 // (docs/reliability.md; it includes the records' own vertices, which few points share out badly).
 constexpr double kSelectionCostPerSource = 0.2;
 
-uint64_t toBytes(double v) { return v <= 0.0 ? 0 : v >= 1.8e19 ? UINT64_MAX : static_cast<uint64_t>(v); }
-
 std::string fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
