@@ -41,6 +41,11 @@ Method parseMethod(const std::string& s);
 // (expected length 1/(1 − albedo)).
 inline constexpr int kUnlimitedBounces = 1000;
 
+// What --target-error (and [settings] target_error) may spend: 256 batches of the point's
+// settings. The presets' own target stops at kPresetMaxBatches.
+inline constexpr int kExplicitTargetMaxBatches = 256;
+inline constexpr int kPresetMaxBatches = 16;
+
 // Sample counts and limits of one run. Passed explicitly; no global options.
 struct TraceSettings {
   int hemisphereSamples = 2048;  // cosine-weighted hemisphere rays per sensor point
@@ -57,13 +62,8 @@ struct TraceSettings {
   // with its first batch, so that only points far noisier than the rest (near contact, in a
   // shadow lit by interreflection) take more; --target-error sets another (docs/accuracy.md).
   double targetRelativeError = 0.0;
-  int maxBatches = 256;
+  int maxBatches = kExplicitTargetMaxBatches;
 };
-
-// What --target-error (and [settings] target_error) may spend: 256 batches of the point's
-// settings. The presets' own target stops at kPresetMaxBatches.
-inline constexpr int kExplicitTargetMaxBatches = 256;
-inline constexpr int kPresetMaxBatches = 16;
 
 // The expected batches per point, for resource estimates: 1 without a target; with a preset's
 // target the few points above it (the office demo: 1.1–1.2 batches per point on average,

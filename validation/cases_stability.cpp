@@ -202,7 +202,8 @@ CaseResult cube(const RunConfig& cfg, double rho) {
   }
   // The case's result is the faces' mean (its standard error 0.02 % at normal quality, a
   // hundredth of the tolerance), not any one point: the preset's per-point target, which
-  // would double the case's time, is left out (docs/validation.md#seeds-110).
+  // more than tripled the case's time (ρ 0.8: 15.0 → 48.7 s), is left out
+  // (docs/validation.md#seeds-110).
   TraceSettings settings = cfg.settings;
   settings.targetRelativeError = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
