@@ -214,7 +214,16 @@ void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, c
 }
 
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads) {
+                                     const TraceSettings& settings, int threads,
+                                     const Distribution& distribution) {
+  // Records [from, to) of a cache get their values, record i from its own stream, shared
+  // between the processes (every later phase reads them).
+  auto computeValues = [&](IrradianceCache& c, size_t from, size_t to,
+                           const std::function<void(size_t, IrradianceRecord&)>& compute) {
+    if (to > from)
+      distributedFill(distribution, &c.record(from), to - from, ItemUse::kShared, threads,
+                      [&](size_t k, IrradianceRecord& r) { compute(from + k, r); });
+  };
   auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
                               uint64_t& rays) { return cacheVisible(tracer, p, n, shape, r, rays); };
   IrradianceCache cache(tracer.scene().bounds(), settings.cache);
@@ -238,14 +247,14 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
                  [&](size_t i, std::vector<CacheQuery>& out) {
                    recordQueries(tracer, cache.record(i), kRecordStream + i, settings, out);
                  });
-    parallelFor(deeper->size(), threads, [&](size_t i) {
-      computeRecord(tracer, deeper->record(i), kRecordStream2 + i, s2, nullptr, 2);
+    computeValues(*deeper, 0, deeper->size(), [&](size_t i, IrradianceRecord& r) {
+      computeRecord(tracer, r, kRecordStream2 + i, s2, nullptr, 2);
     });
   }
   // Phase B: the values, record i from stream i.
   const IrradianceCache* d = deeper ? &*deeper : nullptr;
-  parallelFor(cache.size(), threads, [&](size_t i) {
-    computeRecord(tracer, cache.record(i), kRecordStream + i, settings, d, 1);
+  computeValues(cache, 0, cache.size(), [&](size_t i, IrradianceRecord& r) {
+    computeRecord(tracer, r, kRecordStream + i, settings, d, 1);
   });
   // The radii limited by the gradients, and records where the smaller radii left gaps (phases A
   // and B again over the new records only), twice at most.
@@ -259,8 +268,8 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
                  [&](size_t i, std::vector<CacheQuery>& out) {
                    cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
                  });
-    parallelFor(cache.size() - before, threads, [&](size_t k) {
-      computeRecord(tracer, cache.record(before + k), kRecordStream + before + k, settings, d, 1);
+    computeValues(cache, before, cache.size(), [&](size_t i, IrradianceRecord& r) {
+      computeRecord(tracer, r, kRecordStream + i, settings, d, 1);
     });
     from = before;
   }

@@ -6,6 +6,7 @@
 // are computed and frozen before the first level's.
 #pragma once
 
+#include "base/distribution.h"
 #include "engine/irradiance_cache.h"
 
 #include <cstdint>
@@ -23,9 +24,12 @@ class Tracer;
 // the two phases: phase A over the first level's record rays gives the second level's records,
 // whose values are computed (phase B) and frozen; the first level's values then use them.
 // After phase B, radii are limited by the records' gradients (R_i ≤ E_i/|∇_t E_i|) and phases A
-// and B run again for the queries that left uncovered (twice at most).
+// and B run again for the queries that left uncovered (twice at most). With a distribution,
+// every process walks phase A itself (the serial part) and the records' values of phase B are
+// shared between the processes (docs/distributed.md).
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
-                                     const TraceSettings& settings, int threads);
+                                     const TraceSettings& settings, int threads,
+                                     const Distribution& distribution = localDistribution());
 
 // The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that
 // Tracer::irradiance(p, n, pointIndex, s, cache) will trace (same directions), appended to out.

@@ -42,7 +42,8 @@ std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky) {
 DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                                  const std::vector<Vec3>& normals, const SkyPatches& patches,
                                                  const TraceSettings& settings, int threads,
-                                                 const std::function<void(size_t)>& progress) {
+                                                 const std::function<void(size_t)>& progress,
+                                                 const Distribution& distribution) {
   if (positions.size() != normals.size()) throw std::invalid_argument("positions and normals differ in size");
   DaylightCoefficients dc;
   dc.sensors = static_cast<int>(positions.size());
@@ -50,7 +51,7 @@ DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std
   const size_t np = static_cast<size_t>(dc.patches);
   dc.total.assign(positions.size() * np, 0.0f);
   std::atomic<size_t> done{0};
-  parallelFor(positions.size(), threads, [&](size_t i) {
+  distributedRows(distribution, dc.total, np, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> direct(np, 0.0), indirect(np, 0.0);
     tracer.skyCoefficients(positions[i], normals[i], i, settings, patches, direct.data(), indirect.data());
     for (size_t p = 0; p < np; ++p) dc.total[i * np + p] = static_cast<float>(direct[p] + indirect[p]);
@@ -104,11 +105,12 @@ SunSet indirectSunSet(const AnnualSky& sky, int subdivision) {
 std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                            const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
                                            const TraceSettings& settings, int threads,
-                                           const std::function<void(size_t)>& progress) {
+                                           const std::function<void(size_t)>& progress,
+                                           const Distribution& distribution) {
   const size_t ns = sunDirsModel.size();
   std::vector<float> out(positions.size() * ns, 0.0f);
   std::atomic<size_t> done{0};
-  parallelFor(positions.size(), threads, [&](size_t i) {
+  distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> acc(ns, 0.0);
     tracer.sunCoefficients(positions[i], normals[i], i, settings, sunDirsModel, acc.data());
     for (size_t j = 0; j < ns; ++j) out[i * ns + j] = static_cast<float>(acc[j]);
@@ -120,14 +122,15 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vect
 
 std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                          const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
-                                         int samples, uint64_t seed, int threads) {
+                                         int samples, uint64_t seed, int threads,
+                                         const Distribution& distribution) {
   const size_t ns = sunDirsModel.size();
   std::vector<float> out(positions.size() * ns, 0.0f);
   const double cosMax = std::cos(0.5 * degToRad(kSunDiameterDeg));
   const Strata2D strata(std::max(1, samples));
   // Its own streams, apart from the points' (which the sky coefficients use).
   constexpr uint64_t kSunStream = 0x2000000000000000ULL;
-  parallelFor(positions.size(), threads, [&](size_t i) {
+  distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
     Rng rng(seed, kSunStream + i);
     const Vec3& p = positions[i];
     const Vec3& n = normals[i];

@@ -15,6 +15,7 @@
 // with a shadow ray to every sun at every diffuse vertex (Tracer::sunCoefficients).
 #pragma once
 
+#include "base/distribution.h"
 #include "engine/tracer.h"
 #include "photometry/annual_sky.h"
 #include "photometry/sky_patches.h"
@@ -72,27 +73,32 @@ std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky);
 // Coefficients of every sensor (point i uses random stream i: results do not depend on the
 // thread count). The tracer's scene must have a sky (see Tracer::skyCoefficients).
 // progress(done) as for computeIrradiance (thread-safe, cheap), may be empty.
-// 7 parameters: the public batch entry point (geometry, sky, settings, threads, progress).
+// With a distribution, the sensors are shared between its processes (base/distribution.h) and
+// every process gets every row; progress counts this process's sensors.
+// 8 parameters: the public batch entry point (geometry, sky, settings, threads, progress, processes).
 DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                                  const std::vector<Vec3>& normals, const SkyPatches& patches,
                                                  const TraceSettings& settings, int threads,
-                                                 const std::function<void(size_t)>& progress = {});
+                                                 const std::function<void(size_t)>& progress = {},
+                                                 const Distribution& distribution = localDistribution());
 
 // S(s, j) for sun directions j (unit, model frame): mean over `samples` stratified directions
 // in the sun's disc of max(0, cos incidence) × transmittance, sensor-major [s * suns + j].
 // Illuminance from the sun is S × its direct normal illuminance.
-// 7 parameters: the public batch entry point (geometry, suns, sampling, threads).
+// 8 parameters: the public batch entry point (geometry, suns, sampling, threads, processes).
 std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                          const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
-                                         int samples, uint64_t seed, int threads);
+                                         int samples, uint64_t seed, int threads,
+                                         const Distribution& distribution = localDistribution());
 
 // I(s, j) for the suns of a set (unit, model frame), sensor-major [s * suns + j], lux per lux of
 // direct normal illuminance. Point i uses random stream i.
-// 7 parameters: the public batch entry point (geometry, suns, settings, threads, progress).
+// 8 parameters: the public batch entry point (geometry, suns, settings, threads, progress, processes).
 std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                            const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
                                            const TraceSettings& settings, int threads,
-                                           const std::function<void(size_t)>& progress = {});
+                                           const std::function<void(size_t)>& progress = {},
+                                           const Distribution& distribution = localDistribution());
 
 // A year of hourly illuminance at the sensors, sensor-major [s * hours + h], lux.
 struct AnnualIlluminance {

@@ -302,7 +302,7 @@ bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(li
 // About 125 lines: the coarse pass and the refinement passes share the lattice, the image and the
 // trace/store lambdas; a split would pass all of them.
 Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
-                 const RenderSettings& render, const RenderProgress& progress) {
+                 const RenderSettings& render, const RenderProgress& progress, const Distribution& distribution) {
   const Camera cam(view);
   // The tracer counts diffuse reflections along a path, and the surface a camera ray meets is the
   // first: with N + 1, an image shows the light of N interreflections, as a grid computed with
@@ -338,14 +338,22 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
     img.luminance[i] = p.luminance;
     img.standardError[i] = p.standardError;
   };
-  auto traceList = [&](const std::vector<std::size_t>& list) {
-    parallelFor(list.size(), threads, [&](std::size_t k) {
+  // The pixels of a pass, shared between the processes: the next pass's refinement reads them
+  // (kShared). The last pass's pixels steer nothing (its interpolated pixels come from the
+  // lattice before it), so they go to the outputs only (kResult: shards split them).
+  std::vector<PixelValue> values;
+  auto traceList = [&](const std::vector<std::size_t>& list, ItemUse use) {
+    values.assign(list.size(), PixelValue{});
+    distributedFill(distribution, values, use, threads, [&](std::size_t k, PixelValue& v) {
       const std::size_t i = list[k];
       const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
-      if (img.inside[i]) store(i, tracePixel(tracer, cam, x, y, s, si, render, rays));
-      img.traced[i] = 1;
+      if (img.inside[i]) v = tracePixel(tracer, cam, x, y, s, si, render, rays);
       report(1);
     });
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (img.inside[list[k]]) store(list[k], values[k]);
+      img.traced[list[k]] = 1;
+    }
   };
 
   // Pass 0: the coarse lattice.
@@ -354,7 +362,7 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
     std::vector<std::size_t> list;
     for (int y : ys)
       for (int x : xs) list.push_back(img.index(x, y));
-    traceList(list);
+    traceList(list, step > 1 ? ItemUse::kShared : ItemUse::kResult);
   }
 
   // Refinement: halve the lattice spacing; the new pixels of a block whose corners disagree are
@@ -398,7 +406,7 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
             anyBusy = anyBusy || busy[static_cast<std::size_t>(ky + dy) * bw + (kx + dx)];
         (anyBusy ? toTrace : toInterpolate).push_back(img.index(x, y));
       }
-    traceList(toTrace);
+    traceList(toTrace, half > 1 ? ItemUse::kShared : ItemUse::kResult);
     for (std::size_t i : toInterpolate) {
       const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
       const int kx = intervalOf(xs, x), ky = intervalOf(ys, y);

@@ -3,6 +3,7 @@
 // luminaires the eye sees for glare ratings. docs/views.md explains the method and its limits.
 #pragma once
 
+#include "base/distribution.h"
 #include "engine/camera.h"
 #include "engine/tracer.h"
 
@@ -74,9 +75,12 @@ using RenderProgress = std::function<void(std::size_t done, std::size_t total)>;
 // Renders a view with `settings.maxBounces` interreflections after the direct light on the
 // surfaces seen (the same light a sensor grid gets with those settings). Every pixel's luminance depends only on (seed, pixel) and the refinement
 // decisions, which depend only on traced values, so the image is identical for any `threads`
-// (0 = all cores).
+// (0 = all cores), and for any split of the pixels between the processes of `distribution`
+// (every process gets the whole image; progress counts this process's pixels).
+// 7 parameters: the view and its settings, threads, progress and processes.
 Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
-                 const RenderSettings& render = {}, const RenderProgress& progress = {});
+                 const RenderSettings& render = {}, const RenderProgress& progress = {},
+                 const Distribution& distribution = localDistribution());
 
 // Standard error (cd/m²) of the weighted mean Σ wᵢ Lᵢ / Σ wᵢ of the image's luminances
 // (`weights` one per pixel, e.g. solid angles; 0 leaves a pixel out), from the traced pixels'

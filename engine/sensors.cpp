@@ -1,7 +1,6 @@
 #include "engine/sensors.h"
 
 #include "engine/cache_builder.h"
-#include "base/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -107,18 +106,20 @@ std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const st
 
 std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                                   const TraceSettings& settings, int threads,
-                                                  const std::function<void(size_t done)>& progress) {
+                                                  const std::function<void(size_t done)>& progress,
+                                                  const Distribution& distribution) {
   // Cache method: the cache is filled first in a fixed order and frozen (engine/irradiance_cache.h),
   // so that evaluating the points in parallel reads it only.
   std::optional<IrradianceCache> cache;
   if (settings.method == Method::kCache && settings.maxBounces > 0)
-    cache.emplace(buildIrradianceCache(tracer, points, settings, threads));
+    cache.emplace(buildIrradianceCache(tracer, points, settings, threads, distribution));
   const IrradianceCache* c = cache ? &*cache : nullptr;
   std::vector<IrradianceEstimate> out(points.size());
   std::atomic<size_t> done{0};
-  parallelFor(points.size(), threads, [&](size_t i) {
-    // Point i uses stream i whatever the thread: the callback changes nothing in the numbers.
-    out[i] = estimatePoint(tracer, points[i], i, settings, c);
+  distributedFill(distribution, out, ItemUse::kResult, threads, [&](size_t i, IrradianceEstimate& e) {
+    // Point i uses stream i whatever the thread or process: the callback changes nothing in the
+    // numbers.
+    e = estimatePoint(tracer, points[i], i, settings, c);
     if (progress) progress(done.fetch_add(1, std::memory_order_relaxed) + 1);
   });
   return out;
