@@ -46,6 +46,7 @@ struct YearJob {
   TraceSettings settings;
   int sunSamples = 4;  // rays over the sun's disc
   int threads = 0;
+  const Distribution* distribution = nullptr;  // the processes the sensors are shared between
 };
 
 YearRun traceYear(const Scene& scene, const YearJob& job, bool beamSun, const std::string& label,
@@ -57,6 +58,7 @@ YearRun traceYear(const Scene& scene, const YearJob& job, bool beamSun, const st
   const double northDeg = job.northDeg;
   const TraceSettings& settings = job.settings;
   const int threads = job.threads;
+  const Distribution& processes = *job.distribution;
   const auto t0 = std::chrono::steady_clock::now();
   const Tracer tracer(scene);
   const SkyPatches patches(sky.subdivision);
@@ -64,11 +66,12 @@ YearRun traceYear(const Scene& scene, const YearJob& job, bool beamSun, const st
   {
     const ObservedStep step(observer, label + "sky coefficients", positions.size());
     dc = computeDaylightCoefficients(tracer, positions, normals, patches, settings, threads,
-                                     [&step](size_t d) { step(d); });
+                                     [&step](size_t d) { step(d); }, processes);
   }
   const std::vector<Vec3> suns = sunDirectionsModel(sky, northDeg);
   std::vector<float> direct(positions.size() * suns.size(), 0.0f);
-  if (beamSun) direct = directSunCoefficients(tracer, positions, normals, suns, job.sunSamples, settings.seed, threads);
+  if (beamSun)
+    direct = directSunCoefficients(tracer, positions, normals, suns, job.sunSamples, settings.seed, threads, processes);
   std::vector<Vec3> setModel;
   for (const Vec3& d : sunSet.dirsTrue) setModel.push_back(trueToModel(d, northDeg));
   // The interreflected sun needs fewer paths than the sky (each carries every sun of the set).
@@ -79,11 +82,11 @@ YearRun traceYear(const Scene& scene, const YearJob& job, bool beamSun, const st
   {
     const ObservedStep step(observer, label + "sun coefficients", positions.size());
     inter = indirectSunCoefficients(tracer, positions, normals, setModel, sunSettings, threads,
-                                    [&step](size_t d) { step(d); });
+                                    [&step](size_t d) { step(d); }, processes);
   }
   YearRun r;
   r.coefficientsS = secondsSince(t0);
-  r.rays = tracer.raysTraced();
+  r.rays = processes.sum(tracer.raysTraced());  // every rank's
   r.year = annualIlluminance(dc, direct, inter, sunSet, sky, threads);
   return r;
 }
@@ -161,7 +164,8 @@ struct AnnualTraces {
   uint64_t rays() const { return open.rays + (closed ? closed->rays : 0); }
 };
 
-AnnualTraces traceAnnual(const CaseFile& c, AnnualInputs& in, const ResolvedTrace& trace, StudyObserver& observer) {
+AnnualTraces traceAnnual(const CaseFile& c, AnnualInputs& in, const ResolvedTrace& trace, const Distribution& processes,
+                         StudyObserver& observer) {
   const AnnualSpec& a = c.annual;
   AnnualSkyOptions skyOptions;
   skyOptions.subdivision = a.skySubdivision;
@@ -176,7 +180,8 @@ AnnualTraces traceAnnual(const CaseFile& c, AnnualInputs& in, const ResolvedTrac
   t.skyVectorsS = secondsSince(tSky);
   in.scene->sky->model = yearSamplingGuide(t.sky);
   t.sunSet = indirectSunSet(t.sky);
-  const YearJob job{&in.positions, &in.normals, &t.sky, &t.sunSet, in.north, settings, a.sunSamples, trace.threads};
+  const YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,     in.north,
+                    settings,       a.sunSamples, trace.threads, &processes};
   t.open = traceYear(*in.scene, job, true, "", observer);
   if (a.blinds) {
     std::unique_ptr<Scene> shaded = loadAnnualScene(c, in.north);
@@ -327,7 +332,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
   observer.estimated(needs);
   // 2. Sky vectors of the year, then coefficients.
-  const AnnualTraces t = traceAnnual(c, in, trace, observer);
+  const AnnualTraces t = traceAnnual(c, in, trace, run.request.processes(), observer);
   checkFinite(t.open.year.total, "the hourly illuminance");
   if (t.closed) checkFinite(t.closed->year.total, "the hourly illuminance with blinds closed");
   // 3. Metrics per grid.
@@ -343,11 +348,12 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   data.run.coefficientsTimeS = result.coefficientsS;
   data.run.productTimeS = result.productS;
   describeAnnualSettings(data, c, in, t, trace, y.occupiedCount);
+  data.run.settings.emplace_back("ranks", run.request.processes().describe());
   data.warnings = warnings;
   annualGridReports(data, c, in, t, y);
   data.run.runTimeS = secondsSince(run.start);
   // 4. Write: the folder is committed as a whole.
-  writeRunOutputs(run.outDir, [&](const std::filesystem::path& dir) {
+  commitRun(c, run, [&](const std::filesystem::path& dir) {
     writeAnnualGrids(dir, data, in, t, y);
     writeSummaryCsv(dir, data);
     writeSummaryJson(dir, data);

@@ -172,7 +172,8 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   std::vector<IrradianceEstimate> est;
   {
     const ObservedStep step(observer, "tracing", all.size());
-    est = computeIrradiance(tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); });
+    est = computeIrradiance(tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); },
+                            run.request.processes());
   }
   checkFinite(est, "the grids' illuminance");
 
@@ -182,7 +183,8 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     checkErrorBars(tracer, sets[gi], est.data() + first, warnings);
     first += grids[gi].grid.size();
   }
-  throwIfStrict(warnings, run.request.strict);
+  // A shard holds only its share of the points: merge checks the warnings on all of them.
+  throwIfStrict(warnings, run.request.strict && !run.request.processes().partial());
 
   // 3. Metrics, verdicts and views, all before anything is written.
   RunResult result;
@@ -190,6 +192,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
   describeSettings(data, c, *scene, trace, all.size());
+  data.run.settings.emplace_back("ranks", run.request.processes().describe());
   if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0) {
     std::size_t without = 0;
     for (const IrradianceEstimate& e : est) without += e.withoutCache;
@@ -199,14 +202,16 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
   std::vector<ViewResult> views;
   for (const ViewSpec& view : c.views) {
-    views.push_back(computeView(*scene, tracer, view, trace.settings, trace.threads, ViewOptions{}, observer));
+    ViewOptions options;
+    options.distribution = &run.request.processes();
+    views.push_back(computeView(*scene, tracer, view, trace.settings, trace.threads, options, observer));
     checkFinite(views.back().image.luminance, "view '" + view.name + "'");
     data.views.push_back(viewReport(views.back()));
   }
   data.run.runTimeS = secondsSince(run.start);
 
   // 4. Write: the folder is committed as a whole.
-  writeRunOutputs(run.outDir, [&](const std::filesystem::path& dir) {
+  commitRun(c, run, [&](const std::filesystem::path& dir) {
     for (std::size_t gi = 0; gi < grids.size(); ++gi) {
       std::vector<ExtraColumn> extra = {{"error_lux", values[gi].errorLux}};
       if (grids[gi].spec->daylightFactor) extra.push_back({"daylight_factor_pct", data.grids[gi].values});

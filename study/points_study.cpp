@@ -39,6 +39,7 @@ PointsScene loadPointsScene(const PointsJob& job) {
   }
   out.limits = job.limits;
   out.pointsName = job.pointsName;
+  out.distribution = job.distribution;
   return out;
 }
 
@@ -63,7 +64,8 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
   {
     const ObservedStep step(observer, "tracing", points.size());
     r.estimates = computeIrradiance(tracer, points, ps.trace.settings, ps.trace.threads,
-                                    [&step](std::size_t done) { step(done); });
+                                    [&step](std::size_t done) { step(done); },
+                                    ps.distribution ? *ps.distribution : localDistribution());
   }
   checkFinite(r.estimates, "the points' illuminance");
   if (!points.empty()) checkErrorBars(tracer, set, r.estimates.data(), r.warnings);

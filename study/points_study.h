@@ -31,6 +31,8 @@ struct PointsJob {
   bool strict = false;  // every warning an InputError (the first one, before any output)
   ResourceLimits limits;            // checked before tracing (study/resource_estimate.h)
   std::string pointsName = "<stdin>";  // where the points come from, for the estimate's messages
+  // The processes the points are shared between (base/distribution.h); null: this one.
+  const Distribution* distribution = nullptr;
 };
 
 struct PointsResult {
@@ -48,6 +50,7 @@ struct PointsScene {
   bool strict = false;                         // the job's
   ResourceLimits limits;
   std::string pointsName;
+  const Distribution* distribution = nullptr;  // the job's
 };
 PointsScene loadPointsScene(const PointsJob& job);
 

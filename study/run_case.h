@@ -4,6 +4,7 @@
 // (study/grid_study.h). Throws InputError for bad input before anything is written.
 #pragma once
 
+#include "base/distribution.h"
 #include "reports/report_data.h"
 #include "study/observer.h"
 #include "study/resource_estimate.h"
@@ -11,6 +12,9 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
+#include <optional>
+#include <vector>
 #include <string>
 
 namespace candela {
@@ -21,6 +25,13 @@ struct RunRequest {
   // Every warning becomes an InputError (the first one, before anything is written).
   bool strict = false;
   ResourceLimits limits;  // checked before tracing (study/resource_estimate.h)
+  // The processes the run is shared between (an MPI job, a shard, a merge); null: this one.
+  // Not owned.
+  const Distribution* distribution = nullptr;
+  // How the outputs name the case file; empty: as it was read (a merge reads it by its absolute
+  // path and names it as the shards were given it).
+  std::string caseFileShown;
+  const Distribution& processes() const { return distribution ? *distribution : localDistribution(); }
 };
 
 // What a finished run wrote, for the caller to summarise.
@@ -46,9 +57,31 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
 
 struct CaseFile;
 
+// `candela merge`: the parts of one sharded run (folders written by `candela run --shard i/N`),
+// checked to be one complete set of the case as it is now, into the result folder `outDir`
+// (empty: the case's) that the one-process run writes. Throws InputError naming the part that
+// is missing, incomplete or from another case, settings or seed.
+RunResult mergeParts(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& outDir,
+                     std::optional<int> threads, StudyObserver& observer = silentObserver());
+
 // The report data every run starts from: the case's name, file and description, the version,
 // start time and seed, and the site's north.
 ReportData reportDataFor(const CaseFile& c, const RunContext& run, uint64_t seed);
+
+// Commits the run's result as its processes ask (docs/distributed.md): rank 0 of a job (or the
+// one process) writes the result folder by calling write(dir) inside writeRunOutputs; the other
+// ranks write nothing; a shard writes its part (study/shard_distribution.h) instead. A merge's
+// distribution first checks that the parts held nothing the run did not use.
+void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const std::filesystem::path&)>& write);
+
+// Rank 0 decides: calls check() there and, when it throws InputError, throws the same on every
+// rank (a folder that only rank 0 sees, say), so that no rank waits for another forever.
+void checkOnRankZero(const Distribution& d, const std::function<void()>& check);
+
+// The run's options that change its results (everything but threads and resource limits), as
+// JSON text: what a shard's part records and merge runs again.
+std::string requestJson(const RunRequest& request);
+RunRequest requestFromJson(const std::string& text);
 
 // Seconds since `t`.
 double secondsSince(std::chrono::steady_clock::time_point t);

@@ -39,7 +39,8 @@ ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec&
   {
     const ObservedStep step(observer, "rendering " + view.name,
                             static_cast<std::size_t>(view.resolution.x) * view.resolution.y);
-    v.image = renderView(tracer, view, settings, threads, v.render, [&step](std::size_t done, std::size_t) { step(done); });
+    v.image = renderView(tracer, view, settings, threads, v.render, [&step](std::size_t done, std::size_t) { step(done); },
+                         options.distribution ? *options.distribution : localDistribution());
   }
   v.glare = computeViewGlare(tracer, view, settings, v.image, options.glareThresholdCdM2);
   const bool overridden = options.task && options.background;
@@ -198,6 +199,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   r.caseName = c.name;
   r.view = computeView(*scene, tracer, *view, trace.settings, trace.threads, o, observer);
   checkFinite(r.view.image.luminance, "view '" + view->name + "'");
+  if (o.distribution && !o.distribution->writesOutputs()) return r;  // rank 0 writes the images
   try {
     r.paths = writeViewSet(outDir, r.view,
                            "candela " + std::string(CANDELA_VERSION) + ", case " + c.name + ", view " + view->name);

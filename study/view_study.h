@@ -38,6 +38,8 @@ struct ViewOptions {
   // they were given (errors point there).
   std::optional<Vec3> task, background;
   FileLoc contrastLoc;
+  // The processes the pixels are shared between (base/distribution.h); null: this one.
+  const Distribution* distribution = nullptr;
 };
 
 struct ViewResult {

@@ -1,0 +1,242 @@
+#include "study/shard_distribution.h"
+
+#include "base/atomic_file.h"
+#include "base/error.h"
+#include "base/parallel.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+namespace candela {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// fills.bin: per fill a header of six little-endian uint64 (magic, items, itemBytes, chunk,
+// use, data bytes) and the data.
+constexpr uint64_t kFillMagic = 0x4c4c49464c444e43ULL;  // "CNDLFILL"
+constexpr int kPartFormat = 1;
+
+struct FillHeader {
+  uint64_t magic = kFillMagic, items = 0, itemBytes = 0, chunk = 0, use = 0, dataBytes = 0;
+};
+static_assert(sizeof(FillHeader) == 48);
+
+FileLoc at(const fs::path& dir, const char* file) { return FileLoc{(dir / file).string(), 0, 0}; }
+
+}  // namespace
+
+ShardSpec parseShard(const std::string& text) {
+  const size_t slash = text.find('/');
+  auto number = [&](const std::string& s) {
+    if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos)
+      throw std::invalid_argument("--shard wants i/N with 0 <= i < N (e.g. 0/4), got '" + text + "'");
+    return std::stoi(s);
+  };
+  if (slash == std::string::npos) number("");
+  ShardSpec s{number(text.substr(0, slash)), number(text.substr(slash + 1))};
+  if (s.count < 1 || s.index >= s.count)
+    throw std::invalid_argument("--shard wants i/N with 0 <= i < N (e.g. 0/4), got '" + text + "'");
+  return s;
+}
+
+uint64_t shardChunkItems(uint64_t items, int shards) {
+  const uint64_t parts = 16 * static_cast<uint64_t>(std::max(1, shards));
+  return std::max<uint64_t>(1, (items + parts - 1) / parts);
+}
+
+void ShardDistribution::fill(std::byte* items, size_t n, size_t itemBytes, ItemUse use, int threads,
+                             const std::function<void(size_t)>& compute) const {
+  FillRecord rec;
+  rec.items = n;
+  rec.itemBytes = itemBytes;
+  rec.use = use;
+  rec.chunk = shardChunkItems(n, spec_.count);
+  if (use == ItemUse::kShared) {
+    parallelFor(n, threads, compute);
+    if (spec_.index == 0) rec.data.assign(items, items + n * itemBytes);
+  } else {
+    // This shard's chunks, in order, as one list of items.
+    std::vector<size_t> mine;
+    for (uint64_t b = rec.chunk * spec_.index; b < n; b += rec.chunk * spec_.count)
+      for (uint64_t i = b; i < std::min<uint64_t>(n, b + rec.chunk); ++i) mine.push_back(i);
+    parallelFor(mine.size(), threads, [&](size_t k) { compute(mine[k]); });
+    rec.data.resize(mine.size() * itemBytes);
+    for (size_t k = 0; k < mine.size(); ++k)
+      std::memcpy(rec.data.data() + k * itemBytes, items + mine[k] * itemBytes, itemBytes);
+  }
+  fills_.push_back(std::move(rec));
+}
+
+void writePart(const fs::path& dir, const PartIdentity& id, ShardSpec spec, const std::vector<FillRecord>& fills) {
+  // The folder is the run's fresh temporary one (study/run_outputs.h): a new file in it cannot
+  // meet a planted link.
+  std::ofstream out(dir / kPartData, std::ios::binary | std::ios::trunc);
+  uint64_t bytes = 0;
+  for (const FillRecord& f : fills) {
+    FillHeader h;
+    h.items = f.items;
+    h.itemBytes = f.itemBytes;
+    h.chunk = f.chunk;
+    h.use = f.use == ItemUse::kShared ? 1 : 0;
+    h.dataBytes = f.data.size();
+    out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    out.write(reinterpret_cast<const char*>(f.data.data()), static_cast<std::streamsize>(f.data.size()));
+    bytes += sizeof h + f.data.size();
+  }
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + (dir / kPartData).string());
+  nlohmann::json j;
+  j["format"] = "candela-part";
+  j["format_version"] = kPartFormat;
+  j["candela"] = id.version;
+  j["case"] = id.caseFile;
+  j["fingerprint"] = id.fingerprint;
+  j["request"] = id.request;
+  j["shard"] = spec.index;
+  j["shards"] = spec.count;
+  j["fills"] = fills.size();
+  j["data_bytes"] = bytes;
+  writeFileAtomic(dir / kPartManifest, j.dump(2) + "\n");
+}
+
+PartHeader readPartHeader(const fs::path& dir) {
+  std::ifstream in(dir / kPartManifest);
+  if (!in) throw InputError(at(dir, kPartManifest), "not a candela part (no part.json): was the shard run finished?");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(at(dir, kPartManifest), "not a candela part (part.json is not JSON)");
+  }
+  PartHeader h;
+  h.dir = dir;
+  try {
+    if (j.at("format") != "candela-part" || j.at("format_version") != kPartFormat)
+      throw InputError(at(dir, kPartManifest), "a part of another format (this candela reads version " +
+                                                    std::to_string(kPartFormat) + ")");
+    h.id.version = j.at("candela").get<std::string>();
+    h.id.caseFile = j.at("case").get<std::string>();
+    h.id.fingerprint = j.at("fingerprint").get<std::string>();
+    h.id.request = j.at("request").get<std::string>();
+    h.id.shards = j.at("shards").get<int>();
+    h.spec = {j.at("shard").get<int>(), h.id.shards};
+    h.fills = j.at("fills").get<uint64_t>();
+    h.dataBytes = j.at("data_bytes").get<uint64_t>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(at(dir, kPartManifest), std::string("part.json lacks a field: ") + e.what());
+  }
+  if (h.spec.count < 1 || h.spec.index < 0 || h.spec.index >= h.spec.count)
+    throw InputError(at(dir, kPartManifest), "part.json: shard " + std::to_string(h.spec.index) + " of " +
+                                                 std::to_string(h.spec.count) + " is not a shard");
+  std::error_code ec;
+  const uint64_t size = fs::file_size(dir / kPartData, ec);
+  if (ec || size != h.dataBytes)
+    throw InputError(at(dir, kPartData), "the part is incomplete: fills.bin holds " +
+                                             (ec ? std::string("nothing") : std::to_string(size) + " bytes") + ", part.json says " +
+                                             std::to_string(h.dataBytes));
+  return h;
+}
+
+std::vector<PartHeader> checkPartSet(std::vector<PartHeader> parts) {
+  if (parts.empty()) throw InputError(FileLoc{"merge", 0, 0}, "no parts to merge");
+  const PartHeader& first = parts.front();
+  for (const PartHeader& p : parts) {
+    auto differs = [&](const std::string& what) {
+      return InputError(at(p.dir, kPartManifest), "belongs to another run than " + first.dir.string() + " (" + what +
+                                                     " differ)");
+    };
+    if (p.id.version != first.id.version) throw differs("candela versions");
+    if (p.id.caseFile != first.id.caseFile) throw differs("case files");
+    if (p.id.fingerprint != first.id.fingerprint) throw differs("the case's files");
+    if (p.id.request != first.id.request) throw differs("settings or seed");
+    if (p.id.shards != first.id.shards) throw differs("shard counts");
+  }
+  const int n = first.id.shards;
+  std::map<int, PartHeader> byIndex;
+  for (PartHeader& p : parts) {
+    const auto [it, fresh] = byIndex.emplace(p.spec.index, p);
+    if (!fresh)
+      throw InputError(at(p.dir, kPartManifest), "shard " + std::to_string(p.spec.index) + " is given twice (also " +
+                                                     it->second.dir.string() + ")");
+  }
+  std::string missing;
+  for (int i = 0; i < n; ++i)
+    if (!byIndex.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(n);
+  if (!missing.empty())
+    throw InputError(at(first.dir, kPartManifest), "the parts are incomplete: shard " + missing + " missing");
+  std::vector<PartHeader> ordered;
+  for (auto& [i, p] : byIndex) ordered.push_back(std::move(p));
+  return ordered;
+}
+
+struct MergeDistribution::Reader {
+  std::ifstream in;
+  uint64_t read = 0;  // fills read
+};
+
+MergeDistribution::MergeDistribution(std::vector<PartHeader> parts) : parts_(std::move(parts)) {
+  for (const PartHeader& p : parts_) {
+    auto r = std::make_unique<Reader>();
+    r->in.open(p.dir / kPartData, std::ios::binary);
+    if (!r->in) throw InputError(at(p.dir, kPartData), "cannot read the part");
+    readers_.push_back(std::move(r));
+  }
+}
+
+MergeDistribution::~MergeDistribution() = default;
+
+void MergeDistribution::fill(std::byte* items, size_t n, size_t itemBytes, ItemUse use, int threads,
+                             const std::function<void(size_t)>& compute) const {
+  (void)threads;
+  (void)compute;  // nothing is computed again: the parts hold every item
+  const uint64_t k = next_++;
+  const int shards = static_cast<int>(parts_.size());
+  const uint64_t chunk = shardChunkItems(n, shards);
+  for (int s = 0; s < shards; ++s) {
+    const PartHeader& p = parts_[s];
+    Reader& r = *readers_[s];
+    auto foreign = [&](const std::string& what) {
+      return InputError(at(p.dir, kPartData), "fill " + std::to_string(k + 1) + " " + what +
+                                                  ": the part was computed from another case, scene or settings");
+    };
+    FillHeader h;
+    if (r.read >= p.fills || !r.in.read(reinterpret_cast<char*>(&h), sizeof h)) throw foreign("is missing");
+    ++r.read;
+    if (h.magic != kFillMagic) throw foreign("is damaged");
+    if (h.items != n || h.itemBytes != itemBytes || h.chunk != chunk || h.use != (use == ItemUse::kShared ? 1u : 0u))
+      throw foreign("has " + std::to_string(h.items) + " items of " + std::to_string(h.itemBytes) + " bytes, the case " +
+                    std::to_string(n) + " of " + std::to_string(itemBytes));
+    uint64_t expected = 0;
+    if (use == ItemUse::kShared) {
+      expected = s == 0 ? n * itemBytes : 0;
+    } else {
+      for (uint64_t b = chunk * s; b < n; b += chunk * shards) expected += (std::min<uint64_t>(n, b + chunk) - b) * itemBytes;
+    }
+    if (h.dataBytes != expected) throw foreign("holds " + std::to_string(h.dataBytes) + " bytes, not " + std::to_string(expected));
+    if (use == ItemUse::kShared) {
+      if (s == 0) r.in.read(reinterpret_cast<char*>(items), static_cast<std::streamsize>(expected));
+    } else {
+      for (uint64_t b = chunk * s; b < n; b += chunk * shards)
+        r.in.read(reinterpret_cast<char*>(items + b * itemBytes),
+                  static_cast<std::streamsize>((std::min<uint64_t>(n, b + chunk) - b) * itemBytes));
+    }
+    if (!r.in) throw foreign("is cut short");
+  }
+}
+
+void MergeDistribution::finish() const {
+  for (size_t s = 0; s < parts_.size(); ++s)
+    if (readers_[s]->read != parts_[s].fills)
+      throw InputError(at(parts_[s].dir, kPartData), "holds " + std::to_string(parts_[s].fills) + " fills, the case made " +
+                                                         std::to_string(readers_[s]->read) +
+                                                         ": the part was computed from another case, scene or settings");
+}
+
+}  // namespace candela
