@@ -3,6 +3,7 @@
 // once every point is done.
 #include "cli/case_options.h"
 #include "cli/commands.h"
+#include "cli/processes.h"
 #include "cli/progress.h"
 #include "cli/resource_options.h"
 
@@ -81,13 +82,28 @@ int runPoints(const PointsOptions& o) {
   job.strict = o.strict;
   job.limits = o.resources.limits();
   job.pointsName = o.pointsFile.empty() || o.pointsFile == "-" ? "<stdin>" : o.pointsFile;
+  job.distribution = &processes();
   const PointsScene scene = loadPointsScene(job);
 
   std::vector<SensorPoint> points;
   std::vector<int> lines;
   const bool stdinPoints = o.pointsFile.empty() || o.pointsFile == "-";
   const std::string source = stdinPoints ? "<stdin>" : o.pointsFile;
-  if (stdinPoints) {
+  if (stdinPoints && processes().ranks() > 1) {
+    // mpirun gives standard input to rank 0 alone: it reads the points and sends them on.
+    std::string text;
+    bool bad = false;
+    if (processes().rank() == 0) {
+      std::ostringstream all;
+      all << std::cin.rdbuf();
+      bad = std::cin.bad();
+      text = bad ? std::string("\x01") : all.str();
+    }
+    processes().broadcast(text);
+    if (text == "\x01") throw InputError(FileLoc{source, 0, 0}, "cannot read the sensor points");
+    std::istringstream in(text);
+    points = readPoints(in, source, &lines);
+  } else if (stdinPoints) {
     points = readPoints(std::cin, source, &lines);
     if (std::cin.bad()) throw InputError(FileLoc{source, 0, 0}, "cannot read the sensor points");
   } else {
@@ -96,9 +112,10 @@ int runPoints(const PointsOptions& o) {
   }
   std::vector<FileLoc> locs;
   for (const int line : lines) locs.push_back(FileLoc{source, line, 0});
-  ProgressObserver progress(o.quiet, job.limits.maxMemoryBytes);
+  ProgressObserver progress(o.quiet || !printsResults(), job.limits.maxMemoryBytes);
   const PointsResult result = computePoints(scene, job.accelerator, points, progress, locs);
   const std::vector<IrradianceEstimate>& est = result.estimates;
+  if (!printsResults()) return 0;  // rank 0 prints the CSV
   printWarnings(result.warnings);
 
   std::ostringstream csv;

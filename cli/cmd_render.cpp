@@ -5,6 +5,7 @@
 // views, Wienold & Christoffersen 2006) and contrast.
 #include "cli/case_options.h"
 #include "cli/commands.h"
+#include "cli/processes.h"
 #include "cli/progress.h"
 #include "cli/resource_options.h"
 
@@ -106,8 +107,10 @@ int renderCommand(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   RenderRequest request = requestOf(o);
   request.limits = o.resources.limits();
-  ProgressObserver progress(o.quiet, request.limits.maxMemoryBytes);
+  request.options.distribution = &processes();
+  ProgressObserver progress(o.quiet || !printsResults(), request.limits.maxMemoryBytes);
   const RenderResult r = renderCaseView(o.caseFile, request, progress);
+  if (!printsResults()) return 0;  // rank 0 writes and prints
   printWarnings(r.warnings);
   if (o.quiet) return 0;
   const ViewResult& v = r.view;

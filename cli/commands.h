@@ -17,5 +17,6 @@ void addLuminaireCommand(CLI::App& app, Action& action);
 void addRunCommand(CLI::App& app, Action& action);
 void addValidateCommand(CLI::App& app, Action& action);
 void addRenderCommand(CLI::App& app, Action& action);
+void addMergeCommand(CLI::App& app, Action& action);
 
 }  // namespace candela::cli

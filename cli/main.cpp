@@ -1,12 +1,19 @@
 // candela: wiring only. Picks the subcommand, maps errors to exit codes (architecture.md):
 // 0 success, 2 bad input (one line "file:line: message" on stderr), 1 internal failure.
+// Under mpirun every rank runs this program (docs/distributed.md); rank 0 prints.
 #include "cli/commands.h"
+#include "cli/processes.h"
 #include "base/error.h"
+#include "study/mpi_distribution.h"
 
 #include <exception>
 #include <iostream>
+#include <memory>
+#include <string>
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv, const candela::MpiSession& mpi) {
   CLI::App app{"candela: lighting analysis by backward ray tracing"};
   app.set_version_flag("--version", std::string("candela ") + CANDELA_VERSION);
   app.require_subcommand(1);
@@ -17,6 +24,7 @@ int main(int argc, char** argv) {
   candela::cli::addRunCommand(app, action);
   candela::cli::addValidateCommand(app, action);
   candela::cli::addRenderCommand(app, action);
+  candela::cli::addMergeCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -29,13 +37,32 @@ int main(int argc, char** argv) {
     std::cerr << "candela: " << candela::printable(e.what()) << "\n";
     return 2;
   }
+  const int rank = mpi.distribution().rank();
   try {
     return action ? action() : 1;
   } catch (const candela::InputError& e) {
-    std::cerr << e.what() << "\n";
+    // Every rank reads the same input and finds the same error: rank 0 says it.
+    if (rank == 0) std::cerr << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "candela: internal error: " << candela::printable(e.what()) << "\n";
+    std::cerr << "candela: internal error" << (mpi.active() ? " on rank " + std::to_string(rank) : "") << ": "
+              << candela::printable(e.what()) << "\n";
+    // The other ranks may be waiting for this one: end them all.
+    mpi.abort(1);
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::unique_ptr<candela::MpiSession> mpi;
+  try {
+    mpi = std::make_unique<candela::MpiSession>(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "candela: " << candela::printable(e.what()) << "\n";
+    return 1;
+  }
+  candela::cli::setProcesses(mpi->distribution());
+  return run(argc, argv, *mpi);
 }
