@@ -1,0 +1,49 @@
+# Distribution (docs/distributed.md): the same bytes for any split of a run. Each case's
+# one-process result is made once (a fixture) and every split is compared with it. Shards and
+# merge need no MPI; the mpirun tests run when candela is built with MPI and mpirun is installed,
+# with the flags a root container needs (Open MPI refuses root, and more ranks than cores,
+# otherwise).
+set(DISTRIBUTED ${CMAKE_CURRENT_SOURCE_DIR}/distributed.sh)
+set(DISTRIBUTED_REFERENCE ${CMAKE_BINARY_DIR}/distributed_reference)
+find_program(MPIRUN mpirun)
+
+# candela_distributed_case(NAME CASE ARGS...): the fixture and the shard test; with MPI, the
+# mpirun test.
+function(candela_distributed_case name case_file)
+  set(ref ${DISTRIBUTED_REFERENCE}/${name})
+  add_test(NAME cli.distributed.${name}.reference
+           COMMAND bash ${DISTRIBUTED} reference 1 $<TARGET_FILE:candela> ${case_file} ${ref} ${ARGN})
+  set_tests_properties(cli.distributed.${name}.reference PROPERTIES FIXTURES_SETUP distributed_${name})
+  add_test(NAME cli.distributed.${name}.shards
+           COMMAND bash ${DISTRIBUTED} shards 3 $<TARGET_FILE:candela> ${case_file} ${ref} ${ARGN})
+  set(tests cli.distributed.${name}.shards)
+  if(CANDELA_HAVE_MPI AND MPIRUN)
+    add_test(NAME cli.distributed.${name}.mpi
+             COMMAND bash ${DISTRIBUTED} mpi 2 $<TARGET_FILE:candela> ${case_file} ${ref} ${ARGN})
+    list(APPEND tests cli.distributed.${name}.mpi)
+  endif()
+  set_tests_properties(${tests} PROPERTIES FIXTURES_REQUIRED distributed_${name})
+endfunction()
+
+candela_distributed_case(small_room ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality draft)
+candela_distributed_case(office ${PROJECT_SOURCE_DIR}/cases/office/case.toml --quality draft)
+candela_distributed_case(annual ${PROJECT_SOURCE_DIR}/cases/office-annual/case.toml --quality draft)
+# The office's views take most of its time: its tests start first.
+set_tests_properties(cli.distributed.office.reference PROPERTIES COST 6000)
+set_tests_properties(cli.distributed.office.shards PROPERTIES COST 5000)
+
+if(CANDELA_HAVE_MPI AND MPIRUN)
+  set_tests_properties(cli.distributed.office.mpi PROPERTIES COST 5000)
+  set(SMALL_ROOM_REFERENCE ${DISTRIBUTED_REFERENCE}/small_room)
+  add_test(NAME cli.distributed.small_room.mpi_points
+           COMMAND bash ${DISTRIBUTED} points 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml
+                   ${SMALL_ROOM_REFERENCE} --quality draft)
+  set_tests_properties(cli.distributed.small_room.mpi_points PROPERTIES FIXTURES_REQUIRED distributed_small_room)
+  # candela render under mpirun: one cheap rendering of the office's first view.
+  add_test(NAME cli.distributed.office.mpi_render
+           COMMAND bash ${DISTRIBUTED} render 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office/case.toml
+                   - --quality draft --pixel-samples 1 --coarse-step 16 --irradiance-samples 4)
+  add_test(NAME cli.distributed.office.mpi_rank_killed
+           COMMAND bash ${DISTRIBUTED} kill 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office/case.toml
+                   - --quality draft)
+endif()
