@@ -1,6 +1,5 @@
 #include "engine/cache_builder.h"
 
-#include "base/parallel.h"
 #include "base/rng.h"
 #include "engine/integrator_path.h"
 #include "engine/irradiance_estimator.h"
@@ -11,10 +10,12 @@
 #include "engine/tracer.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 namespace candela {
 
@@ -67,23 +68,49 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& fr
   tracer.addRays(rays);
 }
 
-// Phase A over a list of queries, gathered in parallel in batches (gather(i, out): the queries of
-// item i, in order) and walked in order on one thread: an uncovered hit becomes a record whose
-// R_i comes from stream radiusStream + its index.
-// 7 parameters: the cache, the tracer, the item list (count and gather) and the stream, settings
-// and threads of the phase are separate inputs.
-void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, uint64_t radiusStream,
-                  const TraceSettings& settings, int threads,
-                  const std::function<void(size_t, std::vector<CacheQuery>&)>& gather) {
-  constexpr size_t kBatch = 64;
-  std::vector<std::vector<CacheQuery>> hits;
+// Phase A's input: `items` items whose cacheable first hits gather(i, out) appends in order, at
+// most maxPerItem of them (one per hemisphere cell).
+struct QuerySource {
+  size_t items = 0, maxPerItem = 0;
+  std::function<void(size_t, std::vector<CacheQuery>&)> gather;
+};
+
+// What traces a build, on which threads and processes.
+struct BuildContext {
+  const Tracer& tracer;
+  int threads;
+  const Distribution& distribution;
+};
+
+// Phase A over a list of queries, gathered in parallel in batches and shared between the
+// processes (a fixed-size item per source item: its count, then maxPerItem queries), then walked
+// in order on one thread by every process alike: an uncovered hit becomes a record whose R_i
+// comes from stream radiusStream + its index. The batch's size changes nothing in the walk.
+void placeRecords(IrradianceCache& cache, const BuildContext& ctx, const QuerySource& src, uint64_t radiusStream,
+                  const TraceSettings& settings) {
+  constexpr size_t kBatch = 512;
+  const size_t itemBytes = sizeof(uint64_t) + src.maxPerItem * sizeof(CacheQuery);
+  std::vector<std::byte> hits;
   uint64_t rays = 0;  // the coverage tests' visibility rays
-  for (size_t b = 0; b < items; b += kBatch) {
-    const size_t e = std::min(items, b + kBatch);
-    hits.assign(e - b, {});
-    parallelFor(e - b, threads, [&](size_t i) { gather(b + i, hits[i]); });
-    for (const auto& list : hits) {
-      for (const CacheQuery& q : list) {
+  for (size_t b = 0; b < src.items; b += kBatch) {
+    const size_t e = std::min(src.items, b + kBatch);
+    hits.assign((e - b) * itemBytes, std::byte{0});
+    ctx.distribution.fill(hits.data(), e - b, itemBytes, ItemUse::kShared, ctx.threads, [&](size_t i) {
+      std::vector<CacheQuery> list;
+      src.gather(b + i, list);
+      if (list.size() > src.maxPerItem) throw std::logic_error("more cache queries than hemisphere cells");
+      const uint64_t count = list.size();
+      std::byte* item = hits.data() + i * itemBytes;
+      std::memcpy(item, &count, sizeof count);
+      if (count > 0) std::memcpy(item + sizeof count, list.data(), count * sizeof(CacheQuery));
+    });
+    for (size_t i = 0; i < e - b; ++i) {
+      const std::byte* item = hits.data() + i * itemBytes;
+      uint64_t count = 0;
+      std::memcpy(&count, item, sizeof count);
+      for (uint64_t k = 0; k < count; ++k) {
+        CacheQuery q;
+        std::memcpy(&q, item + sizeof count + k * sizeof(CacheQuery), sizeof q);
         if (cache.covers(q.p, q.n, q.shape, &rays)) continue;
         IrradianceRecord r;
         r.p = q.p;
@@ -91,12 +118,12 @@ void placeRecords(IrradianceCache& cache, const Tracer& tracer, size_t items, ui
         r.skip = q.skip;
         r.shape = q.shape;
         Rng rng(settings.seed, radiusStream + cache.size());
-        r.radiusM = harmonicMeanDistance(tracer, q, settings.cache.radiusSamples, rng);
+        r.radiusM = harmonicMeanDistance(ctx.tracer, q, settings.cache.radiusSamples, rng);
         cache.add(r);
       }
     }
   }
-  tracer.addRays(rays);
+  ctx.tracer.addRays(rays);
 }
 
 // Radiance's radius clamp (src/rt/ambcomp.c, doambient(): a radius times the position gradient
@@ -228,11 +255,14 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
                               uint64_t& rays) { return cacheVisible(tracer, p, n, shape, r, rays); };
   IrradianceCache cache(tracer.scene().bounds(), settings.cache);
   cache.setVisibility(visibility);
+  const BuildContext ctx{tracer, threads, distribution};
   // Phase A: first diffuse hits of each point's initial hemisphere cells.
-  placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
-               [&](size_t i, std::vector<CacheQuery>& out) {
-                 cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
-               });
+  const QuerySource pointQueries{
+      points.size(), static_cast<size_t>(hemisphereThetaStrata(settings) * hemispherePhiStrata(settings)),
+      [&](size_t i, std::vector<CacheQuery>& out) {
+        cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
+      }};
+  placeRecords(cache, ctx, pointQueries, kRadiusStream, settings);
   // Second level: phase A over the first level's record rays (the directions phase B will
   // trace), then its values, frozen before the first level's values use it. A record ray's
   // first hit is the second diffuse bounce: only when bounces go that far.
@@ -243,10 +273,11 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
     s2.cache = deeperLevel(settings.cache);
     deeper.emplace(tracer.scene().bounds(), s2.cache);
     deeper->setVisibility(visibility);
-    placeRecords(*deeper, tracer, cache.size(), kRadiusStream2, s2, threads,
-                 [&](size_t i, std::vector<CacheQuery>& out) {
-                   recordQueries(tracer, cache.record(i), kRecordStream + i, settings, out);
-                 });
+    const QuerySource recordRays{cache.size(), static_cast<size_t>(recordThetaStrata(settings) * recordPhiStrata(settings)),
+                                 [&](size_t i, std::vector<CacheQuery>& out) {
+                                   recordQueries(tracer, cache.record(i), kRecordStream + i, settings, out);
+                                 }};
+    placeRecords(*deeper, ctx, recordRays, kRadiusStream2, s2);
     computeValues(*deeper, 0, deeper->size(), [&](size_t i, IrradianceRecord& r) {
       computeRecord(tracer, r, kRecordStream2 + i, s2, nullptr, 2);
     });
@@ -264,10 +295,7 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
     for (size_t i = from; i < cache.size(); ++i) shrunk |= limitRadiusByGradient(cache.record(i), settings.cache);
     if (!shrunk) break;
     const size_t before = cache.size();
-    placeRecords(cache, tracer, points.size(), kRadiusStream, settings, threads,
-                 [&](size_t i, std::vector<CacheQuery>& out) {
-                   cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
-                 });
+    placeRecords(cache, ctx, pointQueries, kRadiusStream, settings);
     computeValues(cache, before, cache.size(), [&](size_t i, IrradianceRecord& r) {
       computeRecord(tracer, r, kRecordStream + i, settings, d, 1);
     });

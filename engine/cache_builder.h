@@ -25,8 +25,8 @@ class Tracer;
 // whose values are computed (phase B) and frozen; the first level's values then use them.
 // After phase B, radii are limited by the records' gradients (R_i ≤ E_i/|∇_t E_i|) and phases A
 // and B run again for the queries that left uncovered (twice at most). With a distribution,
-// every process walks phase A itself (the serial part) and the records' values of phase B are
-// shared between the processes (docs/distributed.md).
+// phase A's first hits are gathered and phase B's values computed shared between the processes;
+// every process walks phase A's hits itself (the serial part, docs/distributed.md).
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads,
                                      const Distribution& distribution = localDistribution());
