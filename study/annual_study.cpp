@@ -12,6 +12,7 @@
 #include "reports/json_writer.h"
 #include "study/blinds.h"
 #include "study/case_scene.h"
+#include "study/finite_results.h"
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
@@ -20,7 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
+#include <memory>
+#include <span>
 
 namespace candela {
 
@@ -268,14 +270,6 @@ std::pair<std::size_t, std::size_t> overlap(const GridYear& g, std::size_t b0, s
   return {lo, hi > lo ? hi - lo : 0};
 }
 
-// The values a check or metric needs of a block, as the whole study's index reads them.
-void checkBlockFinite(const std::vector<float>& values, std::size_t firstIndex, const std::string& what) {
-  for (std::size_t i = 0; i < values.size(); ++i)
-    if (!std::isfinite(values[i]))
-      throw std::runtime_error("a non-finite result in " + what + " at index " + std::to_string(firstIndex + i) +
-                               "; nothing was written");
-}
-
 // The study's blocks: sensorsPerBlock rounded up to kAnnualProductBlock.
 std::size_t blockSize(const AnnualStudyOptions& o) {
   const std::size_t m = kAnnualProductBlock;
@@ -300,7 +294,7 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
   for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
     const std::size_t n = std::min(p.block, sensors - b0);
     const AnnualIlluminance year = open.block(b0, n, 2 * b0, step);
-    checkBlockFinite(year.total, b0 * nh, "the hourly illuminance");
+    checkFinite(year.total, "the hourly illuminance", b0 * nh);
     for (GridYear& g : p.grids) {
       const auto [lo, k] = overlap(g, b0, n);
       if (k == 0) continue;
@@ -333,7 +327,7 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
     const std::size_t n = std::min(p.block, sensors - b0);
     AnnualIlluminance year = closed.block(b0, n, 2 * b0, step);
     std::vector<float>().swap(year.directSun);  // no beam through closed blinds: zeros
-    checkBlockFinite(year.total, b0 * nh, "the hourly illuminance with blinds closed");
+    checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
     std::vector<float> open, direct;
     for (GridYear& g : p.grids) {
       const auto [lo, k] = overlap(g, b0, n);
