@@ -51,25 +51,39 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
     if (fd < 0 && errno != EEXIST) throw std::runtime_error("cannot write " + tmp.string() + ": " + errnoText());
   }
   if (fd < 0) throw std::runtime_error("cannot create a unique temporary beside " + path.string());
-  std::size_t done = 0;
-  bool ok = true;
-  while (ok && done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    ok = n > 0;
-    if (ok) done += static_cast<std::size_t>(n);
-  }
-  const std::string why = ok ? std::string() : errnoText();
-  if (::close(fd) != 0 && ok) ok = false;
-  if (!ok) {
+  try {
+    writeAll(fd, content, tmp.string());
+  } catch (const std::runtime_error&) {
+    ::close(fd);
     ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + tmp.string() + (why.empty() ? "" : ": " + why));
+    throw;
+  }
+  if (::close(fd) != 0) {
+    const std::string why = errnoText();
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + tmp.string() + ": " + why);
   }
   // rename() replaces a link at `path` by the file; it never follows it.
   if (::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string reason = errnoText();
     ::unlink(tmp.c_str());
     throw std::runtime_error("cannot rename into " + path.string() + ": " + reason);
+  }
+}
+
+int createFileExclusive(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) throw std::runtime_error("cannot create " + path.string() + ": " + errnoText());
+  return fd;
+}
+
+void writeAll(int fd, std::string_view content, const std::string& what) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw std::runtime_error("cannot write " + what + (n < 0 ? ": " + errnoText() : std::string()));
+    done += static_cast<std::size_t>(n);
   }
 }
 

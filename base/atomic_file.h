@@ -23,4 +23,14 @@ std::filesystem::path uniqueSibling(const std::filesystem::path& dir, const std:
 // returns it. Throws std::runtime_error.
 std::filesystem::path createTemporaryFolder(const std::filesystem::path& dir, const std::string& stem);
 
+// Creates `path` for reading and writing; it must not exist (O_EXCL | O_NOFOLLOW: an existing
+// name, a planted link included, is refused). For a file written piece by piece inside a fresh
+// temporary folder (createTemporaryFolder) and committed with the folder, where a rename per
+// file would buy nothing. Returns the descriptor; throws std::runtime_error.
+int createFileExclusive(const std::filesystem::path& path);
+
+// Writes every byte of `content` to `fd` (short writes and EINTR retried). Throws
+// std::runtime_error naming `what` on a failure (a full disk, say).
+void writeAll(int fd, std::string_view content, const std::string& what);
+
 }  // namespace candela

@@ -39,12 +39,35 @@ std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky) {
   return std::make_shared<PatchSky>(patches, std::move(mean));
 }
 
+namespace {
+
+SensorBlock wholeStudy(const std::vector<Vec3>& positions, const std::vector<Vec3>& normals) {
+  if (positions.size() != normals.size()) throw std::invalid_argument("positions and normals differ in size");
+  return SensorBlock{positions, normals, 0};
+}
+
+void checkBlock(const SensorBlock& block) {
+  if (block.positions.size() != block.normals.size())
+    throw std::invalid_argument("positions and normals differ in size");
+}
+
+}  // namespace
+
 DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std::vector<Vec3>& positions,
                                                  const std::vector<Vec3>& normals, const SkyPatches& patches,
                                                  const TraceSettings& settings, int threads,
                                                  const std::function<void(size_t)>& progress,
                                                  const Distribution& distribution) {
-  if (positions.size() != normals.size()) throw std::invalid_argument("positions and normals differ in size");
+  return computeDaylightCoefficients(tracer, wholeStudy(positions, normals), patches, settings, threads, progress,
+                                     distribution);
+}
+
+DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                                 const SkyPatches& patches, const TraceSettings& settings,
+                                                 int threads, const std::function<void(size_t)>& progress,
+                                                 const Distribution& distribution) {
+  checkBlock(block);
+  const std::span<const Vec3> positions = block.positions, normals = block.normals;
   DaylightCoefficients dc;
   dc.sensors = static_cast<int>(positions.size());
   dc.patches = patches.count();
@@ -53,7 +76,8 @@ DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const std
   std::atomic<size_t> done{0};
   distributedRows(distribution, dc.total, np, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> direct(np, 0.0), indirect(np, 0.0);
-    tracer.skyCoefficients(positions[i], normals[i], i, settings, patches, direct.data(), indirect.data());
+    tracer.skyCoefficients(positions[i], normals[i], block.firstIndex + i, settings, patches, direct.data(),
+                           indirect.data());
     for (size_t p = 0; p < np; ++p) dc.total[i * np + p] = static_cast<float>(direct[p] + indirect[p]);
     const size_t d = ++done;
     if (progress) progress(d);
@@ -107,12 +131,22 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vect
                                            const TraceSettings& settings, int threads,
                                            const std::function<void(size_t)>& progress,
                                            const Distribution& distribution) {
+  return indirectSunCoefficients(tracer, wholeStudy(positions, normals), sunDirsModel, settings, threads, progress,
+                                 distribution);
+}
+
+std::vector<float> indirectSunCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                           const std::vector<Vec3>& sunDirsModel, const TraceSettings& settings,
+                                           int threads, const std::function<void(size_t)>& progress,
+                                           const Distribution& distribution) {
+  checkBlock(block);
+  const std::span<const Vec3> positions = block.positions, normals = block.normals;
   const size_t ns = sunDirsModel.size();
   std::vector<float> out(positions.size() * ns, 0.0f);
   std::atomic<size_t> done{0};
   distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> acc(ns, 0.0);
-    tracer.sunCoefficients(positions[i], normals[i], i, settings, sunDirsModel, acc.data());
+    tracer.sunCoefficients(positions[i], normals[i], block.firstIndex + i, settings, sunDirsModel, acc.data());
     for (size_t j = 0; j < ns; ++j) out[i * ns + j] = static_cast<float>(acc[j]);
     const size_t d = ++done;
     if (progress) progress(d);
@@ -124,6 +158,15 @@ std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector
                                          const std::vector<Vec3>& normals, const std::vector<Vec3>& sunDirsModel,
                                          int samples, uint64_t seed, int threads,
                                          const Distribution& distribution) {
+  return directSunCoefficients(tracer, wholeStudy(positions, normals), sunDirsModel, samples, seed, threads,
+                               distribution);
+}
+
+std::vector<float> directSunCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                         const std::vector<Vec3>& sunDirsModel, int samples, uint64_t seed,
+                                         int threads, const Distribution& distribution) {
+  checkBlock(block);
+  const std::span<const Vec3> positions = block.positions, normals = block.normals;
   const size_t ns = sunDirsModel.size();
   std::vector<float> out(positions.size() * ns, 0.0f);
   const double cosMax = std::cos(0.5 * degToRad(kSunDiameterDeg));
@@ -131,7 +174,7 @@ std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector
   // Its own streams, apart from the points' (which the sky coefficients use).
   constexpr uint64_t kSunStream = 0x2000000000000000ULL;
   distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
-    Rng rng(seed, kSunStream + i);
+    Rng rng(seed, kSunStream + block.firstIndex + i);
     const Vec3& p = positions[i];
     const Vec3& n = normals[i];
     for (size_t j = 0; j < ns; ++j) {
@@ -193,7 +236,7 @@ AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::v
   // is summed in the same order whatever the number of threads.
   using ConstMap = Eigen::Map<const Eigen::MatrixXf>;
   const ConstMap lum(sky.luminance.data(), np, nh);
-  constexpr int kBlock = 64;
+  constexpr int kBlock = kAnnualProductBlock;
   const int blocks = (dc.sensors + kBlock - 1) / kBlock;
   parallelFor(static_cast<size_t>(blocks), threads, [&](size_t b) {
     const int s0 = static_cast<int>(b) * kBlock, count = std::min(kBlock, dc.sensors - s0);

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace candela {
@@ -99,6 +100,31 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const std::vect
                                            const TraceSettings& settings, int threads,
                                            const std::function<void(size_t)>& progress = {},
                                            const Distribution& distribution = localDistribution());
+
+// Sensor blocks: the three functions above over `positions.size()` consecutive sensors of a
+// study, the first of which is the study's sensor `firstIndex`. Point k of the block uses random
+// stream firstIndex + k, so a study traced block by block gets, float for float, the values of
+// the same study traced whole (study/annual_study.cpp keeps one block in memory at a time).
+struct SensorBlock {
+  std::span<const Vec3> positions, normals;  // the block's own, equal in size
+  std::size_t firstIndex = 0;
+};
+DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                                 const SkyPatches& patches, const TraceSettings& settings,
+                                                 int threads, const std::function<void(size_t)>& progress = {},
+                                                 const Distribution& distribution = localDistribution());
+std::vector<float> directSunCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                         const std::vector<Vec3>& sunDirsModel, int samples, uint64_t seed,
+                                         int threads, const Distribution& distribution = localDistribution());
+std::vector<float> indirectSunCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                           const std::vector<Vec3>& sunDirsModel, const TraceSettings& settings,
+                                           int threads, const std::function<void(size_t)>& progress = {},
+                                           const Distribution& distribution = localDistribution());
+
+// annualIlluminance sums sensors in groups of this many (Eigen products of a fixed shape, so
+// that no value depends on the thread count); a block of sensors that starts at a multiple of it
+// gets the same floats as the whole study.
+inline constexpr int kAnnualProductBlock = 64;
 
 // A year of hourly illuminance at the sensors, sensor-major [s * hours + h], lux.
 struct AnnualIlluminance {

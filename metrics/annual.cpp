@@ -37,24 +37,39 @@ int countHours(const std::vector<char>& flags) {
   return static_cast<int>(std::count_if(flags.begin(), flags.end(), [](char f) { return f != 0; }));
 }
 
-std::vector<char> blindsClosedHours(const float* directSun, int nSensors, int nHours,
-                                    const std::vector<char>& occupied, double aseLux, double fraction) {
-  checkCounts(nSensors, nHours, occupied);
+void countSunlitSensors(const float* directSun, int nSensors, int nHours, double aseLux, std::vector<int>& sunlit) {
+  if (nSensors < 0 || nHours < 0) throw std::invalid_argument("annual metrics: negative sensor or hour count");
+  if (sunlit.size() != static_cast<std::size_t>(nHours))
+    throw std::invalid_argument("countSunlitSensors: " + std::to_string(sunlit.size()) + " counts for " +
+                                std::to_string(nHours) + " hours");
   if (directSun == nullptr && nSensors > 0 && nHours > 0)
-    throw std::invalid_argument("blindsClosedHours: no direct-sun illuminances");
+    throw std::invalid_argument("countSunlitSensors: no direct-sun illuminances");
   // Count the sunlit sensors of every hour sensor by sensor, so that the sensor-major array is
   // read contiguously (an hour-by-hour pass would stride by nHours floats).
-  std::vector<int> sunlit(static_cast<std::size_t>(nHours), 0);
   const float threshold = static_cast<float>(aseLux);
   for (int s = 0; s < nSensors; ++s) {
     const float* row = directSun + static_cast<std::size_t>(s) * nHours;
     for (int h = 0; h < nHours; ++h) sunlit[h] += row[h] >= threshold ? 1 : 0;
   }
+}
+
+std::vector<char> blindsClosedFromCounts(const std::vector<int>& sunlit, int nSensors,
+                                         const std::vector<char>& occupied, double fraction) {
+  const int nHours = static_cast<int>(sunlit.size());
+  checkCounts(nSensors, nHours, occupied);
   // LM-83-12 2.2.6: blinds close when MORE than 2 % of the analysis points receive direct sun.
   const double limit = fraction * nSensors;
   std::vector<char> closed(static_cast<std::size_t>(nHours), 0);
   for (int h = 0; h < nHours; ++h) closed[h] = (occupied[h] && sunlit[h] > limit) ? 1 : 0;
   return closed;
+}
+
+std::vector<char> blindsClosedHours(const float* directSun, int nSensors, int nHours,
+                                    const std::vector<char>& occupied, double aseLux, double fraction) {
+  checkCounts(nSensors, nHours, occupied);
+  std::vector<int> sunlit(static_cast<std::size_t>(nHours), 0);
+  countSunlitSensors(directSun, nSensors, nHours, aseLux, sunlit);
+  return blindsClosedFromCounts(sunlit, nSensors, occupied, fraction);
 }
 
 std::vector<SensorAnnualMetrics> sensorAnnualMetrics(const float* total, const float* directSun,

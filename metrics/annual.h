@@ -82,6 +82,16 @@ std::vector<char> blindsClosedHours(const float* directSun, int nSensors, int nH
                                     const std::vector<char>& occupied, double aseLux = 1000.0,
                                     double fraction = 0.02);
 
+// The same rule for a grid whose hours arrive in blocks of sensors (study/annual_study.cpp keeps
+// one block in memory): countSunlitSensors adds, for every hour, the sensors of the block with
+// direct sun >= aseLux to `sunlit` (nHours counts, zero before the first block);
+// blindsClosedFromCounts then applies the rule to the grid's nSensors. blindsClosedHours is the
+// two in one call. Throws std::invalid_argument on a null array, negative counts or sizes that
+// are not nHours.
+void countSunlitSensors(const float* directSun, int nSensors, int nHours, double aseLux, std::vector<int>& sunlit);
+std::vector<char> blindsClosedFromCounts(const std::vector<int>& sunlit, int nSensors,
+                                         const std::vector<char>& occupied, double fraction = 0.02);
+
 // Per-sensor metrics in one pass per sensor. All arrays sensor-major, lux:
 //   total[s * nHours + h]       illuminance with blinds open (all light: sun, sky, interreflection)
 //   directSun[s * nHours + h]   direct beam sunlight only, no interreflection, blinds open; used

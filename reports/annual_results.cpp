@@ -1,10 +1,12 @@
 #include "reports/annual_results.h"
 
 #include <bit>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "base/atomic_file.h"
 #include "base/error.h"
@@ -96,13 +98,101 @@ void writeAnnualResults(const std::filesystem::path& path, int sensors, const st
   writeFileAtomic(path, out);
 }
 
-AnnualResults decodeAnnualResults(const std::string& in, const std::string& fileName) {
-  auto fail = [&](std::size_t byte, const std::string& message) -> InputError {
-    return InputError(FileLoc{fileName, 0, 0}, "byte " + std::to_string(byte) + ": " + message);
-  };
-  if (in.size() < kAnnualResultsFixedHeaderBytes)
-    throw fail(in.size(), "truncated header: " + std::to_string(in.size()) + " bytes, the fixed header has " +
-                              std::to_string(kAnnualResultsFixedHeaderBytes));
+AnnualResultsStream::AnnualResultsStream(const std::filesystem::path& path, int sensors,
+                                         const std::vector<HourStamp>& hours)
+    : path_(path), sensors_(sensors), hours_(static_cast<int>(hours.size())) {
+  const std::string head = header(sensors, hours);
+  dataOffset_ = head.size();
+  fd_ = createFileExclusive(path);
+  try {
+    writeAll(fd_, head, path.string());
+  } catch (...) {
+    ::close(fd_);
+    ::unlink(path_.c_str());
+    throw;
+  }
+}
+
+AnnualResultsStream::~AnnualResultsStream() {
+  if (fd_ < 0) return;
+  ::close(fd_);
+  ::unlink(path_.c_str());
+}
+
+void AnnualResultsStream::append(const float* lux, int count) {
+  if (fd_ < 0) throw std::invalid_argument("annual results stream: " + path_.string() + " is finished");
+  if (count < 0 || count > sensors_ - written_)
+    throw std::invalid_argument("annual results stream: " + std::to_string(count) + " rows after " +
+                                std::to_string(written_) + " of " + std::to_string(sensors_));
+  // Little-endian whatever the host, as encodeAnnualResults writes them: the floats themselves on
+  // a little-endian host, else converted in pieces of 4 MB (a copy small beside the block).
+  constexpr std::size_t kPieceValues = std::size_t{1} << 20;
+  const std::size_t values = static_cast<std::size_t>(count) * hours_;
+  std::string bytes;
+  for (std::size_t at = 0; at < values; at += kPieceValues) {
+    const std::size_t n = std::min(kPieceValues, values - at);
+    if constexpr (std::endian::native == std::endian::little) {
+      writeAll(fd_, std::string_view(reinterpret_cast<const char*>(lux + at), 4 * n), path_.string());
+    } else {
+      bytes.clear();
+      bytes.reserve(4 * n);
+      for (std::size_t i = 0; i < n; ++i) putF32(bytes, lux[at + i]);
+      writeAll(fd_, bytes, path_.string());
+    }
+  }
+  written_ += count;
+}
+
+void AnnualResultsStream::read(int first, int count, float* lux) const {
+  if (first < 0 || count < 0 || first > written_ - count)
+    throw std::invalid_argument("annual results stream: rows " + std::to_string(first) + " + " +
+                                std::to_string(count) + " not written yet (" + std::to_string(written_) + ")");
+  const std::size_t values = static_cast<std::size_t>(count) * hours_;
+  // Straight into `lux` on a little-endian host; else through bytes converted after.
+  constexpr bool kLittle = std::endian::native == std::endian::little;
+  std::string bytes(kLittle ? 0 : 4 * values, '\0');
+  char* into = kLittle ? reinterpret_cast<char*>(lux) : bytes.data();
+  const off_t start = static_cast<off_t>(dataOffset_ + 4 * static_cast<std::size_t>(first) * hours_);
+  std::size_t done = 0;
+  while (done < 4 * values) {
+    const ssize_t n = ::pread(fd_, into + done, 4 * values - done, start + static_cast<off_t>(done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      throw std::runtime_error("cannot read back " + path_.string() + (n < 0 ? ": " + std::string(std::strerror(errno)) : ""));
+    done += static_cast<std::size_t>(n);
+  }
+  if constexpr (!kLittle)
+    for (std::size_t i = 0; i < values; ++i) lux[i] = std::bit_cast<float>(getU32(bytes, 4 * i));
+}
+
+void AnnualResultsStream::finish() {
+  if (fd_ < 0) return;
+  if (written_ != sensors_)
+    throw std::invalid_argument("annual results stream: " + path_.string() + " has " + std::to_string(written_) +
+                                " of " + std::to_string(sensors_) + " rows");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(path_.c_str());
+    throw std::runtime_error("cannot write " + path_.string() + ": " + why);
+  }
+}
+
+namespace {
+
+InputError failAt(const std::string& fileName, std::size_t byte, const std::string& message) {
+  return InputError(FileLoc{fileName, 0, 0}, "byte " + std::to_string(byte) + ": " + message);
+}
+
+// The header of a file of `fileSize` bytes whose first bytes are `in` (at least the fixed
+// header and the hour stamps, when the file has them): stamps into r, every check of
+// decodeAnnualResults. Returns the data offset.
+std::size_t parseHeader(const std::string& in, uint64_t fileSize, const std::string& fileName, AnnualResults& r) {
+  auto fail = [&](std::size_t byte, const std::string& message) { return failAt(fileName, byte, message); };
+  if (fileSize < kAnnualResultsFixedHeaderBytes)
+    throw fail(fileSize, "truncated header: " + std::to_string(fileSize) + " bytes, the fixed header has " +
+                             std::to_string(kAnnualResultsFixedHeaderBytes));
   if (std::memcmp(in.data(), kAnnualResultsMagic, sizeof kAnnualResultsMagic) != 0)
     throw fail(0, "not a candela hourly results file (magic is not \"CNDLHRLY\")");
   const uint32_t version = getU32(in, 8);
@@ -118,13 +208,11 @@ AnnualResults decodeAnnualResults(const std::string& in, const std::string& file
     throw fail(12, "data offset " + std::to_string(dataOffset) + " does not match " + std::to_string(hourCount) +
                        " hours (expected " + std::to_string(expectedOffset) + ")");
   const uint64_t expectedSize = expectedOffset + 4ull * sensors * hourCount;
-  if (in.size() != expectedSize)
-    throw fail(std::min<uint64_t>(in.size(), expectedSize),
-               (in.size() < expectedSize ? "truncated file: " : "file too long: ") + std::to_string(in.size()) +
+  if (fileSize != expectedSize)
+    throw fail(std::min<uint64_t>(fileSize, expectedSize),
+               (fileSize < expectedSize ? "truncated file: " : "file too long: ") + std::to_string(fileSize) +
                    " bytes, the header (" + std::to_string(sensors) + " sensors × " + std::to_string(hourCount) +
                    " hours) needs " + std::to_string(expectedSize));
-
-  AnnualResults r;
   r.sensors = static_cast<int>(sensors);
   r.hours.resize(hourCount);
   for (uint32_t h = 0; h < hourCount; ++h) {
@@ -137,8 +225,46 @@ AnnualResults decodeAnnualResults(const std::string& in, const std::string& file
       throw fail(at, "hour " + std::to_string(h) + " has an invalid stamp (month " + std::to_string(s.month) +
                          ", day " + std::to_string(s.day) + ", hour ending " + std::to_string(s.hourEnding) + ")");
   }
-  r.lux.resize(static_cast<std::size_t>(sensors) * hourCount);
+  return dataOffset;
+}
+
+}  // namespace
+
+AnnualResults decodeAnnualResults(const std::string& in, const std::string& fileName) {
+  AnnualResults r;
+  const std::size_t dataOffset = parseHeader(in, in.size(), fileName, r);
+  r.lux.resize(static_cast<std::size_t>(r.sensors) * r.hours.size());
   for (std::size_t i = 0; i < r.lux.size(); ++i) r.lux[i] = std::bit_cast<float>(getU32(in, dataOffset + 4 * i));
+  return r;
+}
+
+AnnualResults readAnnualResultsRows(const std::filesystem::path& path, int first, int count) {
+  std::ifstream f(path, std::ios::binary);
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (!f || ec) throw InputError(FileLoc{path.string(), 0, 0}, "cannot open hourly results file");
+  // The fixed header tells how many stamps follow; read those, then the rows asked for alone.
+  std::string head(std::min<uint64_t>(size, kAnnualResultsFixedHeaderBytes), '\0');
+  f.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (head.size() == kAnnualResultsFixedHeaderBytes) {
+    const uint64_t stamps = std::min<uint64_t>(4ull * getU32(head, 20), size - kAnnualResultsFixedHeaderBytes);
+    head.resize(kAnnualResultsFixedHeaderBytes + stamps);
+    f.read(head.data() + kAnnualResultsFixedHeaderBytes, static_cast<std::streamsize>(stamps));
+  }
+  AnnualResults r;
+  const std::size_t dataOffset = parseHeader(head, size, path.string(), r);
+  if (first < 0 || count < 0 || first > r.sensors - count)
+    throw InputError(FileLoc{path.string(), 0, 0}, "sensors " + std::to_string(first) + " to " +
+                                                       std::to_string(first + count - 1) + " are not in the file (" +
+                                                       std::to_string(r.sensors) + " sensors)");
+  const std::size_t n = r.hours.size();
+  std::string bytes(4 * n * static_cast<std::size_t>(count), '\0');
+  f.seekg(static_cast<std::streamoff>(dataOffset + 4 * n * static_cast<std::size_t>(first)));
+  f.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!f) throw InputError(FileLoc{path.string(), 0, 0}, "cannot read hourly results file");
+  r.sensors = count;
+  r.lux.resize(n * static_cast<std::size_t>(count));
+  for (std::size_t i = 0; i < r.lux.size(); ++i) r.lux[i] = std::bit_cast<float>(getU32(bytes, 4 * i));
   return r;
 }
 

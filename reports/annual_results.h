@@ -51,6 +51,35 @@ void writeAnnualResults(const std::filesystem::path& path, const AnnualResults& 
 void writeAnnualResults(const std::filesystem::path& path, int sensors, const std::vector<HourStamp>& hours,
                         const std::function<float(int sensor, int hour)>& luxAt);
 
+// The same file written a block of sensors at a time, so that a study never holds a grid's year
+// (docs/annual-outputs.md, "Streaming"): the header on construction, then the sensors' rows in
+// sensor order, each nHours floats. The file is created exclusively at `path`, which must not
+// exist (base/atomic_file.h createFileExclusive): it belongs in a run's fresh temporary folder,
+// committed with the folder as a whole (study/run_outputs.h RunOutputFolder), not renamed on its
+// own. finish() checks that every sensor's row came and closes the file; a stream destroyed
+// unfinished removes its file, so it never passes for a whole one. Errors are
+// std::runtime_error (a full disk) or std::invalid_argument (a row count that does not fit).
+class AnnualResultsStream {
+ public:
+  AnnualResultsStream(const std::filesystem::path& path, int sensors, const std::vector<HourStamp>& hours);
+  ~AnnualResultsStream();
+  AnnualResultsStream(const AnnualResultsStream&) = delete;
+  AnnualResultsStream& operator=(const AnnualResultsStream&) = delete;
+
+  // Appends `count` sensors' rows, sensor-major: lux[k * nHours + h], lux.
+  void append(const float* lux, int count);
+  // Reads back `count` rows already appended, from sensor `first` on, into lux[k * nHours + h].
+  void read(int first, int count, float* lux) const;
+  void finish();
+  int written() const { return written_; }
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+  int sensors_ = 0, hours_ = 0, written_ = 0;
+  std::size_t dataOffset_ = 0;
+};
+
 // Parses the bytes of a file; `fileName` names it in errors. Throws InputError whose what() reads
 // "name: byte N: message" (a binary file has no lines: the place is the byte offset) on a bad magic,
 // an unknown version, an unknown layout or unit, an hour stamp out of range, or a size that does not
@@ -59,6 +88,13 @@ AnnualResults decodeAnnualResults(const std::string& bytes, const std::string& f
 
 // Reads and parses a file. Also throws InputError when the file cannot be opened.
 AnnualResults readAnnualResults(const std::filesystem::path& path);
+
+// The rows of sensors first .. first + count - 1 alone, as results of `count` sensors (sensor k
+// of the result is sensor first + k of the file), read at their offsets without the rest: rows
+// have a fixed size, so sensor s starts at byte dataOffset + 4·nHours·s (that arithmetic is the
+// file's index, docs/annual-outputs.md). Throws InputError as readAnnualResults (the whole
+// header is checked, the file's size included), and when the range lies beyond the file.
+AnnualResults readAnnualResultsRows(const std::filesystem::path& path, int first, int count);
 
 // File name of a grid's hourly results: "<safeFileName(gridName)>_hourly.f32".
 std::string annualResultsFileName(const std::string& gridName);

@@ -21,7 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
+#include <memory>
+#include <span>
 
 namespace candela {
 
@@ -29,14 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A year at the sensors for one state of the scene.
-struct YearRun {
-  AnnualIlluminance year;
-  double coefficientsS = 0.0;
-  uint64_t rays = 0;  // rays cast for the coefficients
-};
-
-// What traceYear traces and how.
+// What a YearTracer traces and how.
 struct YearJob {
   const std::vector<Vec3>* positions = nullptr;
   const std::vector<Vec3>* normals = nullptr;
@@ -49,47 +43,60 @@ struct YearJob {
   const Distribution* distribution = nullptr;  // the processes the sensors are shared between
 };
 
-YearRun traceYear(const Scene& scene, const YearJob& job, bool beamSun, const std::string& label,
-                  StudyObserver& observer) {
-  const std::vector<Vec3>& positions = *job.positions;
-  const std::vector<Vec3>& normals = *job.normals;
-  const AnnualSky& sky = *job.sky;
-  const SunSet& sunSet = *job.sunSet;
-  const double northDeg = job.northDeg;
-  const TraceSettings& settings = job.settings;
-  const int threads = job.threads;
-  const Distribution& processes = *job.distribution;
-  const auto t0 = std::chrono::steady_clock::now();
-  const Tracer tracer(scene);
-  const SkyPatches patches(sky.subdivision);
-  DaylightCoefficients dc;
-  {
-    const ObservedStep step(observer, label + "sky coefficients", positions.size());
-    dc = computeDaylightCoefficients(tracer, positions, normals, patches, settings, threads,
-                                     [&step](size_t d) { step(d); }, processes);
+// One state of the scene (blinds open or closed) traced a block of sensors at a time: the
+// block's coefficients, then its hourly products. Sensor indices are the study's, so every
+// sensor keeps its random streams (engine/daylight_coefficients.h SensorBlock).
+class YearTracer {
+ public:
+  YearTracer(const Scene& scene, const YearJob& job, bool beamSun)
+      : start_(std::chrono::steady_clock::now()), job_(job), beamSun_(beamSun), tracer_(scene),
+        patches_(job.sky->subdivision), suns_(sunDirectionsModel(*job.sky, job.northDeg)) {
+    for (const Vec3& d : job.sunSet->dirsTrue) setModel_.push_back(trueToModel(d, job.northDeg));
+    // The interreflected sun needs fewer paths than the sky (each carries every sun of the set).
+    sunSettings_ = job.settings;
+    sunSettings_.hemisphereSamples = std::max(64, job.settings.hemisphereSamples / 8);
+    sunSettings_.firstBounceSplit = std::max(1, job.settings.firstBounceSplit / 4);
+    coefficientsS_ = secondsSince(start_);
   }
-  const std::vector<Vec3> suns = sunDirectionsModel(sky, northDeg);
-  std::vector<float> direct(positions.size() * suns.size(), 0.0f);
-  if (beamSun)
-    direct = directSunCoefficients(tracer, positions, normals, suns, job.sunSamples, settings.seed, threads, processes);
-  std::vector<Vec3> setModel;
-  for (const Vec3& d : sunSet.dirsTrue) setModel.push_back(trueToModel(d, northDeg));
-  // The interreflected sun needs fewer paths than the sky (each carries every sun of the set).
-  TraceSettings sunSettings = settings;
-  sunSettings.hemisphereSamples = std::max(64, settings.hemisphereSamples / 8);
-  sunSettings.firstBounceSplit = std::max(1, settings.firstBounceSplit / 4);
-  std::vector<float> inter;
-  {
-    const ObservedStep step(observer, label + "sun coefficients", positions.size());
-    inter = indirectSunCoefficients(tracer, positions, normals, setModel, sunSettings, threads,
-                                    [&step](size_t d) { step(d); }, processes);
+
+  // The year of sensors first .. first + count - 1. progress(done) counts 2 per sensor (its
+  // sky, then its sun coefficients) from `progressBase`.
+  AnnualIlluminance block(std::size_t first, std::size_t count, std::size_t progressBase,
+                          const ObservedStep& step) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int threads = job_.threads;
+    const SensorBlock b{std::span(*job_.positions).subspan(first, count), std::span(*job_.normals).subspan(first, count),
+                        first};
+    const Distribution& processes = *job_.distribution;
+    const DaylightCoefficients dc = computeDaylightCoefficients(
+        tracer_, b, patches_, job_.settings, threads, [&](std::size_t d) { step(progressBase + d); }, processes);
+    std::vector<float> direct(count * suns_.size(), 0.0f);
+    if (beamSun_)
+      direct = directSunCoefficients(tracer_, b, suns_, job_.sunSamples, job_.settings.seed, threads, processes);
+    const std::vector<float> inter =
+        indirectSunCoefficients(tracer_, b, setModel_, sunSettings_, threads,
+                                [&](std::size_t d) { step(progressBase + count + d); }, processes);
+    coefficientsS_ += secondsSince(t0);
+    AnnualIlluminance year = annualIlluminance(dc, direct, inter, *job_.sunSet, *job_.sky, threads);
+    productS_ += year.productTimeS;
+    return year;
   }
-  YearRun r;
-  r.coefficientsS = secondsSince(t0);
-  r.rays = processes.sum(tracer.raysTraced());  // every rank's
-  r.year = annualIlluminance(dc, direct, inter, sunSet, sky, threads);
-  return r;
-}
+
+  double coefficientsS() const { return coefficientsS_; }
+  double productS() const { return productS_; }
+  // Every process's rays (a collective call: every process asks at the same point).
+  uint64_t rays() const { return job_.distribution->sum(tracer_.raysTraced()); }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  const YearJob& job_;
+  bool beamSun_;
+  Tracer tracer_;
+  SkyPatches patches_;
+  std::vector<Vec3> suns_, setModel_;
+  TraceSettings sunSettings_;
+  double coefficientsS_ = 0.0, productS_ = 0.0;
+};
 
 // The sensor nearest the grid's centroid (the temporal map's default).
 int centralSensor(const SensorGrid& g) {
@@ -151,44 +158,33 @@ AnnualCounts annualCounts(const AnnualInputs& in) {
   return a;
 }
 
-// The year traced: blinds open, and closed where LM-83's rule can close them.
+// The year traced: blinds open, and closed where LM-83's rule can close them. The hourly values
+// themselves went to the grids' files block by block (GridYear); what stays is their times.
 struct AnnualTraces {
   AnnualSky sky;
   SunSet sunSet;
   double skyVectorsS = 0.0;
-  YearRun open;
-  std::optional<YearRun> closed;
+  double coefficientsOpenS = 0.0, coefficientsClosedS = 0.0, productOpenS = 0.0, productClosedS = 0.0;
+  uint64_t raysOpen = 0, raysClosed = 0;
+  bool closed = false;     // a closed state was traced
   int blindMaterials = 0;  // glass materials the closed state changed
-  double coefficientsS() const { return open.coefficientsS + (closed ? closed->coefficientsS : 0.0); }
-  double productS() const { return open.year.productTimeS + (closed ? closed->year.productTimeS : 0.0); }
-  uint64_t rays() const { return open.rays + (closed ? closed->rays : 0); }
+  double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
+  double productS() const { return productOpenS + productClosedS; }
+  uint64_t rays() const { return raysOpen + raysClosed; }
 };
 
-AnnualTraces traceAnnual(const CaseFile& c, AnnualInputs& in, const ResolvedTrace& trace, const Distribution& processes,
-                         StudyObserver& observer) {
-  const AnnualSpec& a = c.annual;
+// The year's sky vectors, the sun set, and the sampling guide of the scene's sky.
+AnnualTraces prepareAnnualSky(const CaseFile& c, AnnualInputs& in, const ResolvedTrace& trace) {
   AnnualSkyOptions skyOptions;
-  skyOptions.subdivision = a.skySubdivision;
+  skyOptions.subdivision = c.annual.skySubdivision;
   skyOptions.groundReflectance = c.sky.groundReflectance;
   skyOptions.threads = trace.threads;
-  TraceSettings settings = trace.settings;
-  settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
-
   AnnualTraces t;
   const auto tSky = std::chrono::steady_clock::now();
   t.sky = makeAnnualSky(in.epw, in.site, skyOptions);
   t.skyVectorsS = secondsSince(tSky);
   in.scene->sky->model = yearSamplingGuide(t.sky);
   t.sunSet = indirectSunSet(t.sky);
-  const YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,     in.north,
-                    settings,       a.sunSamples, trace.threads, &processes};
-  t.open = traceYear(*in.scene, job, true, "", observer);
-  if (a.blinds) {
-    std::unique_ptr<Scene> shaded = loadAnnualScene(c, in.north);
-    shaded->sky->model = in.scene->sky->model;
-    t.blindMaterials = closeBlinds(*shaded);
-    if (t.blindMaterials > 0) t.closed = traceYear(*shaded, job, false, "blinds closed: ", observer);
-  }
   return t;
 }
 
@@ -260,28 +256,168 @@ YearHours yearHours(const AnnualSky& sky, const AnnualSpec& a) {
   return y;
 }
 
-// Each grid's annual metrics (LM-83's blinds rule applied per grid) and report.
-void annualGridReports(ReportData& data, const CaseFile& c, const AnnualInputs& in, const AnnualTraces& t,
-                       const YearHours& y) {
-  const AnnualSpec& a = c.annual;
-  const AnnualThresholds th = thresholdsOf(a);
-  const int nh = t.open.year.hours;
-  size_t first = 0;
-  for (const PreparedGrid& g : in.grids) {
-    const int n = static_cast<int>(g.grid.size());
-    const float* total = t.open.year.total.data() + first * nh;
-    const float* direct = t.open.year.directSun.data() + first * nh;
-    std::vector<char> blindsClosed;
-    const float* shaded = nullptr;
-    if (t.closed) {
-      blindsClosed = blindsClosedHours(direct, n, nh, y.occupied, th.aseLux);
-      shaded = t.closed->year.total.data() + first * nh;
+// One grid's year as the blocks pass: its hourly files (open), the per-hour count of its sensors
+// in direct sun (LM-83's blinds rule needs the whole grid's before the closed state is used), its
+// sensors' metrics and the temporal map's sensor. Nothing of it grows with hours × sensors.
+struct GridYear {
+  std::size_t first = 0, count = 0;  // the grid's sensors in the study's list
+  std::unique_ptr<AnnualResultsStream> total, directSun;
+  std::vector<int> sunlit;           // per hour: sensors with direct sun >= the ASE threshold
+  std::vector<char> blindsClosed;    // per hour, once every block has been counted
+  std::vector<SensorAnnualMetrics> sensors;
+  int chosenSensor = 0;
+  std::vector<double> chosenSensorLux;
+};
+
+// The part of block [b0, b0 + n) that lies in grid g: its first sensor and count (0: none).
+std::pair<std::size_t, std::size_t> overlap(const GridYear& g, std::size_t b0, std::size_t n) {
+  const std::size_t lo = std::max(g.first, b0), hi = std::min(g.first + g.count, b0 + n);
+  return {lo, hi > lo ? hi - lo : 0};
+}
+
+// The study's blocks: sensorsPerBlock rounded up to kAnnualProductBlock.
+std::size_t blockSize(const AnnualStudyOptions& o) {
+  const std::size_t m = kAnnualProductBlock;
+  return std::max<std::size_t>(1, (o.sensorsPerBlock + m - 1) / m) * m;
+}
+
+// Everything the passes share.
+struct AnnualPass {
+  const AnnualInputs& in;
+  const YearHours& y;
+  const AnnualThresholds& th;
+  const RunOutputFolder& folder;
+  std::size_t block = kAnnualSensorsPerBlock;
+  std::vector<GridYear>& grids;
+  const Distribution* processes = nullptr;  // the processes the sensors are shared between
+};
+
+// Pass 1, blinds open: every block's year goes to the grids' files, counted for the blinds rule;
+// without a closed state the metrics are taken on the way.
+void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObserver& observer) {
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size();
+  const ObservedStep step(observer, "coefficients", 2 * sensors);
+  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+    const std::size_t n = std::min(p.block, sensors - b0);
+    const AnnualIlluminance year = open.block(b0, n, 2 * b0, step);
+    checkFinite(year.total, "the hourly illuminance", b0 * nh);
+    for (GridYear& g : p.grids) {
+      const auto [lo, k] = overlap(g, b0, n);
+      if (k == 0) continue;
+      const float* total = year.total.data() + (lo - b0) * nh;
+      const float* direct = year.directSun.data() + (lo - b0) * nh;
+      p.folder.write([&](const std::filesystem::path&) {
+        g.total->append(total, static_cast<int>(k));
+        g.directSun->append(direct, static_cast<int>(k));
+      });
+      countSunlitSensors(direct, static_cast<int>(k), static_cast<int>(nh), p.th.aseLux, g.sunlit);
+      const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
+      if (chosen >= lo && chosen < lo + k)
+        g.chosenSensorLux.assign(total + (chosen - lo) * nh, total + (chosen - lo + 1) * nh);
+      if (metricsNow) {
+        const auto m = sensorAnnualMetrics(total, direct, static_cast<int>(k), static_cast<int>(nh), p.y.occupied, p.th);
+        g.sensors.insert(g.sensors.end(), m.begin(), m.end());
+      }
     }
+  }
+}
+
+// Pass 2, blinds closed: with every grid's hours of closed blinds known, each block's closed year
+// beside its open one, read back from the grid's files, gives the metrics.
+void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer) {
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size();
+  for (GridYear& g : p.grids)
+    g.blindsClosed = blindsClosedFromCounts(g.sunlit, static_cast<int>(g.count), p.y.occupied);
+  const ObservedStep step(observer, "blinds closed: coefficients", 2 * sensors);
+  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+    const std::size_t n = std::min(p.block, sensors - b0);
+    AnnualIlluminance year = closed.block(b0, n, 2 * b0, step);
+    std::vector<float>().swap(year.directSun);  // no beam through closed blinds: zeros
+    checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
+    std::vector<float> open, direct;
+    for (GridYear& g : p.grids) {
+      const auto [lo, k] = overlap(g, b0, n);
+      if (k == 0) continue;
+      open.resize(k * nh);
+      direct.resize(k * nh);
+      const int from = static_cast<int>(lo - g.first);
+      p.folder.write([&](const std::filesystem::path&) {
+        g.total->read(from, static_cast<int>(k), open.data());
+        g.directSun->read(from, static_cast<int>(k), direct.data());
+      });
+      const auto m = sensorAnnualMetrics(open.data(), direct.data(), static_cast<int>(k), static_cast<int>(nh),
+                                         p.y.occupied, p.th, year.total.data() + (lo - b0) * nh, &g.blindsClosed);
+      g.sensors.insert(g.sensors.end(), m.begin(), m.end());
+    }
+  }
+}
+
+// The grids' files opened in the run's folder, their report sensors chosen.
+std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a, const YearHours& y,
+                                    const RunOutputFolder& folder) {
+  std::vector<GridYear> grids;
+  std::size_t first = 0;
+  for (const PreparedGrid& g : in.grids) {
+    GridYear gy;
+    gy.first = first;
+    gy.count = g.grid.size();
+    gy.sunlit.assign(y.stamps.size(), 0);
+    gy.chosenSensor = a.reportSensor ? *a.reportSensor : centralSensor(g.grid);
+    gy.sensors.reserve(gy.count);
+    const int n = static_cast<int>(gy.count);
+    folder.write([&](const std::filesystem::path& dir) {
+      gy.total = std::make_unique<AnnualResultsStream>(dir / annualResultsFileName(g.spec->name), n, y.stamps);
+      gy.directSun =
+          std::make_unique<AnnualResultsStream>(dir / annualResultsFileName(g.spec->name + "_direct_sun"), n, y.stamps);
+    });
+    first += gy.count;
+    grids.push_back(std::move(gy));
+  }
+  return grids;
+}
+
+// Both states of the year, block by block, into the grids' files and metrics.
+void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace& trace, const AnnualPass& p,
+                 AnnualTraces& t, StudyObserver& observer) {
+  const AnnualSpec& a = c.annual;
+  TraceSettings settings = trace.settings;
+  settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
+  const YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
+                    settings,       a.sunSamples, trace.threads, p.processes};
+  std::unique_ptr<Scene> shaded;
+  if (a.blinds) {
+    shaded = loadAnnualScene(c, in.north);
+    shaded->sky->model = in.scene->sky->model;
+    t.blindMaterials = closeBlinds(*shaded);
+  }
+  t.closed = t.blindMaterials > 0;
+  {
+    YearTracer open(*in.scene, job, true);
+    openPass(p, open, !t.closed, observer);
+    t.coefficientsOpenS = open.coefficientsS();
+    t.productOpenS = open.productS();
+    t.raysOpen = open.rays();
+  }
+  if (t.closed) {
+    YearTracer closed(*shaded, job, false);
+    closedPass(p, closed, observer);
+    t.coefficientsClosedS = closed.coefficientsS();
+    t.productClosedS = closed.productS();
+    t.raysClosed = closed.rays();
+  }
+}
+
+// Each grid's report from its metrics (LM-83's blinds rule applied per grid).
+void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThresholds& th, const YearHours& y,
+                       std::vector<GridYear>& grids) {
+  for (std::size_t gi = 0; gi < in.grids.size(); ++gi) {
+    const PreparedGrid& g = in.grids[gi];
+    GridYear& gy = grids[gi];
     AnnualGridReport ar;
-    ar.sensors = sensorAnnualMetrics(total, direct, n, nh, y.occupied, th, shaded, t.closed ? &blindsClosed : nullptr);
+    ar.sensors = std::move(gy.sensors);
     ar.summary = summarizeAnnual(ar.sensors, y.occupiedCount);
-    ar.chosenSensor = a.reportSensor ? *a.reportSensor : centralSensor(g.grid);
-    for (int h = 0; h < nh; ++h) ar.chosenSensorLux.push_back(total[static_cast<size_t>(ar.chosenSensor) * nh + h]);
+    ar.chosenSensor = gy.chosenSensor;
+    ar.chosenSensorLux = std::move(gy.chosenSensorLux);
     ar.hours = y.stamps;
     GridReport r;
     r.name = g.spec->name;
@@ -293,54 +429,52 @@ void annualGridReports(ReportData& data, const CaseFile& c, const AnnualInputs& 
     r.layout = planLayout(g);
     r.annual = std::move(ar);
     data.grids.push_back(std::move(r));
-    first += g.grid.size();
   }
 }
 
-// Per grid: the annual CSV and the hourly files (all light, and direct sun alone).
+// Per grid: the annual CSV; the hourly files (all light, and direct sun alone) are complete.
 void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& data, const AnnualInputs& in,
-                      const AnnualTraces& t, const YearHours& y) {
-  const int nh = t.open.year.hours;
-  size_t first = 0;
-  for (size_t gi = 0; gi < in.grids.size(); ++gi) {
+                      std::vector<GridYear>& grids) {
+  for (std::size_t gi = 0; gi < in.grids.size(); ++gi) {
     const PreparedGrid& g = in.grids[gi];
-    const int n = static_cast<int>(g.grid.size());
     std::vector<ReportPoint> points;
     for (const SensorPoint& s : g.grid.points) points.push_back({s.position, s.normal});
     writeAnnualGridCsv(outDir, g.spec->name, points, *data.grids[gi].annual);
-    AnnualResults res;
-    res.sensors = n;
-    res.hours = y.stamps;
-    res.lux.assign(t.open.year.total.begin() + first * nh, t.open.year.total.begin() + (first + n) * nh);
-    writeAnnualResults(outDir / annualResultsFileName(g.spec->name), res);
-    res.lux.assign(t.open.year.directSun.begin() + first * nh, t.open.year.directSun.begin() + (first + n) * nh);
-    writeAnnualResults(outDir / annualResultsFileName(g.spec->name + "_direct_sun"), res);
-    first += n;
+    grids[gi].total->finish();
+    grids[gi].directSun->finish();
   }
 }
 
 }  // namespace
 
-RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer) {
+RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer,
+                         const AnnualStudyOptions& options) {
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   AnnualInputs in = readAnnualInputs(c);
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
   Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
   checkWeatherGaps(in.epw, c.sky.weather.string(), warnings);
   throwIfStrict(warnings, run.request.strict);
-  const ResourceEstimate needs = estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads);
+  const ResourceEstimate needs =
+      estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads, blockSize(options));
   checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
   observer.estimated(needs);
-  // 2. Sky vectors of the year, then coefficients.
-  const AnnualTraces t = traceAnnual(c, in, trace, run.request.processes(), observer);
-  checkFinite(t.open.year.total, "the hourly illuminance");
-  if (t.closed) checkFinite(t.closed->year.total, "the hourly illuminance with blinds closed");
-  // 3. Metrics per grid.
+  // 2. Sky vectors of the year, then coefficients and hours block by block: the hourly files
+  // stream into the run's temporary folder, committed whole at the end.
+  AnnualTraces t = prepareAnnualSky(c, in, trace);
   const YearHours y = yearHours(t.sky, c.annual);
+  const AnnualThresholds th = thresholdsOf(c.annual);
+  // Only the process that writes the result folder streams the hourly files (rank 0, a merge);
+  // the others' folder writes nothing, and their metrics, which no output uses, are not complete.
+  const Distribution& processes = run.request.processes();
+  RunOutputFolder folder(run.outDir, writesResultFolder(run.request));
+  std::vector<GridYear> grids = openGridYears(in, c.annual, y, folder);
+  traceAnnual(c, in, trace, AnnualPass{in, y, th, folder, blockSize(options), grids, &processes}, t, observer);
+  // 3. Metrics per grid.
   RunResult result;
   result.outDir = run.outDir;
   result.annual = true;
-  result.hours = t.open.year.hours;
+  result.hours = static_cast<int>(y.stamps.size());
   result.coefficientsS = t.coefficientsS();
   result.productS = t.productS();
   ReportData& data = result.data;
@@ -350,15 +484,21 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   describeAnnualSettings(data, c, in, t, trace, y.occupiedCount);
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   data.warnings = warnings;
-  annualGridReports(data, c, in, t, y);
+  annualGridReports(data, in, th, y, grids);
   data.run.runTimeS = secondsSince(run.start);
-  // 4. Write: the folder is committed as a whole.
-  commitRun(c, run, [&](const std::filesystem::path& dir) {
-    writeAnnualGrids(dir, data, in, t, y);
+  // 4. Write the rest; the folder is committed as a whole (a shard writes its part instead).
+  if (processes.partial()) {
+    commitRun(c, run, {});
+    return result;
+  }
+  processes.finish();
+  folder.write([&](const std::filesystem::path& dir) {
+    writeAnnualGrids(dir, data, in, grids);
     writeSummaryCsv(dir, data);
     writeSummaryJson(dir, data);
     writeHtmlReport(dir / "report.html", data);
   });
+  folder.commit();
   return result;
 }
 

@@ -13,9 +13,9 @@ namespace {
 }
 
 template <class T>
-void checkAll(const std::vector<T>& values, const std::string& what) {
+void checkAll(const std::vector<T>& values, const std::string& what, std::size_t firstIndex = 0) {
   for (std::size_t i = 0; i < values.size(); ++i)
-    if (!std::isfinite(values[i])) nonFinite(what, i);
+    if (!std::isfinite(values[i])) nonFinite(what, firstIndex + i);
 }
 
 }  // namespace
@@ -28,5 +28,8 @@ void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::st
 
 void checkFinite(const std::vector<float>& values, const std::string& what) { checkAll(values, what); }
 void checkFinite(const std::vector<double>& values, const std::string& what) { checkAll(values, what); }
+void checkFinite(const std::vector<float>& values, const std::string& what, std::size_t firstIndex) {
+  checkAll(values, what, firstIndex);
+}
 
 }  // namespace candela

@@ -5,6 +5,7 @@
 
 #include "engine/tracer.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -17,5 +18,8 @@ void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::st
 // Throws std::runtime_error naming `what` and the first index whose value is not finite.
 void checkFinite(const std::vector<float>& values, const std::string& what);
 void checkFinite(const std::vector<double>& values, const std::string& what);
+// The same for a block of a larger array, whose first value is the larger array's `firstIndex`
+// (the annual study's blocks of sensors): the index named is the larger array's.
+void checkFinite(const std::vector<float>& values, const std::string& what, std::size_t firstIndex);
 
 }  // namespace candela

@@ -198,13 +198,18 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
   return hemisphere * perRay + direct + selection;
 }
 
-uint64_t annualBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
-                     int states) {
+uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
+                          int states) {
   const uint64_t coefficients = sensors * (patches + sunHours + suns) * sizeof(float);
-  const uint64_t year = sensors * hours * 2 * sizeof(float);
-  // Writing: one grid's hours copied for its file (bounded by all sensors) and the blinds' hours.
-  const uint64_t writing = sensors * hours * (sizeof(float) + sizeof(char));
-  return static_cast<uint64_t>(std::max(1, states)) * (coefficients + year) + writing;
+  const uint64_t openPass = coefficients + sensors * hours * 2 * sizeof(float);
+  const uint64_t closedPass = std::max(openPass, sensors * hours * 3 * sizeof(float));
+  return states > 1 ? closedPass : openPass;
+}
+
+uint64_t annualGridBytes(uint64_t sensors, uint64_t hours) {
+  const uint64_t perSensor = sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2) + 2 * sizeof(Vec3) +
+                             sizeof(SensorAnnualMetrics) + 200;
+  return sensors * perSensor + hours * (sizeof(int) + sizeof(char) + sizeof(double));
 }
 
 MemoryItem viewMemory(const ViewSpec& view, bool keptForReport) {
@@ -304,7 +309,7 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
 }
 
 ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
-                                     const TraceSettings& s, int threads) {
+                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock) {
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   // The scene and the year's sky vectors (hours × patches, float).
@@ -322,12 +327,19 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
     MemoryItem m;
     m.what = "the annual results of grid '" + c.grids[i].name + "'";
     m.loc = c.grids[i].loc;
-    m.bytes = annualBytes(k, a.hours, patches, a.sunHours, suns, states) +
-              k * (sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2) + 2 * sizeof(Vec3) + 200);
-    m.detail = std::to_string(k) + " sensors x " + std::to_string(a.hours) + " hours x " +
-               std::to_string(states) + (states > 1 ? " states" : " state");
+    m.bytes = annualGridBytes(k, a.hours);
+    m.detail = std::to_string(k) + " sensors (the hours stream to disk)";
     e.memory.push_back(std::move(m));
   }
+  // One block at a time, whatever the grids' sizes (never more sensors than the study has).
+  const uint64_t block = std::min(std::max<uint64_t>(1, sensorsPerBlock), std::max<uint64_t>(1, sensors));
+  MemoryItem b;
+  b.what = "the annual study's block of sensors";
+  b.loc = c.annual.present ? c.annual.loc : c.sky.loc;
+  b.bytes = annualBlockBytes(block, a.hours, patches, a.sunHours, suns, states);
+  b.detail = std::to_string(block) + " sensors x " + std::to_string(a.hours) + " hours x " + std::to_string(states) +
+             (states > 1 ? " states" : " state");
+  e.memory.push_back(std::move(b));
   // Sky coefficients: the point estimator. Sun coefficients: fewer paths (annual_study.cpp's
   // sunSettings), each diffuse vertex with a shadow ray to every sun of the set. Direct sun:
   // sunSamples rays per sensor and sun hour.
@@ -339,12 +351,9 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   const double sunPaths = static_cast<double>(sensors) * (raysPerSensor(sun, n.sampled, n.luminaires) +
                                                           sun.hemisphereSamples * static_cast<double>(suns));
   const double direct = static_cast<double>(sensors) * a.sunHours * std::max(1, c.annual.sunSamples);
-  e.work.push_back({"sky coefficients", sky});
-  e.work.push_back({"sun coefficients", sunPaths + direct});
-  if (states > 1) {
-    e.work.push_back({"blinds closed: sky coefficients", sky});
-    e.work.push_back({"blinds closed: sun coefficients", sunPaths});
-  }
+  // The study's steps (annual_study.cpp): both sets of coefficients, block by block, per state.
+  e.work.push_back({"coefficients", sky + sunPaths + direct});
+  if (states > 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
   return e;
 }
 

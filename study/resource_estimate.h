@@ -84,12 +84,19 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c);
 // sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
 double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires);
 
-// The annual study's float arrays for `sensors` sensors over `hours` hours: coefficients
-// (sensors × patches), direct sun (sensors × sun hours), interreflected sun (sensors × suns of
-// the set) and the year's total and direct sun (sensors × hours × 2), per state of the blinds
-// (`states` 1 or 2).
-uint64_t annualBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
-                     int states);
+// The annual study's float arrays for one block of `sensors` sensors over `hours` hours (the
+// study holds one block at a time, study/annual_study.h kAnnualSensorsPerBlock): while a block's
+// hours are multiplied out, its coefficients (sensors × (patches + sun hours + suns of the set))
+// beside its year's total and direct sun (sensors × hours × 2); with the blinds (`states` 2)
+// the second pass then holds the closed year beside the open year and direct sun read back
+// (sensors × hours × 3), whichever is larger.
+uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
+                          int states);
+
+// What the annual study keeps of each sensor of a grid beyond its block: the grid's point and
+// plan, its metrics and report values; and of each hour of a grid: the blinds rule's count and
+// flag and the temporal map's value.
+uint64_t annualGridBytes(uint64_t sensors, uint64_t hours);
 
 // A view's pixels and rays (traced pixels × camera rays × what a camera ray costs).
 struct ViewWork {
@@ -122,7 +129,8 @@ struct AnnualCounts {
   std::vector<uint64_t> gridSensors;
   uint64_t hours = 0, sunHours = 0;
 };
+// `sensorsPerBlock`: the study's block (runAnnualStudy's AnnualStudyOptions, rounded).
 ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
-                                     const TraceSettings& s, int threads);
+                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock);
 
 }  // namespace candela

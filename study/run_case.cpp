@@ -113,6 +113,11 @@ void checkOnRankZero(const Distribution& d, const std::function<void()>& check) 
   throw InputError(FileLoc{failure.substr(0, a), std::stoi(failure.substr(a + 1, b - a - 1)), 0}, failure.substr(b + 1));
 }
 
+bool writesResultFolder(const RunRequest& request) {
+  const Distribution& d = request.processes();
+  return d.writesOutputs() && !d.partial();
+}
+
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const fs::path&)>& write) {
   const Distribution& d = run.request.processes();
   d.finish();
@@ -123,7 +128,7 @@ void commitRun(const CaseFile& c, const RunContext& run, const std::function<voi
     });
     return;
   }
-  if (d.writesOutputs()) writeRunOutputs(run.outDir, write);
+  if (writesResultFolder(run.request)) writeRunOutputs(run.outDir, write);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t) {

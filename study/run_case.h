@@ -74,6 +74,10 @@ ReportData reportDataFor(const CaseFile& c, const RunContext& run, uint64_t seed
 // distribution first checks that the parts held nothing the run did not use.
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const std::filesystem::path&)>& write);
 
+// Whether this process writes the result folder itself: the one process, rank 0 of a job, a
+// merge; not the other ranks, nor a shard (which writes a part).
+bool writesResultFolder(const RunRequest& request);
+
 // Rank 0 decides: calls check() there and, when it throws InputError, throws the same on every
 // rank (a folder that only rank 0 sees, say), so that no rank waits for another forever.
 void checkOnRankZero(const Distribution& d, const std::function<void()>& check);

@@ -67,31 +67,65 @@ void checkResultFolder(const fs::path& outDir) {
                          "whole, so name a new or empty folder");
 }
 
-void writeRunOutputs(const fs::path& outDir, const std::function<void(const fs::path&)>& write) {
-  const FileLoc at{outDir.string(), 0, 0};
-  fs::path tmp;
+namespace {
+
+[[noreturn]] void cannotWrite(const fs::path& outDir, const std::exception& e) {
+  throw InputError(FileLoc{outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+}
+
+}  // namespace
+
+RunOutputFolder::RunOutputFolder(const fs::path& outDir, bool active) : outDir_(outDir), active_(active) {
+  if (!active_) return;
+  checkResultFolder(outDir);
   try {
-    checkResultFolder(outDir);
     const fs::path parent = outDir.has_parent_path() ? outDir.parent_path() : fs::path(".");
     fs::create_directories(parent);
-    tmp = createTemporaryFolder(parent, outDir.filename().string() + ".tmp");
-    write(tmp);
-    writeFileAtomic(tmp / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
-    fs::permissions(tmp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                             fs::perms::others_read | fs::perms::others_exec);
-    const fs::path old = swapInto(tmp, outDir);
-    tmp.clear();
+    tmp_ = createTemporaryFolder(parent, outDir.filename().string() + ".tmp");
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    cannotWrite(outDir, e);
+  }
+}
+
+RunOutputFolder::~RunOutputFolder() {
+  std::error_code ec;
+  if (!tmp_.empty()) fs::remove_all(tmp_, ec);
+}
+
+void RunOutputFolder::write(const std::function<void(const fs::path&)>& write) const {
+  if (!active_) return;
+  try {
+    write(tmp_);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    cannotWrite(outDir_, e);
+  }
+}
+
+void RunOutputFolder::commit() {
+  if (!active_) return;
+  try {
+    writeFileAtomic(tmp_ / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
+    fs::permissions(tmp_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec);
+    const fs::path old = swapInto(tmp_, outDir_);
+    tmp_.clear();
     std::error_code ec;
     if (!old.empty()) fs::remove_all(old, ec);
   } catch (const InputError&) {
-    std::error_code ec;
-    if (!tmp.empty()) fs::remove_all(tmp, ec);
     throw;
   } catch (const std::exception& e) {
-    std::error_code ec;
-    if (!tmp.empty()) fs::remove_all(tmp, ec);
-    throw InputError(at, std::string("cannot write the results: ") + e.what());
+    cannotWrite(outDir_, e);
   }
+}
+
+void writeRunOutputs(const fs::path& outDir, const std::function<void(const fs::path&)>& write) {
+  RunOutputFolder folder(outDir);
+  folder.write(write);
+  folder.commit();
 }
 
 }  // namespace candela

@@ -19,6 +19,32 @@ inline constexpr const char* kResultMarker = ".candela-result";
 // other folder (a user's documents, say) is refused, since the result replaces the folder whole.
 void checkResultFolder(const std::filesystem::path& outDir);
 
+// A run's temporary result folder, for a study that writes while it computes (the annual study
+// streams its hourly files, docs/annual-outputs.md): the folder is made beside `outDir` on
+// construction, commit() puts it in place of `outDir` as writeRunOutputs does, and the
+// destructor removes it unless committed, so a run that fails at any point leaves `outDir` as
+// it was. Files inside are written once, by their one writer (createFileExclusive), or
+// atomically. Errors as writeRunOutputs: InputError at outDir, "cannot write the results: ...".
+class RunOutputFolder {
+ public:
+  // active = false: a process that writes no result (an MPI rank other than 0, a shard): no
+  // folder is made, write() and commit() do nothing.
+  explicit RunOutputFolder(const std::filesystem::path& outDir, bool active = true);
+  ~RunOutputFolder();
+  RunOutputFolder(const RunOutputFolder&) = delete;
+  RunOutputFolder& operator=(const RunOutputFolder&) = delete;
+
+  const std::filesystem::path& path() const { return tmp_; }
+  // Calls write(path()), turning a failure that is not an InputError into "cannot write the
+  // results: ..." (a full disk is the user's to fix, not an internal failure).
+  void write(const std::function<void(const std::filesystem::path&)>& write) const;
+  void commit();
+
+ private:
+  std::filesystem::path outDir_, tmp_;
+  bool active_ = true;
+};
+
 // Calls write(dir) with a fresh temporary folder beside `outDir`, then puts that folder in
 // place of `outDir` in one step (the previous result, if any, is removed after the swap). A
 // file-system or write failure becomes InputError at outDir, "cannot write the results: ...",

@@ -26,7 +26,10 @@ add_test(NAME cli.resources.peak_view COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/peak_m
          --pixel-samples 1 --irradiance-samples 0 --bounces 0 -q)
 add_test(NAME cli.resources.peak_grid COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/peak_memory.sh 1.5 $<TARGET_FILE:candela>
          run ${RES}/peak_grid.toml --out ${CMAKE_CURRENT_BINARY_DIR}/res_peak_run --bounces 0 --samples 4 -q)
-set_tests_properties(cli.resources.peak_view cli.resources.peak_grid PROPERTIES SKIP_RETURN_CODE 77
+# The annual study, past one block of sensors: its peak is the block's, not the grid's hours.
+add_test(NAME cli.resources.peak_annual COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/peak_memory.sh 1.5 $<TARGET_FILE:candela>
+         run ${RES}/peak_annual.toml --out ${CMAKE_CURRENT_BINARY_DIR}/res_peak_annual --bounces 0 --samples 4 -q)
+set_tests_properties(cli.resources.peak_view cli.resources.peak_grid cli.resources.peak_annual PROPERTIES SKIP_RETURN_CODE 77
                      WORKING_DIRECTORY ${DATA})
 # A 1000 × 1000 luminaire array is refused before its luminaires are placed (placing them takes
 # about a minute), at its [[luminaire]] line.

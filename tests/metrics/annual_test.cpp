@@ -230,6 +230,33 @@ TEST(AnnualBlinds, TwoPercentRule) {
   EXPECT_DOUBLE_EQ(noBlinds[50].da, 100.0);
 }
 
+TEST(AnnualBlinds, CountsOverBlocksOfSensorsGiveTheWholeGridsFlags) {
+  // 10 sensors, 3 hours; the count of hour 1 crosses the blocks: 3 of 10 (> 2 % × 10 = 0.2, and
+  // also past a 25 % fraction) only when both blocks are counted.
+  const int nSensors = 10, nHours = 3;
+  std::vector<float> direct(nSensors * nHours, 0.0f);
+  direct[1 * nHours + 1] = 1500.0f;   // block 1 (sensors 0..3)
+  direct[5 * nHours + 1] = 1000.0f;   // block 2 (sensors 4..9)
+  direct[8 * nHours + 1] = 2000.0f;
+  direct[9 * nHours + 2] = 999.0f;    // below the threshold
+  const std::vector<char> occ = {1, 1, 1};
+  for (double fraction : {0.02, 0.25}) {
+    std::vector<int> sunlit(nHours, 0);
+    countSunlitSensors(direct.data(), 4, nHours, 1000.0, sunlit);
+    countSunlitSensors(direct.data() + 4 * nHours, 6, nHours, 1000.0, sunlit);
+    EXPECT_EQ(sunlit, (std::vector<int>{0, 3, 0}));
+    EXPECT_EQ(blindsClosedFromCounts(sunlit, nSensors, occ, fraction),
+              blindsClosedHours(direct.data(), nSensors, nHours, occ, 1000.0, fraction));
+  }
+  std::vector<int> firstBlockOnly(nHours, 0);
+  countSunlitSensors(direct.data(), 4, nHours, 1000.0, firstBlockOnly);
+  EXPECT_EQ(blindsClosedFromCounts(firstBlockOnly, nSensors, occ, 0.25), (std::vector<char>{0, 0, 0}));
+  EXPECT_EQ(blindsClosedFromCounts({0, 3, 0}, nSensors, occ, 0.25), (std::vector<char>{0, 1, 0}));
+  std::vector<int> wrong(2, 0);
+  EXPECT_THROW(countSunlitSensors(direct.data(), 4, nHours, 1000.0, wrong), std::invalid_argument);
+  EXPECT_THROW(blindsClosedFromCounts(wrong, nSensors, occ), std::invalid_argument);
+}
+
 TEST(AnnualBlinds, CustomFractionAndThreshold) {
   // 10 sensors, one hour, 1 sensor at 600 lux: with aseLux 500 and 5 %, 1 > 0.5 closes the blinds.
   std::vector<float> direct(10, 0.0f);

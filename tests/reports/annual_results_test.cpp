@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -133,6 +134,86 @@ TEST(AnnualResults, BadMagicVersionAndSizesAreInputErrors) {
   b[48] = 13;  // month 13
   EXPECT_NE(errorOf(b).find("byte 48: hour 0 has an invalid stamp"), std::string::npos) << errorOf(b);
   EXPECT_THROW(readAnnualResults(fs::path(testing::TempDir()) / "no_such_dir" / "x.f32"), InputError);
+}
+
+// The streaming writer (a study's blocks) against the one-call encoder of the same values.
+TEST(AnnualResultsStream, RowsAppendedInBlocksGiveTheEncodedBytes) {
+  const AnnualResults r = sample(7, false);
+  const fs::path dir = fs::path(testing::TempDir()) / "candela_annual_stream";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path path = dir / "grid_hourly.f32";
+  {
+    AnnualResultsStream stream(path, 7, r.hours);
+    const float* rows = r.lux.data();
+    for (int count : {3, 0, 1, 3}) {
+      stream.append(rows, count);
+      rows += static_cast<std::size_t>(count) * 8760;
+    }
+    EXPECT_EQ(stream.written(), 7);
+    // Rows already written read back as they went in (the blinds' second pass).
+    std::vector<float> back(2 * 8760);
+    stream.read(4, 2, back.data());
+    EXPECT_TRUE(std::equal(back.begin(), back.end(), r.lux.begin() + 4 * 8760));
+    EXPECT_THROW(stream.read(6, 2, back.data()), std::invalid_argument);
+    EXPECT_THROW(stream.append(rows, 1), std::invalid_argument);  // an eighth sensor
+    stream.finish();
+  }
+  EXPECT_EQ(slurp(path), encodeAnnualResults(r));
+}
+
+TEST(AnnualResultsStream, AnUnfinishedStreamLeavesNoFile) {
+  const AnnualResults r = sample(3, false);
+  const fs::path dir = fs::path(testing::TempDir()) / "candela_annual_unfinished";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    AnnualResultsStream stream(dir / "a.f32", 3, r.hours);
+    stream.append(r.lux.data(), 2);
+    EXPECT_THROW(stream.finish(), std::invalid_argument);  // a row missing: never a whole file
+  }
+  EXPECT_FALSE(fs::exists(dir / "a.f32"));
+  {
+    AnnualResultsStream stream(dir / "b.f32", 3, r.hours);
+    stream.append(r.lux.data(), 1);
+  }  // destroyed mid-way (a failed run)
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(AnnualResultsStream, NeverWritesThroughAnExistingNameOrLink) {
+  const AnnualResults r = sample(1, false);
+  const fs::path dir = fs::path(testing::TempDir()) / "candela_annual_excl";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream(dir / "victim") << "keep";
+    std::ofstream(dir / "there.f32") << "old";
+  }
+  fs::create_symlink(dir / "victim", dir / "link.f32");
+  EXPECT_THROW(AnnualResultsStream(dir / "link.f32", 1, r.hours), std::runtime_error);
+  EXPECT_THROW(AnnualResultsStream(dir / "there.f32", 1, r.hours), std::runtime_error);
+  EXPECT_EQ(slurp(dir / "victim"), "keep");
+  EXPECT_EQ(slurp(dir / "there.f32"), "old");
+}
+
+// The index of the file is its fixed row size: a sensor range read at its offset.
+TEST(AnnualResults, RowsReadAtTheirOffsetAreThoseOfTheWholeFile) {
+  const AnnualResults r = sample(5, true);
+  const fs::path path = fs::path(testing::TempDir()) / "candela_annual_rows" / "rows.f32";
+  writeAnnualResults(path, r);
+  const AnnualResults rows = readAnnualResultsRows(path, 2, 2);
+  EXPECT_EQ(rows.sensors, 2);
+  EXPECT_EQ(rows.hours, r.hours);
+  ASSERT_EQ(rows.lux.size(), 2u * 8784);
+  EXPECT_EQ(rows.sensorSeries(0), r.sensorSeries(2));
+  EXPECT_EQ(rows.sensorSeries(1), r.sensorSeries(3));
+  EXPECT_EQ(readAnnualResultsRows(path, 5, 0).lux.size(), 0u);
+  EXPECT_THROW(readAnnualResultsRows(path, 4, 2), InputError);
+  EXPECT_THROW(readAnnualResultsRows(path, -1, 1), InputError);
+  // The whole header is checked, the file's size included.
+  const std::string b = slurp(path);
+  std::ofstream(path, std::ios::binary) << b.substr(0, b.size() - 4);
+  EXPECT_THROW(readAnnualResultsRows(path, 0, 1), InputError);
 }
 
 }  // namespace

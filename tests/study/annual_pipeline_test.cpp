@@ -15,7 +15,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <span>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -121,40 +124,59 @@ TEST(AnnualPipeline, OpenSensorsOverTheTestYear) {
 namespace candela {
 namespace {
 
-TEST(AnnualPipeline, SameNumbersForAnyThreadCount) {
-  // A side-lit room's coefficients and year, on 1 and 2 threads: identical bits.
+// A 3 m side-lit room under the test year's sampling guide, north at 30°.
+struct SideLitRoom {
   Scene scene;
-  readRadianceText("void plastic w 0 0 5 0.5 0.5 0.5 0 0\nvoid glass g 0 0 3 0.9 0.9 0.9\n"
-                   "w polygon floor 0 0 12 0 0 0 0 3 0 3 3 0 3 0 0\n"
-                   "w polygon ceiling 0 0 12 0 0 2.5 3 0 2.5 3 3 2.5 0 3 2.5\n"
-                   "w polygon north 0 0 12 0 3 0 0 3 2.5 3 3 2.5 3 3 0\n"
-                   "w polygon west 0 0 12 0 0 0 0 0 2.5 0 3 2.5 0 3 0\n"
-                   "w polygon east 0 0 12 3 0 0 3 3 0 3 3 2.5 3 0 2.5\n"
-                   "w polygon south_low 0 0 12 0 0 0 3 0 0 3 0 1 0 0 1\n"
-                   "g polygon pane 0 0 12 0 0 1 3 0 1 3 0 2.5 0 0 2.5\n",
-                   "room.rad", scene);
-  const EpwFile epw = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
-  const Site site = makeSite(epw.location.latitudeDeg, epw.location.longitudeDeg, epw.location.elevationM,
-                             epw.location.timezoneHours, 30.0);
-  const AnnualSky sky = makeAnnualSky(epw, site, AnnualSkyOptions{});
-  SkyDome dome;
-  dome.model = yearSamplingGuide(sky);
-  dome.northDeg = 30.0;
-  scene.sky = dome;
-  const Tracer tracer(scene);
-  const SkyPatches patches(sky.subdivision);
+  AnnualSky sky;
+  SunSet set;
+  std::vector<Vec3> setModel;
+  std::unique_ptr<Tracer> tracer;
+  SideLitRoom() {
+    readRadianceText("void plastic w 0 0 5 0.5 0.5 0.5 0 0\nvoid glass g 0 0 3 0.9 0.9 0.9\n"
+                     "w polygon floor 0 0 12 0 0 0 0 3 0 3 3 0 3 0 0\n"
+                     "w polygon ceiling 0 0 12 0 0 2.5 3 0 2.5 3 3 2.5 0 3 2.5\n"
+                     "w polygon north 0 0 12 0 3 0 0 3 2.5 3 3 2.5 3 3 0\n"
+                     "w polygon west 0 0 12 0 0 0 0 0 2.5 0 3 2.5 0 3 0\n"
+                     "w polygon east 0 0 12 3 0 0 3 3 0 3 3 2.5 3 0 2.5\n"
+                     "w polygon south_low 0 0 12 0 0 0 3 0 0 3 0 1 0 0 1\n"
+                     "g polygon pane 0 0 12 0 0 1 3 0 1 3 0 2.5 0 0 2.5\n",
+                     "room.rad", scene);
+    const EpwFile epw = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
+    const Site site = makeSite(epw.location.latitudeDeg, epw.location.longitudeDeg, epw.location.elevationM,
+                               epw.location.timezoneHours, 30.0);
+    sky = makeAnnualSky(epw, site, AnnualSkyOptions{});
+    SkyDome dome;
+    dome.model = yearSamplingGuide(sky);
+    dome.northDeg = 30.0;
+    scene.sky = dome;
+    tracer = std::make_unique<Tracer>(scene);
+    set = indirectSunSet(sky);
+    for (const Vec3& d : set.dirsTrue) setModel.push_back(trueToModel(d, 30.0));
+  }
+};
+
+TraceSettings fewSamples() {
   TraceSettings s;
   s.hemisphereSamples = 64;
   s.lightSamples = 4;
   s.maxBounces = kUnlimitedBounces;
+  return s;
+}
+
+TEST(AnnualPipeline, SameNumbersForAnyThreadCount) {
+  // A side-lit room's coefficients and year, on 1 and 2 threads: identical bits.
+  const SideLitRoom room;
+  const Tracer& tracer = *room.tracer;
+  const AnnualSky& sky = room.sky;
+  const SunSet& set = room.set;
+  const std::vector<Vec3>& setModel = room.setModel;
+  const SkyPatches patches(sky.subdivision);
+  const TraceSettings s = fewSamples();
   std::vector<Vec3> pos, nrm;
   for (int i = 0; i < 6; ++i) {
     pos.emplace_back(0.4 + 0.4 * i, 0.3 + 0.4 * i, 0.8);
     nrm.emplace_back(0, 0, 1);
   }
-  const SunSet set = indirectSunSet(sky);
-  std::vector<Vec3> setModel;
-  for (const Vec3& d : set.dirsTrue) setModel.push_back(trueToModel(d, 30.0));
   auto yearOn = [&](int threads) {
     const DaylightCoefficients dc = computeDaylightCoefficients(tracer, pos, nrm, patches, s, threads);
     const std::vector<float> direct =
@@ -172,6 +194,52 @@ TEST(AnnualPipeline, SameNumbersForAnyThreadCount) {
   }
   EXPECT_GT(sum, 0.0);
   EXPECT_EQ(differ, 0u);
+}
+
+TEST(AnnualPipeline, BlocksOfSensorsGiveTheWholeStudysFloats) {
+  // 150 sensors traced whole, then as blocks of 64 from their first index (the annual study's
+  // way, engine/daylight_coefficients.h SensorBlock): the same bits, coefficients and year.
+  const SideLitRoom room;
+  const SkyPatches patches(room.sky.subdivision);
+  const TraceSettings s = fewSamples();
+  const std::vector<Vec3> suns = sunDirectionsModel(room.sky, 30.0);
+  std::vector<Vec3> pos, nrm;
+  for (int i = 0; i < 150; ++i) {
+    pos.emplace_back(0.2 + 0.2 * (i % 14), 0.2 + 0.2 * (i / 14), 0.8);
+    nrm.emplace_back(0, 0, 1);
+  }
+  const int threads = 2;
+  const DaylightCoefficients dc = computeDaylightCoefficients(*room.tracer, pos, nrm, patches, s, threads);
+  const std::vector<float> direct = directSunCoefficients(*room.tracer, pos, nrm, suns, 2, 5, threads);
+  const std::vector<float> inter = indirectSunCoefficients(*room.tracer, pos, nrm, room.setModel, s, threads);
+  const AnnualIlluminance whole = annualIlluminance(dc, direct, inter, room.set, room.sky, threads);
+  std::vector<float> dcBlocks, total, directSun;
+  size_t streamsMatter = 0;
+  for (size_t first = 0; first < pos.size(); first += kAnnualProductBlock) {
+    const size_t n = std::min<size_t>(kAnnualProductBlock, pos.size() - first);
+    const SensorBlock b{std::span(pos).subspan(first, n), std::span(nrm).subspan(first, n), first};
+    const DaylightCoefficients bdc = computeDaylightCoefficients(*room.tracer, b, patches, s, threads);
+    const AnnualIlluminance year =
+        annualIlluminance(bdc, directSunCoefficients(*room.tracer, b, suns, 2, 5, threads),
+                          indirectSunCoefficients(*room.tracer, b, room.setModel, s, threads), room.set, room.sky,
+                          threads);
+    dcBlocks.insert(dcBlocks.end(), bdc.total.begin(), bdc.total.end());
+    total.insert(total.end(), year.total.begin(), year.total.end());
+    directSun.insert(directSun.end(), year.directSun.begin(), year.directSun.end());
+    // Control: the same block with the streams of sensors 0.. instead of its own differs.
+    if (first > 0) {
+      const SensorBlock wrong{b.positions, b.normals, 0};
+      const DaylightCoefficients w = computeDaylightCoefficients(*room.tracer, wrong, patches, s, threads);
+      for (size_t i = 0; i < w.total.size(); ++i) streamsMatter += w.total[i] != bdc.total[i];
+    }
+  }
+  EXPECT_TRUE(dcBlocks == dc.total);
+  EXPECT_TRUE(total == whole.total);
+  EXPECT_TRUE(directSun == whole.directSun);
+  EXPECT_GT(streamsMatter, 0u);
+  double sum = 0.0;
+  for (float v : total) sum += v;
+  EXPECT_GT(sum, 0.0);
 }
 
 }  // namespace

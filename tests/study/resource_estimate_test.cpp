@@ -3,28 +3,67 @@
 #include "study/resource_estimate.h"
 
 #include "engine/render.h"
+#include "engine/scene.h"
 #include "engine/sensors.h"
 #include "study/case_file.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace candela {
 namespace {
 
-TEST(ResourceEstimate, AnnualBytesAreTheFloatArrays) {
-  // 100 sensors, 8760 hours, 146 patches, 4000 sun hours, 300 suns, blinds (2 states): the
-  // coefficients and the year per state, the write copy once.
+TEST(ResourceEstimate, AnnualBlockBytesAreTheBlocksFloatArrays) {
+  // A block of 100 sensors, 8760 hours, 146 patches, 4000 sun hours, 300 suns. Blinds open only:
+  // the coefficients beside the year's total and direct sun. With the closed state: its pass
+  // holds the closed year and the open year and direct sun read back, when that is larger.
   const uint64_t s = 100, h = 8760, p = 146, sun = 4000, j = 300;
-  const uint64_t want = 2 * (s * (p + sun + j) * 4 + s * h * 2 * 4) + s * h * 5;
-  EXPECT_EQ(annualBytes(s, h, p, sun, j, 2), want);
-  EXPECT_EQ(annualBytes(s, h, p, sun, j, 1), s * (p + sun + j) * 4 + s * h * 2 * 4 + s * h * 5);
+  const uint64_t open = s * (p + sun + j) * 4 + s * h * 2 * 4;
+  EXPECT_EQ(annualBlockBytes(s, h, p, sun, j, 1), open);
+  EXPECT_EQ(annualBlockBytes(s, h, p, sun, j, 2), std::max(open, s * h * 3 * 4));
+  EXPECT_EQ(annualBlockBytes(s, h, p, sun, j, 2), s * h * 3 * 4);  // 8760 > 146 + 4000 + 300
+  // Many patches (Reinhart MF:6, 5185): the coefficients' pass is the larger.
+  EXPECT_EQ(annualBlockBytes(s, h, 5185, sun, j, 2), s * (5185 + sun + j) * 4 + s * h * 2 * 4);
 }
 
-TEST(ResourceEstimate, AnnualScalesWithSensorsTimesHours) {
-  // Linear in sensors at fixed hours, and the hourly part linear in hours.
-  EXPECT_EQ(annualBytes(2000, 8760, 146, 4000, 300, 2), 20 * annualBytes(100, 8760, 146, 4000, 300, 2));
-  const uint64_t perHour = annualBytes(1000, 8761, 146, 4000, 300, 2) - annualBytes(1000, 8760, 146, 4000, 300, 2);
-  EXPECT_EQ(perHour, 1000u * (2 * 2 * 4 + 5));  // sensors × (2 arrays × 2 states × float + write copy)
+TEST(ResourceEstimate, AnnualGridBytesGrowWithSensorsNotWithTheirHours) {
+  // What a grid keeps beyond the block: per sensor a fixed size, per hour 13 bytes (count, flag,
+  // the temporal map's double); no sensors × hours term.
+  const uint64_t perSensor = annualGridBytes(2, 8760) - annualGridBytes(1, 8760);
+  EXPECT_LT(perSensor, 1024u);
+  EXPECT_EQ(annualGridBytes(100000, 8760), 100000 * perSensor + 8760 * 13);
+  EXPECT_EQ(annualGridBytes(100000, 8761) - annualGridBytes(100000, 8760), 13u);
+}
+
+TEST(ResourceEstimate, AnnualStudyIsBoundedByTheBlock) {
+  // Issue 17's contract: 100 000 sensors × 8760 hours within 2 GB a rank. The hours stream to disk,
+  // so the estimate is the scene, the sky vectors, one block and the grid's per-sensor records.
+  CaseFile c;
+  c.annual.present = true;
+  c.annual.loc = FileLoc{"case.toml", 9, 1};
+  c.grids.resize(1);
+  c.grids[0].name = "floor";
+  c.grids[0].loc = FileLoc{"case.toml", 20, 1};
+  const Scene scene;
+  const uint64_t hours = 8760, sun = 4437, patches = 146, suns = 189;
+  auto estimate = [&](uint64_t sensors, uint64_t block) {
+    AnnualCounts a;
+    a.gridSensors = {sensors};
+    a.hours = hours;
+    a.sunHours = sun;
+    return estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, block);
+  };
+  const ResourceEstimate big = estimate(100000, 1024);
+  ASSERT_EQ(big.memory.size(), 2u);
+  EXPECT_EQ(big.memory[1].bytes, annualBlockBytes(1024, hours, patches, sun, suns, 2));
+  EXPECT_EQ(big.memory[1].loc.line, 9);
+  EXPECT_EQ(big.memory[0].bytes, annualGridBytes(100000, hours));
+  EXPECT_LT(big.bytes(), 2000000000u);
+  // Ten times the sensors: only the per-sensor records grow; a study smaller than a block holds
+  // its own sensors only.
+  EXPECT_EQ(estimate(1000000, 1024).bytes() - big.bytes(), annualGridBytes(1000000, hours) - annualGridBytes(100000, hours));
+  EXPECT_EQ(estimate(100, 1024).memory[1].bytes, annualBlockBytes(100, hours, patches, sun, suns, 2));
 }
 
 TEST(ResourceEstimate, PixelBytesFromTheImage) {
