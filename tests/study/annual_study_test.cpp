@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -45,19 +47,26 @@ RunResult runInBlocks(const fs::path& outDir, std::size_t sensorsPerBlock, Study
 class AnnualBlocks : public testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const fs::path d = scratchDir("annual_study", "blocks");
+    // A folder of this process's own: CTest runs this suite's tests as parallel processes, and
+    // scratchDir empties its folder.
+    dir_ = scratchDir("annual_study", "blocks." + std::to_string(::getpid()));
+    const fs::path& d = dir_;
     blocks_ = new RunResult(runInBlocks(d / "blocks64", 64, silentObserver()));
     whole_ = new RunResult(runInBlocks(d / "whole", 1 << 20, silentObserver()));
   }
   static void TearDownTestSuite() {
     delete blocks_;
     delete whole_;
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
   }
   static RunResult* blocks_;
   static RunResult* whole_;
+  static fs::path dir_;
 };
 RunResult* AnnualBlocks::blocks_ = nullptr;
 RunResult* AnnualBlocks::whole_ = nullptr;
+fs::path AnnualBlocks::dir_;
 
 TEST_F(AnnualBlocks, TheCaseHasBlocksThatStraddleItsGrids) {
   ASSERT_EQ(whole_->data.grids.size(), 2u);
