@@ -12,6 +12,15 @@ void Distribution::fill(std::byte* items, size_t n, size_t itemBytes, ItemUse us
   parallelFor(n, threads, compute);
 }
 
+void Distribution::fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                             const std::function<void(size_t, std::vector<std::byte>&)>& compute) const {
+  (void)use;
+  parallelFor(lists.size(), threads, [&](size_t i) {
+    lists[i].clear();
+    compute(i, lists[i]);
+  });
+}
+
 const Distribution& localDistribution() {
   static const Distribution local;
   return local;

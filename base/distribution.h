@@ -45,6 +45,11 @@ class Distribution {
                     const std::function<void(size_t)>& compute) const;
   // What the report's settings say of the processes ("1 process", "4 MPI ranks", ...).
   virtual std::string describe() const { return "1 process"; }
+  // Items of varying size: compute(i, bytes) writes item i's bytes (bytes starts empty), for
+  // this process's items; afterwards lists[i] holds every item's bytes on every process.
+  // `lists` has n entries. The same shares and uses as fill.
+  virtual void fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                         const std::function<void(size_t, std::vector<std::byte>&)>& compute) const;
   // The sum over all processes (counters such as rays traced).
   virtual uint64_t sum(uint64_t local) const { return local; }
   // Rank 0's text on every process (e.g. points read from rank 0's standard input).

@@ -15,7 +15,6 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <stdexcept>
 
 namespace candela {
 
@@ -68,10 +67,9 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& fr
   tracer.addRays(rays);
 }
 
-// Phase A's input: `items` items whose cacheable first hits gather(i, out) appends in order, at
-// most maxPerItem of them (one per hemisphere cell).
+// Phase A's input: `items` items whose cacheable first hits gather(i, out) appends in order.
 struct QuerySource {
-  size_t items = 0, maxPerItem = 0;
+  size_t items = 0;
   std::function<void(size_t, std::vector<CacheQuery>&)> gather;
 };
 
@@ -83,34 +81,27 @@ struct BuildContext {
 };
 
 // Phase A over a list of queries, gathered in parallel in batches and shared between the
-// processes (a fixed-size item per source item: its count, then maxPerItem queries), then walked
-// in order on one thread by every process alike: an uncovered hit becomes a record whose R_i
-// comes from stream radiusStream + its index. The batch's size changes nothing in the walk.
+// processes (each source item's queries as bytes), then walked in order on one thread by every
+// process alike: an uncovered hit becomes a record whose R_i comes from stream radiusStream +
+// its index. The batch's size changes nothing in the walk.
 void placeRecords(IrradianceCache& cache, const BuildContext& ctx, const QuerySource& src, uint64_t radiusStream,
                   const TraceSettings& settings) {
   constexpr size_t kBatch = 512;
-  const size_t itemBytes = sizeof(uint64_t) + src.maxPerItem * sizeof(CacheQuery);
-  std::vector<std::byte> hits;
+  std::vector<std::vector<std::byte>> hits;
   uint64_t rays = 0;  // the coverage tests' visibility rays
   for (size_t b = 0; b < src.items; b += kBatch) {
     const size_t e = std::min(src.items, b + kBatch);
-    hits.assign((e - b) * itemBytes, std::byte{0});
-    ctx.distribution.fill(hits.data(), e - b, itemBytes, ItemUse::kShared, ctx.threads, [&](size_t i) {
+    hits.assign(e - b, {});
+    ctx.distribution.fillLists(hits, ItemUse::kShared, ctx.threads, [&](size_t i, std::vector<std::byte>& bytes) {
       std::vector<CacheQuery> list;
       src.gather(b + i, list);
-      if (list.size() > src.maxPerItem) throw std::logic_error("more cache queries than hemisphere cells");
-      const uint64_t count = list.size();
-      std::byte* item = hits.data() + i * itemBytes;
-      std::memcpy(item, &count, sizeof count);
-      if (count > 0) std::memcpy(item + sizeof count, list.data(), count * sizeof(CacheQuery));
+      bytes.resize(list.size() * sizeof(CacheQuery));
+      if (!list.empty()) std::memcpy(bytes.data(), list.data(), bytes.size());
     });
-    for (size_t i = 0; i < e - b; ++i) {
-      const std::byte* item = hits.data() + i * itemBytes;
-      uint64_t count = 0;
-      std::memcpy(&count, item, sizeof count);
-      for (uint64_t k = 0; k < count; ++k) {
+    for (const std::vector<std::byte>& item : hits) {
+      for (size_t at = 0; at + sizeof(CacheQuery) <= item.size(); at += sizeof(CacheQuery)) {
         CacheQuery q;
-        std::memcpy(&q, item + sizeof count + k * sizeof(CacheQuery), sizeof q);
+        std::memcpy(&q, item.data() + at, sizeof q);
         if (cache.covers(q.p, q.n, q.shape, &rays)) continue;
         IrradianceRecord r;
         r.p = q.p;
@@ -257,11 +248,9 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
   cache.setVisibility(visibility);
   const BuildContext ctx{tracer, threads, distribution};
   // Phase A: first diffuse hits of each point's initial hemisphere cells.
-  const QuerySource pointQueries{
-      points.size(), static_cast<size_t>(hemisphereThetaStrata(settings) * hemispherePhiStrata(settings)),
-      [&](size_t i, std::vector<CacheQuery>& out) {
-        cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
-      }};
+  const QuerySource pointQueries{points.size(), [&](size_t i, std::vector<CacheQuery>& out) {
+                                    cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
+                                  }};
   placeRecords(cache, ctx, pointQueries, kRadiusStream, settings);
   // Second level: phase A over the first level's record rays (the directions phase B will
   // trace), then its values, frozen before the first level's values use it. A record ray's
@@ -273,8 +262,7 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
     s2.cache = deeperLevel(settings.cache);
     deeper.emplace(tracer.scene().bounds(), s2.cache);
     deeper->setVisibility(visibility);
-    const QuerySource recordRays{cache.size(), static_cast<size_t>(recordThetaStrata(settings) * recordPhiStrata(settings)),
-                                 [&](size_t i, std::vector<CacheQuery>& out) {
+    const QuerySource recordRays{cache.size(), [&](size_t i, std::vector<CacheQuery>& out) {
                                    recordQueries(tracer, cache.record(i), kRecordStream + i, settings, out);
                                  }};
     placeRecords(*deeper, ctx, recordRays, kRadiusStream2, s2);

@@ -30,6 +30,26 @@ static_assert(sizeof(FillHeader) == 48);
 
 FileLoc at(const fs::path& dir, const char* file) { return FileLoc{(dir / file).string(), 0, 0}; }
 
+// The items of shard `index` of `shards` in a fill of n: chunks c with c mod shards = index.
+std::vector<size_t> shareOf(uint64_t n, uint64_t chunk, int index, int shards) {
+  std::vector<size_t> mine;
+  for (uint64_t b = chunk * index; b < n; b += chunk * shards)
+    for (uint64_t i = b; i < std::min<uint64_t>(n, b + chunk); ++i) mine.push_back(i);
+  return mine;
+}
+
+// Sizes, then bytes, of the lists `which`.
+std::vector<std::byte> packLists(const std::vector<std::vector<std::byte>>& lists, const std::vector<size_t>& which) {
+  std::vector<std::byte> out(which.size() * sizeof(uint64_t));
+  for (size_t k = 0; k < which.size(); ++k) {
+    const uint64_t size = lists[which[k]].size();
+    std::memcpy(out.data() + k * sizeof size, &size, sizeof size);
+  }
+  for (size_t i : which) out.insert(out.end(), lists[i].begin(), lists[i].end());
+  return out;
+}
+
+
 }  // namespace
 
 ShardSpec parseShard(const std::string& text) {
@@ -63,14 +83,34 @@ void ShardDistribution::fill(std::byte* items, size_t n, size_t itemBytes, ItemU
     if (spec_.index == 0) rec.data.assign(items, items + n * itemBytes);
   } else {
     // This shard's chunks, in order, as one list of items.
-    std::vector<size_t> mine;
-    for (uint64_t b = rec.chunk * spec_.index; b < n; b += rec.chunk * spec_.count)
-      for (uint64_t i = b; i < std::min<uint64_t>(n, b + rec.chunk); ++i) mine.push_back(i);
+    const std::vector<size_t> mine = shareOf(n, rec.chunk, spec_.index, spec_.count);
     parallelFor(mine.size(), threads, [&](size_t k) { compute(mine[k]); });
     rec.data.resize(mine.size() * itemBytes);
     for (size_t k = 0; k < mine.size(); ++k)
       std::memcpy(rec.data.data() + k * itemBytes, items + mine[k] * itemBytes, itemBytes);
   }
+  fills_.push_back(std::move(rec));
+}
+
+
+void ShardDistribution::fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                                  const std::function<void(size_t, std::vector<std::byte>&)>& compute) const {
+  FillRecord rec;
+  rec.items = lists.size();
+  rec.itemBytes = 0;
+  rec.use = use;
+  rec.chunk = shardChunkItems(lists.size(), spec_.count);
+  std::vector<size_t> which;
+  if (use == ItemUse::kShared) {
+    for (size_t i = 0; i < lists.size(); ++i) which.push_back(i);
+  } else {
+    which = shareOf(lists.size(), rec.chunk, spec_.index, spec_.count);
+  }
+  parallelFor(which.size(), threads, [&](size_t k) {
+    lists[which[k]].clear();
+    compute(which[k], lists[which[k]]);
+  });
+  if (use == ItemUse::kResult || spec_.index == 0) rec.data = packLists(lists, which);
   fills_.push_back(std::move(rec));
 }
 
@@ -192,43 +232,83 @@ MergeDistribution::MergeDistribution(std::vector<PartHeader> parts) : parts_(std
 
 MergeDistribution::~MergeDistribution() = default;
 
+uint64_t MergeDistribution::nextFill(size_t part, uint64_t n, uint64_t itemBytes, ItemUse use) const {
+  const PartHeader& p = parts_[part];
+  Reader& r = *readers_[part];
+  const uint64_t k = next_;
+  auto foreign = [&](const std::string& what) {
+    return InputError(at(p.dir, kPartData), "fill " + std::to_string(k + 1) + " " + what +
+                                                ": the part was computed from another case, scene or settings");
+  };
+  FillHeader h;
+  if (r.read >= p.fills || !r.in.read(reinterpret_cast<char*>(&h), sizeof h)) throw foreign("is missing");
+  ++r.read;
+  if (h.magic != kFillMagic) throw foreign("is damaged");
+  const uint64_t chunk = shardChunkItems(n, static_cast<int>(parts_.size()));
+  if (h.items != n || h.itemBytes != itemBytes || h.chunk != chunk || h.use != (use == ItemUse::kShared ? 1u : 0u))
+    throw foreign("has " + std::to_string(h.items) + " items of " + std::to_string(h.itemBytes) + " bytes, the case " +
+                  std::to_string(n) + " of " + std::to_string(itemBytes));
+  return h.dataBytes;
+}
+
+// The items of part s in a fill: all (kShared, part 0), none (kShared, the others), its share.
+std::vector<size_t> MergeDistribution::itemsOfPart(size_t s, uint64_t n, ItemUse use) const {
+  const int shards = static_cast<int>(parts_.size());
+  if (use == ItemUse::kResult) return shareOf(n, shardChunkItems(n, shards), static_cast<int>(s), shards);
+  std::vector<size_t> all;
+  if (s == 0)
+    for (size_t i = 0; i < n; ++i) all.push_back(i);
+  return all;
+}
+
 void MergeDistribution::fill(std::byte* items, size_t n, size_t itemBytes, ItemUse use, int threads,
                              const std::function<void(size_t)>& compute) const {
   (void)threads;
   (void)compute;  // nothing is computed again: the parts hold every item
-  const uint64_t k = next_++;
-  const int shards = static_cast<int>(parts_.size());
-  const uint64_t chunk = shardChunkItems(n, shards);
-  for (int s = 0; s < shards; ++s) {
-    const PartHeader& p = parts_[s];
+  for (size_t s = 0; s < parts_.size(); ++s) {
+    const uint64_t bytes = nextFill(s, n, itemBytes, use);
+    const std::vector<size_t> which = itemsOfPart(s, n, use);
     Reader& r = *readers_[s];
-    auto foreign = [&](const std::string& what) {
-      return InputError(at(p.dir, kPartData), "fill " + std::to_string(k + 1) + " " + what +
-                                                  ": the part was computed from another case, scene or settings");
-    };
-    FillHeader h;
-    if (r.read >= p.fills || !r.in.read(reinterpret_cast<char*>(&h), sizeof h)) throw foreign("is missing");
-    ++r.read;
-    if (h.magic != kFillMagic) throw foreign("is damaged");
-    if (h.items != n || h.itemBytes != itemBytes || h.chunk != chunk || h.use != (use == ItemUse::kShared ? 1u : 0u))
-      throw foreign("has " + std::to_string(h.items) + " items of " + std::to_string(h.itemBytes) + " bytes, the case " +
-                    std::to_string(n) + " of " + std::to_string(itemBytes));
-    uint64_t expected = 0;
-    if (use == ItemUse::kShared) {
-      expected = s == 0 ? n * itemBytes : 0;
-    } else {
-      for (uint64_t b = chunk * s; b < n; b += chunk * shards) expected += (std::min<uint64_t>(n, b + chunk) - b) * itemBytes;
+    if (bytes != which.size() * itemBytes) throw damaged(s, bytes);
+    // The share's items in order: read run by run of consecutive items.
+    for (size_t k = 0; k < which.size();) {
+      size_t e = k + 1;
+      while (e < which.size() && which[e] == which[e - 1] + 1) ++e;
+      r.in.read(reinterpret_cast<char*>(items + which[k] * itemBytes), static_cast<std::streamsize>((e - k) * itemBytes));
+      k = e;
     }
-    if (h.dataBytes != expected) throw foreign("holds " + std::to_string(h.dataBytes) + " bytes, not " + std::to_string(expected));
-    if (use == ItemUse::kShared) {
-      if (s == 0) r.in.read(reinterpret_cast<char*>(items), static_cast<std::streamsize>(expected));
-    } else {
-      for (uint64_t b = chunk * s; b < n; b += chunk * shards)
-        r.in.read(reinterpret_cast<char*>(items + b * itemBytes),
-                  static_cast<std::streamsize>((std::min<uint64_t>(n, b + chunk) - b) * itemBytes));
-    }
-    if (!r.in) throw foreign("is cut short");
+    if (!r.in) throw damaged(s, bytes);
   }
+  ++next_;
+}
+
+void MergeDistribution::fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                                  const std::function<void(size_t, std::vector<std::byte>&)>& compute) const {
+  (void)threads;
+  (void)compute;
+  for (size_t s = 0; s < parts_.size(); ++s) {
+    const uint64_t bytes = nextFill(s, lists.size(), 0, use);
+    const std::vector<size_t> which = itemsOfPart(s, lists.size(), use);
+    Reader& r = *readers_[s];
+    std::vector<uint64_t> sizes(which.size());
+    r.in.read(reinterpret_cast<char*>(sizes.data()), static_cast<std::streamsize>(sizes.size() * sizeof(uint64_t)));
+    uint64_t total = sizes.size() * sizeof(uint64_t);
+    for (uint64_t z : sizes) total += z;
+    if (!r.in || total != bytes) throw damaged(s, bytes);
+    for (size_t k = 0; k < which.size(); ++k) {
+      lists[which[k]].resize(sizes[k]);
+      r.in.read(reinterpret_cast<char*>(lists[which[k]].data()), static_cast<std::streamsize>(sizes[k]));
+    }
+    if (!r.in) throw damaged(s, bytes);
+  }
+  ++next_;
+}
+
+InputError MergeDistribution::damaged(size_t part, uint64_t bytes) const {
+  return InputError(at(parts_[part].dir, kPartData), "fill " + std::to_string(next_ + 1) + " holds " +
+                                                         std::to_string(bytes) +
+                                                         " bytes, not the case's: the part is damaged or was computed "
+                                                         "from another case, scene or settings");
 }
 
 void MergeDistribution::finish() const {

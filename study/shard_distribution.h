@@ -13,6 +13,7 @@
 #pragma once
 
 #include "base/distribution.h"
+#include "base/error.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -31,9 +32,11 @@ ShardSpec parseShard(const std::string& text);
 
 // One fill as a part records it.
 struct FillRecord {
-  uint64_t items = 0, itemBytes = 0, chunk = 0;
+  uint64_t items = 0, itemBytes = 0, chunk = 0;  // itemBytes 0: items of varying size (fillLists)
   ItemUse use = ItemUse::kResult;
-  std::vector<std::byte> data;  // this shard's chunks in order (kResult); all items (kShared, shard 0)
+  // This shard's chunks in order (kResult); all items (kShared, shard 0). Items of varying size:
+  // their sizes (uint64 each), then their bytes.
+  std::vector<std::byte> data;
 };
 
 // Items per chunk of a shard's fill: about 16 chunks a shard, interleaved (chunk c to shard
@@ -51,6 +54,8 @@ class ShardDistribution : public Distribution {
   }
   void fill(std::byte* items, size_t n, size_t itemBytes, ItemUse use, int threads,
             const std::function<void(size_t)>& compute) const override;
+  void fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                 const std::function<void(size_t, std::vector<std::byte>&)>& compute) const override;
   const std::vector<FillRecord>& fills() const { return fills_; }
 
  private:
@@ -99,6 +104,8 @@ class MergeDistribution : public Distribution {
   std::string describe() const override { return std::to_string(parts_.size()) + " shards (merged)"; }
   void fill(std::byte* items, size_t n, size_t itemBytes, ItemUse use, int threads,
             const std::function<void(size_t)>& compute) const override;
+  void fillLists(std::vector<std::vector<std::byte>>& lists, ItemUse use, int threads,
+                 const std::function<void(size_t, std::vector<std::byte>&)>& compute) const override;
   // Throws InputError when the parts hold fills the study did not ask for.
   void finish() const override;
 
@@ -106,6 +113,11 @@ class MergeDistribution : public Distribution {
   struct Reader;
   std::vector<PartHeader> parts_;
   std::vector<std::unique_ptr<Reader>> readers_;
+  // Reads part `part`'s next fill header, checked against the study's fill (n, itemBytes, use);
+  // returns its data bytes.
+  uint64_t nextFill(size_t part, uint64_t n, uint64_t itemBytes, ItemUse use) const;
+  std::vector<size_t> itemsOfPart(size_t part, uint64_t n, ItemUse use) const;
+  InputError damaged(size_t part, uint64_t bytes) const;
   mutable uint64_t next_ = 0;  // fills taken so far
 };
 

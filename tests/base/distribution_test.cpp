@@ -36,5 +36,13 @@ TEST(LocalDistribution, RowsAreFilledWhole) {
     for (size_t j = 0; j < 5; ++j) EXPECT_EQ(rows[i * 5 + j], static_cast<float>(10 * i + j));
 }
 
+TEST(LocalDistribution, ListsOfVaryingSize) {
+  std::vector<std::vector<std::byte>> lists(50, std::vector<std::byte>(3, std::byte{7}));  // cleared first
+  localDistribution().fillLists(lists, ItemUse::kShared, 2, [](size_t i, std::vector<std::byte>& b) {
+    b.assign(i % 4, static_cast<std::byte>(i));
+  });
+  for (size_t i = 0; i < lists.size(); ++i) EXPECT_EQ(lists[i], std::vector<std::byte>(i % 4, static_cast<std::byte>(i)));
+}
+
 }  // namespace
 }  // namespace candela

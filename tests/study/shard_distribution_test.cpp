@@ -21,10 +21,28 @@ uint64_t valueOf(size_t i, int fill) { return (i + 1) * 0x9e3779b97f4a7c15ULL ^ 
 
 // The fills a small "study" makes: a shared one whose items a later fill reads, then a result
 // fill, as the irradiance cache's records and the points are.
+// Item i of a fill of lists: i mod 5 bytes (some empty), as the cache's phase A hits are.
+std::vector<std::byte> listOf(size_t i, int fill) {
+  std::vector<std::byte> v(i % 5);
+  for (size_t k = 0; k < v.size(); ++k) v[k] = static_cast<std::byte>(valueOf(i + k, fill) & 0xff);
+  return v;
+}
+
 struct Study {
   std::vector<uint64_t> shared, result;
+  std::vector<std::vector<std::byte>> sharedLists, resultLists;
   std::atomic<size_t> computed{0};
   void run(const Distribution& d, size_t nShared, size_t nResult) {
+    sharedLists.assign(nShared, {});
+    d.fillLists(sharedLists, ItemUse::kShared, 2, [&](size_t i, std::vector<std::byte>& b) {
+      b = listOf(i, 3);
+      ++computed;
+    });
+    resultLists.assign(nResult, {});
+    d.fillLists(resultLists, ItemUse::kResult, 2, [&](size_t i, std::vector<std::byte>& b) {
+      b = listOf(i, 4);
+      ++computed;
+    });
     shared.assign(nShared, 0);
     result.assign(nResult, 0);
     distributedFill(d, shared, ItemUse::kShared, 2, [&](size_t i, uint64_t& v) {
@@ -60,9 +78,9 @@ class Parts : public ::testing::Test {
       ShardDistribution d(ShardSpec{i, n});
       Study s;
       s.run(d, nShared, nResult);
-      // A shard computes the shared items in full and about 1/n of the others.
-      EXPECT_GE(s.computed.load(), nShared + nResult / n - shardChunkItems(nResult, n));
-      EXPECT_LE(s.computed.load(), nShared + nResult / n + shardChunkItems(nResult, n));
+      // A shard computes the shared items in full and about 1/n of the others (two fills of each).
+      EXPECT_GE(s.computed.load(), 2 * (nShared + nResult / n - shardChunkItems(nResult, n)));
+      EXPECT_LE(s.computed.load(), 2 * (nShared + nResult / n + shardChunkItems(nResult, n)));
       const fs::path dir = root_ / ("part_" + std::to_string(i));
       fs::create_directories(dir);
       writePart(dir, id, ShardSpec{i, n}, d.fills());
@@ -97,6 +115,8 @@ TEST_F(Parts, MergeGivesTheOneProcessItems) {
     EXPECT_EQ(merged.computed.load(), 0u) << "merge computes nothing again";
     EXPECT_EQ(merged.shared, one.shared);
     EXPECT_EQ(merged.result, one.result);
+    EXPECT_EQ(merged.sharedLists, one.sharedLists);
+    EXPECT_EQ(merged.resultLists, one.resultLists);
     EXPECT_NO_THROW(merge.finish());
     fs::remove_all(root_);
     fs::create_directories(root_);
@@ -114,14 +134,15 @@ TEST_F(Parts, MergeRefusesFillsThatDoNotMatch) {
   {
     // The study asks for fewer fills than the parts hold.
     const MergeDistribution merge(checkPartSet(headers(dirs)));
+    std::vector<std::vector<std::byte>> a(10), b(100);
+    merge.fillLists(a, ItemUse::kShared, 1, [](size_t, std::vector<std::byte>&) {});
+    merge.fillLists(b, ItemUse::kResult, 1, [](size_t, std::vector<std::byte>&) {});
     std::vector<uint64_t> v(10);
     distributedFill(merge, v, ItemUse::kShared, 1, [](size_t, uint64_t&) {});
     EXPECT_THROW(merge.finish(), InputError);
-    // ... or more.
-    std::vector<uint64_t> w(100);
-    distributedFill(merge, w, ItemUse::kResult, 1, [](size_t, uint64_t&) {});
-    std::vector<uint64_t> x(5);
-    EXPECT_THROW(distributedFill(merge, x, ItemUse::kResult, 1, [](size_t, uint64_t&) {}), InputError);
+    // ... or a fill of another kind.
+    std::vector<uint64_t> x(100);
+    EXPECT_THROW(distributedFill(merge, x, ItemUse::kShared, 1, [](size_t, uint64_t&) {}), InputError);
   }
 }
 
