@@ -3,7 +3,8 @@
 # 1 rank x 1 thread, 1 rank x 2 threads, 2 MPI ranks x 1 thread, and 3 shards + merge; wall time,
 # peak memory per process, and whether the result files are the one-process bytes.
 #
-#   scripts/scaling.sh [--quality Q] [--out DIR]      (default: the cases' quality, out/scaling)
+#   scripts/scaling.sh [--quality Q] [--out DIR] [--case NAME]...
+#   (default: the cases' quality, out/scaling, the cases office and office-annual)
 #
 # Writes DIR/scaling.csv and DIR/scaling.md. Run it on an idle machine: it takes about 4 times
 # the demos' run time.
@@ -11,11 +12,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 quality=()
 out=out/scaling
+cases=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quality) quality=(--quality "$2"); shift 2 ;;
     --out) out=$2; shift 2 ;;
-    *) echo "usage: scripts/scaling.sh [--quality Q] [--out DIR]" >&2; exit 2 ;;
+    --case) cases+=("$2"); shift 2 ;;
+    *) echo "usage: scripts/scaling.sh [--quality Q] [--out DIR] [--case NAME]..." >&2; exit 2 ;;
   esac
 done
 exe=$PWD/build/cli/candela
@@ -48,7 +51,8 @@ same() {  # reference folder, folder: result files byte-identical (summaries asi
   echo yes
 }
 
-for name in office office-annual; do
+[ ${#cases[@]} -gt 0 ] || cases=(office office-annual)
+for name in "${cases[@]}"; do
   case_file=cases/$name/case.toml
   d=$out/$name
   rm -rf "$d"
