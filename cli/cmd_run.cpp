@@ -107,8 +107,6 @@ struct MergeOptions {
 };
 
 int mergeCommand(const MergeOptions& o) {
-  if (processes().ranks() > 1)
-    throw InputError(FileLoc{"command line", 0, 0}, "merge is one process: run it without mpirun");
   std::vector<std::filesystem::path> parts(o.parts.begin(), o.parts.end());
   ProgressObserver progress(o.quiet);
   const RunResult r = mergeParts(parts, o.outDir, o.threads, progress);

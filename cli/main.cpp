@@ -25,19 +25,29 @@ int run(int argc, char** argv, const candela::MpiSession& mpi) {
   candela::cli::addValidateCommand(app, action);
   candela::cli::addRenderCommand(app, action);
   candela::cli::addMergeCommand(app, action);
+  // Under mpirun every rank parses the same command line: rank 0 says what is wrong.
+  const int rank = mpi.distribution().rank();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return rank == 0 ? app.exit(e) : 0;
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return rank == 0 ? app.exit(e) : 0;
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return rank == 0 ? app.exit(e) : 0;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "candela: " << candela::printable(e.what()) << "\n";
+    if (rank == 0) std::cerr << "candela: " << candela::printable(e.what()) << "\n";
     return 2;
   }
-  const int rank = mpi.distribution().rank();
+  // Under mpirun every rank runs the command: only those that share their work may.
+  if (mpi.distribution().ranks() > 1)
+    for (const char* one : {"sun", "luminaire", "validate", "merge"})
+      if (app.got_subcommand(one)) {
+        if (rank == 0)
+          std::cerr << "command line: candela " << one
+                    << " is one process: run it without mpirun (run, points and render share their work)\n";
+        return 2;
+      }
   try {
     return action ? action() : 1;
   } catch (const candela::InputError& e) {

@@ -43,6 +43,9 @@ if(CANDELA_HAVE_MPI AND MPIRUN)
   add_test(NAME cli.distributed.office.mpi_render
            COMMAND bash ${DISTRIBUTED} render 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office/case.toml
                    - --quality draft --pixel-samples 1 --coarse-step 16 --irradiance-samples 4)
+  # Commands that do not share their work are refused under mpirun (rank 0 says so; exit 2).
+  add_test(NAME cli.distributed.validate_refused
+           COMMAND bash ${DISTRIBUTED} refused 2 $<TARGET_FILE:candela> - - validate --quick)
   add_test(NAME cli.distributed.office.mpi_rank_killed
            COMMAND bash ${DISTRIBUTED} kill 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office/case.toml
                    - --quality draft)

@@ -7,6 +7,7 @@
 #   points N   candela points --case CASE under mpirun -n N against one process (the points of
 #              REFERENCE's workplane.csv, on stdin)
 #   render N   candela render CASE --view (its first view) under mpirun -n N against one process
+#   refused N  mpirun -n N candela ARGS (a command that does not share its work): exit 2, one message
 #   kill N     mpirun -n N; rank 1 is killed (SIGKILL) while tracing: the run must fail, promptly,
 #              and write nothing
 # Result files must be byte-identical; summary.json, summary.csv and report.html may differ only
@@ -87,6 +88,15 @@ case "$mode" in
       </dev/null || fail "mpirun render failed"
     [ -n "$(ls -A "$tmp/one")" ] || fail "render wrote nothing"
     compare_folders "$tmp/one" "$tmp/mpi"
+    ;;
+  refused)
+    # A command that does not share its work (ARGS: the command and its options): exit 2, and
+    # candela's message once (rank 0's; mpirun adds its own banner).
+    "${mpirun_cmd[@]}" "$exe" "$@" </dev/null >"$tmp/out" 2>"$tmp/err"
+    code=$?
+    [ "$code" = 2 ] || fail "exit code $code, expected 2"
+    [ "$(grep -c "candela $1 is one process" "$tmp/err")" = 1 ] || { cat "$tmp/err"; fail "the refusal is not said once"; }
+    [ -s "$tmp/out" ] && fail "stdout not empty"
     ;;
   kill)
     "${mpirun_cmd[@]}" "$exe" run "$case_file" --out "$tmp/out" --quiet --threads 1 "$@" </dev/null \
