@@ -1,7 +1,8 @@
 #include "study/trace_options.h"
 
+#include <tbb/info.h>
+
 #include <algorithm>
-#include <thread>
 
 namespace candela {
 
@@ -32,7 +33,9 @@ ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o
 }
 
 unsigned threadsUsed(int threads) {
-  return threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
+  // The cores this process may use (its affinity mask, as oneTBB counts them): under mpirun a
+  // rank is bound to its own cores, fewer than the machine's.
+  return threads > 0 ? static_cast<unsigned>(threads) : static_cast<unsigned>(std::max(1, tbb::info::default_concurrency()));
 }
 
 }  // namespace candela

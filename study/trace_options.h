@@ -40,7 +40,7 @@ struct ResolvedTrace {
 // case names one: the irradiance cache for a case's grids (run), the path tracer for points.
 ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o, Method defaultMethod);
 
-// The number of threads `threads` stands for (0: the machine's cores).
+// The number of threads `threads` stands for (0: the cores this process may use).
 unsigned threadsUsed(int threads);
 
 }  // namespace candela
