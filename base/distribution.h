@@ -12,7 +12,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <string>
 #include <type_traits>
@@ -31,9 +30,9 @@ class Distribution {
   virtual ~Distribution() = default;
   virtual int rank() const { return 0; }
   virtual int ranks() const { return 1; }
-  // Whether this process writes the run's result folder (rank 0 of a job; every shard writes
-  // its part instead, see partial()).
-  bool writesOutputs() const { return rank() == 0; }
+  // Whether this process writes the run's result folder: rank 0 of a job, the one process, a
+  // merge; not the other ranks, nor a shard (which writes its part instead, see partial()).
+  bool writesOutputs() const { return rank() == 0 && !partial(); }
   // Whether this process holds only its share of the kResult items (a shard): its outputs are a
   // part for `candela merge`, not a result.
   virtual bool partial() const { return false; }
@@ -54,8 +53,6 @@ class Distribution {
   virtual uint64_t sum(uint64_t local) const { return local; }
   // Rank 0's text on every process (e.g. points read from rank 0's standard input).
   virtual void broadcast(std::string& text) const { (void)text; }
-  // Every process waits here until all have arrived.
-  virtual void barrier() const {}
   // Called once the run's work is done, before its results are written: a merge checks here
   // that its parts held nothing the run did not ask for (throws InputError).
   virtual void finish() const {}

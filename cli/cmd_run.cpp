@@ -83,7 +83,7 @@ int runCommand(const RunOptions& o) {
   } else {
     request.distribution = &processes();
   }
-  const bool prints = request.distribution->rank() == 0 || shard;
+  const bool prints = printsResults(*request.distribution);
   ProgressObserver progress(o.quiet || !prints, request.limits.maxMemoryBytes);
   const RunResult r = runCase(o.caseFile, request, progress);
   if (!prints) return 0;

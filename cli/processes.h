@@ -10,7 +10,8 @@ namespace candela::cli {
 const Distribution& processes();
 void setProcesses(const Distribution& d);
 
-// Whether this process prints results and progress (rank 0, or the only process).
-inline bool printsResults() { return processes().rank() == 0 || processes().partial(); }
+// Whether a process of `d` prints results and progress: rank 0 (or the only process), or a shard
+// (each prints its own part's line).
+inline bool printsResults(const Distribution& d = processes()) { return d.rank() == 0 || d.partial(); }
 
 }  // namespace candela::cli

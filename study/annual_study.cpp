@@ -467,7 +467,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   // Only the process that writes the result folder streams the hourly files (rank 0, a merge);
   // the others' folder writes nothing, and their metrics, which no output uses, are not complete.
   const Distribution& processes = run.request.processes();
-  RunOutputFolder folder(run.outDir, writesResultFolder(run.request));
+  RunOutputFolder folder(run.outDir, processes.writesOutputs());
   std::vector<GridYear> grids = openGridYears(in, c.annual, y, folder);
   traceAnnual(c, in, trace, AnnualPass{in, y, th, folder, blockSize(options), grids, &processes}, t, observer);
   // 3. Metrics per grid.

@@ -68,7 +68,7 @@ class MpiDistribution : public Distribution {
             const std::function<void(size_t)>& compute) const override {
     (void)use;  // every rank receives every item, whatever its use
     if (ranks_ == 1 || n == 0) {
-      parallelFor(n, threads, compute);
+      Distribution::fill(items, n, itemBytes, use, threads, compute);
       return;
     }
     const Claimed c = claimChunks(n, threads, compute);
@@ -104,8 +104,6 @@ class MpiDistribution : public Distribution {
       check(MPI_Bcast(text.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, 0, comm_),
             "MPI_Bcast");
   }
-
-  void barrier() const override { MPI_Barrier(comm_); }
 
  private:
   // The chunks of a fill this rank computed, and every rank's chunk ids.

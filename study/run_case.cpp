@@ -113,11 +113,6 @@ void checkOnRankZero(const Distribution& d, const std::function<void()>& check) 
   throw InputError(FileLoc{failure.substr(0, a), std::stoi(failure.substr(a + 1, b - a - 1)), 0}, failure.substr(b + 1));
 }
 
-bool writesResultFolder(const RunRequest& request) {
-  const Distribution& d = request.processes();
-  return d.writesOutputs() && !d.partial();
-}
-
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const fs::path&)>& write) {
   const Distribution& d = run.request.processes();
   d.finish();
@@ -128,7 +123,7 @@ void commitRun(const CaseFile& c, const RunContext& run, const std::function<voi
     });
     return;
   }
-  if (writesResultFolder(run.request)) writeRunOutputs(run.outDir, write);
+  if (d.writesOutputs()) writeRunOutputs(run.outDir, write);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t) {
@@ -161,12 +156,8 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   return runGridStudy(c, run, observer);
 }
 
-}  // namespace candela
-
-namespace candela {
-
 RunResult mergeParts(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& outDir,
-                     std::optional<int> threads, StudyObserver& observer) {
+                     int threads, StudyObserver& observer) {
   std::vector<PartHeader> headers;
   for (const std::filesystem::path& p : parts) headers.push_back(readPartHeader(p));
   headers = checkPartSet(std::move(headers));

@@ -13,7 +13,6 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
-#include <optional>
 #include <vector>
 #include <string>
 
@@ -62,7 +61,7 @@ struct CaseFile;
 // (empty: the case's) that the one-process run writes. Throws InputError naming the part that
 // is missing, incomplete or from another case, settings or seed.
 RunResult mergeParts(const std::vector<std::filesystem::path>& parts, const std::filesystem::path& outDir,
-                     std::optional<int> threads, StudyObserver& observer = silentObserver());
+                     int threads, StudyObserver& observer = silentObserver());
 
 // The report data every run starts from: the case's name, file and description, the version,
 // start time and seed, and the site's north.
@@ -73,10 +72,6 @@ ReportData reportDataFor(const CaseFile& c, const RunContext& run, uint64_t seed
 // ranks write nothing; a shard writes its part (study/shard_distribution.h) instead. A merge's
 // distribution first checks that the parts held nothing the run did not use.
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const std::filesystem::path&)>& write);
-
-// Whether this process writes the result folder itself: the one process, rank 0 of a job, a
-// merge; not the other ranks, nor a shard (which writes a part).
-bool writesResultFolder(const RunRequest& request);
 
 // Rank 0 decides: calls check() there and, when it throws InputError, throws the same on every
 // rank (a folder that only rank 0 sees, say), so that no rank waits for another forever.

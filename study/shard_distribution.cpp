@@ -53,16 +53,15 @@ std::vector<std::byte> packLists(const std::vector<std::vector<std::byte>>& list
 }  // namespace
 
 ShardSpec parseShard(const std::string& text) {
+  const std::invalid_argument bad("--shard wants i/N with 0 <= i < N (e.g. 0/4), got '" + text + "'");
   const size_t slash = text.find('/');
   auto number = [&](const std::string& s) {
-    if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos)
-      throw std::invalid_argument("--shard wants i/N with 0 <= i < N (e.g. 0/4), got '" + text + "'");
+    if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) throw bad;
     return std::stoi(s);
   };
-  if (slash == std::string::npos) number("");
+  if (slash == std::string::npos) throw bad;
   ShardSpec s{number(text.substr(0, slash)), number(text.substr(slash + 1))};
-  if (s.count < 1 || s.index >= s.count)
-    throw std::invalid_argument("--shard wants i/N with 0 <= i < N (e.g. 0/4), got '" + text + "'");
+  if (s.count < 1 || s.index >= s.count) throw bad;
   return s;
 }
 

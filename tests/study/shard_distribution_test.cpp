@@ -76,6 +76,8 @@ class Parts : public ::testing::Test {
     id.shards = n;
     for (int i = 0; i < n; ++i) {
       ShardDistribution d(ShardSpec{i, n});
+      EXPECT_TRUE(d.partial());
+      EXPECT_FALSE(d.writesOutputs()) << "a shard writes its part, never the result folder";
       Study s;
       s.run(d, nShared, nResult);
       // A shard computes the shared items in full and about 1/n of the others (two fills of each).
