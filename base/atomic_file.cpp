@@ -40,35 +40,75 @@ std::filesystem::path createTemporaryFolder(const std::filesystem::path& dir, co
   throw std::runtime_error("cannot create a unique folder in " + dir.string());
 }
 
-void writeFileAtomic(const std::filesystem::path& path, std::string_view content) {
+namespace {
+
+// Unnamed temporaries (O_TMPFILE) need the file system's support and /proc to give them a name.
+bool procFdAvailable() {
+  static const bool ok = ::access("/proc/self/fd", X_OK) == 0;
+  return ok;
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path) {
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::filesystem::path tmp;
-  int fd = -1;
-  for (int attempt = 0; attempt < 16 && fd < 0; ++attempt) {
-    tmp = uniqueSibling(dir, path.filename().string() + ".tmp");
+  if (procFdAvailable()) {
+    fd_ = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd_ >= 0) {
+      unnamed_ = true;
+      return;
+    }
+    // Not supported here (EOPNOTSUPP, EISDIR on old kernels): a named temporary instead; any
+    // other failure (no such folder, no permission) is the named one's too.
+  }
+  for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
+    tmp_ = uniqueSibling(dir, path.filename().string() + ".tmp");
     // O_EXCL | O_NOFOLLOW: a name that exists (a planted link included) is never opened.
-    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) throw std::runtime_error("cannot write " + tmp.string() + ": " + errnoText());
+    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ < 0 && errno != EEXIST) throw std::runtime_error("cannot write " + tmp_.string() + ": " + errnoText());
   }
-  if (fd < 0) throw std::runtime_error("cannot create a unique temporary beside " + path.string());
-  try {
-    writeAll(fd, content, tmp.string());
-  } catch (const std::runtime_error&) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw;
+  if (fd_ < 0) throw std::runtime_error("cannot create a unique temporary beside " + path.string());
+}
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_ && !tmp_.empty()) ::unlink(tmp_.c_str());
+}
+
+void AtomicFile::write(std::string_view bytes) {
+  writeAll(fd_, bytes, unnamed_ ? "a temporary for " + path_.string() : tmp_.string());
+}
+
+void AtomicFile::commit() { commitAs(path_); }
+
+void AtomicFile::commitAs(const std::filesystem::path& target) {
+  if (fd_ < 0) throw std::runtime_error("cannot write " + target.string() + ": the file was committed already");
+  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+  if (unnamed_) {
+    // Give the unnamed file a fresh hidden name beside the target (linkat through /proc, which
+    // needs no privilege), then rename that into place like a named temporary.
+    const std::string self = "/proc/self/fd/" + std::to_string(fd_);
+    for (int attempt = 0; attempt < 16 && tmp_.empty(); ++attempt) {
+      const std::filesystem::path name = uniqueSibling(dir, target.filename().string() + ".tmp");
+      if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) tmp_ = name;
+      else if (errno != EEXIST)
+        throw std::runtime_error("cannot write " + target.string() + ": " + errnoText());
+    }
+    if (tmp_.empty()) throw std::runtime_error("cannot create a unique temporary beside " + target.string());
   }
-  if (::close(fd) != 0) {
-    const std::string why = errnoText();
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + tmp.string() + ": " + why);
-  }
-  // rename() replaces a link at `path` by the file; it never follows it.
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string reason = errnoText();
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot rename into " + path.string() + ": " + reason);
-  }
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) throw std::runtime_error("cannot write " + tmp_.string() + ": " + errnoText());
+  // rename() replaces a link at `target` by the file; it never follows it.
+  if (::rename(tmp_.c_str(), target.c_str()) != 0)
+    throw std::runtime_error("cannot rename into " + target.string() + ": " + errnoText());
+  committed_ = true;
+}
+
+void writeFileAtomic(const std::filesystem::path& path, std::string_view content) {
+  AtomicFile file(path);
+  file.write(content);
+  file.commit();
 }
 
 int createFileExclusive(const std::filesystem::path& path) {

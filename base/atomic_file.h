@@ -10,6 +10,34 @@
 
 namespace candela {
 
+// A file written piece by piece and put in place by commit(): the writes go to a temporary in
+// `path`'s folder, an unnamed one (O_TMPFILE) where the file system has them, so that a process
+// killed before commit leaves nothing behind, else an exclusive hidden name (never through a
+// link). Destroyed before commit, or when commit fails, the temporary is removed and `path` is
+// untouched. For outputs too large to assemble in memory, and for files finished before the
+// folder they go into exists (commitAs).
+class AtomicFile {
+ public:
+  explicit AtomicFile(const std::filesystem::path& path);  // throws std::runtime_error
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  // Appends at the file offset (writeAll); throws std::runtime_error.
+  void write(std::string_view bytes);
+  // The temporary's descriptor, for writers that seek (until commit).
+  int descriptor() const { return fd_; }
+  // Closes the temporary and renames it to `path`; throws std::runtime_error.
+  void commit();
+  // The same, to `target` instead: a path in the same file system as `path`'s folder.
+  void commitAs(const std::filesystem::path& target);
+
+ private:
+  std::filesystem::path path_, tmp_;
+  int fd_ = -1;
+  bool unnamed_ = false;
+  bool committed_ = false;
+};
+
 // Writes `content` to `path` atomically (exclusive temporary + rename). Throws
 // std::runtime_error on an I/O failure; the target is then untouched. A symbolic link at `path`
 // is replaced by the file, never written through.

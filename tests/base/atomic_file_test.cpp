@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <csignal>
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace candela {
@@ -61,6 +64,56 @@ TEST(AtomicFile, FailureLeavesTheTargetUntouched) {
   EXPECT_EQ(slurp(d / "report.html"), "old");
   for (const auto& e : fs::directory_iterator(d))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "temporary left: " << e.path();
+}
+
+std::size_t entries(const fs::path& d) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(d)) ++n;
+  return n;
+}
+
+// Whether `d`'s file system has unnamed temporaries (O_TMPFILE): AtomicFile uses them where it
+// can, else a hidden exclusive name.
+bool unnamedTemporaries(const fs::path& d) {
+  const int fd = ::open(d.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0) return false;
+  ::close(fd);
+  return ::access("/proc/self/fd", X_OK) == 0;
+}
+
+// A file written piece by piece shows nothing in its folder until committed where the file
+// system has unnamed temporaries (else one hidden temporary), and can be committed into a folder
+// made after it was written.
+TEST(AtomicFile, PiecesThenCommitIntoAFolderMadeLater) {
+  const fs::path d = scratch("pieces");
+  AtomicFile f(d / "view.exr");
+  f.write("abc");
+  f.write("def");
+  EXPECT_EQ(entries(d), unnamedTemporaries(d) ? 0u : 1u);
+  fs::create_directories(d / "later");
+  f.commitAs(d / "later" / "view.exr");
+  EXPECT_EQ(slurp(d / "later" / "view.exr"), "abcdef");
+  EXPECT_EQ(entries(d), 1u);  // the folder only
+  EXPECT_THROW(f.commit(), std::runtime_error);  // once only
+}
+
+// Destroyed before commit, or its process killed: nothing is left.
+TEST(AtomicFile, UncommittedLeavesNothingEvenWhenKilled) {
+  const fs::path d = scratch("killed");
+  { AtomicFile f(d / "a.png"); f.write("x"); }
+  EXPECT_EQ(entries(d), 0u);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    AtomicFile f(d / "b.png");
+    f.write(std::string(1 << 20, 'x'));
+    ::kill(::getpid(), SIGKILL);  // no destructor runs
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  // Without unnamed temporaries a kill leaves the hidden one (docs/reliability.md).
+  EXPECT_EQ(entries(d), unnamedTemporaries(d) ? 0u : 1u);
 }
 
 }  // namespace
