@@ -299,7 +299,42 @@ bool isLine(const std::vector<int>& lines, int c) { return std::binary_search(li
 
 }  // namespace
 
-// About 125 lines: the coarse pass and the refinement passes share the lattice, the image and the
+LatticeInterval interpolationInterval(int size, int spacing, int c) {
+  // latticeLines(size, spacing) and intervalOf, in closed form: the interval [k s, min((k+1) s,
+  // size − 1)] holding c, and for the last pixel the last interval.
+  LatticeInterval r;
+  if (size <= 1) return r;
+  if (c >= size - 1) {
+    r.c0 = ((size - 2) / spacing) * spacing;
+    r.c1 = size - 1;
+  } else {
+    r.c0 = (c / spacing) * spacing;
+    r.c1 = std::min(r.c0 + spacing, size - 1);
+  }
+  r.f = r.c1 > r.c0 ? static_cast<double>(c - r.c0) / (r.c1 - r.c0) : 0.0;
+  return r;
+}
+
+namespace {
+
+// The four corners of pixel i's block on the lattice of spacing `spacing`, and their bilinear
+// weights, in the order (x0, y0), (x1, y0), (x0, y1), (x1, y1).
+struct Corners {
+  std::size_t pixel[4];
+  double weight[4];
+};
+
+Corners interpolationCorners(const Image& img, std::size_t i, int spacing) {
+  const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
+  const LatticeInterval ix = interpolationInterval(img.width, spacing, x), iy = interpolationInterval(img.height, spacing, y);
+  const double fx = ix.f, fy = iy.f;
+  return Corners{{img.index(ix.c0, iy.c0), img.index(ix.c1, iy.c0), img.index(ix.c0, iy.c1), img.index(ix.c1, iy.c1)},
+                 {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy}};
+}
+
+}  // namespace
+
+// About 130 lines: the coarse pass and the refinement passes share the lattice, the image and the
 // trace/store lambdas; a split would pass all of them.
 Image renderView(const Tracer& tracer, const View& view, const TraceSettings& settings, int threads,
                  const RenderSettings& render, const RenderProgress& progress, const Distribution& distribution) {
@@ -318,29 +353,33 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
   img.width = cam.width();
   img.height = cam.height();
   const std::size_t total = static_cast<std::size_t>(img.width) * img.height;
-  img.radiance.assign(total, Rgb(0.0));
-  img.luminance.assign(total, 0.0);
-  img.standardError.assign(total, 0.0);
+  img.radiance.assign(total, glm::vec3(0.0f));
+  img.luminance.assign(total, 0.0f);
+  img.standardError.assign(total, 0.0f);
   img.inside.assign(total, 0);
   img.traced.assign(total, 0);
+  img.interpolationLevel.assign(total, 0);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) img.inside[img.index(x, y)] = cam.pixelDirection(x, y) ? 1 : 0;
 
-  int step = 1;
-  while (step * 2 <= std::max(1, render.coarseStep)) step *= 2;
+  int step = 1, level = 0;
+  while (step * 2 <= std::max(1, render.coarseStep)) {
+    step *= 2;
+    ++level;
+  }
 
   std::atomic<std::size_t> rays{0}, settled{0};
   auto report = [&](std::size_t n) {
     if (progress) progress(settled.fetch_add(n, std::memory_order_relaxed) + n, total);
   };
   auto store = [&](std::size_t i, const PixelValue& p) {
-    img.radiance[i] = p.radiance;
-    img.luminance[i] = p.luminance;
-    img.standardError[i] = p.standardError;
+    img.radiance[i] = glm::vec3(p.radiance);
+    img.luminance[i] = static_cast<float>(p.luminance);
+    img.standardError[i] = static_cast<float>(p.standardError);
   };
-  // The pixels of a pass, shared between the processes: the next pass's refinement reads them
-  // (kShared). The last pass's pixels steer nothing (its interpolated pixels come from the
-  // lattice before it), so they go to the outputs only (kResult: shards split them).
+  // The pixels of a band of a pass, shared between the processes: the next pass's refinement
+  // reads them (kShared). The last pass's pixels steer nothing (its interpolated pixels come from
+  // the lattice before it), so they go to the outputs only (kResult: shards split them).
   std::vector<PixelValue> values;
   auto traceList = [&](const std::vector<std::size_t>& list, ItemUse use) {
     values.assign(list.size(), PixelValue{});
@@ -355,14 +394,39 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
       img.traced[list[k]] = 1;
     }
   };
+  // Pixels interpolated from the lattice of spacing 2^fromLevel (settled before this pass).
+  auto interpolate = [&](const std::vector<std::size_t>& list, int fromLevel) {
+    for (std::size_t i : list) {
+      if (!img.inside[i]) {
+        store(i, PixelValue{});
+        continue;
+      }
+      const Corners c = interpolationCorners(img, i, 1 << fromLevel);
+      PixelValue p;
+      for (int k = 0; k < 4; ++k) {
+        p.radiance += c.weight[k] * Rgb(img.radiance[c.pixel[k]]);
+        p.standardError += c.weight[k] * img.standardError[c.pixel[k]];
+      }
+      p.luminance = luminanceFromRadiance(p.radiance);
+      img.interpolationLevel[i] = static_cast<uint8_t>(fromLevel);
+      store(i, p);
+    }
+    report(list.size());
+  };
+  // A pass's pixels in bands of whole lattice rows of at least pixelsPerFill pixels (one band
+  // for images of up to that many), each band traced and interpolated before the next is listed.
+  std::vector<std::size_t> toTrace, toInterpolate;
+  auto bandFull = [&] { return toTrace.size() + toInterpolate.size() >= std::max<std::size_t>(1, render.pixelsPerFill); };
 
   // Pass 0: the coarse lattice.
   std::vector<int> xs = latticeLines(img.width, step), ys = latticeLines(img.height, step);
-  {
-    std::vector<std::size_t> list;
-    for (int y : ys)
-      for (int x : xs) list.push_back(img.index(x, y));
-    traceList(list, step > 1 ? ItemUse::kShared : ItemUse::kResult);
+  const ItemUse coarseUse = step > 1 ? ItemUse::kShared : ItemUse::kResult;
+  for (std::size_t r = 0; r < ys.size(); ++r) {
+    for (int x : xs) toTrace.push_back(img.index(x, ys[r]));
+    if (bandFull() || r + 1 == ys.size()) {
+      traceList(toTrace, coarseUse);
+      toTrace.clear();
+    }
   }
 
   // Refinement: halve the lattice spacing; the new pixels of a block whose corners disagree are
@@ -380,10 +444,11 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
         double lo = 1e300, hi = -1e300, mean = 0.0, se = 0.0;
         int in = 0;
         for (std::size_t i : c) {
-          lo = std::min(lo, img.luminance[i]);
-          hi = std::max(hi, img.luminance[i]);
-          mean += 0.25 * img.luminance[i];
-          se = std::max(se, img.standardError[i]);
+          const double l = img.luminance[i];
+          lo = std::min(lo, l);
+          hi = std::max(hi, l);
+          mean += 0.25 * l;
+          se = std::max(se, static_cast<double>(img.standardError[i]));
           in += img.inside[i];
         }
         const bool edge = in != 0 && in != 4;  // the fisheye's circle crosses the block
@@ -393,8 +458,9 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
         busy[static_cast<std::size_t>(by) * bw + bx] =
             edge || noisy || hi - lo > render.refineThreshold * mean + render.noiseAllowance * std::sqrt(2.0) * se;
       }
-    std::vector<std::size_t> toTrace, toInterpolate;
-    for (int y : nys)
+    const ItemUse use = half > 1 ? ItemUse::kShared : ItemUse::kResult;
+    for (std::size_t r = 0; r < nys.size(); ++r) {
+      const int y = nys[r];
       for (int x : nxs) {
         const bool oldX = isLine(xs, x), oldY = isLine(ys, y);
         if (oldX && oldY) continue;
@@ -406,39 +472,18 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
             anyBusy = anyBusy || busy[static_cast<std::size_t>(ky + dy) * bw + (kx + dx)];
         (anyBusy ? toTrace : toInterpolate).push_back(img.index(x, y));
       }
-    traceList(toTrace, half > 1 ? ItemUse::kShared : ItemUse::kResult);
-    for (std::size_t i : toInterpolate) {
-      const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
-      const int kx = intervalOf(xs, x), ky = intervalOf(ys, y);
-      const int x0 = xs[kx], x1 = xs[std::min<std::size_t>(kx + 1, xs.size() - 1)];
-      const int y0 = ys[ky], y1 = ys[std::min<std::size_t>(ky + 1, ys.size() - 1)];
-      const double fx = x1 > x0 ? static_cast<double>(x - x0) / (x1 - x0) : 0.0;
-      const double fy = y1 > y0 ? static_cast<double>(y - y0) / (y1 - y0) : 0.0;
-      const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
-      const std::size_t c[4] = {img.index(x0, y0), img.index(x1, y0), img.index(x0, y1), img.index(x1, y1)};
-      PixelValue p;
-      for (int k = 0; k < 4; ++k) {
-        p.radiance += w[k] * img.radiance[c[k]];
-        p.standardError += w[k] * img.standardError[c[k]];
+      // A band's pixels read only the old lattice: bands are independent within a pass.
+      if (bandFull() || r + 1 == nys.size()) {
+        traceList(toTrace, use);
+        interpolate(toInterpolate, level);
+        toTrace.clear();
+        toInterpolate.clear();
       }
-      p.luminance = luminanceFromRadiance(p.radiance);
-      if (!img.inside[i]) {
-        p = PixelValue{};
-      } else {
-        Image::Interpolation r;
-        r.pixel = static_cast<uint32_t>(i);
-        for (int k = 0; k < 4; ++k) {
-          r.corner[k] = static_cast<uint32_t>(c[k]);
-          r.weight[k] = w[k];
-        }
-        img.interpolations.push_back(r);
-      }
-      store(i, p);
     }
-    report(toInterpolate.size());
     xs = nxs;
     ys = nys;
     step = half;
+    --level;
   }
 
   for (uint8_t t : img.traced) img.tracedPixels += t;
@@ -447,40 +492,51 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
   return img;
 }
 
-double meanStandardError(const Image& img, const std::vector<double>& weights) {
-  if (img.samplesPerPixel < 2 || weights.size() != img.luminance.size()) return std::nan("");
-  // Each pixel's coefficient in the mean: an interpolated pixel's passes to its corners, the
-  // latest first (corners were settled before the pixels interpolated from them).
-  std::vector<double> c = weights;
+double meanStandardError(const Image& img, const PixelWeight& weight) {
+  const std::size_t n = static_cast<std::size_t>(img.width) * img.height;
+  if (img.samplesPerPixel < 2 || img.standardError.size() != n || img.interpolationLevel.size() != n)
+    return std::nan("");
+  // Each pixel's coefficient in the mean (float: 4 B a pixel); an interpolated pixel's passes to
+  // its corners, the finest level first (a level's corners were settled before it).
+  std::vector<float> c(n);
   double total = 0.0;
-  for (double w : weights) total += w;
-  if (!(total > 0.0)) return std::nan("");
-  for (auto it = img.interpolations.rbegin(); it != img.interpolations.rend(); ++it) {
-    const double ci = c[it->pixel];
-    c[it->pixel] = 0.0;
-    for (int k = 0; k < 4; ++k) c[it->corner[k]] += it->weight[k] * ci;
+  int levels = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = weight(i);
+    c[i] = static_cast<float>(w);
+    total += w;
+    levels = std::max<int>(levels, img.interpolationLevel[i]);
   }
+  if (!(total > 0.0)) return std::nan("");
+  for (int level = 1; level <= levels; ++level)
+    for (std::size_t i = n; i-- > 0;) {
+      if (img.interpolationLevel[i] != level) continue;
+      const double ci = c[i];
+      c[i] = 0.0f;
+      const Corners k = interpolationCorners(img, i, 1 << level);
+      for (int j = 0; j < 4; ++j) c[k.pixel[j]] = static_cast<float>(c[k.pixel[j]] + k.weight[j] * ci);
+    }
   double variance = 0.0;
-  for (std::size_t i = 0; i < c.size(); ++i)
-    if (img.traced[i]) variance += c[i] * c[i] * img.standardError[i] * img.standardError[i];
+  for (std::size_t i = 0; i < n; ++i)
+    if (img.traced[i]) {
+      const double ci = c[i], se = img.standardError[i];
+      variance += ci * ci * se * se;
+    }
   return std::sqrt(variance) / total;
 }
 
-ViewGeometry viewGeometry(const View& view) {
-  const Camera cam(view);
-  ViewGeometry g;
-  const std::size_t n = static_cast<std::size_t>(cam.width()) * cam.height();
-  g.directionView.assign(n, Vec3(0.0));
-  g.solidAngleSr.assign(n, 0.0);
-  for (int y = 0; y < cam.height(); ++y)
-    for (int x = 0; x < cam.width(); ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * cam.width() + x;
-      const auto d = cam.pixelDirection(x, y);
-      if (!d) continue;
-      g.directionView[i] = Vec3(glm::dot(*d, cam.right()), glm::dot(*d, cam.up()), glm::dot(*d, cam.forward()));
-      g.solidAngleSr[i] = cam.pixelSolidAngleSr(x, y);
-    }
-  return g;
+ViewGeometry::ViewGeometry(const View& view) : cam_(view) {}
+
+void ViewGeometry::operator()(std::size_t i, Vec3& directionView, double& solidAngleSr) const {
+  const int x = static_cast<int>(i % cam_.width()), y = static_cast<int>(i / cam_.width());
+  const auto d = cam_.pixelDirection(x, y);
+  if (!d) {
+    directionView = Vec3(0.0);
+    solidAngleSr = 0.0;
+    return;
+  }
+  directionView = Vec3(glm::dot(*d, cam_.right()), glm::dot(*d, cam_.up()), glm::dot(*d, cam_.forward()));
+  solidAngleSr = cam_.pixelSolidAngleSr(x, y);
 }
 
 std::vector<SeenLuminaire> seenLuminaires(const Tracer& tracer, const Vec3& eye, const Vec3& viewDirIn) {

@@ -15,29 +15,35 @@
 
 namespace candela {
 
-// A rendered view. Pixels are row-major, top row first.
+// A rendered view. Pixels are row-major, top row first. Values are held as 32-bit floats (the
+// precision of the EXR written from them): 22 bytes a pixel, 1.4 GiB for 8192 × 8192.
 struct Image {
   int width = 0, height = 0;
-  std::vector<Rgb> radiance;       // Radiance RGB radiance, W/sr/m²
-  std::vector<double> luminance;   // photopic luminance, cd/m² (179 · photopic(radiance))
-  std::vector<double> standardError;  // of each luminance, cd/m² (traced pixels: from their samples)
-  std::vector<uint8_t> inside;     // 1 where the pixel centre has a ray (0 outside a fisheye's circle)
-  std::vector<uint8_t> traced;     // 1 where the pixel was traced, 0 where interpolated
+  std::vector<glm::vec3> radiance;  // Radiance RGB radiance, W/sr/m²
+  std::vector<float> luminance;      // photopic luminance, cd/m² (179 · photopic(radiance))
+  std::vector<float> standardError;  // of each luminance, cd/m² (traced pixels: from their samples)
+  std::vector<uint8_t> inside;       // 1 where the pixel centre has a ray (0 outside a fisheye's circle)
+  std::vector<uint8_t> traced;       // 1 where the pixel was traced, 0 where interpolated
+  // How each interpolated pixel inside the image was made: bilinearly from the four corners of
+  // its block on the lattice of spacing 2^level (interpolationCorners), this level; 0 for traced
+  // pixels and pixels outside. What meanStandardError needs to carry their errors back to the
+  // traced pixels they came from.
+  std::vector<uint8_t> interpolationLevel;
   std::size_t tracedPixels = 0;
   std::size_t cameraRays = 0;
   int samplesPerPixel = 0;         // camera rays per traced pixel (its standard error needs 2 or more)
-  // How each interpolated pixel inside the image was made from four settled pixels (bilinear
-  // weights), in the order made: what meanStandardError needs to carry their errors back to the
-  // traced pixels they came from.
-  struct Interpolation {
-    uint32_t pixel = 0;
-    uint32_t corner[4] = {0, 0, 0, 0};
-    double weight[4] = {0.0, 0.0, 0.0, 0.0};
-  };
-  std::vector<Interpolation> interpolations;
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 };
+
+// The block of the refinement lattice of spacing `spacing` (lines at its multiples and at the
+// last pixel, size − 1) that pixel coordinate c is interpolated in: its lines c0 ≤ c ≤ c1, and
+// the weight of c1, f = (c − c0) / (c1 − c0) (0 when c0 = c1).
+struct LatticeInterval {
+  int c0 = 0, c1 = 0;
+  double f = 0.0;
+};
+LatticeInterval interpolationInterval(int size, int spacing, int c);
 
 struct RenderSettings {
   int samplesPerPixel = 4;        // camera rays per traced pixel, stratified over the pixel
@@ -66,6 +72,10 @@ struct RenderSettings {
   // Photometric luminaires have no geometry: draw their luminous openings (L = I / projected
   // area) so that they appear in images and glare evaluations.
   bool showLuminaires = true;
+  // Pixels traced or interpolated per fill (base/distribution.h): a pass goes out in bands of
+  // whole lattice rows of about this many pixels, so that the pass's lists and values stay
+  // bounded whatever the image's size. The image does not depend on it.
+  std::size_t pixelsPerFill = std::size_t{1} << 20;
 };
 
 // Called with the number of pixels settled (traced or interpolated) so far, of `total`;
@@ -83,20 +93,25 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
                  const Distribution& distribution = localDistribution());
 
 // Standard error (cd/m²) of the weighted mean Σ wᵢ Lᵢ / Σ wᵢ of the image's luminances
-// (`weights` one per pixel, e.g. solid angles; 0 leaves a pixel out), from the traced pixels'
+// (`weight(i)` for pixel i, e.g. its solid angle; 0 leaves a pixel out), from the traced pixels'
 // standard errors (independent: each pixel its own random stream) with every interpolated pixel's
 // weight carried back to the traced pixels it came from. Monte Carlo noise only: the error of
 // interpolating between lattice points is not in it. NaN when the traced pixels have fewer than
 // two camera rays each (no spread to estimate from) or the weights sum to 0.
-double meanStandardError(const Image& img, const std::vector<double>& weights);
+using PixelWeight = std::function<double(std::size_t pixel)>;
+double meanStandardError(const Image& img, const PixelWeight& weight);
 
-// Direction (view frame: x right, y up, z forward) and solid angle (sr) of every pixel centre of
-// a view, for glare evaluations from the image; pixels without a ray get solid angle 0.
-struct ViewGeometry {
-  std::vector<Vec3> directionView;
-  std::vector<double> solidAngleSr;
+// Direction (view frame: x right, y up, z forward) and solid angle (sr) of each pixel centre of
+// a view, for glare evaluations from the image, computed when asked (an 8k image's geometry
+// would take 2 GiB); pixels without a ray get a zero direction and solid angle 0.
+class ViewGeometry {
+ public:
+  explicit ViewGeometry(const View& view);
+  void operator()(std::size_t pixel, Vec3& directionView, double& solidAngleSr) const;
+
+ private:
+  Camera cam_;
 };
-ViewGeometry viewGeometry(const View& view);
 
 // A photometric luminaire as the eye at `eye` sees it: the luminous opening's mean luminance
 // towards the eye, I(dir to eye) / projected area, and its solid angle (projected area / d²).

@@ -61,46 +61,54 @@ double daylightGlareProbability(double ev, const std::vector<GlareSource>& sourc
   return std::min(dgp, 1.0);
 }
 
-ImageGlare evaluateImageGlare(const std::vector<double>& lum, const std::vector<Vec3>& dir,
-                              const std::vector<double>& omega, int width, int height, const GlareDetection& det) {
+ImageGlare evaluateImageGlare(const std::vector<float>& lum, const PixelGeometry& geometry, int width, int height,
+                              const GlareDetection& det) {
   ImageGlare out;
   const std::size_t n = static_cast<std::size_t>(width) * height;
   double sumOmega = 0.0, sumLOmega = 0.0;
+  Vec3 dir;
+  double omega = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(omega[i] > 0.0)) continue;
-    sumOmega += omega[i];
-    sumLOmega += lum[i] * omega[i];
-    const double cosTheta = glm::normalize(dir[i]).z;
-    if (cosTheta > 0.0) out.verticalIlluminanceLux += lum[i] * cosTheta * omega[i];
+    geometry(i, dir, omega);
+    if (!(omega > 0.0)) continue;
+    sumOmega += omega;
+    sumLOmega += lum[i] * omega;
+    const double cosTheta = glm::normalize(dir).z;
+    if (cosTheta > 0.0) out.verticalIlluminanceLux += lum[i] * cosTheta * omega;
   }
   out.averageLuminanceCdM2 = sumOmega > 0.0 ? sumLOmega / sumOmega : 0.0;
   out.thresholdCdM2 = det.thresholdCdM2 > 0.0 ? det.thresholdCdM2 : det.averageFactor * out.averageLuminanceCdM2;
 
-  // 8-connected groups of pixels above the threshold (iterative flood fill).
-  std::vector<int> label(n, -1);
+  // 8-connected groups of pixels above the threshold (iterative flood fill; a bit a pixel for
+  // the pixels already grouped).
+  std::vector<bool> grouped(n, false);
   std::vector<std::size_t> stack;
-  auto bright = [&](std::size_t i) { return omega[i] > 0.0 && lum[i] > out.thresholdCdM2 && dir[i].z > 0.0; };
+  auto bright = [&](std::size_t i) {
+    if (!(lum[i] > out.thresholdCdM2)) return false;
+    geometry(i, dir, omega);
+    return omega > 0.0 && dir.z > 0.0;
+  };
   for (std::size_t seed = 0; seed < n; ++seed) {
-    if (label[seed] >= 0 || !bright(seed)) continue;
-    const int id = static_cast<int>(out.sources.size());
+    if (grouped[seed] || !bright(seed)) continue;
     double w = 0.0, lw = 0.0;
     Vec3 dsum(0.0);
     stack.assign(1, seed);
-    label[seed] = id;
+    grouped[seed] = true;
     while (!stack.empty()) {
       const std::size_t i = stack.back();
       stack.pop_back();
-      w += omega[i];
-      lw += lum[i] * omega[i];
-      dsum += omega[i] * glm::normalize(dir[i]);
+      geometry(i, dir, omega);
+      w += omega;
+      lw += lum[i] * omega;
+      dsum += omega * glm::normalize(dir);
       const int x = static_cast<int>(i % width), y = static_cast<int>(i / width);
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int nx = x + dx, ny = y + dy;
           if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
           const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
-          if (label[j] < 0 && bright(j)) {
-            label[j] = id;
+          if (!grouped[j] && bright(j)) {
+            grouped[j] = true;
             stack.push_back(j);
           }
         }

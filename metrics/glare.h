@@ -6,6 +6,7 @@
 #include "base/math.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace candela {
@@ -64,12 +65,15 @@ struct ImageGlare {
   double dgpUncorrected = 0.0;          // without the low-light correction
 };
 
-// Evaluates a luminance image given each pixel's luminance (cd/m²), view-frame direction and
-// solid angle (sr; 0 for pixels without a ray), all row-major, width × height. A source's
-// luminance is its pixels' solid-angle weighted mean, its position index that of its
-// solid-angle weighted mean direction.
-ImageGlare evaluateImageGlare(const std::vector<double>& luminanceCdM2, const std::vector<Vec3>& directionView,
-                              const std::vector<double>& solidAngleSr, int width, int height,
-                              const GlareDetection& detection = {});
+// A pixel's view-frame direction (x right, y up, z forward; need not be unit) and solid angle
+// (sr; 0 for a pixel without a ray), by row-major index: computed when asked, so that a large
+// image needs no geometry arrays.
+using PixelGeometry = std::function<void(std::size_t pixel, Vec3& directionView, double& solidAngleSr)>;
+
+// Evaluates a luminance image given each pixel's luminance (cd/m², row-major, width × height)
+// and geometry. A source's luminance is its pixels' solid-angle weighted mean, its position
+// index that of its solid-angle weighted mean direction.
+ImageGlare evaluateImageGlare(const std::vector<float>& luminanceCdM2, const PixelGeometry& geometry, int width,
+                              int height, const GlareDetection& detection = {});
 
 }  // namespace candela

@@ -10,79 +10,112 @@
 
 #include "base/atomic_file.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstddef>
 #include <cstring>
+#include <unistd.h>
 #include <stdexcept>
 
 namespace candela {
 
 namespace {
 
-// The file's bytes in memory, so that they reach the disk through writeFileAtomic (an exclusive
-// temporary, never through a link) like every other output.
-class MemoryStream : public Imf::OStream {
+// The file as OpenEXR writes it: straight into an exclusive temporary (AtomicFile), so that a
+// large image never sits in memory encoded; OpenEXR seeks back once to write its line offsets.
+class FileStream : public Imf::OStream {
  public:
-  MemoryStream() : Imf::OStream("memory") {}
+  explicit FileStream(AtomicFile& file) : Imf::OStream("exr"), file_(file) {}
   void write(const char c[], int n) override {
-    if (pos_ + n > bytes_.size()) bytes_.resize(pos_ + n);
-    std::memcpy(bytes_.data() + pos_, c, static_cast<std::size_t>(n));
-    pos_ += static_cast<std::size_t>(n);
+    try {
+      file_.write(std::string_view(c, static_cast<std::size_t>(n)));
+    } catch (const std::exception& e) {
+      failure_ = e.what();
+      throw;
+    }
   }
-  uint64_t tellp() override { return pos_; }
-  void seekp(uint64_t pos) override { pos_ = static_cast<std::size_t>(pos); }
-  const std::string& bytes() const { return bytes_; }
+  // What went wrong, if anything: OpenEXR's destructor writes the line offsets and swallows
+  // an error there.
+  const std::string& failure() const { return failure_; }
+  uint64_t tellp() override { return static_cast<uint64_t>(::lseek(file_.descriptor(), 0, SEEK_CUR)); }
+  void seekp(uint64_t pos) override {
+    if (::lseek(file_.descriptor(), static_cast<off_t>(pos), SEEK_SET) < 0)
+      throw std::runtime_error(std::string("cannot seek: ") + std::strerror(errno));
+  }
 
  private:
-  std::string bytes_;
-  std::size_t pos_ = 0;
+  AtomicFile& file_;
+  std::string failure_;
 };
+
+// Scanlines converted and written per block of this many rows (16 KiB a row at 8192 px).
+constexpr int kRowsPerBlock = 64;
 
 }  // namespace
 
-void writeLuminanceExr(const std::filesystem::path& path, int width, int height,
-                       const std::vector<double>& luminance, const std::vector<Rgb>& rgb, const std::string& comment) {
+void writeLuminanceExr(AtomicFile& out, const std::string& name, int width, int height,
+                       const std::vector<float>& luminance, const std::vector<glm::vec3>& rgb, double rgbScale,
+                       const std::string& comment) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   if (width <= 0 || height <= 0 || luminance.size() != n || (!rgb.empty() && rgb.size() != n))
     throw std::invalid_argument("writeLuminanceExr: need width × height values");
-  std::vector<float> y(n), r, g, b;
-  for (std::size_t i = 0; i < n; ++i) y[i] = static_cast<float>(luminance[i]);
-  if (!rgb.empty()) {
-    r.resize(n);
-    g.resize(n);
-    b.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      r[i] = static_cast<float>(rgb[i].x);
-      g[i] = static_cast<float>(rgb[i].y);
-      b[i] = static_cast<float>(rgb[i].z);
-    }
-  }
-
   Imf::Header header(width, height);
   header.compression() = Imf::ZIP_COMPRESSION;
   header.insert(kExrUnitAttribute, Imf::StringAttribute(kExrLuminanceUnit));
   Imf::addWhiteLuminance(header, 1.0f);
   if (!comment.empty()) Imf::addComments(header, comment);
-  Imf::FrameBuffer fb;
-  const std::size_t xs = sizeof(float), ys = sizeof(float) * static_cast<std::size_t>(width);
-  auto add = [&](const char* name, std::vector<float>& v) {
+  const int channels = rgb.empty() ? 1 : 4;
+  for (const char* name : {"Y", "R", "G", "B"}) {
     header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    fb.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(v.data()), xs, ys));
-  };
-  add("Y", y);
-  if (!rgb.empty()) {
-    add("R", r);
-    add("G", g);
-    add("B", b);
+    if (channels == 1) break;
   }
-
-  MemoryStream stream;
+  // One block of rows at a time: Y, R, G, B interleaved per pixel.
+  std::vector<float> block(static_cast<std::size_t>(width) * kRowsPerBlock * channels);
+  const std::size_t xs = sizeof(float) * channels, ys = xs * static_cast<std::size_t>(width);
   try {
-    Imf::OutputFile file(stream, header);
-    file.setFrameBuffer(fb);
-    file.writePixels(height);
+    FileStream stream(out);
+    {
+      Imf::OutputFile file(stream, header);
+      for (int y0 = 0; y0 < height; y0 += kRowsPerBlock) {
+        const int rows = std::min(kRowsPerBlock, height - y0);
+        for (std::size_t k = 0; k < static_cast<std::size_t>(rows) * width; ++k) {
+          const std::size_t i = static_cast<std::size_t>(y0) * width + k;
+          float* p = block.data() + k * channels;
+          p[0] = luminance[i];
+          if (channels == 1) continue;
+          for (int c = 0; c < 3; ++c) p[1 + c] = static_cast<float>(rgbScale * static_cast<double>(rgb[i][c]));
+        }
+        // The frame buffer's origin is row 0: the block's pointer less y0 rows.
+        char* base = reinterpret_cast<char*>(block.data()) - static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(ys);
+        Imf::FrameBuffer fb;
+        const char* names[] = {"Y", "R", "G", "B"};
+        for (int c = 0; c < channels; ++c)
+          fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
+        file.setFrameBuffer(fb);
+        file.writePixels(rows);
+      }
+    }
+    if (!stream.failure().empty()) throw std::runtime_error(stream.failure());
   } catch (const std::exception& e) {
-    throw std::runtime_error("cannot write " + path.string() + ": " + e.what());
+    throw std::runtime_error("cannot write " + name + ": " + e.what());
   }
-  writeFileAtomic(path, stream.bytes());
+}
+
+void writeLuminanceExr(const std::filesystem::path& path, int width, int height, const std::vector<float>& luminance,
+                       const std::vector<glm::vec3>& rgb, double rgbScale, const std::string& comment) {
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  if (width <= 0 || height <= 0 || luminance.size() != n || (!rgb.empty() && rgb.size() != n))
+    throw std::invalid_argument("writeLuminanceExr: need width × height values");
+  try {
+    AtomicFile out(path);
+    writeLuminanceExr(out, path.string(), width, height, luminance, rgb, rgbScale, comment);
+    out.commit();
+  } catch (const std::invalid_argument&) {
+    throw;
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    throw std::runtime_error(what.rfind("cannot write", 0) == 0 ? what : "cannot write " + path.string() + ": " + what);
+  }
 }
 
 }  // namespace candela

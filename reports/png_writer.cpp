@@ -81,9 +81,48 @@ const Glyph& glyphFor(char c) {
   return kUnknown;
 }
 
-void appendBytes(png_structp png, png_bytep data, png_size_t length) {
-  auto* out = static_cast<std::vector<uint8_t>*>(png_get_io_ptr(png));
-  out->insert(out->end(), data, data + length);
+// Where libpng's bytes go: a vector, or a file being written (an error there is kept and
+// reported through png_error, which longjmps back: no C++ exception crosses libpng's C frames).
+struct PngSink {
+  std::vector<uint8_t>* bytes = nullptr;
+  AtomicFile* file = nullptr;
+  std::string error;
+};
+
+void sinkBytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+  if (sink->bytes) {
+    sink->bytes->insert(sink->bytes->end(), data, data + length);
+    return;
+  }
+  try {
+    sink->file->write(std::string_view(reinterpret_cast<const char*>(data), length));
+  } catch (const std::exception& e) {
+    sink->error = e.what();
+    png_error(png, "write failed");
+  }
+}
+
+void flushNothing(png_structp) {}
+
+// 8-bit RGB, no interlace, sRGB chunk; a row at a time into `sink`.
+void encodePngTo(const Image8& image, PngSink& sink) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) throw std::runtime_error("libpng: cannot create write struct");
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error(sink.error.empty() ? "libpng: encoding failed" : sink.error);
+  }
+  png_set_write_fn(png, &sink, sinkBytes, flushNothing);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y)
+    png_write_row(png, const_cast<png_bytep>(image.rgb.data() + static_cast<std::size_t>(y) * image.width * 3));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
 }
 
 }  // namespace
@@ -102,7 +141,7 @@ void drawText(Image8& image, int x, int y, const std::string& text, Rgb8 color, 
   }
 }
 
-Image8 falseColorImage(const std::vector<double>& values, int width, int height, const ColorScale& scale,
+Image8 falseColorImage(const std::vector<float>& values, int width, int height, const ColorScale& scale,
                        const std::string& unit) {
   if (width <= 0 || height <= 0 || values.size() != static_cast<std::size_t>(width) * height)
     throw std::invalid_argument("falseColorImage: need width × height values");
@@ -137,28 +176,22 @@ Image8 falseColorImage(const std::vector<double>& values, int width, int height,
 
 std::vector<uint8_t> encodePng(const Image8& image) {
   std::vector<uint8_t> out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  if (!png) throw std::runtime_error("libpng: cannot create write struct");
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("libpng: encoding failed");
-  }
-  png_set_write_fn(png, &out, appendBytes, nullptr);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y)
-    png_write_row(png, const_cast<png_bytep>(image.rgb.data() + static_cast<std::size_t>(y) * image.width * 3));
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
+  PngSink sink;
+  sink.bytes = &out;
+  encodePngTo(image, sink);
   return out;
 }
 
+void writePng(AtomicFile& out, const Image8& image) {
+  PngSink sink;
+  sink.file = &out;
+  encodePngTo(image, sink);
+}
+
 void writePng(const std::filesystem::path& path, const Image8& image) {
-  const std::vector<uint8_t> bytes = encodePng(image);
-  writeFileAtomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  AtomicFile file(path);
+  writePng(file, image);
+  file.commit();
 }
 
 }  // namespace candela

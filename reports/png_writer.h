@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "reports/falsecolor.h"
 
 namespace candela {
@@ -31,13 +32,15 @@ int textWidth(const std::string& text, int scale = 1);
 
 // A false-colour picture of `values` (row-major, `width` × `height`, top row first) with a
 // legend to the right: colour bar, tick values and the unit.
-Image8 falseColorImage(const std::vector<double>& values, int width, int height, const ColorScale& scale,
+Image8 falseColorImage(const std::vector<float>& values, int width, int height, const ColorScale& scale,
                        const std::string& unit);
 
 // PNG bytes of the image (8-bit RGB, no interlace).
 std::vector<uint8_t> encodePng(const Image8& image);
 
-// Writes the image as a PNG, atomically. Throws std::runtime_error on failure.
+// Writes the image as a PNG, atomically, a row at a time (no encoded copy in memory). Throws std::runtime_error on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);
+// The same into `out`, left uncommitted (its caller commits it).
+void writePng(AtomicFile& out, const Image8& image);
 
 }  // namespace candela

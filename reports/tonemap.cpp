@@ -19,7 +19,7 @@ uint8_t srgb8(double v) {
 
 }  // namespace
 
-Image8 toneMap(int width, int height, const std::vector<double>& lum, const std::vector<Rgb>& rgb,
+Image8 toneMap(int width, int height, const std::vector<float>& lum, const std::vector<glm::vec3>& rgb,
                const std::vector<uint8_t>& mask, double key) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   if (width <= 0 || height <= 0 || lum.size() != n || (!rgb.empty() && rgb.size() != n) ||
@@ -32,7 +32,7 @@ Image8 toneMap(int width, int height, const std::vector<double>& lum, const std:
   std::size_t count = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!in(i)) continue;
-    const double l = std::max(lum[i], 0.0);
+    const double l = std::max<double>(lum[i], 0.0);
     logSum += std::log(kDelta + l);
     maxL = std::max(maxL, l);
     ++count;
@@ -48,24 +48,25 @@ Image8 toneMap(int width, int height, const std::vector<double>& lum, const std:
     for (int x = 0; x < width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * width + x;
       if (!in(i)) continue;
-      const double l = std::max(lum[i], 0.0);
+      const double l = std::max<double>(lum[i], 0.0);
       const double ls = scale * l;
       const double ld = ls * (1.0 + ls / (white * white)) / (1.0 + ls);
       Rgb c(ld);
       if (!rgb.empty() && l > 0.0) {
         // RGB relative to its photopic value, times the displayed luminance.
-        const double p = photopic(rgb[i]);
-        c = p > 0.0 ? rgb[i] * (ld / p) : Rgb(ld);
+        const Rgb ci(rgb[i]);
+        const double p = photopic(ci);
+        c = p > 0.0 ? ci * (ld / p) : Rgb(ld);
       }
       img.set(x, y, Rgb8{srgb8(c.x), srgb8(c.y), srgb8(c.z)});
     }
   return img;
 }
 
-ColorScale luminanceScale(const std::vector<double>& lum, bool logarithmic, std::optional<double> minCdM2,
+ColorScale luminanceScale(const std::vector<float>& lum, bool logarithmic, std::optional<double> minCdM2,
                           std::optional<double> maxCdM2) {
   double hi = 0.0, loPos = 1e300;
-  for (double l : lum) {
+  for (const double l : lum) {
     if (!std::isfinite(l)) continue;
     hi = std::max(hi, l);
     if (l > 0.0) loPos = std::min(loPos, l);
@@ -88,19 +89,38 @@ ColorScale luminanceScale(const std::vector<double>& lum, bool logarithmic, std:
   return s;
 }
 
-Image8 luminanceFalseColor(int width, int height, const std::vector<double>& lum, const ColorScale& scale) {
+Image8 luminanceFalseColor(int width, int height, const std::vector<float>& lum, const ColorScale& scale) {
   return falseColorImage(lum, width, height, scale, "cd/m2");
 }
 
-ViewImagePaths writeViewImages(const std::filesystem::path& dir, const std::string& stem, int width, int height,
-                               const std::vector<double>& lum, const std::vector<Rgb>& rgb,
-                               const std::vector<uint8_t>& mask, const ColorScale& scale, const std::string& comment) {
+ViewImagePaths ViewImageFiles::commitInto(const std::filesystem::path& dir) {
   ViewImagePaths p{dir / (stem + ".exr"), dir / (stem + ".png"), dir / (stem + "_preview.png")};
-  std::filesystem::create_directories(dir);
-  writeLuminanceExr(p.exr, width, height, lum, rgb, comment);
-  writePng(p.falseColor, luminanceFalseColor(width, height, lum, scale));
-  writePng(p.preview, toneMap(width, height, lum, rgb, mask));
+  exr->commitAs(p.exr);
+  falseColor->commitAs(p.falseColor);
+  preview->commitAs(p.preview);
   return p;
+}
+
+ViewImageFiles writeViewImageFiles(const std::filesystem::path& dir, const std::string& stem, int width, int height,
+                                   const std::vector<float>& lum, const std::vector<glm::vec3>& rgb, double rgbScale,
+                                   const std::vector<uint8_t>& mask, const ColorScale& scale,
+                                   const std::string& comment) {
+  std::filesystem::create_directories(dir);
+  ViewImageFiles f;
+  f.stem = stem;
+  f.exr = std::make_unique<AtomicFile>(dir / (stem + ".exr"));
+  writeLuminanceExr(*f.exr, stem + ".exr", width, height, lum, rgb, rgbScale, comment);
+  f.falseColor = std::make_unique<AtomicFile>(dir / (stem + ".png"));
+  writePng(*f.falseColor, luminanceFalseColor(width, height, lum, scale));
+  f.preview = std::make_unique<AtomicFile>(dir / (stem + "_preview.png"));
+  writePng(*f.preview, toneMap(width, height, lum, rgb, mask));
+  return f;
+}
+
+ViewImagePaths writeViewImages(const std::filesystem::path& dir, const std::string& stem, int width, int height,
+                               const std::vector<float>& lum, const std::vector<glm::vec3>& rgb, double rgbScale,
+                               const std::vector<uint8_t>& mask, const ColorScale& scale, const std::string& comment) {
+  return writeViewImageFiles(dir, stem, width, height, lum, rgb, rgbScale, mask, scale, comment).commitInto(dir);
 }
 
 }  // namespace candela

@@ -200,13 +200,27 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   }
   data.warnings = warnings;
   const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
-  std::vector<ViewResult> views;
+  // Each view's pictures are written as soon as it is rendered, as unnamed temporaries beside the
+  // result folder (base/atomic_file.h: a killed run leaves nothing), so that one image at a time
+  // is in memory; they go into the result folder with everything else when it is committed.
+  const Distribution& processes = run.request.processes();
+  const std::string comment = "candela " + std::string(CANDELA_VERSION) + ", case " + c.name;
+  const std::filesystem::path beside =
+      std::filesystem::absolute(run.outDir).parent_path();  // the result folder's file system
+  std::vector<ViewImageFiles> pictures;
   for (const ViewSpec& view : c.views) {
     ViewOptions options;
-    options.distribution = &run.request.processes();
-    views.push_back(computeView(*scene, tracer, view, trace.settings, trace.threads, options, observer));
-    checkFinite(views.back().image.luminance, "view '" + view.name + "'");
-    data.views.push_back(viewReport(views.back()));
+    options.distribution = &processes;
+    const ViewResult v = computeView(*scene, tracer, view, trace.settings, trace.threads, options, observer);
+    checkFinite(v.image.luminance, "view '" + view.name + "'");
+    data.views.push_back(viewReport(v));
+    if (processes.writesOutputs()) {
+      try {
+        pictures.push_back(writeViewFiles(beside, v, comment));
+      } catch (const std::exception& e) {
+        throw InputError(FileLoc{run.outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+      }
+    }
   }
   data.run.runTimeS = secondsSince(run.start);
 
@@ -217,8 +231,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
       if (grids[gi].spec->daylightFactor) extra.push_back({"daylight_factor_pct", data.grids[gi].values});
       writeGridCsv(dir, grids[gi].spec->name, values[gi].points, values[gi].lux, extra);
     }
-    for (const ViewResult& v : views)
-      writeViewResult(dir, v, "candela " + std::string(CANDELA_VERSION) + ", case " + c.name);
+    for (ViewImageFiles& p : pictures) p.commitInto(dir);
     writeSummaryCsv(dir, data);
     writeFileAtomic(dir / "summary.json", summaryJsonWithSpacing(data, grids));
     writeHtmlReport(dir / "report.html", data);

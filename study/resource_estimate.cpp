@@ -41,6 +41,12 @@ constexpr double kCacheRaysPerLookup = 8.0;
 // of a matte surface's irradiance estimate, measured on a 1024 × 1024 view of the small room
 // (36.7 µs of CPU per camera ray with 64 samples) and the test views.
 constexpr double kTracedPixelFraction = 0.7;
+// A pixel of a band of a render pass: its index and, when traced, its value (radiance,
+// luminance and standard error as doubles). Under MPI the values gathered from the other
+// ranks arrive in place of this process's own.
+constexpr uint64_t kBandBytesPerPixel = sizeof(std::size_t) + 5 * sizeof(double);
+// The report's copy of a view's pictures is at most 2048 px across (study/view_study.cpp).
+constexpr uint64_t kReportPicturePixels = 2048ull * 2048ull;
 constexpr double kRaysPerIrradianceSample = 1.0;
 // One path vertex's light selection evaluates every source's importance (engine/light_selection.h):
 // a fraction of a ray's cost each, fitted to a 100 × 100 luminaire array over 6 points at draft
@@ -137,19 +143,15 @@ uint64_t bytesPerInputPoint(const TraceSettings& s) {
   return 2 * 60 + sizeof(SensorPoint) + sizeof(IrradianceEstimate) + kCsvRowBytes + (cache ? kCacheBytesPerPoint : 0);
 }
 
-uint64_t bytesPerPixel(bool keptForReport) {
-  // Kept till the pictures are written: Image (engine/render.h: radiance, luminance, standard
-  // error, inside, traced) and the colour luminance per pixel (ViewResult::rgbCdM2).
-  const uint64_t kept = sizeof(Rgb) + 2 * sizeof(double) + 2 * sizeof(uint8_t) + sizeof(Rgb);
-  // At most one of these phases at a time: rendering (the pixel list of a refinement pass), the
-  // glare rating (view geometry: direction and solid angle; the glare labels), writing (the
-  // EXR's float channels Y, R, G, B with its encoded bytes, and the two 8-bit pictures).
-  const uint64_t rendering = sizeof(std::size_t);
-  const uint64_t glare = sizeof(Vec3) + sizeof(double) + sizeof(int);
-  const uint64_t writing = 2 * 4 * sizeof(float) + 2 * 3;
-  const uint64_t transient = std::max({rendering, glare, writing});
-  // `run` keeps each view's PNGs for the report too (a few bytes a pixel, compressed).
-  return kept + transient + (keptForReport ? 2 * 3 : 0);
+uint64_t bytesPerPixel() {
+  // Kept till the pictures are written: Image (engine/render.h: float radiance, luminance and
+  // standard error; inside, traced and interpolation level, a byte each).
+  const uint64_t kept = 3 * sizeof(float) + 2 * sizeof(float) + 3 * sizeof(uint8_t);
+  // At most one of these phases at a time: a mean's standard error (a float coefficient a
+  // pixel), the glare rating (a bit a pixel), writing (one 8-bit picture; the EXR goes a block of
+  // rows at a time).
+  const uint64_t transient = std::max<uint64_t>(sizeof(float), 3);
+  return kept + transient;
 }
 
 uint64_t sceneBytes(const Scene& scene) {
@@ -212,13 +214,22 @@ uint64_t annualGridBytes(uint64_t sensors, uint64_t hours) {
   return sensors * perSensor + hours * (sizeof(int) + sizeof(char) + sizeof(double));
 }
 
+uint64_t viewReportBytes(const ViewSpec& view) {
+  const uint64_t pixels = static_cast<uint64_t>(view.resolution.x) * static_cast<uint64_t>(view.resolution.y);
+  return std::min(pixels, kReportPicturePixels) * 6;
+}
+
 MemoryItem viewMemory(const ViewSpec& view, bool keptForReport) {
   MemoryItem m;
   m.what = "view '" + view.name + "'";
   m.loc = view.loc;
   const uint64_t pixels = static_cast<uint64_t>(view.resolution.x) * static_cast<uint64_t>(view.resolution.y);
-  const uint64_t per = bytesPerPixel(keptForReport);
-  m.bytes = pixels * per;
+  const uint64_t per = bytesPerPixel();
+  // A band of a pass (RenderSettings::pixelsPerFill pixels at most): its pixel list and values.
+  // `run` keeps the report's two pictures
+  // (compressed PNG, at most 2048 px across: a few bytes a pixel).
+  const uint64_t band = std::min<uint64_t>(pixels, RenderSettings{}.pixelsPerFill) * kBandBytesPerPixel;
+  m.bytes = pixels * per + band + (keptForReport ? viewReportBytes(view) : 0);
   m.detail = std::to_string(view.resolution.x) + " x " + std::to_string(view.resolution.y) + " pixels x " +
              std::to_string(per) + " B";
   return m;
@@ -274,8 +285,19 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   const double batches = expectedBatchesPerPoint(s);
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires)});
   addLuminaires(e, c);
-  for (const ViewSpec& v : c.views) {
-    e.memory.push_back(viewMemory(v, true));
+  // Views are rendered and written one at a time (study/grid_study.cpp): the largest one's pixels
+  // and every view's pictures for the report.
+  std::size_t largest = 0;
+  for (std::size_t k = 0; k < c.views.size(); ++k)
+    if (viewMemory(c.views[k], true).bytes > viewMemory(c.views[largest], true).bytes) largest = k;
+  for (std::size_t k = 0; k < c.views.size(); ++k) {
+    const ViewSpec& v = c.views[k];
+    MemoryItem m = viewMemory(v, true);
+    if (k != largest) {
+      m.bytes = viewReportBytes(v);
+      m.detail = "its pictures in the report";
+    }
+    e.memory.push_back(std::move(m));
     e.work.push_back({"rendering " + v.name, viewRays(v, ViewWork{}, s, n.sampled, n.luminaires)});
   }
   return e;

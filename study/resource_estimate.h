@@ -71,7 +71,8 @@ std::string formatBytes(uint64_t bytes);
 // The cache's records count where computeIrradiance builds one (method cache, bounces > 0).
 uint64_t bytesPerGridPoint(const TraceSettings& s);   // a point of a point-in-time grid (run)
 uint64_t bytesPerInputPoint(const TraceSettings& s);  // a point of `candela points`
-uint64_t bytesPerPixel(bool keptForReport);  // a pixel of a view (run keeps every view till writing)
+uint64_t bytesPerPixel();  // a pixel of a view (one view at a time is in memory)
+uint64_t viewReportBytes(const ViewSpec& view);  // the report's pictures of a view (run)
 uint64_t sceneBytes(const Scene& scene);
 // The case's luminaires as one item at the first [[luminaire]]'s line (none without luminaires).
 void addLuminaires(ResourceEstimate& e, const CaseFile& c);

@@ -16,23 +16,30 @@ ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const Tra
   g.backgroundCdM2 = eye.backgroundLuminanceCdM2();
   g.ugr = g.sources.empty() ? 0.0 : unifiedGlareRating(g.backgroundCdM2, g.sources);
   if (view.type == ViewType::kFisheye) {
-    const ViewGeometry geo = viewGeometry(view);
+    const ViewGeometry geo(view);
     GlareDetection det;
     det.thresholdCdM2 = glareThresholdCdM2;
-    g.dgp = evaluateImageGlare(img.luminance, geo.directionView, geo.solidAngleSr, img.width, img.height, det);
+    g.dgp = evaluateImageGlare(img.luminance, geo, img.width, img.height, det);
     // The pixels evaluateImageGlare groups into sources (metrics/glare.cpp: inside, above the
     // threshold, in front of the eye), all together.
-    std::vector<double> w(img.luminance.size(), 0.0);
+    const double threshold = g.dgp->thresholdCdM2;
+    auto sourceWeight = [&](std::size_t i) {
+      if (!(img.luminance[i] > threshold)) return 0.0;
+      Vec3 dir;
+      double omega = 0.0;
+      geo(i, dir, omega);
+      return omega > 0.0 && dir.z > 0.0 ? omega : 0.0;
+    };
     double sum = 0.0, omega = 0.0;
-    for (std::size_t i = 0; i < w.size(); ++i)
-      if (geo.solidAngleSr[i] > 0.0 && img.luminance[i] > g.dgp->thresholdCdM2 && geo.directionView[i].z > 0.0) {
-        w[i] = geo.solidAngleSr[i];
-        sum += w[i] * img.luminance[i];
-        omega += w[i];
-      }
+    for (std::size_t i = 0; i < img.luminance.size(); ++i) {
+      const double w = sourceWeight(i);
+      if (!(w > 0.0)) continue;
+      sum += w * img.luminance[i];
+      omega += w;
+    }
     if (omega > 0.0) {
       g.sourceLuminanceCdM2 = sum / omega;
-      g.sourceLuminanceRelativeStandardError = meanStandardError(img, w) / *g.sourceLuminanceCdM2;
+      g.sourceLuminanceRelativeStandardError = meanStandardError(img, sourceWeight) / *g.sourceLuminanceCdM2;
     }
   }
   return g;

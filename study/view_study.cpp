@@ -26,6 +26,59 @@ std::string relativeErrorText(double relativeStandardError) {
 
 namespace {
 
+// The report's copy of a view's pictures: the image itself up to kReportPicturePixels across,
+// else averaged over k × k pixels (k the smallest that fits; the pixels inside only), so that
+// an 8k rendering does not put 50 MB of PNG into the HTML page. The files keep every pixel.
+constexpr int kReportPicturePixels = 2048;
+
+struct ReportPicture {
+  int width = 0, height = 0;
+  const Image* image = nullptr;  // the image itself, else the averaged copies below
+  std::vector<float> ownLuminance;
+  std::vector<glm::vec3> ownRadiance;
+  std::vector<uint8_t> ownInside;
+  const std::vector<float>& luminance() const { return image ? image->luminance : ownLuminance; }
+  const std::vector<glm::vec3>& radiance() const { return image ? image->radiance : ownRadiance; }
+  const std::vector<uint8_t>& inside() const { return image ? image->inside : ownInside; }
+};
+
+ReportPicture reportPicture(const Image& img) {
+  const int k = (std::max(img.width, img.height) + kReportPicturePixels - 1) / kReportPicturePixels;
+  ReportPicture p;
+  if (k <= 1) {
+    p.width = img.width;
+    p.height = img.height;
+    p.image = &img;
+    return p;
+  }
+  p.width = (img.width + k - 1) / k;
+  p.height = (img.height + k - 1) / k;
+  const std::size_t n = static_cast<std::size_t>(p.width) * p.height;
+  p.ownLuminance.assign(n, 0.0f);
+  p.ownRadiance.assign(n, glm::vec3(0.0f));
+  p.ownInside.assign(n, 0);
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      double lum = 0.0;
+      Rgb rad(0.0);
+      int count = 0;
+      for (int yy = y * k; yy < std::min(img.height, (y + 1) * k); ++yy)
+        for (int xx = x * k; xx < std::min(img.width, (x + 1) * k); ++xx) {
+          const std::size_t i = img.index(xx, yy);
+          if (!img.inside[i]) continue;
+          lum += img.luminance[i];
+          rad += Rgb(img.radiance[i]);
+          ++count;
+        }
+      if (count == 0) continue;
+      const std::size_t j = static_cast<std::size_t>(y) * p.width + x;
+      p.ownLuminance[j] = static_cast<float>(lum / count);
+      p.ownRadiance[j] = glm::vec3(rad / static_cast<double>(count));
+      p.ownInside[j] = 1;
+    }
+  return p;
+}
+
 }  // namespace
 
 ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
@@ -49,8 +102,6 @@ ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec&
   if (task && background)
     v.contrast = computeViewContrast(scene, tracer, view.positionM, *task, *background, settings,
                                      overridden ? options.contrastLoc : view.loc);
-  v.rgbCdM2.resize(v.image.radiance.size());
-  for (std::size_t i = 0; i < v.rgbCdM2.size(); ++i) v.rgbCdM2[i] = kLumensPerWatt * v.image.radiance[i];
   v.scale = luminanceScale(v.image.luminance, options.logScale, options.minCdM2, options.maxCdM2);
   v.stem = safeFileName(view.name);
   return v;
@@ -66,8 +117,11 @@ ViewReport viewReport(const ViewResult& v) {
                 view.type == ViewType::kFisheye ? "fisheye 180°" : "perspective", img.width, img.height,
                 view.positionM.x, view.positionM.y, view.positionM.z, v.stem.c_str(), v.stem.c_str());
   vr.description = buf;
-  vr.falseColorPng = encodePng(luminanceFalseColor(img.width, img.height, img.luminance, v.scale));
-  vr.previewPng = encodePng(toneMap(img.width, img.height, img.luminance, v.rgbCdM2, img.inside));
+  {
+    const ReportPicture pic = reportPicture(img);
+    vr.falseColorPng = encodePng(luminanceFalseColor(pic.width, pic.height, pic.luminance(), v.scale));
+    vr.previewPng = encodePng(toneMap(pic.width, pic.height, pic.luminance(), pic.radiance(), pic.inside()));
+  }
   const ViewGlare& glare = v.glare;
   const ViewLuminance lum = viewLuminance(v);
   vr.meanLuminanceCdM2 = lum.meanCdM2;
@@ -96,47 +150,29 @@ ViewReport viewReport(const ViewResult& v) {
   return vr;
 }
 
-ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment) {
+ViewImageFiles writeViewFiles(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment) {
   const Image& img = v.image;
-  return writeViewImages(dir, v.stem, img.width, img.height, img.luminance, v.rgbCdM2, img.inside, v.scale, comment);
+  return writeViewImageFiles(dir, v.stem, img.width, img.height, img.luminance, img.radiance, kLumensPerWatt,
+                             img.inside, v.scale, comment);
 }
 
 namespace {
 
-// The three pictures of `render` as one set: written into a fresh temporary folder inside `dir`
-// (created exclusively, base/atomic_file.h), then each renamed into place, so a failure while
-// writing (a full disk, an encoder error) leaves the previous pictures as they were and no
-// mix of old and new; only the renames, which write nothing, follow the first replaced file.
+// The three pictures of `render` as one set: all three written (as temporaries, base/atomic_file.h)
+// before any is put in place, so a failure while writing (a full disk, an encoder error) leaves
+// the previous pictures as they were and no mix of old and new; only the renames, which write
+// nothing, follow the first replaced file.
 ViewImagePaths writeViewSet(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment) {
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path staging = createTemporaryFolder(dir, v.stem);
-  ViewImagePaths staged;
-  try {
-    staged = writeViewResult(staging, v, comment);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove_all(staging, ignored);
-    throw;
-  }
+  ViewImageFiles files = writeViewFiles(dir, v, comment);
   // A folder (or anything not a file) where a picture goes would fail its rename after the
   // others had been replaced: refused before any is.
-  for (const std::filesystem::path* f : {&staged.exr, &staged.falseColor, &staged.preview}) {
-    const std::filesystem::path target = dir / f->filename();
+  for (const std::string& name : {v.stem + ".exr", v.stem + ".png", v.stem + "_preview.png"}) {
+    const std::filesystem::path target = dir / name;
     const auto st = std::filesystem::symlink_status(target);
-    if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_symlink(st)) {
-      std::error_code ignored;
-      std::filesystem::remove_all(staging, ignored);
+    if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_symlink(st))
       throw std::runtime_error("'" + target.string() + "' exists and is not a file; the pictures were not replaced");
-    }
   }
-  ViewImagePaths out;
-  for (auto [from, to] : {std::pair{&staged.exr, &out.exr}, std::pair{&staged.falseColor, &out.falseColor},
-                          std::pair{&staged.preview, &out.preview}}) {
-    *to = dir / from->filename();
-    std::filesystem::rename(*from, *to);
-  }
-  std::filesystem::remove(staging);
-  return out;
+  return files.commitInto(dir);
 }
 
 }  // namespace
@@ -144,20 +180,19 @@ ViewImagePaths writeViewSet(const std::filesystem::path& dir, const ViewResult& 
 ViewLuminance viewLuminance(const ViewResult& v) {
   const Camera cam(v.view);
   const Image& img = v.image;
+  auto solidAngle = [&](std::size_t i) {
+    return cam.pixelSolidAngleSr(static_cast<int>(i % img.width), static_cast<int>(i / img.width));
+  };
   double sum = 0.0, omega = 0.0;
   ViewLuminance out;
-  std::vector<double> weights(img.luminance.size(), 0.0);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) {
-      const std::size_t i = img.index(x, y);
-      const double w = cam.pixelSolidAngleSr(x, y);
-      weights[i] = w;
-      sum += img.luminance[i] * w;
-      omega += w;
-      out.maxCdM2 = std::max(out.maxCdM2, img.luminance[i]);
-    }
+  for (std::size_t i = 0; i < img.luminance.size(); ++i) {
+    const double w = solidAngle(i);
+    sum += img.luminance[i] * w;
+    omega += w;
+    out.maxCdM2 = std::max<double>(out.maxCdM2, img.luminance[i]);
+  }
   out.meanCdM2 = omega > 0.0 ? sum / omega : 0.0;
-  out.meanRelativeStandardError = meanStandardError(img, weights) / out.meanCdM2;
+  out.meanRelativeStandardError = meanStandardError(img, solidAngle) / out.meanCdM2;
   return out;
 }
 

@@ -46,7 +46,6 @@ struct ViewResult {
   ViewSpec view;
   RenderSettings render;        // as traced
   Image image;
-  std::vector<Rgb> rgbCdM2;     // colour luminance per pixel, cd/m²
   ColorScale scale;             // of the false-colour picture
   std::string stem;             // file names: <stem>.exr, <stem>.png, <stem>_preview.png
   ViewGlare glare;
@@ -61,8 +60,9 @@ ViewResult computeView(const Scene& scene, const Tracer& tracer, const ViewSpec&
 // The view's section of the HTML report: description, pictures, metric rows.
 ViewReport viewReport(const ViewResult& v);
 
-// Writes the view's three pictures into `dir` (atomically, each); `comment` goes into the EXR.
-ViewImagePaths writeViewResult(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment);
+// Writes the view's three pictures as temporaries in `dir`'s file system, put in place by the
+// result's commitInto (reports/tonemap.h); `comment` goes into the EXR.
+ViewImageFiles writeViewFiles(const std::filesystem::path& dir, const ViewResult& v, const std::string& comment);
 
 // Mean luminance over the image weighted by each pixel's solid angle, and the largest, cd/m²;
 // the mean's relative standard error (engine/render.h meanStandardError over the mean: Monte

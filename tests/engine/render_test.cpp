@@ -36,6 +36,7 @@ void addUpRect(Scene& sc, double x0, double y0, double x1, double y1, double z, 
 }
 
 constexpr auto view = test_support::makeView;
+using test_support::kFloatRel;
 
 // The sun (0.533° disc, radiance L) over a plane of reflectance ρ: E = π L sin²α cos θs
 // (W/m², times 179 for lux) and every point of the plane has luminance ρE/π.
@@ -101,7 +102,7 @@ TEST(Render, LambertianPlaneHasLuminanceRhoEOverPiInEveryPixel) {
     RenderSettings r;
     r.irradianceSamples = 16;
     const Image img = renderView(tracer, v, s, 2, r);
-    for (std::size_t i = 0; i < img.luminance.size(); ++i) ASSERT_NEAR(img.luminance[i], want, 1e-9 * want) << i;
+    for (std::size_t i = 0; i < img.luminance.size(); ++i) ASSERT_NEAR(img.luminance[i], want, kFloatRel * want) << i;
   }
   // Fisheye straight down: every pixel whose whole footprint is more than a pixel inside the rim
   // sees the plane (rays at the rim run to the horizon, beyond the 10 km plane).
@@ -147,7 +148,7 @@ TEST(Render, LightSeenDirectlyLandsWhereTheProjectionSays) {
     EXPECT_NEAR(sx / sum, p->x, 0.5) << (type == ViewType::kFisheye);
     EXPECT_NEAR(sy / sum, p->y, 0.5) << (type == ViewType::kFisheye);
     // Pixels wholly on the sphere see exactly its luminance, 179 × 100 cd/m².
-    EXPECT_NEAR(peak, kLumensPerWatt * 100.0, 1e-9 * kLumensPerWatt * 100.0);
+    EXPECT_NEAR(peak, kLumensPerWatt * 100.0, kFloatRel * kLumensPerWatt * 100.0);
   }
 }
 
@@ -239,6 +240,85 @@ TEST(Render, SameImageForAnyThreadCount) {
   EXPECT_EQ(a.tracedPixels, b.tracedPixels);
 }
 
+// A pass goes out in bands of about pixelsPerFill pixels (bounded memory for large images): the
+// image, its interpolation record and its mean's standard error do not depend on the band size,
+// down to bands of a single lattice row.
+TEST(Render, SameImageForAnyBandSize) {
+  Scene sc;
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
+  addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
+  sc.addPolygon({{-2, -2, 0}, {-2, -2, 2}, {2, -2, 2}, {2, -2, 0}}, grey);  // a wall at y = -2
+  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  const Tracer tracer(sc);
+  const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 37, 23);
+  TraceSettings s;
+  s.maxBounces = 1;
+  RenderSettings whole;
+  whole.coarseStep = 8;
+  const Image a = renderView(tracer, v, s, 2, whole);
+  std::size_t interpolated = 0;
+  for (uint8_t l : a.interpolationLevel) interpolated += l > 0;
+  ASSERT_GT(interpolated, 0u);  // the case this test is about
+  ASSERT_GT(a.tracedPixels, 0u);
+  auto unit = [](std::size_t) { return 1.0; };
+  for (std::size_t band : {1, 40, 300}) {
+    RenderSettings r = whole;
+    r.pixelsPerFill = band;
+    const Image b = renderView(tracer, v, s, 2, r);
+    ASSERT_EQ(a.luminance.size(), b.luminance.size());
+    for (std::size_t i = 0; i < a.luminance.size(); ++i) {
+      ASSERT_EQ(a.luminance[i], b.luminance[i]) << band << " " << i;
+      ASSERT_EQ(a.radiance[i], b.radiance[i]) << band << " " << i;
+      ASSERT_EQ(a.interpolationLevel[i], b.interpolationLevel[i]) << band << " " << i;
+    }
+    EXPECT_EQ(a.tracedPixels, b.tracedPixels);
+    EXPECT_EQ(a.cameraRays, b.cameraRays);
+    EXPECT_EQ(meanStandardError(a, unit), meanStandardError(b, unit));
+  }
+}
+
+// Each interpolated pixel's record names its block's corners: its value is their bilinear blend
+// (computed in double from the float corners, then rounded to float).
+TEST(Render, InterpolatedPixelsAreTheirCornersBlend) {
+  Scene sc;
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
+  addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
+  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  const Tracer tracer(sc);
+  const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 37, 23);
+  RenderSettings r;
+  r.coarseStep = 8;
+  const Image img = renderView(tracer, v, TraceSettings{}, 2, r);
+  std::size_t checked = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const int level = img.interpolationLevel[img.index(x, y)];
+      if (level == 0) continue;
+      const LatticeInterval ix = interpolationInterval(img.width, 1 << level, x);
+      const LatticeInterval iy = interpolationInterval(img.height, 1 << level, y);
+      ASSERT_LE(ix.c0, x);
+      ASSERT_GE(ix.c1, x);
+      const double l = (1 - ix.f) * (1 - iy.f) * img.luminance[img.index(ix.c0, iy.c0)] +
+                       ix.f * (1 - iy.f) * img.luminance[img.index(ix.c1, iy.c0)] +
+                       (1 - ix.f) * iy.f * img.luminance[img.index(ix.c0, iy.c1)] +
+                       ix.f * iy.f * img.luminance[img.index(ix.c1, iy.c1)];
+      // Luminance is linear in the radiance blended: equal to the blend of the corners' (each
+      // rounded to float) to a few float roundings.
+      EXPECT_NEAR(img.luminance[img.index(x, y)], l, 4 * kFloatRel * std::max(l, 1e-30)) << x << " " << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 0u);
+  // The closed form of the lattice's intervals: lines at multiples of the spacing and at the
+  // last pixel.
+  EXPECT_EQ(interpolationInterval(37, 8, 36).c0, 32);
+  EXPECT_EQ(interpolationInterval(37, 8, 36).c1, 36);
+  EXPECT_EQ(interpolationInterval(37, 8, 33).c1, 36);
+  EXPECT_DOUBLE_EQ(interpolationInterval(37, 8, 34).f, 0.5);
+  EXPECT_EQ(interpolationInterval(33, 8, 32).c0, 24);  // the last pixel on a line: the last interval
+  EXPECT_DOUBLE_EQ(interpolationInterval(33, 8, 32).f, 1.0);
+  EXPECT_EQ(interpolationInterval(1, 8, 0).c1, 0);
+}
+
 // The contrast rendition factor of a matte task is 1: a dark matte card (ρ = 0.1) on a matte
 // desk (ρ = 0.5) in sunlight has the contrast (ρt − ρb)/ρb that the reference uniform sphere
 // gives. Luminances are means over 5 × 5 pixels well inside each area (each pixel to 0.34 %, the
@@ -311,9 +391,8 @@ TEST(Render, FisheyeUnderUniformSkyGivesPiLAtTheEye) {
   const Image img = renderView(tracer, v, TraceSettings{}, 2);
   const double l = kLumensPerWatt * radiance;
   for (std::size_t i = 0; i < img.luminance.size(); ++i)
-    ASSERT_NEAR(img.luminance[i], img.inside[i] ? l : 0.0, 1e-9 * l) << i;
-  const ViewGeometry g = viewGeometry(v);
-  const ImageGlare glare = evaluateImageGlare(img.luminance, g.directionView, g.solidAngleSr, img.width, img.height);
+    ASSERT_NEAR(img.luminance[i], img.inside[i] ? l : 0.0, kFloatRel * l) << i;
+  const ImageGlare glare = evaluateImageGlare(img.luminance, ViewGeometry(v), img.width, img.height);
   std::printf("[ measured ] uniform sky: Ev from the image %.6g lx, pi L = %.6g lx\n", glare.verticalIlluminanceLux,
               kPi * l);
   EXPECT_NEAR(glare.verticalIlluminanceLux, kPi * l, 0.005 * kPi * l);

@@ -104,6 +104,12 @@ struct Fisheye {
         omega[j * n + i] = s * step * step;
       }
   }
+  PixelGeometry geometry() const {
+    return [this](std::size_t i, Vec3& d, double& o) {
+      d = dir[i];
+      o = omega[i];
+    };
+  }
 };
 
 // Uniform luminance Lb everywhere: Ev = π Lb and no glare source (nothing exceeds 5 × the mean).
@@ -113,16 +119,16 @@ struct Fisheye {
 TEST(Glare, DgpFromAFisheyeImage) {
   const Fisheye f(256);
   const double lb = 100.0, ls = 50000.0, r = degToRad(10.0);
-  std::vector<double> lum(f.dir.size(), lb);
-  ImageGlare g = evaluateImageGlare(lum, f.dir, f.omega, f.n, f.n);
+  std::vector<float> lum(f.dir.size(), static_cast<float>(lb));
+  ImageGlare g = evaluateImageGlare(lum, f.geometry(), f.n, f.n);
   EXPECT_NEAR(g.verticalIlluminanceLux, kPi * lb, 0.003 * kPi * lb);
   EXPECT_TRUE(g.sources.empty());
   EXPECT_NEAR(g.dgpUncorrected, 5.87e-5 * g.verticalIlluminanceLux + 0.16, 1e-12);
   EXPECT_NEAR(g.dgp, g.dgpUncorrected * lowLightCorrection(g.verticalIlluminanceLux), 1e-12);
 
   for (std::size_t i = 0; i < lum.size(); ++i)
-    if (f.omega[i] > 0.0 && f.dir[i].z > std::cos(r)) lum[i] = ls;
-  g = evaluateImageGlare(lum, f.dir, f.omega, f.n, f.n);
+    if (f.omega[i] > 0.0 && f.dir[i].z > std::cos(r)) lum[i] = static_cast<float>(ls);
+  g = evaluateImageGlare(lum, f.geometry(), f.n, f.n);
   const double ev = kPi * lb + (ls - lb) * kPi * std::sin(r) * std::sin(r);
   const double omega = kTwoPi * (1.0 - std::cos(r));
   std::printf("[ measured ] fisheye disc: Ev %.2f lx (closed form %.2f), source %.5f sr (closed form %.5f)\n",
@@ -137,16 +143,16 @@ TEST(Glare, DgpFromAFisheyeImage) {
   // A fixed threshold above the disc finds nothing.
   GlareDetection fixed;
   fixed.thresholdCdM2 = 60000.0;
-  EXPECT_TRUE(evaluateImageGlare(lum, f.dir, f.omega, f.n, f.n, fixed).sources.empty());
+  EXPECT_TRUE(evaluateImageGlare(lum, f.geometry(), f.n, f.n, fixed).sources.empty());
 }
 
 // Two separate bright patches are two sources, each with its own position index.
 TEST(Glare, SeparatePatchesAreSeparateSources) {
   const Fisheye f(64);
-  std::vector<double> lum(f.dir.size(), 50.0);
+  std::vector<float> lum(f.dir.size(), 50.0f);
   lum[20 * 64 + 20] = lum[20 * 64 + 21] = 1e5;
   lum[40 * 64 + 45] = 1e5;
-  const ImageGlare g = evaluateImageGlare(lum, f.dir, f.omega, f.n, f.n);
+  const ImageGlare g = evaluateImageGlare(lum, f.geometry(), f.n, f.n);
   ASSERT_EQ(g.sources.size(), 2u);
   EXPECT_NEAR(g.sources[0].solidAngleSr, f.omega[20 * 64 + 20] + f.omega[20 * 64 + 21], 1e-15);
   EXPECT_NEAR(g.sources[1].positionIndex, positionIndex(f.dir[40 * 64 + 45]), 1e-12);

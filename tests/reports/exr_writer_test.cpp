@@ -42,14 +42,15 @@ TEST(ExrWriter, ReadBackGivesTheWrittenFloatsAndTheUnit) {
   const fs::path dir = tempDir();
   const fs::path path = dir / "view.exr";
   const int w = 7, h = 5;
-  std::vector<double> lum(w * h);
-  std::vector<Rgb> rgb(w * h);
+  std::vector<float> lum(w * h);
+  std::vector<glm::vec3> rgb(w * h);
+  const double scale = 179.0;  // RGB as radiance, written in cd/m²
   for (int i = 0; i < w * h; ++i) {
     // Values spanning dark corners to the sun's disc (1.6e9 cd/m²), far beyond half's 65504.
-    lum[i] = 0.001 * std::pow(10.0, i * 12.0 / (w * h));
-    rgb[i] = Rgb(lum[i] * 1.1, lum[i], lum[i] * 0.7);
+    lum[i] = static_cast<float>(0.001 * std::pow(10.0, i * 12.0 / (w * h)));
+    rgb[i] = glm::vec3(lum[i] * 1.1f, lum[i], lum[i] * 0.7f) / 179.0f;
   }
-  writeLuminanceExr(path, w, h, lum, rgb, "test image");
+  writeLuminanceExr(path, w, h, lum, rgb, scale, "test image");
   ASSERT_TRUE(fs::exists(path));
   for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename(), "view.exr") << "temporary left";
 
@@ -72,9 +73,9 @@ TEST(ExrWriter, ReadBackGivesTheWrittenFloatsAndTheUnit) {
 
   const std::vector<float> y = readChannel(file, "Y"), r = readChannel(file, "R"), b = readChannel(file, "B");
   for (int i = 0; i < w * h; ++i) {
-    EXPECT_EQ(y[i], static_cast<float>(lum[i])) << i;  // bit-exact float round trip
-    EXPECT_EQ(r[i], static_cast<float>(rgb[i].x)) << i;
-    EXPECT_EQ(b[i], static_cast<float>(rgb[i].z)) << i;
+    EXPECT_EQ(y[i], lum[i]) << i;  // bit-exact float round trip
+    EXPECT_EQ(r[i], static_cast<float>(scale * rgb[i].x)) << i;
+    EXPECT_EQ(b[i], static_cast<float>(scale * rgb[i].z)) << i;
   }
   EXPECT_GT(y.back(), 65504.0f);
   fs::remove_all(dir);
@@ -89,6 +90,29 @@ TEST(ExrWriter, LuminanceOnlyHasJustY) {
   EXPECT_EQ(file.header().channels().findChannel("R"), nullptr);
   const std::vector<float> y = readChannel(file, "Y");
   EXPECT_EQ(y, (std::vector<float>{1.0f, 2.0f, 3.0f, 4.0f}));  // rows top to bottom
+  fs::remove_all(dir);
+}
+
+// The file is written a block of 64 rows at a time: an image of several blocks and a partial
+// one comes back row for row, each pixel its own value.
+TEST(ExrWriter, RowsOfSeveralBlocksComeBackInOrder) {
+  const fs::path dir = tempDir();
+  const fs::path path = dir / "tall.exr";
+  const int w = 3, h = 150;
+  std::vector<float> lum(w * h);
+  std::vector<glm::vec3> rgb(w * h);
+  for (int i = 0; i < w * h; ++i) {
+    lum[i] = static_cast<float>(i);
+    rgb[i] = glm::vec3(static_cast<float>(i), static_cast<float>(2 * i), static_cast<float>(3 * i));
+  }
+  writeLuminanceExr(path, w, h, lum, rgb);
+  Imf::InputFile file(path.string().c_str());
+  const std::vector<float> y = readChannel(file, "Y"), g = readChannel(file, "G"), b = readChannel(file, "B");
+  EXPECT_EQ(y, lum);
+  for (int i = 0; i < w * h; ++i) {
+    EXPECT_EQ(g[i], static_cast<float>(2 * i)) << i;
+    EXPECT_EQ(b[i], static_cast<float>(3 * i)) << i;
+  }
   fs::remove_all(dir);
 }
 

@@ -51,9 +51,9 @@ TEST(PngWriter, FontDrawsDigits) {
 // colour (top) to its bottom colour (bottom), and the legend holds text.
 TEST(PngWriter, FalseColorImageWithLegend) {
   const int w = 100, h = 240;
-  std::vector<double> v(w * h);
+  std::vector<float> v(w * h);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) v[y * w + x] = 5.0 * x;  // 0..495 lux
+    for (int x = 0; x < w; ++x) v[y * w + x] = 5.0f * static_cast<float>(x);  // 0..495 lux
   const ColorScale scale{0.0, 500.0, false};
   const Image8 im = falseColorImage(v, w, h, scale, "lx");
   ASSERT_GT(im.width, w);

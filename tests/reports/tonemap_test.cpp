@@ -15,7 +15,7 @@ namespace {
 // Ld = Ls: sRGB(0.18) = 118 of 255, whatever the absolute luminance.
 TEST(ToneMap, UniformImageMapsToTheKey) {
   for (double l : {1.0, 100.0, 1e5}) {
-    const Image8 img = toneMap(3, 2, std::vector<double>(6, l));
+    const Image8 img = toneMap(3, 2, std::vector<float>(6, static_cast<float>(l)));
     const double v = 0.18;
     const double srgb = 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
     EXPECT_EQ(img.at(1, 1).g, static_cast<uint8_t>(std::lround(255 * srgb))) << l;
@@ -24,7 +24,7 @@ TEST(ToneMap, UniformImageMapsToTheKey) {
 }
 
 TEST(ToneMap, BrighterStaysBrighterAndMaskIsBlack) {
-  const std::vector<double> lum = {1.0, 10.0, 100.0, 1000.0};
+  const std::vector<float> lum = {1.0, 10.0, 100.0, 1000.0};
   const Image8 img = toneMap(4, 1, lum, {}, {1, 1, 1, 0});
   EXPECT_LT(img.at(0, 0).g, img.at(1, 0).g);
   EXPECT_LT(img.at(1, 0).g, img.at(2, 0).g);
@@ -34,7 +34,7 @@ TEST(ToneMap, BrighterStaysBrighterAndMaskIsBlack) {
 }
 
 TEST(ToneMap, LuminanceScales) {
-  const std::vector<double> lum = {0.0, 3.0, 250.0, 4200.0};
+  const std::vector<float> lum = {0.0, 3.0, 250.0, 4200.0};
   const ColorScale lin = luminanceScale(lum, false);
   EXPECT_EQ(lin.minValue, 0.0);
   EXPECT_GE(lin.maxValue, 4200.0);
@@ -53,8 +53,8 @@ TEST(ToneMap, LuminanceScales) {
 TEST(ToneMap, WriteViewImagesWritesThreeFiles) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("candela_view_images_" + std::to_string(::getpid())) / "sub";
-  const std::vector<double> lum = {1.0, 10.0, 100.0, 1000.0};
-  const ViewImagePaths p = writeViewImages(dir, "v", 2, 2, lum, {}, {}, luminanceScale(lum, true), "c");
+  const std::vector<float> lum = {1.0, 10.0, 100.0, 1000.0};
+  const ViewImagePaths p = writeViewImages(dir, "v", 2, 2, lum, {}, 1.0, {}, luminanceScale(lum, true), "c");
   EXPECT_EQ(p.exr, dir / "v.exr");
   EXPECT_EQ(p.preview, dir / "v_preview.png");
   for (const fs::path& f : {p.exr, p.falseColor, p.preview}) EXPECT_GT(fs::file_size(f), 0u) << f;

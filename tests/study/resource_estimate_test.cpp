@@ -67,19 +67,26 @@ TEST(ResourceEstimate, AnnualStudyIsBoundedByTheBlock) {
 }
 
 TEST(ResourceEstimate, PixelBytesFromTheImage) {
-  // Kept per pixel: Image's radiance (Rgb), luminance and standard error (double), inside and
-  // traced (byte), and the colour luminance (Rgb).
-  const uint64_t kept = sizeof(Rgb) + 8 + 8 + 1 + 1 + sizeof(Rgb);
-  EXPECT_EQ(kept, 66u);
-  EXPECT_GT(bytesPerPixel(false), kept);
-  EXPECT_EQ(bytesPerPixel(true), bytesPerPixel(false) + 6);
+  // Kept per pixel: Image's radiance, luminance and standard error (float32), inside, traced and
+  // interpolation level (a byte each), as the type holds them.
+  const Image img;
+  const uint64_t kept = sizeof(img.radiance[0]) + sizeof(img.luminance[0]) + sizeof(img.standardError[0]) +
+                        sizeof(img.inside[0]) + sizeof(img.traced[0]) + sizeof(img.interpolationLevel[0]);
+  EXPECT_EQ(kept, 23u);
+  EXPECT_GT(bytesPerPixel(), kept);
   ViewSpec v;
   v.name = "x";
   v.loc = FileLoc{"case.toml", 12, 1};
   v.resolution = glm::ivec2(16384, 16384);
   const MemoryItem m = viewMemory(v, false);
-  EXPECT_EQ(m.bytes, 16384ull * 16384ull * bytesPerPixel(false));
-  EXPECT_EQ(m.detail, "16384 x 16384 pixels x " + std::to_string(bytesPerPixel(false)) + " B");
+  EXPECT_GT(m.bytes, 16384ull * 16384ull * bytesPerPixel());
+  EXPECT_EQ(m.detail, "16384 x 16384 pixels x " + std::to_string(bytesPerPixel()) + " B");
+  // The report keeps a copy of at most 2048 × 2048 pixels of each picture.
+  EXPECT_EQ(viewMemory(v, true).bytes - m.bytes, viewReportBytes(v));
+  v.resolution = glm::ivec2(8192, 8192);
+  EXPECT_EQ(viewReportBytes(v), 2048ull * 2048ull * 6);
+  // The bound: an 8k × 8k view within 2 GB.
+  EXPECT_LT(viewMemory(v, true).bytes, 2000000000ull);
 }
 
 TEST(ResourceEstimate, RefusedAtTheLargestItem) {
