@@ -496,32 +496,44 @@ double meanStandardError(const Image& img, const PixelWeight& weight) {
   const std::size_t n = static_cast<std::size_t>(img.width) * img.height;
   if (img.samplesPerPixel < 2 || img.standardError.size() != n || img.interpolationLevel.size() != n)
     return std::nan("");
-  // Each pixel's coefficient in the mean (float: 4 B a pixel); an interpolated pixel's passes to
-  // its corners, the finest level first (a level's corners were settled before it).
-  std::vector<float> c(n);
   double total = 0.0;
   int levels = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double w = weight(i);
-    c[i] = static_cast<float>(w);
-    total += w;
+    total += weight(i);
     levels = std::max<int>(levels, img.interpolationLevel[i]);
   }
   if (!(total > 0.0)) return std::nan("");
-  for (int level = 1; level <= levels; ++level)
-    for (std::size_t i = n; i-- > 0;) {
-      if (img.interpolationLevel[i] != level) continue;
-      const double ci = c[i];
-      c[i] = 0.0f;
-      const Corners k = interpolationCorners(img, i, 1 << level);
-      for (int j = 0; j < 4; ++j) c[k.pixel[j]] = static_cast<float>(c[k.pixel[j]] + k.weight[j] * ci);
-    }
+  // Each pixel's coefficient in the mean; an interpolated pixel's passes to its corners, the
+  // finest level first (a level's corners were settled before it). A pixel's coefficient comes
+  // only from the coarse blocks around it (corners are in the pixel's own block of every coarser
+  // lattice), so bands of rows are done one at a time with a margin of one coarse spacing: the
+  // same sums in the same order as over the whole image, in a band's memory (float, 4 B a pixel).
+  const int spacing = 1 << levels;
+  constexpr int kBandRows = 256;
+  std::vector<float> c;
   double variance = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (img.traced[i]) {
-      const double ci = c[i], se = img.standardError[i];
-      variance += ci * ci * se * se;
-    }
+  for (int y0 = 0; y0 < img.height; y0 += kBandRows) {
+    const int y1 = std::min(img.height, y0 + kBandRows);
+    const int w0 = std::max(0, y0 - spacing), w1 = std::min(img.height, y1 + spacing);
+    const std::size_t first = img.index(0, w0), last = img.index(0, w1);  // the window's pixels
+    c.assign(last - first, 0.0f);
+    for (std::size_t i = first; i < last; ++i) c[i - first] = static_cast<float>(weight(i));
+    for (int level = 1; level <= levels; ++level)
+      for (std::size_t i = last; i-- > first;) {
+        if (img.interpolationLevel[i] != level) continue;
+        const double ci = c[i - first];
+        c[i - first] = 0.0f;
+        const Corners k = interpolationCorners(img, i, 1 << level);
+        for (int j = 0; j < 4; ++j)
+          if (k.pixel[j] >= first && k.pixel[j] < last)  // corners outside feed pixels outside the band
+            c[k.pixel[j] - first] = static_cast<float>(c[k.pixel[j] - first] + k.weight[j] * ci);
+      }
+    for (std::size_t i = img.index(0, y0); i < img.index(0, y1); ++i)
+      if (img.traced[i]) {
+        const double ci = c[i - first], se = img.standardError[i];
+        variance += ci * ci * se * se;
+      }
+  }
   return std::sqrt(variance) / total;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string_view>
 
@@ -106,7 +107,8 @@ void sinkBytes(png_structp png, png_bytep data, png_size_t length) {
 void flushNothing(png_structp) {}
 
 // 8-bit RGB, no interlace, sRGB chunk; a row at a time into `sink`.
-void encodePngTo(const Image8& image, PngSink& sink) {
+void encodePngTo(const RowPicture& image, PngSink& sink) {
+  std::vector<uint8_t> row(static_cast<std::size_t>(image.width) * 3);
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (!png) throw std::runtime_error("libpng: cannot create write struct");
   png_infop info = png_create_info_struct(png);
@@ -119,8 +121,10 @@ void encodePngTo(const Image8& image, PngSink& sink) {
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y)
-    png_write_row(png, const_cast<png_bytep>(image.rgb.data() + static_cast<std::size_t>(y) * image.width * 3));
+  for (int y = 0; y < image.height; ++y) {
+    image.row(y, row.data());
+    png_write_row(png, row.data());
+  }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
 }
@@ -141,8 +145,22 @@ void drawText(Image8& image, int x, int y, const std::string& text, Rgb8 color, 
   }
 }
 
-Image8 falseColorImage(const std::vector<float>& values, int width, int height, const ColorScale& scale,
-                       const std::string& unit) {
+RowPicture rowsOf(const Image8& image) {
+  return RowPicture{image.width, image.height, [&image](int y, uint8_t* out) {
+                      const std::size_t n = static_cast<std::size_t>(image.width) * 3;
+                      std::copy_n(image.rgb.data() + static_cast<std::size_t>(y) * n, n, out);
+                    }};
+}
+
+Image8 imageOf(const RowPicture& picture) {
+  Image8 img(picture.width, picture.height);
+  for (int y = 0; y < picture.height; ++y)
+    picture.row(y, img.rgb.data() + static_cast<std::size_t>(y) * picture.width * 3);
+  return img;
+}
+
+RowPicture falseColorRows(const std::vector<float>& values, int width, int height, const ColorScale& scale,
+                          const std::string& unit) {
   if (width <= 0 || height <= 0 || values.size() != static_cast<std::size_t>(width) * height)
     throw std::invalid_argument("falseColorImage: need width × height values");
   // Legend font size follows the picture so it stays legible on large renderings.
@@ -152,45 +170,57 @@ Image8 falseColorImage(const std::vector<float>& values, int width, int height, 
   for (double t : ticks) labelWidth = std::max(labelWidth, textWidth(formatNumber(t, 4), fs));
   const int pad = 6 * fs, barWidth = 14 * fs;
   const int legendWidth = pad + barWidth + 3 * fs + labelWidth + pad;
-  Image8 img(width + legendWidth, height, Rgb8{255, 255, 255});
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) img.set(x, y, falseColor(values[static_cast<std::size_t>(y) * width + x], scale));
-
+  // The legend strip right of the picture, drawn once (a few MB at 8192 px high).
+  auto legend = std::make_shared<Image8>(legendWidth, height, Rgb8{255, 255, 255});
   // Colour bar: bottom = scale minimum, top = maximum, between a unit label and the tick labels.
   const Rgb8 ink{40, 40, 40};
-  const int barX = width + pad, barTop = pad + 12 * fs, barBottom = height - pad - 4 * fs;
-  drawText(img, barX, pad, unit, ink, fs);
-  if (barBottom <= barTop) return img;
-  for (int y = barTop; y <= barBottom; ++y) {
-    const double t = static_cast<double>(barBottom - y) / (barBottom - barTop);
-    const Rgb8 c = viridis(t);
-    img.fillRect(barX, y, barWidth, 1, c);
+  const int barX = pad, barTop = pad + 12 * fs, barBottom = height - pad - 4 * fs;
+  drawText(*legend, barX, pad, unit, ink, fs);
+  if (barBottom > barTop) {
+    for (int y = barTop; y <= barBottom; ++y) {
+      const double t = static_cast<double>(barBottom - y) / (barBottom - barTop);
+      legend->fillRect(barX, y, barWidth, 1, viridis(t));
+    }
+    for (double v : ticks) {
+      const int y = barBottom - static_cast<int>(std::lround(scalePosition(v, scale) * (barBottom - barTop)));
+      legend->fillRect(barX + barWidth, y, 2 * fs, fs, ink);
+      drawText(*legend, barX + barWidth + 3 * fs, y - 3 * fs, formatNumber(v, 4), ink, fs);
+    }
   }
-  for (double v : ticks) {
-    const int y = barBottom - static_cast<int>(std::lround(scalePosition(v, scale) * (barBottom - barTop)));
-    img.fillRect(barX + barWidth, y, 2 * fs, fs, ink);
-    drawText(img, barX + barWidth + 3 * fs, y - 3 * fs, formatNumber(v, 4), ink, fs);
-  }
-  return img;
+  return RowPicture{width + legendWidth, height, [&values, width, scale, legend](int y, uint8_t* out) {
+                      for (int x = 0; x < width; ++x) {
+                        const Rgb8 c = falseColor(values[static_cast<std::size_t>(y) * width + x], scale);
+                        out[3 * x] = c.r;
+                        out[3 * x + 1] = c.g;
+                        out[3 * x + 2] = c.b;
+                      }
+                      const std::size_t n = static_cast<std::size_t>(legend->width) * 3;
+                      std::copy_n(legend->rgb.data() + static_cast<std::size_t>(y) * n, n, out + 3 * width);
+                    }};
+}
+
+Image8 falseColorImage(const std::vector<float>& values, int width, int height, const ColorScale& scale,
+                       const std::string& unit) {
+  return imageOf(falseColorRows(values, width, height, scale, unit));
 }
 
 std::vector<uint8_t> encodePng(const Image8& image) {
   std::vector<uint8_t> out;
   PngSink sink;
   sink.bytes = &out;
-  encodePngTo(image, sink);
+  encodePngTo(rowsOf(image), sink);
   return out;
 }
 
-void writePng(AtomicFile& out, const Image8& image) {
+void writePng(AtomicFile& out, const RowPicture& picture) {
   PngSink sink;
   sink.file = &out;
-  encodePngTo(image, sink);
+  encodePngTo(picture, sink);
 }
 
 void writePng(const std::filesystem::path& path, const Image8& image) {
   AtomicFile file(path);
-  writePng(file, image);
+  writePng(file, rowsOf(image));
   file.commit();
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,20 @@ void drawText(Image8& image, int x, int y, const std::string& text, Rgb8 color, 
 // Width in pixels of `text` drawn at `scale` (6 font pixels per character, no trailing gap).
 int textWidth(const std::string& text, int scale = 1);
 
+// A picture made a row at a time, for pictures too large to hold: row(y, out) fills
+// out[0 .. 3 · width) with row y's 8-bit RGB. What it reads must outlive it.
+struct RowPicture {
+  int width = 0, height = 0;
+  std::function<void(int y, uint8_t* rgb)> row;
+};
+RowPicture rowsOf(const Image8& image);  // `image` must outlive the result
+Image8 imageOf(const RowPicture& picture);
+
+// The picture of falseColorImage, row by row (its legend strip drawn once); `values` must
+// outlive it.
+RowPicture falseColorRows(const std::vector<float>& values, int width, int height, const ColorScale& scale,
+                          const std::string& unit);
+
 // A false-colour picture of `values` (row-major, `width` × `height`, top row first) with a
 // legend to the right: colour bar, tick values and the unit.
 Image8 falseColorImage(const std::vector<float>& values, int width, int height, const ColorScale& scale,
@@ -40,7 +55,7 @@ std::vector<uint8_t> encodePng(const Image8& image);
 
 // Writes the image as a PNG, atomically, a row at a time (no encoded copy in memory). Throws std::runtime_error on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);
-// The same into `out`, left uncommitted (its caller commits it).
-void writePng(AtomicFile& out, const Image8& image);
+// A picture into `out` a row at a time, left uncommitted (its caller commits it).
+void writePng(AtomicFile& out, const RowPicture& picture);
 
 }  // namespace candela

@@ -19,13 +19,13 @@ uint8_t srgb8(double v) {
 
 }  // namespace
 
-Image8 toneMap(int width, int height, const std::vector<float>& lum, const std::vector<glm::vec3>& rgb,
-               const std::vector<uint8_t>& mask, double key) {
+RowPicture toneMapRows(int width, int height, const std::vector<float>& lum, const std::vector<glm::vec3>& rgb,
+                       const std::vector<uint8_t>& mask, double key) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   if (width <= 0 || height <= 0 || lum.size() != n || (!rgb.empty() && rgb.size() != n) ||
       (!mask.empty() && mask.size() != n))
     throw std::invalid_argument("toneMap: need width × height values");
-  auto in = [&](std::size_t i) { return mask.empty() || mask[i] != 0; };
+  auto in = [&mask](std::size_t i) { return mask.empty() || mask[i] != 0; };
   // Log-average luminance (eq. 1); δ avoids log 0 on black pixels.
   constexpr double kDelta = 1e-4;
   double logSum = 0.0, maxL = 0.0;
@@ -37,30 +37,41 @@ Image8 toneMap(int width, int height, const std::vector<float>& lum, const std::
     maxL = std::max(maxL, l);
     ++count;
   }
-  Image8 img(width, height, Rgb8{0, 0, 0});
-  if (count == 0 || !(maxL > 0.0)) return img;
+  if (count == 0 || !(maxL > 0.0))
+    return RowPicture{width, height, [width](int, uint8_t* out) { std::fill_n(out, 3 * width, uint8_t{0}); }};
   const double avg = std::exp(logSum / count);
   const double scale = key / avg;
   // Lwhite: the largest scaled luminance, but at least 1, so that a low-contrast picture keeps
   // its key instead of burning out to white (eq. 4 maps Lwhite itself to 1).
   const double white = std::max(scale * maxL, 1.0);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * width + x;
-      if (!in(i)) continue;
-      const double l = std::max<double>(lum[i], 0.0);
-      const double ls = scale * l;
-      const double ld = ls * (1.0 + ls / (white * white)) / (1.0 + ls);
-      Rgb c(ld);
-      if (!rgb.empty() && l > 0.0) {
-        // RGB relative to its photopic value, times the displayed luminance.
-        const Rgb ci(rgb[i]);
-        const double p = photopic(ci);
-        c = p > 0.0 ? ci * (ld / p) : Rgb(ld);
-      }
-      img.set(x, y, Rgb8{srgb8(c.x), srgb8(c.y), srgb8(c.z)});
-    }
-  return img;
+  return RowPicture{width, height, [&lum, &rgb, &mask, width, scale, white](int y, uint8_t* out) {
+                      for (int x = 0; x < width; ++x) {
+                        const std::size_t i = static_cast<std::size_t>(y) * width + x;
+                        uint8_t* p = out + 3 * x;
+                        if (!mask.empty() && mask[i] == 0) {
+                          p[0] = p[1] = p[2] = 0;
+                          continue;
+                        }
+                        const double l = std::max<double>(lum[i], 0.0);
+                        const double ls = scale * l;
+                        const double ld = ls * (1.0 + ls / (white * white)) / (1.0 + ls);
+                        Rgb c(ld);
+                        if (!rgb.empty() && l > 0.0) {
+                          // RGB relative to its photopic value, times the displayed luminance.
+                          const Rgb ci(rgb[i]);
+                          const double pv = photopic(ci);
+                          c = pv > 0.0 ? ci * (ld / pv) : Rgb(ld);
+                        }
+                        p[0] = srgb8(c.x);
+                        p[1] = srgb8(c.y);
+                        p[2] = srgb8(c.z);
+                      }
+                    }};
+}
+
+Image8 toneMap(int width, int height, const std::vector<float>& lum, const std::vector<glm::vec3>& rgb,
+               const std::vector<uint8_t>& mask, double key) {
+  return imageOf(toneMapRows(width, height, lum, rgb, mask, key));
 }
 
 ColorScale luminanceScale(const std::vector<float>& lum, bool logarithmic, std::optional<double> minCdM2,
@@ -111,9 +122,9 @@ ViewImageFiles writeViewImageFiles(const std::filesystem::path& dir, const std::
   f.exr = std::make_unique<AtomicFile>(dir / (stem + ".exr"));
   writeLuminanceExr(*f.exr, stem + ".exr", width, height, lum, rgb, rgbScale, comment);
   f.falseColor = std::make_unique<AtomicFile>(dir / (stem + ".png"));
-  writePng(*f.falseColor, luminanceFalseColor(width, height, lum, scale));
+  writePng(*f.falseColor, falseColorRows(lum, width, height, scale, "cd/m2"));
   f.preview = std::make_unique<AtomicFile>(dir / (stem + "_preview.png"));
-  writePng(*f.preview, toneMap(width, height, lum, rgb, mask));
+  writePng(*f.preview, toneMapRows(width, height, lum, rgb, mask));
   return f;
 }
 

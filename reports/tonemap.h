@@ -24,6 +24,10 @@ namespace candela {
 Image8 toneMap(int width, int height, const std::vector<float>& luminanceCdM2, const std::vector<glm::vec3>& rgb = {},
                const std::vector<uint8_t>& mask = {}, double key = 0.18);
 
+// The same picture row by row, for pictures too large to hold; the arrays must outlive it.
+RowPicture toneMapRows(int width, int height, const std::vector<float>& luminanceCdM2,
+                       const std::vector<glm::vec3>& rgb = {}, const std::vector<uint8_t>& mask = {},
+                       double key = 0.18);
 // A false-colour scale for luminances: linear from 0 to a round number at or above the largest
 // value, or logarithmic over whole decades from max/10⁴ (or the smallest positive value, if
 // larger) to the largest; `minCdM2`/`maxCdM2` fix the range instead (log scales need min > 0).
@@ -36,7 +40,7 @@ Image8 luminanceFalseColor(int width, int height, const std::vector<float>& lumi
 // The three files of a rendered view in `dir`: <stem>.exr (Y and, when `rgb` is given, R, G, B =
 // rgbScale × rgb in cd/m²; reports/exr_writer.h), <stem>.png (false colour on `scale`) and
 // <stem>_preview.png (tone mapped; pixels with mask 0 black). Creates `dir`; each file is
-// written atomically, one picture in memory at a time (3 B a pixel).
+// written atomically, streamed a row at a time.
 // Throws std::runtime_error or std::filesystem::filesystem_error on failure.
 struct ViewImagePaths {
   std::filesystem::path exr, falseColor, preview;

@@ -165,7 +165,9 @@ TEST(Render, LuminaireOpeningShowsIntensityOverProjectedArea) {
     lp.name = "panel";
     lp.positionM = {0, 2, 2.8};
     sc.luminaires.push_back(placeLuminaire(test_support::lambertianPanel(), lp));
-    if (surface) ASSERT_EQ(addOpeningSurface(sc, 0, 0.5), 0u);
+    if (surface) {
+      ASSERT_EQ(addOpeningSurface(sc, 0, 0.5), 0u);
+    }
     const Tracer tracer(sc);
     const Vec3 eye(0, 0, 1.2);
     const Vec3 d = lp.positionM - eye;
@@ -219,7 +221,9 @@ TEST(Render, AdaptiveSamplingRefinesOnlyWhereLuminanceChanges) {
   // edge is never smeared from its block's corners.
   for (std::size_t i = 0; i < img.luminance.size(); ++i) {
     const double l = img.luminance[i];
-    if (!img.traced[i]) EXPECT_TRUE(l < r.refineThreshold * want || l > (1 - r.refineThreshold) * want) << i;
+    if (!img.traced[i]) {
+      EXPECT_TRUE(l < r.refineThreshold * want || l > (1 - r.refineThreshold) * want) << i;
+    }
   }
 }
 
@@ -275,6 +279,53 @@ TEST(Render, SameImageForAnyBandSize) {
     EXPECT_EQ(a.cameraRays, b.cameraRays);
     EXPECT_EQ(meanStandardError(a, unit), meanStandardError(b, unit));
   }
+}
+
+// The mean's standard error is computed in bands of rows (bounded memory): against the whole
+// image at once, written out here in double (every interpolated pixel's weight carried to its
+// corners, finest level first, last pixel first), on an image of three bands and a part.
+TEST(Render, MeanStandardErrorInBandsIsTheWholeImages) {
+  Scene sc;
+  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
+  addUpRect(sc, -20, -20, 20, 20, 0.0, grey);
+  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  const Tracer tracer(sc);
+  const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.6}, {0, 0, 1}, {20, 100}, 24, 800);
+  RenderSettings r;
+  r.coarseStep = 8;
+  TraceSettings s;
+  s.maxBounces = 1;
+  s.hemisphereSamples = 4;
+  const Image img = renderView(tracer, v, s, 2, r);
+  std::size_t interpolated = 0;
+  for (uint8_t l : img.interpolationLevel) interpolated += l > 0;
+  ASSERT_GT(interpolated, 0u);
+  auto weight = [&](std::size_t i) { return 1.0 + static_cast<double>(i % 7); };
+  const std::size_t n = img.luminance.size();
+  std::vector<double> c(n);
+  double total = 0.0;
+  for (std::size_t i = 0; i < n; ++i) total += c[i] = weight(i);
+  for (int level = 1; level <= 3; ++level)
+    for (std::size_t i = n; i-- > 0;) {
+      if (img.interpolationLevel[i] != level) continue;
+      const int x = static_cast<int>(i % img.width), y = static_cast<int>(i / img.width);
+      const LatticeInterval ix = interpolationInterval(img.width, 1 << level, x);
+      const LatticeInterval iy = interpolationInterval(img.height, 1 << level, y);
+      const double ci = c[i];
+      c[i] = 0.0;
+      c[img.index(ix.c0, iy.c0)] += (1 - ix.f) * (1 - iy.f) * ci;
+      c[img.index(ix.c1, iy.c0)] += ix.f * (1 - iy.f) * ci;
+      c[img.index(ix.c0, iy.c1)] += (1 - ix.f) * iy.f * ci;
+      c[img.index(ix.c1, iy.c1)] += ix.f * iy.f * ci;
+    }
+  double variance = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (img.traced[i]) variance += c[i] * c[i] * img.standardError[i] * img.standardError[i];
+  const double want = std::sqrt(variance) / total;
+  ASSERT_GT(want, 0.0);
+  // The engine's coefficients are float (4 B a pixel): each sum of up to 17 × 17 terms rounded
+  // once a term, 2^-24 relative each, so a few 10^-6 at most.
+  EXPECT_NEAR(meanStandardError(img, weight), want, 1e-5 * want);
 }
 
 // Each interpolated pixel's record names its block's corners: its value is their bilinear blend
