@@ -124,7 +124,8 @@ UgrTable computeUgrTable(const UgrLuminaire& lum, const UgrTableSettings& settin
   UgrTable table;
   table.settings = settings;
   const double h = settings.heightM, spacing = settings.spacingToHeight * h;
-  double minOmega = std::numeric_limits<double>::infinity(), maxOmega = 0.0;
+  const double inf = std::numeric_limits<double>::infinity();
+  double minOmega = inf, maxOmega = 0.0, minArea = inf, maxArea = 0.0;
   std::vector<GlareSource> sources;
   for (const UgrRoom& room : settings.rooms) {
     const double x = room.xH * h, y = room.yH * h;
@@ -142,8 +143,11 @@ UgrTable computeUgrTable(const UgrLuminaire& lum, const UgrTableSettings& settin
           const GlareSource s = ugrGlareSource(lum, viewing, along, across, h);
           if (!(s.solidAngleSr > 0.0)) continue;
           sources.push_back(s);
+          const double area = s.solidAngleSr * (along * along + across * across + h * h);
           minOmega = std::min(minOmega, s.solidAngleSr);
           maxOmega = std::max(maxOmega, s.solidAngleSr);
+          minArea = std::min(minArea, area);
+          maxArea = std::max(maxArea, area);
         }
       std::vector<double> row;
       for (double b : lb) row.push_back(unifiedGlareRating(b, sources));
@@ -152,6 +156,8 @@ UgrTable computeUgrTable(const UgrLuminaire& lum, const UgrTableSettings& settin
   }
   table.minSolidAngleSr = maxOmega > 0.0 ? minOmega : 0.0;
   table.maxSolidAngleSr = maxOmega;
+  table.minProjectedAreaM2 = maxArea > 0.0 ? minArea : 0.0;
+  table.maxProjectedAreaM2 = maxArea;
   return table;
 }
 

@@ -64,7 +64,10 @@ struct UgrTable {
   UgrTableSettings settings;
   std::vector<std::vector<double>> crosswise, endwise;  // UGR [room][reflectance]
   std::vector<int> luminaires;                          // N of each room's array
-  double minSolidAngleSr = 0.0, maxSolidAngleSr = 0.0;  // of the luminaires counted, every room
+  // Of the luminaires counted, every room and both viewings (0 when none): CIE 117's formula is
+  // meant for 3·10⁻⁴ to 0.1 sr, CIE 147 for projected areas of 0.005 to 1.5 m².
+  double minSolidAngleSr = 0.0, maxSolidAngleSr = 0.0;
+  double minProjectedAreaM2 = 0.0, maxProjectedAreaM2 = 0.0;
 };
 
 UgrTable computeUgrTable(const UgrLuminaire& luminaire, const UgrTableSettings& settings = {});

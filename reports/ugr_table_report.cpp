@@ -79,8 +79,9 @@ std::string ugrTableText(const UgrTable& t, const UgrTableLabels& labels) {
     out += line + "\n";
   }
   out += "\n" + std::string(kViewing[0]) + "\n" + kViewing[1] + "\n" + correction(labels) + "\n";
-  out += "Solid angles of the luminaires counted: " + fmt("%.2g", t.minSolidAngleSr) + " to " +
-         fmt("%.2g", t.maxSolidAngleSr) + " sr (no CIE 147 small- or large-source correction).\n";
+  out += "Luminaires counted: " + fmt("%.2g", t.minSolidAngleSr) + " to " + fmt("%.2g", t.maxSolidAngleSr) +
+         " sr, projected areas " + fmt("%.3g", t.minProjectedAreaM2) + " to " + fmt("%.3g", t.maxProjectedAreaM2) +
+         " m² (CIE 147's small- and large-source forms not applied).\n";
   return out;
 }
 

@@ -224,6 +224,17 @@ TEST(UgrTable, BackgroundLuminanceOfAnUplightUnderAReflectingCeiling) {
   EXPECT_EQ(ugrBackgroundLuminance(lambertian(1000.0, 0.6, 0.6), x, y, h, n, {0.0, 0.0, 0.0}), 0.0);
 }
 
+TEST(UgrTable, SizesOfTheLuminairesCountedAreReported) {
+  // A flat 0.6 × 0.6 m opening: its projected area A cos γ is below 0.36 m², and no luminaire
+  // is nearer than H = 2 m, so ω < 0.36 / 4 sr.
+  const UgrTable t = computeUgrTable(lambertian(1000.0, 0.6, 0.6));
+  EXPECT_GT(t.minProjectedAreaM2, 0.0);
+  EXPECT_LT(t.minProjectedAreaM2, t.maxProjectedAreaM2);
+  EXPECT_LT(t.maxProjectedAreaM2, 0.36);
+  EXPECT_GT(t.minSolidAngleSr, 0.0);
+  EXPECT_LT(t.maxSolidAngleSr, 0.36 / 4.0);
+}
+
 TEST(UgrTable, ScaleFree) {
   // Rooms, spacing and distances all in units of H: the table does not depend on H.
   UgrTableSettings two, three;
