@@ -147,6 +147,7 @@ void readDimensions(LdtLines& in, PhotometricInfo& info) {
   info.luminaireWidthM = in.number("luminaire width") * mm;
   info.luminaireHeightM = in.number("luminaire height") * mm;
   const double la = in.number("luminous area length") * mm;
+  info.openingLoc = in.loc();
   const double lb = in.number("luminous area width") * mm;
   double lh = 0.0;
   for (const char* plane : {"C0", "C90", "C180", "C270"})

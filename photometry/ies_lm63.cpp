@@ -288,8 +288,9 @@ PhotometricWeb parseIes(std::string_view text, const std::string& fileName,
   if (units != 1 && units != 2)
     throw InputError(t.loc(), "units type must be 1 (feet) or 2 (metres), got " + std::to_string(units));
   const double toM = units == 1 ? kFeetToMetres : 1.0;
-  const double w = t.number("luminous opening width"), l = t.number("luminous opening length"),
-               h = t.number("luminous opening height");
+  const double w = t.number("luminous opening width");
+  info.openingLoc = t.loc();
+  const double l = t.number("luminous opening length"), h = t.number("luminous opening height");
   info.openingShape = iesOpeningShape(w, l, h);
   info.openingWidthM = std::fabs(w) * toM;
   info.openingLengthM = std::fabs(l) * toM;

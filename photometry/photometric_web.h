@@ -10,6 +10,7 @@
 //   latitude from the plane through the beam axis and X) turns it towards +Y.
 #pragma once
 
+#include "base/error.h"
 #include "base/math.h"
 
 #include <filesystem>
@@ -87,6 +88,7 @@ struct PhotometricInfo {
   double openingLengthM = 0.0;                 // along C90-C270 (Y)
   double openingHeightM = 0.0;                 // along Z
   OpeningShape openingShape = OpeningShape::kPoint;
+  FileLoc openingLoc;                          // where the file gives the opening (IES: its width; EULUMDAT: line 16)
   double luminaireLengthM = 0.0;               // EULUMDAT lines 13-15 (outer dimensions); 0 if unknown
   double luminaireWidthM = 0.0;
   double luminaireHeightM = 0.0;
