@@ -135,10 +135,35 @@ std::string summaryCsv(const ReportData& data) {
   return out;
 }
 
+std::string observersCsv(const ReportData& data) {
+  std::string out =
+      "observer,x_m,y_m,eye_height_m,direction_x,direction_y,ugr,ugr_limit,verdict,luminaires_in_view,"
+      "vertical_illuminance_lux,background_luminance_cd_m2\n";
+  for (const ObserverReport& o : data.observers) {
+    const std::optional<bool> pass = o.pass();
+    const std::vector<std::string> f = {csvField(o.name),
+                                        formatNumber(o.eyeM.x),
+                                        formatNumber(o.eyeM.y),
+                                        formatNumber(o.eyeM.z),
+                                        formatNumber(o.direction.x),
+                                        formatNumber(o.direction.y),
+                                        o.ugr ? formatNumber(*o.ugr) : "",
+                                        o.ugrLimit ? formatNumber(*o.ugrLimit) : "",
+                                        pass ? (*pass ? "pass" : "fail") : "",
+                                        std::to_string(o.luminairesInView),
+                                        formatNumber(o.verticalLux),
+                                        formatNumber(o.backgroundCdM2)};
+    for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
+    out += "\n";
+  }
+  return out;
+}
+
 fs::path writeSummaryCsv(const fs::path& dir, const ReportData& data) {
   fs::create_directories(dir);
   const fs::path path = dir / "summary.csv";
   writeFileAtomic(path, summaryCsv(data));
+  if (!data.observers.empty()) writeFileAtomic(dir / "observers.csv", observersCsv(data));
   return path;
 }
 

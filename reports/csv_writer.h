@@ -47,6 +47,11 @@ std::string summaryCsv(const ReportData& data);
 // Writes <dir>/summary.csv and returns its path.
 std::filesystem::path writeSummaryCsv(const std::filesystem::path& dir, const ReportData& data);
 
+// observers.csv: a row per [[observer]] (name, eye position, line of sight, UGR, limit, verdict,
+// luminaires in view, vertical illuminance and background luminance at the eye); written by
+// writeSummaryCsv beside summary.csv when the case has observers.
+std::string observersCsv(const ReportData& data);
+
 // One CSV field, quoted when it holds a comma, quote or line break (RFC 4180).
 std::string csvField(const std::string& text);
 

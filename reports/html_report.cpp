@@ -293,7 +293,17 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
       << (g.targets.uniformity ? formatFixed(*g.targets.uniformity, 2) : "—") << "</td><td>"
       << badge(g.check.overall) << "</td></tr>\n";
   }
-  h << "</tbody>\n</table>\n</section>\n";
+  h << "</tbody>\n</table>\n";
+  std::size_t rated = 0, passed = 0;
+  for (const ObserverReport& o : data.observers)
+    if (const std::optional<bool> pass = o.pass()) {
+      ++rated;
+      passed += *pass;
+    }
+  if (rated > 0)
+    h << "<p>Discomfort glare: " << passed << " of " << rated << " observer" << (rated > 1 ? "s" : "")
+      << " within the limit UGR<sub>L</sub> (<a href=\"#observers\">observer positions</a>).</p>\n";
+  h << "</section>\n";
 }
 
 // The metrics table of a point-in-time grid: calculated values against their targets.
@@ -361,6 +371,29 @@ void viewSection(std::ostringstream& h, const ViewReport& v, std::size_t i) {
   h << "</tbody>\n</table>\n</section>\n";
 }
 
+// Glare at the [[observer]] positions: UGR against EN 12464-1's UGR_L, one row each.
+void observersSection(std::ostringstream& h, const std::vector<ObserverReport>& observers) {
+  if (observers.empty()) return;
+  h << "<section class=\"grid\" id=\"observers\">\n<h2>Discomfort glare at the observer positions</h2>\n"
+       "<p class=\"sub\">Unified glare rating (CIE 117) from the luminaires in view along a horizontal line of "
+       "sight, against the limit UGR<sub>L</sub> of EN 12464-1; no CIE 147 small- or large-source "
+       "correction.</p>\n<table>\n<thead><tr><th>Observer</th><th>Eye position (m)</th><th>Line of sight</th>"
+       "<th>Luminaires in view</th><th>Vertical illuminance at the eye (lx)</th><th>UGR</th><th>Limit UGR<sub>L</sub></th>"
+       "<th>Verdict</th></tr></thead>\n<tbody>\n";
+  for (const ObserverReport& o : observers) {
+    const std::optional<bool> pass = o.pass();
+    h << "<tr><td>" << xmlEscape(o.name) << "</td><td class=\"num\">(" << formatFixed(o.eyeM.x, 2) << ", "
+      << formatFixed(o.eyeM.y, 2) << ", " << formatFixed(o.eyeM.z, 2) << ")</td><td class=\"num\">("
+      << formatFixed(o.direction.x, 2) << ", " << formatFixed(o.direction.y, 2) << ")</td><td class=\"num\">"
+      << o.luminairesInView << "</td><td class=\"num\">" << formatFixed(o.verticalLux, 0) << "</td><td class=\"num\">"
+      << (o.ugr ? formatFixed(*o.ugr, 1) : std::string("none in view")) << "</td><td class=\"num\">"
+      << (o.ugrLimit ? formatFixed(*o.ugrLimit, 0) : std::string("—")) << "</td><td>"
+      << (pass ? (*pass ? "<span class=\"badge pass\">PASS</span>" : "<span class=\"badge fail\">FAIL</span>") : "—")
+      << "</td></tr>\n";
+  }
+  h << "</tbody>\n</table>\n</section>\n";
+}
+
 // Calculation settings and timing, and the page's footer.
 void settingsAndFooter(std::ostringstream& h, const RunInfo& run) {
   h << "<section class=\"settings\">\n<h2>Calculation</h2>\n<p class=\"sub\">Settings of this run; with the same "
@@ -401,6 +434,7 @@ std::string htmlReport(const ReportData& data) {
     gridSection(h, g, i, data.northDeg);
   }
   for (std::size_t i = 0; i < data.views.size(); ++i) viewSection(h, data.views[i], i);
+  observersSection(h, data.observers);
   settingsAndFooter(h, data.run);
   return h.str();
 }

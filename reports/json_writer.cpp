@@ -81,6 +81,21 @@ std::string summaryJson(const ReportData& data) {
                       v.glareSourceLuminanceRelativeStandardError ? number(*v.glareSourceLuminanceRelativeStandardError)
                                                                   : json()}});
   j["views"] = views;
+  json observers = json::array();
+  for (const ObserverReport& o : data.observers) {
+    const std::optional<bool> pass = o.pass();
+    observers.push_back({{"name", o.name},
+                         {"position_m", {o.eyeM.x, o.eyeM.y}},
+                         {"eye_height_m", o.eyeM.z},
+                         {"direction", {o.direction.x, o.direction.y}},
+                         {"ugr", optionalNumber(o.ugr)},
+                         {"ugr_limit", optionalNumber(o.ugrLimit)},
+                         {"verdict", pass ? json(*pass ? "pass" : "fail") : json()},
+                         {"luminaires_in_view", o.luminairesInView},
+                         {"vertical_illuminance_lux", number(o.verticalLux)},
+                         {"background_luminance_cd_m2", number(o.backgroundCdM2)}});
+  }
+  j["observers"] = observers;
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();
   for (const Warning& w : data.warnings)

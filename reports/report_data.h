@@ -112,10 +112,29 @@ struct ViewReport {
   std::optional<double> glareSourceLuminanceRelativeStandardError;
 };
 
+// An [[observer]]'s glare rating (study/view_glare.h luminaireGlare): UGR (CIE 117) from the
+// luminaires in view along a horizontal line of sight, against EN 12464-1's limit UGR_L.
+struct ObserverReport {
+  std::string name;
+  Vec3 eyeM{0.0};
+  Vec2 direction{0.0, 1.0};
+  std::optional<double> ugr;       // unset: no luminaire in view
+  std::optional<double> ugrLimit;
+  std::size_t luminairesInView = 0;
+  double verticalLux = 0.0;        // at the eye, facing the line of sight
+  double backgroundCdM2 = 0.0;     // UGR's Lb: the indirect part of that over π
+  // pass when UGR ≤ UGR_L (or no luminaire in view); unset without a limit.
+  std::optional<bool> pass() const {
+    if (!ugrLimit) return std::nullopt;
+    return !ugr || *ugr <= *ugrLimit;
+  }
+};
+
 struct ReportData {
   RunInfo run;
   std::vector<GridReport> grids;
   std::vector<ViewReport> views;
+  std::vector<ObserverReport> observers;
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };

@@ -540,6 +540,28 @@ void readView(const Context& c, const toml::table& t, int index, CaseFile& out) 
   out.views.push_back(std::move(v));
 }
 
+void readObserver(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[observer]]");
+  ObserverSpec o;
+  o.loc = tab.loc();
+  o.name = "observer" + std::to_string(index + 1);
+  if (auto n = tab.get("name")) o.name = asString(c, *n, "name");
+  if (!names.insert(o.name).second) c.fail(*tab.get("name"), "two observers are named '" + o.name + "'");
+  o.positionM = asVec2(c, tab.require("position"), "position", "[x, y] in metres (the plan position)");
+  const toml::node& dir = tab.require("direction");
+  o.direction = asVec2(c, dir, "direction", "[x, y]: the horizontal line of sight");
+  if (!(glm::length(o.direction) > 0.0)) c.fail(dir, "'direction' must not be zero");
+  o.direction = glm::normalize(o.direction);
+  o.eyeHeightM = numberOr(tab, "eye_height", 1.2);
+  checkMin(tab, "eye_height", o.eyeHeightM, 0.0, true, "m");
+  if (const toml::node* n = tab.get("ugr_limit")) {
+    o.ugrLimit = asNumber(c, *n, "ugr_limit");
+    checkRange(tab, "ugr_limit", *o.ugrLimit, 0.0, 40.0, "");
+  }
+  tab.finish();
+  out.observers.push_back(std::move(o));
+}
+
 void readSettings(const Context& c, const toml::table& t, Settings& s) {
   Table tab(t, c, "[settings]");
   if (const toml::node* n = tab.get("quality")) {
@@ -681,11 +703,12 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   out.output.dir = (c.dir / "out").lexically_normal();
 
   static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "portal", "site", "sky", "grid",
-                                                  "view", "settings", "annual", "output"};
+                                                  "view", "observer", "settings", "annual", "output"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
-                                               "' (expected case, scene, luminaire, portal, site, sky, grid, view, settings, annual or output)");
+                                               "' (expected case, scene, luminaire, portal, site, sky, grid, view, observer, settings, annual or "
+                                               "output)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -708,6 +731,11 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "view")) {
     int index = 0;
     for (const toml::node& n : *a) readView(c, *n.as_table(), index++, out);
+  }
+  if (auto a = tableArray(c, root, "observer")) {
+    std::set<std::string> names;
+    int index = 0;
+    for (const toml::node& n : *a) readObserver(c, *n.as_table(), index++, names, out);
   }
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
   if (auto t = singleTable(c, root, "annual")) {

@@ -98,6 +98,18 @@ struct ViewSpec : View {
   FileLoc loc;
 };
 
+// An [[observer]]: a glare rating (UGR, CIE 117) at an eye position without rendering, from every
+// luminaire's luminous opening seen along a horizontal line of sight (docs/glare.md).
+struct ObserverSpec {
+  std::string name;
+  Vec2 positionM{0.0};          // plan position of the observer
+  double eyeHeightM = 1.2;      // above the floor plane z = 0: 1.2 m seated, 1.6 m standing
+  Vec2 direction{0.0, 1.0};     // line of sight in plan (horizontal, as CIE 117's), unit
+  std::optional<double> ugrLimit;  // UGR_L of EN 12464-1: pass when UGR ≤ the limit
+  FileLoc loc;
+  Vec3 eyeM() const { return {positionM.x, positionM.y, eyeHeightM}; }
+};
+
 // Unset optionals take the quality preset's value (chosen by the engine).
 struct Settings {
   Quality quality = Quality::kNormal;
@@ -145,6 +157,7 @@ struct CaseFile {
   SkySpec sky;
   std::vector<GridSpec> grids;
   std::vector<ViewSpec> views;
+  std::vector<ObserverSpec> observers;  // [[observer]]
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

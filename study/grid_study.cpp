@@ -14,6 +14,7 @@
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
+#include "study/view_glare.h"
 #include "study/view_study.h"
 #include "study/warnings.h"
 
@@ -221,6 +222,21 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
         throw InputError(FileLoc{run.outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
       }
     }
+  }
+  // Glare at the observers: one vertical illuminance estimate each (its own random stream).
+  for (std::size_t k = 0; k < c.observers.size(); ++k) {
+    const ObserverSpec& o = c.observers[k];
+    const LuminaireGlare g = luminaireGlare(tracer, observerView(o), trace.settings, kObserverStreamBase + k);
+    ObserverReport r;
+    r.name = o.name;
+    r.eyeM = o.eyeM();
+    r.direction = o.direction;
+    if (!g.sources.empty()) r.ugr = g.ugr;
+    r.ugrLimit = o.ugrLimit;
+    r.luminairesInView = g.sources.size();
+    r.verticalLux = g.verticalLux;
+    r.backgroundCdM2 = g.backgroundCdM2;
+    data.observers.push_back(std::move(r));
   }
   data.run.runTimeS = secondsSince(run.start);
 

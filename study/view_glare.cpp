@@ -5,16 +5,35 @@
 
 namespace candela {
 
-ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
-                           const Image& img, double glareThresholdCdM2) {
-  ViewGlare g;
-  const EyeLight eye = eyeLight(tracer, view, settings);
+LuminaireGlare luminaireGlare(const Tracer& tracer, const View& view, const TraceSettings& settings, uint64_t stream) {
+  LuminaireGlare g;
+  const EyeLight eye = eyeLight(tracer, view, settings, stream);
   for (const SeenLuminaire& s : eye.luminaires)
     if (s.transmittance > 0.0)
       g.sources.push_back({s.luminanceCdM2 * s.transmittance, s.solidAngleSr, positionIndex(s.directionView)});
   g.verticalLux = eye.verticalLux;
   g.backgroundCdM2 = eye.backgroundLuminanceCdM2();
   g.ugr = g.sources.empty() ? 0.0 : unifiedGlareRating(g.backgroundCdM2, g.sources);
+  return g;
+}
+
+View observerView(const ObserverSpec& o) {
+  View v;
+  v.type = ViewType::kPerspective;
+  v.positionM = o.eyeM();
+  v.direction = Vec3(o.direction, 0.0);
+  v.up = Vec3(0.0, 0.0, 1.0);
+  return v;
+}
+
+ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
+                           const Image& img, double glareThresholdCdM2) {
+  ViewGlare g;
+  const LuminaireGlare lum = luminaireGlare(tracer, view, settings);
+  g.ugr = lum.ugr;
+  g.sources = lum.sources;
+  g.verticalLux = lum.verticalLux;
+  g.backgroundCdM2 = lum.backgroundCdM2;
   if (view.type == ViewType::kFisheye) {
     const ViewGeometry geo(view);
     GlareDetection det;

@@ -26,6 +26,27 @@ struct ViewGlare {
   std::optional<double> sourceLuminanceRelativeStandardError;
 };
 
+// UGR (CIE 117) at a view's eye along its direction from the luminaires' luminous openings in
+// front of the eye (engine/render.h seenLuminaires: L = I/A_proj, ω, occlusion through the
+// scene), P the Guth position index in the view frame, Lb the indirect illuminance at the eye
+// over π (its vertical illuminance estimated with random stream `stream`). No CIE 147
+// small- or large-source correction (docs/views.md).
+struct LuminaireGlare {
+  double ugr = 0.0;                 // 0 without luminaires in view
+  std::vector<GlareSource> sources;
+  double verticalLux = 0.0;
+  double backgroundCdM2 = 0.0;
+};
+LuminaireGlare luminaireGlare(const Tracer& tracer, const View& view, const TraceSettings& settings,
+                              uint64_t stream = 0);
+
+// Observers' vertical illuminances take random streams from here (sensor points use their
+// index, camera rays 2^48 and up).
+inline constexpr uint64_t kObserverStreamBase = uint64_t{1} << 52;
+
+// An [[observer]]'s eye as a view: at its eye height, looking along its horizontal direction.
+View observerView(const ObserverSpec& o);
+
 ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
                            const Image& img, double glareThresholdCdM2);
 

@@ -169,6 +169,51 @@ TEST(Summary, JsonCarriesEachViewsNoise) {
   EXPECT_TRUE(nlohmann::json::parse(summaryJson(data))["views"].is_array());
 }
 
+// Observers: UGR, limit and verdict in summary.json and observers.csv; no luminaire in view reads
+// as no UGR and passes its limit; without a limit there is no verdict.
+TEST(Summary, ObserversInJsonAndCsv) {
+  ReportData data = testing_sample::sampleReport();
+  EXPECT_TRUE(nlohmann::json::parse(summaryJson(data))["observers"].empty());
+  ObserverReport a;
+  a.name = "desk, north";
+  a.eyeM = {1.0, 2.0, 1.2};
+  a.direction = {0.0, 1.0};
+  a.ugr = 19.4;
+  a.ugrLimit = 19.0;
+  a.luminairesInView = 6;
+  a.verticalLux = 310.0;
+  a.backgroundCdM2 = 40.0;
+  ObserverReport b;
+  b.name = "corner";
+  b.ugrLimit = 22.0;  // nothing in view: passes
+  ObserverReport c;
+  c.name = "free";
+  c.ugr = 15.0;  // no limit: no verdict
+  data.observers = {a, b, c};
+  const nlohmann::json j = nlohmann::json::parse(summaryJson(data))["observers"];
+  ASSERT_EQ(j.size(), 3u);
+  EXPECT_EQ(j[0]["name"], "desk, north");
+  EXPECT_EQ(j[0]["ugr"], 19.4);
+  EXPECT_EQ(j[0]["verdict"], "fail");
+  EXPECT_EQ(j[0]["position_m"], nlohmann::json::array({1.0, 2.0}));
+  EXPECT_EQ(j[0]["eye_height_m"], 1.2);
+  EXPECT_EQ(j[0]["luminaires_in_view"], 6);
+  EXPECT_TRUE(j[1]["ugr"].is_null());
+  EXPECT_EQ(j[1]["verdict"], "pass");
+  EXPECT_TRUE(j[2]["verdict"].is_null());
+  std::istringstream csv(observersCsv(data));
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "observer,x_m,y_m,eye_height_m,direction_x,direction_y,ugr,ugr_limit,verdict,luminaires_in_view,"
+            "vertical_illuminance_lux,background_luminance_cd_m2");
+  std::getline(csv, row);
+  EXPECT_EQ(row, "\"desk, north\",1,2,1.2,0,1,19.4,19,fail,6,310,40");
+  std::getline(csv, row);
+  EXPECT_EQ(row.substr(0, 7), "corner,");
+  EXPECT_NE(row.find(",,22,pass,0,"), std::string::npos) << row;
+}
+
 TEST(Summary, CsvFieldQuoting) {
   EXPECT_EQ(csvField("plain"), "plain");
   EXPECT_EQ(csvField("a,b"), "\"a,b\"");

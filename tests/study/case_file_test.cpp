@@ -160,6 +160,49 @@ TEST(CaseFile, AnnualKeysAndTheirDefaults) {
   EXPECT_EQ(c.annual.reportSensorLoc.line, 16);  // the 16th line of the text
 }
 
+// [[observer]]: plan position, eye height (1.2 m seated by default), a horizontal line of sight
+// (normalised), an optional UGR limit; errors at their key's line.
+TEST(CaseFile, ObserverKeysDefaultsAndErrors) {
+  const fs::path path = casesDir() / "errors" / "observer.toml";
+  const CaseFile c = parseCaseFile(
+      "[[observer]]\nname = \"desk\"\nposition = [2.0, 1.5]\ndirection = [0.0, 2.0]\nugr_limit = 19\n"
+      "[[observer]]\nposition = [4.0, 1.0]\ndirection = [-1.0, 0.0]\neye_height = 1.6\n",
+      path);
+  ASSERT_EQ(c.observers.size(), 2u);
+  EXPECT_EQ(c.observers[0].name, "desk");
+  EXPECT_EQ(c.observers[0].eyeM(), Vec3(2.0, 1.5, 1.2));
+  EXPECT_EQ(c.observers[0].direction, Vec2(0.0, 1.0));
+  EXPECT_EQ(c.observers[0].ugrLimit.value(), 19.0);
+  EXPECT_EQ(c.observers[0].loc.line, 1);
+  EXPECT_EQ(c.observers[1].name, "observer2");
+  EXPECT_EQ(c.observers[1].eyeM(), Vec3(4.0, 1.0, 1.6));
+  EXPECT_FALSE(c.observers[1].ugrLimit.has_value());
+  auto error = [&](const std::string& text) {
+    try {
+      parseCaseFile(text, path);
+    } catch (const InputError& e) {
+      return std::to_string(e.loc().line) + ": " + e.what();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(error("[[observer]]\nposition = [0, 0]\n\ndirection = [0, 0]\n").rfind("4: ", 0), 0u);  // at its line
+  EXPECT_NE(error("[[observer]]\nposition = [0, 0]\ndirection = [0, 0]\n").find("'direction' must not be zero"),
+            std::string::npos);
+  EXPECT_NE(error("[[observer]]\ndirection = [0, 1]\n").find("needs the key 'position'"), std::string::npos);
+  EXPECT_NE(error("[[observer]]\nposition = [0, 0]\ndirection = [0, 1]\neye_height = 0\n")
+                .find("'eye_height' must be greater than 0"),
+            std::string::npos);
+  EXPECT_NE(error("[[observer]]\nposition = [0, 0]\ndirection = [0, 1]\nugr_limit = 50\n")
+                .find("'ugr_limit' must be between 0 and 40"),
+            std::string::npos);
+  EXPECT_NE(error("[[observer]]\nposition = [0, 0]\ndirection = [0, 1]\nheight = 1\n").find("unknown key 'height'"),
+            std::string::npos);
+  EXPECT_NE(error("[[observer]]\nname = \"a\"\nposition = [0, 0]\ndirection = [0, 1]\n"
+                  "[[observer]]\nname = \"a\"\nposition = [1, 0]\ndirection = [0, 1]\n")
+                .find("two observers are named 'a'"),
+            std::string::npos);
+}
+
 struct ErrorCase {
   const char* file;
   int line;
