@@ -227,13 +227,20 @@ TEST(Render, AdaptiveSamplingRefinesOnlyWhereLuminanceChanges) {
   }
 }
 
-// Indirect light makes pixels noisy; the image is nevertheless the same for 1 and 2 threads.
-TEST(Render, SameImageForAnyThreadCount) {
+// A grey floor and wall lit by a small spherical lamp: noisy indirect light and sharp shadows, for
+// the images that must not depend on how they were computed.
+Scene floorWallAndLamp() {
   Scene sc;
   const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
   addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
   sc.addPolygon({{-2, -2, 0}, {-2, -2, 2}, {2, -2, 2}, {2, -2, 0}}, grey);  // a wall at y = -2
   sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  return sc;
+}
+
+// Indirect light makes pixels noisy; the image is nevertheless the same for 1 and 2 threads.
+TEST(Render, SameImageForAnyThreadCount) {
+  const Scene sc = floorWallAndLamp();
   const Tracer tracer(sc);
   const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 24, 16);
   TraceSettings s;
@@ -248,11 +255,7 @@ TEST(Render, SameImageForAnyThreadCount) {
 // image, its interpolation record and its mean's standard error do not depend on the band size,
 // down to bands of a single lattice row.
 TEST(Render, SameImageForAnyBandSize) {
-  Scene sc;
-  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
-  addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
-  sc.addPolygon({{-2, -2, 0}, {-2, -2, 2}, {2, -2, 2}, {2, -2, 0}}, grey);  // a wall at y = -2
-  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  const Scene sc = floorWallAndLamp();
   const Tracer tracer(sc);
   const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 37, 23);
   TraceSettings s;
@@ -331,10 +334,7 @@ TEST(Render, MeanStandardErrorInBandsIsTheWholeImages) {
 // Each interpolated pixel's record names its block's corners: its value is their bilinear blend
 // (computed in double from the float corners, then rounded to float).
 TEST(Render, InterpolatedPixelsAreTheirCornersBlend) {
-  Scene sc;
-  const uint32_t grey = addMaterial(sc, MaterialType::kPlastic, 0.6);
-  addUpRect(sc, -2, -2, 2, 2, 0.0, grey);
-  sc.addSphere({0, 0, 2.5}, 0.2, addMaterial(sc, MaterialType::kLight, 50.0));
+  const Scene sc = floorWallAndLamp();
   const Tracer tracer(sc);
   const View v = view(ViewType::kPerspective, {0, 1.8, 1.2}, {0, -1, -0.3}, {0, 0, 1}, {70, 50}, 37, 23);
   RenderSettings r;
