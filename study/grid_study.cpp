@@ -72,8 +72,12 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
     char buf[160];
     // A sky from the scene's own files (gensky, gendaylit) names itself ("scene:gensky ...").
     data.run.settings.emplace_back("sky", sky.fromScene ? sky.model->name() : skyTypeName(c.sky.type));
-    std::snprintf(buf, sizeof buf, "altitude %.2f deg, azimuth %.2f deg", sky.sunAltitudeDeg, sky.sunAzimuthDeg);
-    data.run.settings.emplace_back("sun position", buf);
+    // An overcast or uniform sky does not depend on the sun: no sun position to state (a sky from
+    // the scene's files may, as far as candela knows).
+    if (sky.fromScene || c.sky.type.dependsOnSun()) {
+      std::snprintf(buf, sizeof buf, "altitude %.2f deg, azimuth %.2f deg", sky.sunAltitudeDeg, sky.sunAzimuthDeg);
+      data.run.settings.emplace_back("sun position", buf);
+    }
     std::snprintf(buf, sizeof buf, "%.0f lx (sky %.0f lx, sun %.0f lx)", sky.outsideHorizontalLux(),
                   sky.horizontalSkyLux, sky.horizontalSunLux);
     data.run.settings.emplace_back("outside horizontal illuminance", buf);

@@ -13,6 +13,7 @@
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -121,6 +122,23 @@ TEST(RunCase, UnknownViewNamesTheViews) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no [[view]] named 'up' (views: down)"), std::string::npos) << e.what();
   }
+}
+
+// The run's settings name the sun's position only where the sky depends on it: not under the CIE
+// overcast sky (its luminance does not depend on the sun), but under a clear one.
+TEST(RunCase, SunPositionOnlyWhereTheSkyDependsOnIt) {
+  auto settingNames = [](const std::string& file) {
+    RunRequest run;
+    run.outDir = freshDir("study_sun_position_" + file);
+    std::vector<std::string> names;
+    for (const auto& [k, v] : runCase(fs::path(CANDELA_TEST_DATA) / "study" / (file + ".toml"), run).data.run.settings)
+      names.push_back(k);
+    return names;
+  };
+  const std::vector<std::string> overcast = settingNames("sky_overcast"), clear = settingNames("sky_clear");
+  EXPECT_NE(std::find(overcast.begin(), overcast.end(), "sky"), overcast.end());
+  EXPECT_EQ(std::find(overcast.begin(), overcast.end(), "sun position"), overcast.end());
+  EXPECT_NE(std::find(clear.begin(), clear.end(), "sun position"), clear.end());
 }
 
 }  // namespace
