@@ -1,8 +1,8 @@
 #include "reports/csv_writer.h"
 
-#include <string_view>
-
+#include <functional>
 #include <stdexcept>
+#include <string_view>
 
 #include "base/atomic_file.h"
 
@@ -24,7 +24,14 @@ std::string csvField(const std::string& text) {
   return q + "\"";
 }
 
-std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns) {
+namespace {
+
+// The CSV of points with their columns, handed to `sink` in pieces of at most kRowsPerPiece
+// rows (the header first), so that a file of 10⁶ rows is never one string in memory.
+constexpr std::size_t kRowsPerPiece = 4096;
+
+void emitPointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns,
+                   const std::function<void(std::string_view)>& sink) {
   std::string out = "x,y,z,dx,dy,dz";
   for (const ExtraColumn& c : columns) {
     if (c.values.size() != points.size())
@@ -40,48 +47,70 @@ std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<
       row += (row.empty() ? "" : ",") + formatNumber(v, 10);
     for (const ExtraColumn& c : columns) row += "," + formatNumber(c.values[i], 8);
     out += row + "\n";
+    if ((i + 1) % kRowsPerPiece == 0) {
+      sink(out);
+      out.clear();
+    }
   }
-  return out;
+  sink(out);
 }
 
-std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
-                    const std::vector<ExtraColumn>& extraColumns) {
+fs::path writePointsCsv(const fs::path& path, const std::vector<ReportPoint>& points,
+                        const std::vector<ExtraColumn>& columns) {
+  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+  AtomicFile file(path);
+  emitPointsCsv(points, columns, [&file](std::string_view piece) { file.write(piece); });
+  file.commit();
+  return path;
+}
+
+std::vector<ExtraColumn> gridColumns(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
+                                     const std::vector<ExtraColumn>& extraColumns) {
   if (lux.size() != points.size())
     throw std::invalid_argument("gridCsv: " + std::to_string(points.size()) + " points but " +
                                 std::to_string(lux.size()) + " illuminances");
   std::vector<ExtraColumn> columns = {{"illuminance_lux", lux}};
   columns.insert(columns.end(), extraColumns.begin(), extraColumns.end());
-  return pointsCsv(points, columns);
+  return columns;
+}
+
+std::vector<ExtraColumn> annualColumns(const AnnualGridReport& a) {
+  using M = SensorAnnualMetrics;
+  return {{"DA300", annualColumn(a, &M::da)},
+          {"cDA300", annualColumn(a, &M::cda)},
+          {"UDI_fell_short", annualColumn(a, &M::udiFellShort)},
+          {"UDI_supplementary", annualColumn(a, &M::udiSupplementary)},
+          {"UDI_autonomous", annualColumn(a, &M::udiAutonomous)},
+          {"UDI_exceeded", annualColumn(a, &M::udiExceeded)},
+          {"ASE_hours", annualColumn(a, &M::aseHours)},
+          {"sun_hours", annualColumn(a, &M::sunHours)}};
+}
+
+}  // namespace
+
+std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns) {
+  std::string out;
+  emitPointsCsv(points, columns, [&out](std::string_view piece) { out += piece; });
+  return out;
+}
+
+std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<double>& lux,
+                    const std::vector<ExtraColumn>& extraColumns) {
+  return pointsCsv(points, gridColumns(points, lux, extraColumns));
 }
 
 std::string annualGridCsv(const std::vector<ReportPoint>& points, const AnnualGridReport& a) {
-  using M = SensorAnnualMetrics;
-  return pointsCsv(points, {{"DA300", annualColumn(a, &M::da)},
-                            {"cDA300", annualColumn(a, &M::cda)},
-                            {"UDI_fell_short", annualColumn(a, &M::udiFellShort)},
-                            {"UDI_supplementary", annualColumn(a, &M::udiSupplementary)},
-                            {"UDI_autonomous", annualColumn(a, &M::udiAutonomous)},
-                            {"UDI_exceeded", annualColumn(a, &M::udiExceeded)},
-                            {"ASE_hours", annualColumn(a, &M::aseHours)},
-                            {"sun_hours", annualColumn(a, &M::sunHours)}});
+  return pointsCsv(points, annualColumns(a));
 }
 
 fs::path writeAnnualGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
                             const AnnualGridReport& annual) {
-  const std::string text = annualGridCsv(points, annual);
-  fs::create_directories(dir);
-  const fs::path path = dir / (safeFileName(gridName) + "_annual.csv");
-  writeFileAtomic(path, text);
-  return path;
+  return writePointsCsv(dir / (safeFileName(gridName) + "_annual.csv"), points, annualColumns(annual));
 }
 
 fs::path writeGridCsv(const fs::path& dir, const std::string& gridName, const std::vector<ReportPoint>& points,
                       const std::vector<double>& lux, const std::vector<ExtraColumn>& extraColumns) {
-  const std::string text = gridCsv(points, lux, extraColumns);
-  fs::create_directories(dir);
-  const fs::path path = dir / (safeFileName(gridName) + ".csv");
-  writeFileAtomic(path, text);
-  return path;
+  return writePointsCsv(dir / (safeFileName(gridName) + ".csv"), points, gridColumns(points, lux, extraColumns));
 }
 
 std::string summaryCsv(const ReportData& data) {

@@ -128,13 +128,13 @@ void checkResources(const ResourceEstimate& e, const ResourceLimits& limits, con
 uint64_t bytesPerGridPoint(const TraceSettings& s) {
   const bool cache = s.method == Method::kCache && s.maxBounces > 0;  // as computeIrradiance
   // The prepared grid (points, plane coordinates, cells), the list of all points, the estimates,
-  // the report's copies (points, lux, error, values, the sorted copy of the statistics), the CSV
-  // row and the report's cell.
+  // the report's copies (points, lux, error, values, the sorted copy of the statistics) and the
+  // report's cell; the CSV is written 4096 rows at a time (reports/csv_writer.cpp), not held.
   // The grid's vectors grow by push_back: 1.5 × their size on average (capacity doubles).
   const uint64_t grid = 3 * (sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2)) / 2;
   const uint64_t traced = sizeof(SensorPoint) + sizeof(IrradianceEstimate);
   const uint64_t report = sizeof(ReportPoint) + 4 * sizeof(double);
-  return grid + traced + report + kCsvRowBytes + kReportBytesPerPoint + (cache ? kCacheBytesPerPoint : 0);
+  return grid + traced + report + kReportBytesPerPoint + (cache ? kCacheBytesPerPoint : 0);
 }
 
 uint64_t bytesPerInputPoint(const TraceSettings& s) {

@@ -75,6 +75,25 @@ TEST(GridCsv, RoundTripsPointsValuesAndExtraColumns) {
   for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename().string()[0] != '.', true);
 }
 
+// The file is written in pieces of 4096 rows: 10 001 points (two whole pieces and a part) come
+// out row for row, in order, the same bytes as the CSV built as one string.
+TEST(GridCsv, LargeGridsAreWrittenInPiecesWithTheSameBytes) {
+  std::vector<ReportPoint> pts(10001);
+  std::vector<double> lux(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    pts[i] = {Vec3(0.01 * static_cast<double>(i), 1.0, 0.8), Vec3(0.0, 0.0, 1.0)};
+    lux[i] = 100.0 + static_cast<double>(i);
+  }
+  const fs::path dir = freshDir("grid_pieces");
+  const fs::path path = writeGridCsv(dir, "big", pts, lux, {});
+  const std::string text = slurp(path);
+  EXPECT_EQ(text, gridCsv(pts, lux));
+  const auto rows = parseCsv(text);
+  ASSERT_EQ(rows.size(), pts.size() + 1);
+  for (std::size_t i : {std::size_t{0}, std::size_t{4095}, std::size_t{4096}, std::size_t{8192}, std::size_t{10000}})
+    EXPECT_DOUBLE_EQ(std::stod(rows[i + 1][6]), lux[i]) << i;
+}
+
 // The summary's metrics must equal the statistics recomputed here from the values with plain
 // loops (independent of metrics/grid_stats).
 TEST(Summary, CsvAndJsonCarryTheMetrics) {
