@@ -65,8 +65,8 @@ void writeLuminanceExr(AtomicFile& out, const std::string& name, int width, int 
   Imf::addWhiteLuminance(header, 1.0f);
   if (!comment.empty()) Imf::addComments(header, comment);
   const int channels = rgb.empty() ? 1 : 4;
-  for (const char* name : {"Y", "R", "G", "B"}) {
-    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  for (const char* channel : {"Y", "R", "G", "B"}) {
+    header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
     if (channels == 1) break;
   }
   // One block of rows at a time: Y, R, G, B interleaved per pixel.
@@ -103,19 +103,11 @@ void writeLuminanceExr(AtomicFile& out, const std::string& name, int width, int 
 
 void writeLuminanceExr(const std::filesystem::path& path, int width, int height, const std::vector<float>& luminance,
                        const std::vector<glm::vec3>& rgb, double rgbScale, const std::string& comment) {
-  const std::size_t n = static_cast<std::size_t>(width) * height;
-  if (width <= 0 || height <= 0 || luminance.size() != n || (!rgb.empty() && rgb.size() != n))
-    throw std::invalid_argument("writeLuminanceExr: need width × height values");
-  try {
-    AtomicFile out(path);
-    writeLuminanceExr(out, path.string(), width, height, luminance, rgb, rgbScale, comment);
-    out.commit();
-  } catch (const std::invalid_argument&) {
-    throw;
-  } catch (const std::exception& e) {
-    const std::string what = e.what();
-    throw std::runtime_error(what.rfind("cannot write", 0) == 0 ? what : "cannot write " + path.string() + ": " + what);
-  }
+  // The sizes are checked before anything is written; a failure leaves the temporary to
+  // AtomicFile's destructor, and its own messages name the file.
+  AtomicFile out(path);
+  writeLuminanceExr(out, path.string(), width, height, luminance, rgb, rgbScale, comment);
+  out.commit();
 }
 
 }  // namespace candela
