@@ -29,11 +29,7 @@ View observerView(const ObserverSpec& o) {
 ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const TraceSettings& settings,
                            const Image& img, double glareThresholdCdM2) {
   ViewGlare g;
-  const LuminaireGlare lum = luminaireGlare(tracer, view, settings);
-  g.ugr = lum.ugr;
-  g.sources = lum.sources;
-  g.verticalLux = lum.verticalLux;
-  g.backgroundCdM2 = lum.backgroundCdM2;
+  static_cast<LuminaireGlare&>(g) = luminaireGlare(tracer, view, settings);
   if (view.type == ViewType::kFisheye) {
     const ViewGeometry geo(view);
     GlareDetection det;

@@ -12,11 +12,23 @@
 
 namespace candela {
 
-struct ViewGlare {
-  double ugr = 0.0;                 // CIE 117 unified glare rating
+// UGR (CIE 117) at a view's eye along its direction from the luminaires' luminous openings in
+// front of the eye (engine/render.h seenLuminaires: L = I/A_proj, ω, occlusion through the
+// scene), P the Guth position index in the view frame, Lb the indirect illuminance at the eye
+// over π (its vertical illuminance estimated with random stream `stream`). No CIE 147
+// small- or large-source correction (docs/views.md).
+struct LuminaireGlare {
+  double ugr = 0.0;                 // CIE 117 unified glare rating; 0 without luminaires in view
   std::vector<GlareSource> sources; // luminaires counted in the UGR
   double verticalLux = 0.0;         // illuminance at the eye, lux
   double backgroundCdM2 = 0.0;      // UGR background luminance
+};
+LuminaireGlare luminaireGlare(const Tracer& tracer, const View& view, const TraceSettings& settings,
+                              uint64_t stream = 0);
+
+// A rendered view's glare: the luminaires' UGR (LuminaireGlare: ugr, sources, verticalLux,
+// backgroundCdM2) and, from a fisheye image, DGP.
+struct ViewGlare : LuminaireGlare {
   std::optional<ImageGlare> dgp;    // fisheye views only
   // The image's glare sources (DGP's, fisheye views with any) pooled: their pixels' solid-angle
   // weighted mean luminance, cd/m², and its relative standard error (meanStandardError over the
@@ -25,20 +37,6 @@ struct ViewGlare {
   std::optional<double> sourceLuminanceCdM2;
   std::optional<double> sourceLuminanceRelativeStandardError;
 };
-
-// UGR (CIE 117) at a view's eye along its direction from the luminaires' luminous openings in
-// front of the eye (engine/render.h seenLuminaires: L = I/A_proj, ω, occlusion through the
-// scene), P the Guth position index in the view frame, Lb the indirect illuminance at the eye
-// over π (its vertical illuminance estimated with random stream `stream`). No CIE 147
-// small- or large-source correction (docs/views.md).
-struct LuminaireGlare {
-  double ugr = 0.0;                 // 0 without luminaires in view
-  std::vector<GlareSource> sources;
-  double verticalLux = 0.0;
-  double backgroundCdM2 = 0.0;
-};
-LuminaireGlare luminaireGlare(const Tracer& tracer, const View& view, const TraceSettings& settings,
-                              uint64_t stream = 0);
 
 // Observers' vertical illuminances take random streams from here (sensor points use their
 // index, camera rays 2^48 and up).
