@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 
 namespace candela {
@@ -362,11 +363,8 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) img.inside[img.index(x, y)] = cam.pixelDirection(x, y) ? 1 : 0;
 
-  int step = 1, level = 0;
-  while (step * 2 <= std::max(1, render.coarseStep)) {
-    step *= 2;
-    ++level;
-  }
+  int step = 1;
+  while (step * 2 <= std::max(1, render.coarseStep)) step *= 2;
 
   std::atomic<std::size_t> rays{0}, settled{0};
   auto report = [&](std::size_t n) {
@@ -475,7 +473,7 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
       // A band's pixels read only the old lattice: bands are independent within a pass.
       if (bandFull() || r + 1 == nys.size()) {
         traceList(toTrace, use);
-        interpolate(toInterpolate, level);
+        interpolate(toInterpolate, std::countr_zero(static_cast<unsigned>(step)));  // log2 step
         toTrace.clear();
         toInterpolate.clear();
       }
@@ -483,7 +481,6 @@ Image renderView(const Tracer& tracer, const View& view, const TraceSettings& se
     xs = nxs;
     ys = nys;
     step = half;
-    --level;
   }
 
   for (uint8_t t : img.traced) img.tracedPixels += t;

@@ -16,7 +16,7 @@
 namespace candela {
 
 // A rendered view. Pixels are row-major, top row first. Values are held as 32-bit floats (the
-// precision of the EXR written from them): 22 bytes a pixel, 1.4 GiB for 8192 × 8192.
+// precision of the EXR written from them): 23 bytes a pixel, 1.44 GiB for 8192 × 8192.
 struct Image {
   int width = 0, height = 0;
   std::vector<glm::vec3> radiance;  // Radiance RGB radiance, W/sr/m²
