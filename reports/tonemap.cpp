@@ -44,11 +44,11 @@ RowPicture toneMapRows(int width, int height, const std::vector<float>& lum, con
   // Lwhite: the largest scaled luminance, but at least 1, so that a low-contrast picture keeps
   // its key instead of burning out to white (eq. 4 maps Lwhite itself to 1).
   const double white = std::max(scale * maxL, 1.0);
-  return RowPicture{width, height, [&lum, &rgb, &mask, width, scale, white](int y, uint8_t* out) {
+  return RowPicture{width, height, [&lum, &rgb, in, width, scale, white](int y, uint8_t* out) {
                       for (int x = 0; x < width; ++x) {
                         const std::size_t i = static_cast<std::size_t>(y) * width + x;
                         uint8_t* p = out + 3 * x;
-                        if (!mask.empty() && mask[i] == 0) {
+                        if (!in(i)) {
                           p[0] = p[1] = p[2] = 0;
                           continue;
                         }
