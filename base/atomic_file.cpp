@@ -56,6 +56,7 @@ AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path) {
     fd_ = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
     if (fd_ >= 0) {
       unnamed_ = true;
+      what_ = "a temporary for " + path.string();
       return;
     }
     // Not supported here (EOPNOTSUPP, EISDIR on old kernels): a named temporary instead; any
@@ -68,6 +69,7 @@ AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path) {
     if (fd_ < 0 && errno != EEXIST) throw std::runtime_error("cannot write " + tmp_.string() + ": " + errnoText());
   }
   if (fd_ < 0) throw std::runtime_error("cannot create a unique temporary beside " + path.string());
+  what_ = tmp_.string();
 }
 
 AtomicFile::~AtomicFile() {
@@ -75,9 +77,7 @@ AtomicFile::~AtomicFile() {
   if (!committed_ && !tmp_.empty()) ::unlink(tmp_.c_str());
 }
 
-void AtomicFile::write(std::string_view bytes) {
-  writeAll(fd_, bytes, unnamed_ ? "a temporary for " + path_.string() : tmp_.string());
-}
+void AtomicFile::write(std::string_view bytes) { writeAll(fd_, bytes, what_); }
 
 void AtomicFile::commit() { commitAs(path_); }
 

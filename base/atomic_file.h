@@ -33,6 +33,7 @@ class AtomicFile {
 
  private:
   std::filesystem::path path_, tmp_;
+  std::string what_;  // the temporary as write errors name it
   int fd_ = -1;
   bool unnamed_ = false;
   bool committed_ = false;
