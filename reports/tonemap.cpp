@@ -104,8 +104,12 @@ Image8 luminanceFalseColor(int width, int height, const std::vector<float>& lum,
   return falseColorImage(lum, width, height, scale, "cd/m2");
 }
 
+ViewImagePaths viewImagePaths(const std::filesystem::path& dir, const std::string& stem) {
+  return ViewImagePaths{dir / (stem + ".exr"), dir / (stem + ".png"), dir / (stem + "_preview.png")};
+}
+
 ViewImagePaths ViewImageFiles::commitInto(const std::filesystem::path& dir) {
-  ViewImagePaths p{dir / (stem + ".exr"), dir / (stem + ".png"), dir / (stem + "_preview.png")};
+  const ViewImagePaths p = viewImagePaths(dir, stem);
   exr->commitAs(p.exr);
   falseColor->commitAs(p.falseColor);
   preview->commitAs(p.preview);
@@ -117,13 +121,14 @@ ViewImageFiles writeViewImageFiles(const std::filesystem::path& dir, const std::
                                    const std::vector<uint8_t>& mask, const ColorScale& scale,
                                    const std::string& comment) {
   std::filesystem::create_directories(dir);
+  const ViewImagePaths p = viewImagePaths(dir, stem);
   ViewImageFiles f;
   f.stem = stem;
-  f.exr = std::make_unique<AtomicFile>(dir / (stem + ".exr"));
-  writeLuminanceExr(*f.exr, stem + ".exr", width, height, lum, rgb, rgbScale, comment);
-  f.falseColor = std::make_unique<AtomicFile>(dir / (stem + ".png"));
+  f.exr = std::make_unique<AtomicFile>(p.exr);
+  writeLuminanceExr(*f.exr, p.exr.string(), width, height, lum, rgb, rgbScale, comment);
+  f.falseColor = std::make_unique<AtomicFile>(p.falseColor);
   writePng(*f.falseColor, falseColorRows(lum, width, height, scale, "cd/m2"));
-  f.preview = std::make_unique<AtomicFile>(dir / (stem + "_preview.png"));
+  f.preview = std::make_unique<AtomicFile>(p.preview);
   writePng(*f.preview, toneMapRows(width, height, lum, rgb, mask));
   return f;
 }

@@ -45,6 +45,7 @@ Image8 luminanceFalseColor(int width, int height, const std::vector<float>& lumi
 struct ViewImagePaths {
   std::filesystem::path exr, falseColor, preview;
 };
+ViewImagePaths viewImagePaths(const std::filesystem::path& dir, const std::string& stem);
 // The same three pictures written but not yet in place: temporaries in `dir`'s file system (unnamed
 // where it has them: a process killed before commitInto leaves nothing), one picture in memory
 // at a time. commitInto puts them into a folder of that file system (made later, say).

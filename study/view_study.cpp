@@ -166,8 +166,8 @@ ViewImagePaths writeViewSet(const std::filesystem::path& dir, const ViewResult& 
   ViewImageFiles files = writeViewFiles(dir, v, comment);
   // A folder (or anything not a file) where a picture goes would fail its rename after the
   // others had been replaced: refused before any is.
-  for (const std::string& name : {v.stem + ".exr", v.stem + ".png", v.stem + "_preview.png"}) {
-    const std::filesystem::path target = dir / name;
+  const ViewImagePaths targets = viewImagePaths(dir, v.stem);
+  for (const std::filesystem::path& target : {targets.exr, targets.falseColor, targets.preview}) {
     const auto st = std::filesystem::symlink_status(target);
     if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_symlink(st))
       throw std::runtime_error("'" + target.string() + "' exists and is not a file; the pictures were not replaced");
