@@ -287,18 +287,19 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   addLuminaires(e, c);
   // Views are rendered and written one at a time (study/grid_study.cpp): the largest one's pixels
   // and every view's pictures for the report.
-  std::size_t largest = 0;
-  for (std::size_t k = 0; k < c.views.size(); ++k)
-    if (viewMemory(c.views[k], true).bytes > viewMemory(c.views[largest], true).bytes) largest = k;
-  for (std::size_t k = 0; k < c.views.size(); ++k) {
-    const ViewSpec& v = c.views[k];
-    MemoryItem m = viewMemory(v, true);
-    if (k != largest) {
-      m.bytes = viewReportBytes(v);
-      m.detail = "its pictures in the report";
-    }
-    e.memory.push_back(std::move(m));
+  std::vector<MemoryItem> views;
+  for (const ViewSpec& v : c.views) {
+    views.push_back(viewMemory(v, true));
     e.work.push_back({"rendering " + v.name, viewRays(v, ViewWork{}, s, n.sampled, n.luminaires)});
+  }
+  const auto largest = std::max_element(views.begin(), views.end(),
+                                        [](const MemoryItem& a, const MemoryItem& b) { return a.bytes < b.bytes; });
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    if (views.begin() + static_cast<std::ptrdiff_t>(k) != largest) {
+      views[k].bytes = viewReportBytes(c.views[k]);
+      views[k].detail = "its pictures in the report";
+    }
+    e.memory.push_back(std::move(views[k]));
   }
   return e;
 }
