@@ -61,6 +61,15 @@ double daylightGlareProbability(double ev, const std::vector<GlareSource>& sourc
   return std::min(dgp, 1.0);
 }
 
+double glareSourceSolidAngle(const std::vector<float>& lum, const PixelGeometry& geometry, std::size_t i,
+                             double thresholdCdM2) {
+  if (!(lum[i] > thresholdCdM2)) return 0.0;  // the geometry only where the luminance qualifies
+  Vec3 dir;
+  double omega = 0.0;
+  geometry(i, dir, omega);
+  return omega > 0.0 && dir.z > 0.0 ? omega : 0.0;
+}
+
 ImageGlare evaluateImageGlare(const std::vector<float>& lum, const PixelGeometry& geometry, int width, int height,
                               const GlareDetection& det) {
   ImageGlare out;
@@ -83,11 +92,7 @@ ImageGlare evaluateImageGlare(const std::vector<float>& lum, const PixelGeometry
   // the pixels already grouped).
   std::vector<bool> grouped(n, false);
   std::vector<std::size_t> stack;
-  auto bright = [&](std::size_t i) {
-    if (!(lum[i] > out.thresholdCdM2)) return false;
-    geometry(i, dir, omega);
-    return omega > 0.0 && dir.z > 0.0;
-  };
+  auto bright = [&](std::size_t i) { return glareSourceSolidAngle(lum, geometry, i, out.thresholdCdM2) > 0.0; };
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (grouped[seed] || !bright(seed)) continue;
     double w = 0.0, lw = 0.0;

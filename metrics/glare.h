@@ -70,6 +70,11 @@ struct ImageGlare {
 // image needs no geometry arrays.
 using PixelGeometry = std::function<void(std::size_t pixel, Vec3& directionView, double& solidAngleSr)>;
 
+// The solid angle of pixel i if it belongs to a glare source of evaluateImageGlare (brighter than
+// the threshold, with a ray, in front of the eye), else 0.
+double glareSourceSolidAngle(const std::vector<float>& luminanceCdM2, const PixelGeometry& geometry, std::size_t i,
+                             double thresholdCdM2);
+
 // Evaluates a luminance image given each pixel's luminance (cd/m², row-major, width × height)
 // and geometry. A source's luminance is its pixels' solid-angle weighted mean, its position
 // index that of its solid-angle weighted mean direction.

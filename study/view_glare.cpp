@@ -31,20 +31,14 @@ ViewGlare computeViewGlare(const Tracer& tracer, const ViewSpec& view, const Tra
   ViewGlare g;
   static_cast<LuminaireGlare&>(g) = luminaireGlare(tracer, view, settings);
   if (view.type == ViewType::kFisheye) {
-    const ViewGeometry geo(view);
+    const PixelGeometry geo = ViewGeometry(view);  // one std::function for every call below
     GlareDetection det;
     det.thresholdCdM2 = glareThresholdCdM2;
     g.dgp = evaluateImageGlare(img.luminance, geo, img.width, img.height, det);
     // The pixels evaluateImageGlare groups into sources (metrics/glare.cpp: inside, above the
     // threshold, in front of the eye), all together.
     const double threshold = g.dgp->thresholdCdM2;
-    auto sourceWeight = [&](std::size_t i) {
-      if (!(img.luminance[i] > threshold)) return 0.0;
-      Vec3 dir;
-      double omega = 0.0;
-      geo(i, dir, omega);
-      return omega > 0.0 && dir.z > 0.0 ? omega : 0.0;
-    };
+    auto sourceWeight = [&](std::size_t i) { return glareSourceSolidAngle(img.luminance, geo, i, threshold); };
     double sum = 0.0, omega = 0.0;
     for (std::size_t i = 0; i < img.luminance.size(); ++i) {
       const double w = sourceWeight(i);
