@@ -108,21 +108,40 @@ std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const st
                                                   const TraceSettings& settings, int threads,
                                                   const std::function<void(size_t done)>& progress,
                                                   const Distribution& distribution) {
+  std::vector<IrradianceEstimate> out(points.size());
+  // One block of every point: a single fill, as before blocks existed.
+  computeIrradianceInBlocks(
+      tracer, points, settings, threads, progress, distribution,
+      [&out](size_t first, const IrradianceEstimate* e, size_t n) { std::copy(e, e + n, out.begin() + first); },
+      std::max<size_t>(1, points.size()));
+  return out;
+}
+
+void computeIrradianceInBlocks(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                               const TraceSettings& settings, int threads,
+                               const std::function<void(size_t done)>& progress, const Distribution& distribution,
+                               const std::function<void(size_t first, const IrradianceEstimate* estimates, size_t n)>& block,
+                               size_t blockPoints) {
   // Cache method: the cache is filled first in a fixed order and frozen (engine/irradiance_cache.h),
   // so that evaluating the points in parallel reads it only.
   std::optional<IrradianceCache> cache;
   if (settings.method == Method::kCache && settings.maxBounces > 0)
     cache.emplace(buildIrradianceCache(tracer, points, settings, threads, distribution));
   const IrradianceCache* c = cache ? &*cache : nullptr;
-  std::vector<IrradianceEstimate> out(points.size());
+  blockPoints = std::max<size_t>(1, blockPoints);
+  std::vector<IrradianceEstimate> out(std::min(blockPoints, points.size()));
   std::atomic<size_t> done{0};
-  distributedFill(distribution, out, ItemUse::kResult, threads, [&](size_t i, IrradianceEstimate& e) {
-    // Point i uses stream i whatever the thread or process: the callback changes nothing in the
-    // numbers.
-    e = estimatePoint(tracer, points[i], i, settings, c);
-    if (progress) progress(done.fetch_add(1, std::memory_order_relaxed) + 1);
-  });
-  return out;
+  for (size_t first = 0; first < points.size(); first += blockPoints) {
+    const size_t n = std::min(blockPoints, points.size() - first);
+    distributedFill(distribution, out.data(), n, ItemUse::kResult, threads, [&](size_t j, IrradianceEstimate& e) {
+      // Point i uses stream i whatever the thread, process or block: the callback changes
+      // nothing in the numbers.
+      const size_t i = first + j;
+      e = estimatePoint(tracer, points[i], i, settings, c);
+      if (progress) progress(done.fetch_add(1, std::memory_order_relaxed) + 1);
+    });
+    block(first, out.data(), n);
+  }
 }
 
 }  // namespace candela

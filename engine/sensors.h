@@ -33,4 +33,20 @@ std::vector<IrradianceEstimate> computeIrradiance(const Tracer& tracer, const st
                                                   const std::function<void(size_t done)>& progress,
                                                   const Distribution& distribution = localDistribution());
 
+// Points evaluated per block by computeIrradianceInBlocks: 65 536 estimates (3 MiB) at a time.
+inline constexpr size_t kSensorBlockPoints = size_t{1} << 16;
+
+// The same estimates, handed out in order a block at a time instead of held: after the cache is
+// filled over all the points, the points [first, first + n) are estimated (shared between the
+// processes as above) and block(first, estimates, n) is called on every process, blocks in
+// increasing order, n ≤ blockPoints; the estimates are gone after the call. A study of 10⁶ points
+// holds one block of estimates, not 10⁶ (docs/distributed.md#memory-for-large-grids). The
+// numbers do not depend on blockPoints.
+// 8 parameters: computeIrradiance's six, the block consumer and the block size.
+void computeIrradianceInBlocks(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                               const TraceSettings& settings, int threads,
+                               const std::function<void(size_t done)>& progress, const Distribution& distribution,
+                               const std::function<void(size_t first, const IrradianceEstimate* estimates, size_t n)>& block,
+                               size_t blockPoints = kSensorBlockPoints);
+
 }  // namespace candela

@@ -24,35 +24,52 @@ std::string csvField(const std::string& text) {
   return q + "\"";
 }
 
-namespace {
-
-// The CSV of points with their columns, handed to `sink` in pieces of at most kRowsPerPiece
-// rows (the header first), so that a file of 10⁶ rows is never one string in memory.
+// Rows are handed to the sink in pieces of at most kRowsPerPiece rows (the header first), so that
+// a file of 10⁶ rows is never one string in memory.
 constexpr std::size_t kRowsPerPiece = 4096;
+
+PointsCsvWriter::PointsCsvWriter(std::function<void(std::string_view)> sink, const std::vector<std::string>& columns)
+    : sink_(std::move(sink)), columns_(columns.size()) {
+  pending_ = "x,y,z,dx,dy,dz";
+  for (const std::string& c : columns) pending_ += "," + csvField(c);
+  pending_ += "\n";
+}
+
+void PointsCsvWriter::row(const Vec3& position, const Vec3& normal, const double* values) {
+  std::string row;
+  for (double v : {position.x, position.y, position.z, normal.x, normal.y, normal.z})
+    row += (row.empty() ? "" : ",") + formatNumber(v, 10);
+  for (std::size_t c = 0; c < columns_; ++c) row += "," + formatNumber(values[c], 8);
+  pending_ += row + "\n";
+  if (++rows_ % kRowsPerPiece == 0) {
+    sink_(pending_);
+    pending_.clear();
+  }
+}
+
+void PointsCsvWriter::finish() {
+  sink_(pending_);
+  pending_.clear();
+}
+
+namespace {
 
 void emitPointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns,
                    const std::function<void(std::string_view)>& sink) {
-  std::string out = "x,y,z,dx,dy,dz";
+  std::vector<std::string> names;
   for (const ExtraColumn& c : columns) {
     if (c.values.size() != points.size())
       throw std::invalid_argument("CSV column '" + c.name + "' has " + std::to_string(c.values.size()) +
                                   " values for " + std::to_string(points.size()) + " points");
-    out += "," + csvField(c.name);
+    names.push_back(c.name);
   }
-  out += "\n";
+  PointsCsvWriter writer(sink, names);
+  std::vector<double> row(columns.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const ReportPoint& p = points[i];
-    std::string row;
-    for (double v : {p.position.x, p.position.y, p.position.z, p.normal.x, p.normal.y, p.normal.z})
-      row += (row.empty() ? "" : ",") + formatNumber(v, 10);
-    for (const ExtraColumn& c : columns) row += "," + formatNumber(c.values[i], 8);
-    out += row + "\n";
-    if ((i + 1) % kRowsPerPiece == 0) {
-      sink(out);
-      out.clear();
-    }
+    for (std::size_t c = 0; c < columns.size(); ++c) row[c] = columns[c].values[i];
+    writer.row(points[i].position, points[i].normal, row.data());
   }
-  sink(out);
+  writer.finish();
 }
 
 fs::path writePointsCsv(const fs::path& path, const std::vector<ReportPoint>& points,

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reports/report_data.h"
@@ -19,6 +21,22 @@ std::string gridCsv(const std::vector<ReportPoint>& points, const std::vector<do
 // CSV, then `columns` (8 significant digits). gridCsv is this with illuminance_lux first.
 // Throws std::invalid_argument when a column's length differs from the number of points.
 std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<ExtraColumn>& columns);
+
+// A points CSV made a row at a time, for results that come in blocks (the grid study streams its
+// estimates): the header "x,y,z,dx,dy,dz[,column...]" and rows as pointsCsv writes them, the
+// same bytes, handed to `sink` a few thousand rows at a time. finish() hands over the rest.
+class PointsCsvWriter {
+ public:
+  PointsCsvWriter(std::function<void(std::string_view)> sink, const std::vector<std::string>& columns);
+  // One row: the point (m), its unit normal, and one value per column.
+  void row(const Vec3& position, const Vec3& normal, const double* values);
+  void finish();
+
+ private:
+  std::function<void(std::string_view)> sink_;
+  std::size_t columns_ = 0, rows_ = 0;
+  std::string pending_;
+};
 
 // Writes <dir>/<safeFileName(gridName)>.csv and returns its path; creates `dir` if needed.
 std::filesystem::path writeGridCsv(const std::filesystem::path& dir, const std::string& gridName,

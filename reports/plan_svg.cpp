@@ -9,6 +9,8 @@
 #include <tuple>
 
 #include "base/atomic_file.h"
+#include "reports/falsecolor.h"
+#include "reports/png_writer.h"
 
 namespace candela {
 
@@ -225,12 +227,71 @@ void writeSvgOpen(std::ostringstream& s, const PlanPage& p) {
     << "\" fill=\"#f4f4f2\"/>\n";
 }
 
-// Cells (regular) or dots (points files), and the calculation area's outline.
+// The cells of a large regular grid as one picture of the plan at twice its px (sharp when
+// printed): each pixel the false colour of the mean of the cells whose centres fall in it, or,
+// where cells are larger than pixels, of the cell under its centre; pixels outside every cell
+// are transparent (the plan's background shows).
+void writeRasterCells(std::ostringstream& s, const PlanPage& p) {
+  const GridReport& grid = p.grid;
+  const PlanLayout& L = grid.layout;
+  constexpr double kPxPerPlanPx = 2.0;
+  const int w = std::max(1, static_cast<int>(std::ceil(p.planW * kPxPerPlanPx)));
+  const int h = std::max(1, static_cast<int>(std::ceil(p.planH * kPxPerPlanPx)));
+  const double k = p.k * kPxPerPlanPx;  // picture px per m
+  const std::size_t n = std::min(grid.values.size(), L.cells.size());
+  std::vector<double> sum(static_cast<std::size_t>(w) * h, 0.0);
+  std::vector<uint32_t> count(sum.size(), 0);
+  auto pixelOf = [&](const Vec2& q, int& x, int& y) {
+    x = static_cast<int>(std::floor((q.x - p.lo.x) * k));
+    y = static_cast<int>(std::floor((p.hi.y - q.y) * k));
+    return x >= 0 && y >= 0 && x < w && y < h;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    int x = 0, y = 0;
+    if (!pixelOf(L.originM + (Vec2(L.cells[i]) + 0.5) * L.spacingM, x, y)) continue;
+    sum[static_cast<std::size_t>(y) * w + x] += grid.values[i];
+    ++count[static_cast<std::size_t>(y) * w + x];
+  }
+  // The point of each lattice cell, for pixels that no cell centre fell in.
+  std::vector<int32_t> pointOfCell(static_cast<std::size_t>(L.columns) * L.rows, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::ivec2 c = L.cells[i];
+    if (c.x >= 0 && c.y >= 0 && c.x < L.columns && c.y < L.rows)
+      pointOfCell[static_cast<std::size_t>(c.y) * L.columns + c.x] = static_cast<int32_t>(i);
+  }
+  Image8 picture(w, h, Rgb8{0xf4, 0xf4, 0xf2});  // the plan's background (writeSvgOpen)
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t at = static_cast<std::size_t>(y) * w + x;
+      double v = 0.0;
+      if (count[at] > 0) {
+        v = sum[at] / count[at];
+      } else {
+        const Vec2 q(p.lo.x + (x + 0.5) / k, p.hi.y - (y + 0.5) / k);
+        const glm::ivec2 c(static_cast<int>(std::floor((q.x - L.originM.x) / L.spacingM.x)),
+                           static_cast<int>(std::floor((q.y - L.originM.y) / L.spacingM.y)));
+        if (c.x < 0 || c.y < 0 || c.x >= L.columns || c.y >= L.rows) continue;
+        const int32_t i = pointOfCell[static_cast<std::size_t>(c.y) * L.columns + c.x];
+        if (i < 0) continue;
+        v = grid.values[static_cast<std::size_t>(i)];
+      }
+      picture.set(x, y, falseColor(v, p.scale));
+    }
+  s << "<image x=\"" << px(p.left) << "\" y=\"" << px(p.top) << "\" width=\"" << px(w / kPxPerPlanPx)
+    << "\" height=\"" << px(h / kPxPerPlanPx) << "\" preserveAspectRatio=\"none\" href=\"data:image/png;base64,"
+    << base64(encodePng(picture)) << "\"/>\n";
+}
+
+// Cells (regular) or dots (points files), and the calculation area's outline. Grids of more
+// than kMaxSvgCells cells are drawn as a picture (writeRasterCells): an element a cell would
+// make a plan of 10⁶ points a page of 100 MB.
 void writeCells(std::ostringstream& s, const PlanPage& p) {
   const GridReport& grid = p.grid;
   const PlanLayout& L = grid.layout;
   s << "<g shape-rendering=\"crispEdges\">\n";
-  for (std::size_t i = 0; i < grid.values.size(); ++i) {
+  const bool raster = L.regular && L.cells.size() > kMaxSvgCells;
+  if (raster) writeRasterCells(s, p);
+  for (std::size_t i = 0; i < grid.values.size() && !raster; ++i) {
     const Rgb8 c = falseColor(grid.values[i], p.scale);
     if (L.regular && i < L.cells.size()) {
       const Vec2 a = L.originM + Vec2(L.cells[i]) * L.spacingM;

@@ -11,6 +11,9 @@
 
 namespace candela {
 
+// Regular grids with more cells than this are drawn as one picture instead of an element a cell.
+inline constexpr std::size_t kMaxSvgCells = 20000;
+
 struct PlanOptions {
   double maxPlanWidthPx = 480.0;      // the plan is scaled to fit these, aspect kept
   double maxPlanHeightPx = 380.0;

@@ -53,6 +53,9 @@ Image8 falseColorImage(const std::vector<float>& values, int width, int height, 
 // PNG bytes of the image (8-bit RGB, no interlace).
 std::vector<uint8_t> encodePng(const Image8& image);
 
+// RFC 4648 base64 of `bytes`, for embedding PNG pictures as data URIs in the report and plans.
+std::string base64(const std::vector<uint8_t>& bytes);
+
 // Writes the image as a PNG, atomically, a row at a time (no encoded copy in memory). Throws std::runtime_error on failure.
 void writePng(const std::filesystem::path& path, const Image8& image);
 // A picture into `out` a row at a time, left uncommitted (its caller commits it).

@@ -21,9 +21,13 @@ void checkAll(const std::vector<T>& values, const std::string& what, std::size_t
 }  // namespace
 
 void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::string& what) {
-  for (std::size_t i = 0; i < estimates.size(); ++i)
+  checkFinite(estimates.data(), estimates.size(), what, 0);
+}
+
+void checkFinite(const IrradianceEstimate* estimates, std::size_t n, const std::string& what, std::size_t firstIndex) {
+  for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(estimates[i].illuminanceLux()) || !std::isfinite(estimates[i].standardErrorLux()))
-      nonFinite(what, i);
+      nonFinite(what, firstIndex + i);
 }
 
 void checkFinite(const std::vector<float>& values, const std::string& what) { checkAll(values, what); }

@@ -14,6 +14,9 @@ namespace candela {
 // Throws std::runtime_error naming `what` and the first point whose illuminance or error is not
 // finite.
 void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::string& what);
+// The same for a block of n estimates whose first is point `firstIndex` of the run (the grid
+// study's blocks, engine/sensors.h): the index named is the run's.
+void checkFinite(const IrradianceEstimate* estimates, std::size_t n, const std::string& what, std::size_t firstIndex);
 
 // Throws std::runtime_error naming `what` and the first index whose value is not finite.
 void checkFinite(const std::vector<float>& values, const std::string& what);

@@ -22,6 +22,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace candela {
 
@@ -92,35 +93,28 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
   if (!c.views.empty()) data.run.settings.emplace_back("views", std::to_string(c.views.size()));
 }
 
-// A grid's values as the CSV and the report carry them.
+// A grid's values as the run keeps them: its points' illuminance and standard error (lux),
+// 16 B a point; everything else of an estimate goes to the grid's CSV as it comes (below).
 struct GridValues {
-  std::vector<ReportPoint> points;
   std::vector<double> lux, errorLux;
 };
 
-// The grids' reports (metrics and verdicts) from the estimates of all points, grids in case
-// order; daylight-factor grids in % of the outside horizontal illuminance.
-std::vector<GridValues> gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const Scene& scene,
-                                    const std::vector<IrradianceEstimate>& est) {
-  std::vector<GridValues> out(grids.size());
-  std::size_t k = 0;
+// The grids' reports (metrics and verdicts) from the values of all points, grids in case order;
+// daylight-factor grids in % of the outside horizontal illuminance.
+void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const std::vector<GridValues>& values,
+                 double outsideLux) {
   for (std::size_t gi = 0; gi < grids.size(); ++gi) {
     const PreparedGrid& g = grids[gi];
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g);
-    const bool df = g.spec->daylightFactor;
-    const double outside = scene.sky ? scene.sky->outsideHorizontalLux() : 0.0;
-    for (const SensorPoint& s : g.grid.points) {
-      out[gi].points.push_back({s.position, s.normal});
-      out[gi].lux.push_back(est[k].illuminanceLux());
-      out[gi].errorLux.push_back(est[k].standardErrorLux());
-      r.values.push_back(df ? 100.0 * est[k].illuminanceLux() / outside : est[k].illuminanceLux());
-      ++k;
-    }
-    if (df) {
+    if (g.spec->daylightFactor) {
       r.quantity = "Daylight factor";
       r.unit = "%";
+      r.values.reserve(values[gi].lux.size());
+      for (double e : values[gi].lux) r.values.push_back(100.0 * e / outsideLux);
+    } else {
+      r.values = values[gi].lux;
     }
     r.stats = computeGridStats(r.values);
     r.targets = {g.spec->targetAverageLux, g.spec->targetUniformity};
@@ -128,8 +122,44 @@ std::vector<GridValues> gridReports(ReportData& data, const std::vector<Prepared
     r.layout = planLayout(g);
     data.grids.push_back(std::move(r));
   }
-  return out;
 }
+
+// The grids' CSVs written as the estimates come, a block at a time, each into an unnamed
+// temporary beside the result folder (base/atomic_file.h) that goes into the folder when it is
+// committed: illuminance_lux, error_lux and, for daylight-factor grids, daylight_factor_pct.
+class GridCsvFiles {
+ public:
+  GridCsvFiles(const std::filesystem::path& beside, const std::vector<PreparedGrid>& grids, double outsideLux)
+      : grids_(grids), outsideLux_(outsideLux) {
+    std::filesystem::create_directories(beside);
+    for (const PreparedGrid& g : grids) {
+      auto file = std::make_unique<AtomicFile>(beside / (g.fileStem + ".csv"));
+      std::vector<std::string> columns = {"illuminance_lux", "error_lux"};
+      if (g.spec->daylightFactor) columns.emplace_back("daylight_factor_pct");
+      AtomicFile* f = file.get();
+      writers_.push_back(std::make_unique<PointsCsvWriter>([f](std::string_view piece) { f->write(piece); }, columns));
+      files_.push_back(std::move(file));
+    }
+  }
+  // Point k of grid gi.
+  void row(std::size_t gi, std::size_t k, double lux, double errorLux) {
+    const SensorPoint& p = grids_[gi].grid.points[k];
+    const double v[3] = {lux, errorLux, 100.0 * lux / outsideLux_};
+    writers_[gi]->row(p.position, p.normal, v);
+  }
+  void commitInto(const std::filesystem::path& dir) {
+    for (std::size_t gi = 0; gi < files_.size(); ++gi) {
+      writers_[gi]->finish();
+      files_[gi]->commitAs(dir / (grids_[gi].fileStem + ".csv"));
+    }
+  }
+
+ private:
+  const std::vector<PreparedGrid>& grids_;
+  double outsideLux_;
+  std::vector<std::unique_ptr<AtomicFile>> files_;
+  std::vector<std::unique_ptr<PointsCsvWriter>> writers_;
+};
 
 }  // namespace
 
@@ -174,20 +204,48 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   Warnings warnings = pointInTimeWarnings(c, tracer, grids);
   const std::vector<SensorSet> sets = sensorSets(grids);
   throwIfStrict(warnings, run.request.strict);
-  std::vector<IrradianceEstimate> est;
+  // The points are estimated a block at a time (engine/sensors.h): each block's values are kept
+  // (16 B a point) and its CSV rows written at once, so the estimates of a 10⁶-point grid are
+  // never all in memory.
+  const double outsideLux = scene->sky ? scene->sky->outsideHorizontalLux() : 0.0;
+  const Distribution& processes = run.request.processes();
+  const std::filesystem::path beside =
+      std::filesystem::absolute(run.outDir).parent_path();  // the result folder's file system
+  std::optional<GridCsvFiles> csvFiles;
+  if (processes.writesOutputs()) {
+    try {
+      csvFiles.emplace(beside, grids, outsideLux);
+    } catch (const std::exception& e) {
+      throw InputError(FileLoc{run.outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
+    }
+  }
+  std::vector<GridValues> values(grids.size());
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    values[gi].lux.reserve(grids[gi].grid.size());
+    values[gi].errorLux.reserve(grids[gi].grid.size());
+  }
+  std::size_t withoutCache = 0;
   {
     const ObservedStep step(observer, "tracing", all.size());
-    est = computeIrradiance(tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); },
-                            run.request.processes());
+    std::size_t gi = 0;  // the grid of the block's next point
+    computeIrradianceInBlocks(
+        tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); }, processes,
+        [&](std::size_t first, const IrradianceEstimate* est, std::size_t n) {
+          checkFinite(est, n, "the grids' illuminance", first);
+          for (std::size_t j = 0; j < n; ++j) {
+            while (values[gi].lux.size() == grids[gi].grid.size()) ++gi;
+            const double lux = est[j].illuminanceLux(), err = est[j].standardErrorLux();
+            if (csvFiles) csvFiles->row(gi, values[gi].lux.size(), lux, err);
+            values[gi].lux.push_back(lux);
+            values[gi].errorLux.push_back(err);
+            withoutCache += est[j].withoutCache;
+          }
+        });
   }
-  checkFinite(est, "the grids' illuminance");
 
   // Warnings on the results, before anything is written.
-  std::size_t first = 0;
-  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
-    checkErrorBars(tracer, sets[gi], est.data() + first, warnings);
-    first += grids[gi].grid.size();
-  }
+  for (std::size_t gi = 0; gi < grids.size(); ++gi)
+    checkErrorBars(tracer, sets[gi], values[gi].lux.data(), values[gi].errorLux.data(), warnings);
   // A shard holds only its share of the points: merge checks the warnings on all of them.
   throwIfStrict(warnings, run.request.strict && !run.request.processes().partial());
 
@@ -198,20 +256,17 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   data = reportDataFor(c, run, trace.settings.seed);
   describeSettings(data, c, *scene, trace, all.size());
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
-  if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0) {
-    std::size_t without = 0;
-    for (const IrradianceEstimate& e : est) without += e.withoutCache;
-    data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)", std::to_string(without));
-  }
+  if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0)
+    data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)",
+                                   std::to_string(withoutCache));
   data.warnings = warnings;
-  const std::vector<GridValues> values = gridReports(data, grids, *scene, est);
+  gridReports(data, grids, values, outsideLux);
+  values.clear();
+  values.shrink_to_fit();
   // Each view's pictures are written as soon as it is rendered, as unnamed temporaries beside the
   // result folder (base/atomic_file.h: a killed run leaves nothing), so that one image at a time
   // is in memory; they go into the result folder with everything else when it is committed.
-  const Distribution& processes = run.request.processes();
   const std::string comment = "candela " + std::string(CANDELA_VERSION) + ", case " + c.name;
-  const std::filesystem::path beside =
-      std::filesystem::absolute(run.outDir).parent_path();  // the result folder's file system
   std::vector<ViewImageFiles> pictures;
   for (const ViewSpec& view : c.views) {
     ViewOptions options;
@@ -246,11 +301,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
 
   // 4. Write: the folder is committed as a whole.
   commitRun(c, run, [&](const std::filesystem::path& dir) {
-    for (std::size_t gi = 0; gi < grids.size(); ++gi) {
-      std::vector<ExtraColumn> extra = {{"error_lux", values[gi].errorLux}};
-      if (grids[gi].spec->daylightFactor) extra.push_back({"daylight_factor_pct", data.grids[gi].values});
-      writeGridCsv(dir, grids[gi].spec->name, values[gi].points, values[gi].lux, extra);
-    }
+    if (csvFiles) csvFiles->commitInto(dir);
     for (ViewImageFiles& p : pictures) p.commitInto(dir);
     writeSummaryCsv(dir, data);
     writeFileAtomic(dir / "summary.json", summaryJsonWithSpacing(data, grids));

@@ -68,7 +68,14 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
                                     ps.distribution ? *ps.distribution : localDistribution());
   }
   checkFinite(r.estimates, "the points' illuminance");
-  if (!points.empty()) checkErrorBars(tracer, set, r.estimates.data(), r.warnings);
+  if (!points.empty()) {
+    std::vector<double> lux, errorLux;
+    for (const IrradianceEstimate& e : r.estimates) {
+      lux.push_back(e.illuminanceLux());
+      errorLux.push_back(e.standardErrorLux());
+    }
+    checkErrorBars(tracer, set, lux.data(), errorLux.data(), r.warnings);
+  }
   throwIfStrict(r.warnings, ps.strict);
   return r;
 }

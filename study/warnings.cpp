@@ -283,7 +283,8 @@ void checkCaseSite(const CaseFile& c, Warnings& out) {
   checkSiteAgainstWeather(c, readEpw(c.sky.weather.string()).location, out);
 }
 
-void checkErrorBars(const Tracer& tracer, const SensorSet& set, const IrradianceEstimate* est, Warnings& out) {
+void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lux, const double* errorLux,
+                    Warnings& out) {
   const Scene& scene = tracer.scene();
   std::vector<uint32_t> glows;
   for (uint32_t i = 0; i < scene.shapes.size() && glows.size() < kGlowShapesChecked; ++i) {
@@ -295,7 +296,7 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const Irradiance
   std::size_t count = 0, first = 0;
   uint32_t firstGlow = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    if (est[i].illuminanceLux() != 0.0 || est[i].standardErrorLux() != 0.0) continue;
+    if (lux[i] != 0.0 || errorLux[i] != 0.0) continue;
     const Vec3 o = pts[i].position + Tracer::originOffset(pts[i].position) * pts[i].normal;
     for (const uint32_t g : glows) {
       const Vec3 d = shapeCentre(scene, scene.shapes[g]) - o;

@@ -64,8 +64,10 @@ void checkCaseSite(const CaseFile& c, Warnings& out);
 // untrusted_error_bar: points that read exactly 0 with a standard error of 0 while a glow
 // surface (one not sampled directly from them: engine/lights.h, glowSampledFrom) lies in front of them with
 // nothing in between: no sample found it, so the zero error bar claims a certainty it does not
-// have. `estimates` has one entry per point of the set.
-void checkErrorBars(const Tracer& tracer, const SensorSet& set, const IrradianceEstimate* estimates, Warnings& out);
+// have. `lux` and `errorLux` (illuminance and its standard error) have one entry per point of
+// the set.
+void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lux, const double* errorLux,
+                    Warnings& out);
 
 // luminaire_photometry: a photometric file whose light output ratio exceeds 100 % (more light
 // out than the lamps give: a wrong lamp flux or conversion factor) or whose intensities are all

@@ -239,6 +239,38 @@ TEST(IrradianceCacheMethod, SameNumbersForAnyThreadCount) {
   }
 }
 
+// The grid study takes its estimates a block at a time (computeIrradianceInBlocks): every block
+// size gives the same numbers, in order, as the whole list at once, with the cache filled over
+// all the points (a block of 5 of 12 points reads records placed for the others).
+TEST(IrradianceCacheMethod, SameNumbersForAnyBlockSize) {
+  Scene sc;
+  sc.addSphere(Vec3(0.0), 0.05, addMaterial(sc, MaterialType::kLight, 100.0));
+  sc.addSphere(Vec3(0.0), 1.0, addMaterial(sc, MaterialType::kPlastic, 0.5), true);
+  const Tracer tracer(sc);
+  std::vector<SensorPoint> pts;
+  for (int i = 0; i < 12; ++i) pts.push_back({Vec3(0.05 * i - 0.3, 0.0, -0.5), Vec3(0, 0, -1)});
+  const TraceSettings s = cacheSettings(256);
+  const auto whole = computeIrradiance(tracer, pts, s, 2);
+  for (size_t blockPoints : {size_t{1}, size_t{5}, size_t{12}, size_t{100}}) {
+    std::vector<IrradianceEstimate> got;
+    size_t expectedFirst = 0;
+    computeIrradianceInBlocks(
+        tracer, pts, s, 2, {}, localDistribution(),
+        [&](size_t first, const IrradianceEstimate* e, size_t n) {
+          EXPECT_EQ(first, expectedFirst) << blockPoints;
+          EXPECT_LE(n, blockPoints);
+          expectedFirst += n;
+          got.insert(got.end(), e, e + n);
+        },
+        blockPoints);
+    ASSERT_EQ(got.size(), pts.size()) << blockPoints;
+    for (size_t i = 0; i < pts.size(); ++i) {
+      EXPECT_EQ(got[i].illuminanceLux(), whole[i].illuminanceLux()) << blockPoints << " " << i;
+      EXPECT_EQ(got[i].standardErrorLux(), whole[i].standardErrorLux()) << blockPoints << " " << i;
+    }
+  }
+}
+
 // A floor and a sphere of radius 1 m resting on it, both grey (ρ = 0.5), under a uniform sky.
 Scene sphereOnGreyFloor() {
   Scene sc;

@@ -1,8 +1,10 @@
 #include "reports/plan_svg.h"
 
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include <cmath>
+#include <string>
 
 #include "sample_report.h"
 
@@ -80,6 +82,63 @@ TEST(PlanSvg, DrawsCellsContoursLegendScaleBarAndNorth) {
   EXPECT_NE(svg.find(">lx</text>"), std::string::npos);  // legend unit
   EXPECT_NE(svg.find(" m</text>"), std::string::npos);   // scale bar
   EXPECT_NE(svg.find("plan-scale"), std::string::npos);  // gradient id with the prefix
+}
+
+// RFC 4648 base64 decoding (the test's own), of the plan picture's data URI.
+std::vector<uint8_t> unbase64(const std::string& text) {
+  const std::string table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<uint8_t> out;
+  uint32_t bits = 0;
+  int have = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    bits = (bits << 6) | static_cast<uint32_t>(table.find(c));
+    have += 6;
+    if (have >= 8) {
+      have -= 8;
+      out.push_back(static_cast<uint8_t>((bits >> have) & 0xff));
+    }
+  }
+  return out;
+}
+
+// A grid of more than kMaxSvgCells cells is one picture at twice the plan's px: no element a
+// cell, and each pixel the false colour of the cell under its centre (cells 3.2 px wide here,
+// larger than a pixel), found from the plan's own scale (480 px across its 6 m).
+TEST(PlanSvg, LargeGridsAsOnePicture) {
+  std::vector<double> values;
+  GridReport g;
+  g.name = "hall";
+  g.layout = lattice(300, 100, 0.02, values, [](Vec2 p) { return 100.0 * (p.x + 3.0) + 10.0 * p.y; });
+  ASSERT_GT(g.layout.cells.size(), kMaxSvgCells);
+  g.values = values;
+  g.stats = computeGridStats(g.values);
+  const ColorScale scale = niceScale(0.0, g.stats.maximumLux);
+  const std::string svg = planSvg(g, scale);
+  std::size_t rects = 0;
+  for (std::size_t p = svg.find("<rect"); p != std::string::npos; p = svg.find("<rect", p + 1)) ++rects;
+  EXPECT_LT(rects, 20u);  // frame, background, legend, scale bar: no cells
+  const std::string key = "href=\"data:image/png;base64,";
+  const std::size_t at = svg.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t from = at + key.size();
+  const std::vector<uint8_t> png = unbase64(svg.substr(from, svg.find('"', from) - from));
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_memory(&img, png.data(), png.size()));
+  img.format = PNG_FORMAT_RGB;
+  std::vector<uint8_t> rgb(PNG_IMAGE_SIZE(img));
+  ASSERT_TRUE(png_image_finish_read(&img, nullptr, rgb.data(), 0, nullptr));
+  const double k = 2.0 * std::min(480.0 / 6.0, 380.0 / 2.0);  // picture px per m
+  EXPECT_EQ(img.width, static_cast<png_uint_32>(std::ceil(6.0 * k)));
+  EXPECT_EQ(img.height, static_cast<png_uint_32>(std::ceil(2.0 * k)));
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{0, 0}, {5, 300}, {480, 160}, {957, 3}, {700, 319}}) {
+    const Vec2 q(-3.0 + (x + 0.5) / k, 1.0 - (y + 0.5) / k);
+    const int i = static_cast<int>(std::floor((q.x + 3.0) / 0.02)), j = static_cast<int>(std::floor((q.y + 1.0) / 0.02));
+    const Rgb8 want = falseColor(values[static_cast<std::size_t>(j) * 300 + i], scale);
+    const uint8_t* got = &rgb[(static_cast<std::size_t>(y) * img.width + x) * 3];
+    EXPECT_EQ((Rgb8{got[0], got[1], got[2]}), want) << x << "," << y;
+  }
 }
 
 TEST(PlanSvg, IrregularGridsAsDots) {

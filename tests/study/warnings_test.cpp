@@ -234,16 +234,14 @@ TEST(Warnings, ZeroWithZeroErrorUnderAnUnfoundGlowBulb) {
   const std::vector<SensorPoint> pts = {{Vec3(2.0, 1.5, 0.8), Vec3(0.0, 0.0, 1.0)},
                                         {Vec3(2.0, 1.5, 0.8), Vec3(0.0, 0.0, -1.0)}};
   SensorSet set{"points", &pts, FileLoc{"p.pts", 0, 0}, {}};
-  IrradianceEstimate zero[2];
+  const double zero[2] = {0.0, 0.0};
   Warnings w;
-  checkErrorBars(tracer, set, zero, w);
+  checkErrorBars(tracer, set, zero, zero, w);
   ASSERT_EQ(codes(w), std::vector<std::string>{"untrusted_error_bar"});
   EXPECT_NE(w[0].message.find("1 of 2 sensor points reads 0 ± 0 lx (first: point 1"), std::string::npos) << w[0].message;
-  IrradianceEstimate lit[2];
-  lit[0].irradiance = Rgb(0.01);
-  lit[1].irradiance = Rgb(0.01);
+  const double lit[2] = {1.79, 1.79};
   Warnings none;
-  checkErrorBars(tracer, set, lit, none);
+  checkErrorBars(tracer, set, lit, zero, none);
   EXPECT_TRUE(none.empty());
 }
 
