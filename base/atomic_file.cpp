@@ -53,7 +53,7 @@ bool procFdAvailable() {
 AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path) {
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (procFdAvailable()) {
-    fd_ = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    fd_ = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0666);
     if (fd_ >= 0) {
       unnamed_ = true;
       what_ = "a temporary for " + path.string();
@@ -65,7 +65,7 @@ AtomicFile::AtomicFile(const std::filesystem::path& path) : path_(path) {
   for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
     tmp_ = uniqueSibling(dir, path.filename().string() + ".tmp");
     // O_EXCL | O_NOFOLLOW: a name that exists (a planted link included) is never opened.
-    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    fd_ = ::open(tmp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd_ < 0 && errno != EEXIST) throw std::runtime_error("cannot write " + tmp_.string() + ": " + errnoText());
   }
   if (fd_ < 0) throw std::runtime_error("cannot create a unique temporary beside " + path.string());
@@ -109,12 +109,6 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
   AtomicFile file(path);
   file.write(content);
   file.commit();
-}
-
-int createFileExclusive(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-  if (fd < 0) throw std::runtime_error("cannot create " + path.string() + ": " + errnoText());
-  return fd;
 }
 
 void writeAll(int fd, std::string_view content, const std::string& what) {

@@ -24,7 +24,8 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
   // Appends at the file offset (writeAll); throws std::runtime_error.
   void write(std::string_view bytes);
-  // The temporary's descriptor, for writers that seek (until commit).
+  // The temporary's descriptor, open for reading and writing, for writers that seek or read
+  // back (until commit).
   int descriptor() const { return fd_; }
   // Closes the temporary and renames it to `path`; throws std::runtime_error.
   void commit();
@@ -51,12 +52,6 @@ std::filesystem::path uniqueSibling(const std::filesystem::path& dir, const std:
 // Creates a new folder `<dir>/.<stem>.<random hex>` (mode 0700 until committed, as mkdtemp) and
 // returns it. Throws std::runtime_error.
 std::filesystem::path createTemporaryFolder(const std::filesystem::path& dir, const std::string& stem);
-
-// Creates `path` for reading and writing; it must not exist (O_EXCL | O_NOFOLLOW: an existing
-// name, a planted link included, is refused). For a file written piece by piece inside a fresh
-// temporary folder (createTemporaryFolder) and committed with the folder, where a rename per
-// file would buy nothing. Returns the descriptor; throws std::runtime_error.
-int createFileExclusive(const std::filesystem::path& path);
 
 // Writes every byte of `content` to `fd` (short writes and EINTR retried). Throws
 // std::runtime_error naming `what` on a failure (a full disk, say).

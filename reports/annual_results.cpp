@@ -100,27 +100,16 @@ void writeAnnualResults(const std::filesystem::path& path, int sensors, const st
 
 AnnualResultsStream::AnnualResultsStream(const std::filesystem::path& path, int sensors,
                                          const std::vector<HourStamp>& hours)
-    : path_(path), sensors_(sensors), hours_(static_cast<int>(hours.size())) {
+    : path_(path), file_(std::make_unique<AtomicFile>(path)), sensors_(sensors), hours_(static_cast<int>(hours.size())) {
   const std::string head = header(sensors, hours);
   dataOffset_ = head.size();
-  fd_ = createFileExclusive(path);
-  try {
-    writeAll(fd_, head, path.string());
-  } catch (...) {
-    ::close(fd_);
-    ::unlink(path_.c_str());
-    throw;
-  }
+  file_->write(head);
 }
 
-AnnualResultsStream::~AnnualResultsStream() {
-  if (fd_ < 0) return;
-  ::close(fd_);
-  ::unlink(path_.c_str());
-}
+AnnualResultsStream::~AnnualResultsStream() = default;
 
 void AnnualResultsStream::append(const float* lux, int count) {
-  if (fd_ < 0) throw std::invalid_argument("annual results stream: " + path_.string() + " is finished");
+  if (finished_) throw std::invalid_argument("annual results stream: " + path_.string() + " is finished");
   if (count < 0 || count > sensors_ - written_)
     throw std::invalid_argument("annual results stream: " + std::to_string(count) + " rows after " +
                                 std::to_string(written_) + " of " + std::to_string(sensors_));
@@ -132,12 +121,12 @@ void AnnualResultsStream::append(const float* lux, int count) {
   for (std::size_t at = 0; at < values; at += kPieceValues) {
     const std::size_t n = std::min(kPieceValues, values - at);
     if constexpr (std::endian::native == std::endian::little) {
-      writeAll(fd_, std::string_view(reinterpret_cast<const char*>(lux + at), 4 * n), path_.string());
+      file_->write(std::string_view(reinterpret_cast<const char*>(lux + at), 4 * n));
     } else {
       bytes.clear();
       bytes.reserve(4 * n);
       for (std::size_t i = 0; i < n; ++i) putF32(bytes, lux[at + i]);
-      writeAll(fd_, bytes, path_.string());
+      file_->write(bytes);
     }
   }
   written_ += count;
@@ -155,7 +144,7 @@ void AnnualResultsStream::read(int first, int count, float* lux) const {
   const off_t start = static_cast<off_t>(dataOffset_ + 4 * static_cast<std::size_t>(first) * hours_);
   std::size_t done = 0;
   while (done < 4 * values) {
-    const ssize_t n = ::pread(fd_, into + done, 4 * values - done, start + static_cast<off_t>(done));
+    const ssize_t n = ::pread(file_->descriptor(), into + done, 4 * values - done, start + static_cast<off_t>(done));
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0)
       throw std::runtime_error("cannot read back " + path_.string() + (n < 0 ? ": " + std::string(std::strerror(errno)) : ""));
@@ -166,17 +155,15 @@ void AnnualResultsStream::read(int first, int count, float* lux) const {
 }
 
 void AnnualResultsStream::finish() {
-  if (fd_ < 0) return;
   if (written_ != sensors_)
     throw std::invalid_argument("annual results stream: " + path_.string() + " has " + std::to_string(written_) +
                                 " of " + std::to_string(sensors_) + " rows");
-  const int fd = fd_;
-  fd_ = -1;
-  if (::close(fd) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(path_.c_str());
-    throw std::runtime_error("cannot write " + path_.string() + ": " + why);
-  }
+  finished_ = true;
+}
+
+void AnnualResultsStream::commitAs(const std::filesystem::path& target) {
+  finish();
+  file_->commitAs(target);
 }
 
 namespace {

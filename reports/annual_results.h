@@ -6,10 +6,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "reports/report_data.h"
 
 namespace candela {
@@ -53,12 +55,12 @@ void writeAnnualResults(const std::filesystem::path& path, int sensors, const st
 
 // The same file written a block of sensors at a time, so that a study never holds a grid's year
 // (docs/annual-outputs.md, "Streaming"): the header on construction, then the sensors' rows in
-// sensor order, each nHours floats. The file is created exclusively at `path`, which must not
-// exist (base/atomic_file.h createFileExclusive): it belongs in a run's fresh temporary folder,
-// committed with the folder as a whole (study/run_outputs.h RunOutputFolder), not renamed on its
-// own. finish() checks that every sensor's row came and closes the file; a stream destroyed
-// unfinished removes its file, so it never passes for a whole one. Errors are
-// std::runtime_error (a full disk) or std::invalid_argument (a row count that does not fit).
+// sensor order, each nHours floats. The file is a temporary in `path`'s folder, unnamed where the
+// file system allows (base/atomic_file.h AtomicFile), so that a run killed midway leaves nothing;
+// commitAs(target) checks that every sensor's row came and puts it in place, in the result folder
+// made at the end of the run (study/run_outputs.h). A stream destroyed uncommitted removes its
+// temporary, so it never passes for a whole file. Errors are std::runtime_error (a full disk) or
+// std::invalid_argument (a row count that does not fit).
 class AnnualResultsStream {
  public:
   AnnualResultsStream(const std::filesystem::path& path, int sensors, const std::vector<HourStamp>& hours);
@@ -70,12 +72,16 @@ class AnnualResultsStream {
   void append(const float* lux, int count);
   // Reads back `count` rows already appended, from sensor `first` on, into lux[k * nHours + h].
   void read(int first, int count, float* lux) const;
+  // Checks that every sensor's row came; appending after it is an error.
   void finish();
+  // finish(), then the file goes to `target`, a path in the same file system as `path`'s folder.
+  void commitAs(const std::filesystem::path& target);
   int written() const { return written_; }
 
  private:
   std::filesystem::path path_;
-  int fd_ = -1;
+  std::unique_ptr<AtomicFile> file_;
+  bool finished_ = false;
   int sensors_ = 0, hours_ = 0, written_ = 0;
   std::size_t dataOffset_ = 0;
 };

@@ -306,7 +306,7 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
       if (k == 0) continue;
       const float* total = year.total.data() + (lo - b0) * nh;
       const float* direct = year.directSun.data() + (lo - b0) * nh;
-      p.folder.write([&](const std::filesystem::path&) {
+      p.folder.guard([&] {
         g.total->append(total, static_cast<int>(k));
         g.directSun->append(direct, static_cast<int>(k));
       });
@@ -341,7 +341,7 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
       open.resize(k * nh);
       direct.resize(k * nh);
       const int from = static_cast<int>(lo - g.first);
-      p.folder.write([&](const std::filesystem::path&) {
+      p.folder.guard([&] {
         g.total->read(from, static_cast<int>(k), open.data());
         g.directSun->read(from, static_cast<int>(k), direct.data());
       });
@@ -352,7 +352,8 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
   }
 }
 
-// The grids' files opened in the run's folder, their report sensors chosen.
+// The grids' files opened beside the run's folder (unnamed temporaries until the end), their
+// report sensors chosen.
 std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a, const YearHours& y,
                                     const RunOutputFolder& folder) {
   std::vector<GridYear> grids;
@@ -365,7 +366,8 @@ std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a,
     gy.chosenSensor = a.reportSensor ? *a.reportSensor : centralSensor(g.grid);
     gy.sensors.reserve(gy.count);
     const int n = static_cast<int>(gy.count);
-    folder.write([&](const std::filesystem::path& dir) {
+    folder.guard([&] {
+      const std::filesystem::path& dir = folder.beside();
       gy.total = std::make_unique<AnnualResultsStream>(dir / annualResultsFileName(g.spec->name), n, y.stamps);
       gy.directSun =
           std::make_unique<AnnualResultsStream>(dir / annualResultsFileName(g.spec->name + "_direct_sun"), n, y.stamps);
@@ -432,7 +434,7 @@ void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThr
   }
 }
 
-// Per grid: the annual CSV; the hourly files (all light, and direct sun alone) are complete.
+// Per grid: the annual CSV; the hourly files (all light, and direct sun alone), complete, move in.
 void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& data, const AnnualInputs& in,
                       std::vector<GridYear>& grids) {
   for (std::size_t gi = 0; gi < in.grids.size(); ++gi) {
@@ -440,8 +442,8 @@ void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& dat
     std::vector<ReportPoint> points;
     for (const SensorPoint& s : g.grid.points) points.push_back({s.position, s.normal});
     writeAnnualGridCsv(outDir, g.spec->name, points, *data.grids[gi].annual);
-    grids[gi].total->finish();
-    grids[gi].directSun->finish();
+    grids[gi].total->commitAs(outDir / annualResultsFileName(g.spec->name));
+    grids[gi].directSun->commitAs(outDir / annualResultsFileName(g.spec->name + "_direct_sun"));
   }
 }
 
@@ -460,7 +462,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
   observer.estimated(needs);
   // 2. Sky vectors of the year, then coefficients and hours block by block: the hourly files
-  // stream into the run's temporary folder, committed whole at the end.
+  // stream into unnamed temporaries, moved into the run's folder at the end.
   AnnualTraces t = prepareAnnualSky(c, in, trace);
   const YearHours y = yearHours(t.sky, c.annual);
   const AnnualThresholds th = thresholdsOf(c.annual);

@@ -78,15 +78,10 @@ namespace {
 RunOutputFolder::RunOutputFolder(const fs::path& outDir, bool active) : outDir_(outDir), active_(active) {
   if (!active_) return;
   checkResultFolder(outDir);
-  try {
-    const fs::path parent = outDir.has_parent_path() ? outDir.parent_path() : fs::path(".");
-    fs::create_directories(parent);
-    tmp_ = createTemporaryFolder(parent, outDir.filename().string() + ".tmp");
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    cannotWrite(outDir, e);
-  }
+  guard([&] {
+    parent_ = outDir.has_parent_path() ? outDir.parent_path() : fs::path(".");
+    fs::create_directories(parent_);
+  });
 }
 
 RunOutputFolder::~RunOutputFolder() {
@@ -94,10 +89,10 @@ RunOutputFolder::~RunOutputFolder() {
   if (!tmp_.empty()) fs::remove_all(tmp_, ec);
 }
 
-void RunOutputFolder::write(const std::function<void(const fs::path&)>& write) const {
+void RunOutputFolder::guard(const std::function<void()>& work) const {
   if (!active_) return;
   try {
-    write(tmp_);
+    work();
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -105,8 +100,16 @@ void RunOutputFolder::write(const std::function<void(const fs::path&)>& write) c
   }
 }
 
+void RunOutputFolder::write(const std::function<void(const fs::path&)>& write) {
+  guard([&] {
+    if (tmp_.empty()) tmp_ = createTemporaryFolder(parent_, outDir_.filename().string() + ".tmp");
+    write(tmp_);
+  });
+}
+
 void RunOutputFolder::commit() {
   if (!active_) return;
+  write([](const fs::path&) {});  // the folder, should nothing have been written into it
   try {
     writeFileAtomic(tmp_ / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
     fs::permissions(tmp_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |

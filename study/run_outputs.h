@@ -20,28 +20,34 @@ inline constexpr const char* kResultMarker = ".candela-result";
 void checkResultFolder(const std::filesystem::path& outDir);
 
 // A run's temporary result folder, for a study that writes while it computes (the annual study
-// streams its hourly files, docs/annual-outputs.md): the folder is made beside `outDir` on
-// construction, commit() puts it in place of `outDir` as writeRunOutputs does, and the
-// destructor removes it unless committed, so a run that fails at any point leaves `outDir` as
-// it was. Files inside are written once, by their one writer (createFileExclusive), or
-// atomically. Errors as writeRunOutputs: InputError at outDir, "cannot write the results: ...".
+// streams its hourly files, docs/annual-outputs.md): the files streamed during the run are
+// unnamed temporaries in beside(), the folder that will hold `outDir` (base/atomic_file.h
+// AtomicFile), so that a run killed at any point leaves nothing; the temporary result folder is
+// made there by the first write(), commit() puts it in place of `outDir` as writeRunOutputs does,
+// and the destructor removes it unless committed, so a run that fails leaves `outDir` as it was.
+// Files inside are written once, by their one writer, or atomically. Errors as writeRunOutputs:
+// InputError at outDir, "cannot write the results: ...".
 class RunOutputFolder {
  public:
   // active = false: a process that writes no result (an MPI rank other than 0, a shard): no
-  // folder is made, write() and commit() do nothing.
+  // folder is made, guard(), write() and commit() do nothing.
   explicit RunOutputFolder(const std::filesystem::path& outDir, bool active = true);
   ~RunOutputFolder();
   RunOutputFolder(const RunOutputFolder&) = delete;
   RunOutputFolder& operator=(const RunOutputFolder&) = delete;
 
-  const std::filesystem::path& path() const { return tmp_; }
-  // Calls write(path()), turning a failure that is not an InputError into "cannot write the
-  // results: ..." (a full disk is the user's to fix, not an internal failure).
-  void write(const std::function<void(const std::filesystem::path&)>& write) const;
+  // The folder `outDir` is in (made by the constructor): where files streamed before the result
+  // folder exists keep their temporaries, in the same file system as the result.
+  const std::filesystem::path& beside() const { return parent_; }
+  // Calls work(), turning a failure that is not an InputError into "cannot write the results:
+  // ..." (a full disk is the user's to fix, not an internal failure).
+  void guard(const std::function<void()>& work) const;
+  // Calls write(dir) under guard() with the temporary result folder, made on the first call.
+  void write(const std::function<void(const std::filesystem::path&)>& write);
   void commit();
 
  private:
-  std::filesystem::path outDir_, tmp_;
+  std::filesystem::path outDir_, parent_, tmp_;
   bool active_ = true;
 };
 

@@ -49,4 +49,8 @@ if(CANDELA_HAVE_MPI AND MPIRUN)
   add_test(NAME cli.distributed.office.mpi_rank_killed
            COMMAND bash ${DISTRIBUTED} kill 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office/case.toml
                    - --quality draft)
+  # The annual study streams its hourly files while it runs: a kill leaves none of them.
+  add_test(NAME cli.distributed.annual.mpi_rank_killed
+           COMMAND bash ${DISTRIBUTED} kill 2 $<TARGET_FILE:candela> ${PROJECT_SOURCE_DIR}/cases/office-annual/case.toml
+                   - --quality draft)
 endif()

@@ -123,7 +123,8 @@ case "$mode" in
     echo "mpirun exited with $code, $(($(date +%s) - start)) s after rank 1 was killed"
     [ "$code" != 0 ] || fail "the run succeeded although a rank died"
     [ -e "$tmp/out" ] && fail "a failed run wrote $tmp/out"
-    ls -A "$tmp" | grep -q '^\.out' && fail "a failed run left a temporary folder"
+    left=$(ls -A "$tmp" | grep -vx log)
+    [ -z "$left" ] || fail "a failed run left temporaries: $left"
     ;;
   *) fail "unknown mode $mode" ;;
 esac

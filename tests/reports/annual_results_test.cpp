@@ -157,7 +157,9 @@ TEST(AnnualResultsStream, RowsAppendedInBlocksGiveTheEncodedBytes) {
     EXPECT_TRUE(std::equal(back.begin(), back.end(), r.lux.begin() + 4 * 8760));
     EXPECT_THROW(stream.read(6, 2, back.data()), std::invalid_argument);
     EXPECT_THROW(stream.append(rows, 1), std::invalid_argument);  // an eighth sensor
-    stream.finish();
+    EXPECT_FALSE(fs::exists(path));  // nothing under the name until the stream is committed
+    stream.commitAs(path);
+    EXPECT_THROW(stream.append(rows, 0), std::invalid_argument);  // committed: finished
   }
   EXPECT_EQ(slurp(path), encodeAnnualResults(r));
 }
@@ -170,7 +172,7 @@ TEST(AnnualResultsStream, AnUnfinishedStreamLeavesNoFile) {
   {
     AnnualResultsStream stream(dir / "a.f32", 3, r.hours);
     stream.append(r.lux.data(), 2);
-    EXPECT_THROW(stream.finish(), std::invalid_argument);  // a row missing: never a whole file
+    EXPECT_THROW(stream.commitAs(dir / "a.f32"), std::invalid_argument);  // a row missing: never a whole file
   }
   EXPECT_FALSE(fs::exists(dir / "a.f32"));
   {
@@ -180,7 +182,8 @@ TEST(AnnualResultsStream, AnUnfinishedStreamLeavesNoFile) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-TEST(AnnualResultsStream, NeverWritesThroughAnExistingNameOrLink) {
+// Committing replaces whatever has the name, a planted link included, and never writes through it.
+TEST(AnnualResultsStream, CommitReplacesANameOrLinkWithoutWritingThroughIt) {
   const AnnualResults r = sample(1, false);
   const fs::path dir = fs::path(testing::TempDir()) / "candela_annual_excl";
   fs::remove_all(dir);
@@ -190,10 +193,14 @@ TEST(AnnualResultsStream, NeverWritesThroughAnExistingNameOrLink) {
     std::ofstream(dir / "there.f32") << "old";
   }
   fs::create_symlink(dir / "victim", dir / "link.f32");
-  EXPECT_THROW(AnnualResultsStream(dir / "link.f32", 1, r.hours), std::runtime_error);
-  EXPECT_THROW(AnnualResultsStream(dir / "there.f32", 1, r.hours), std::runtime_error);
+  for (const char* name : {"link.f32", "there.f32"}) {
+    AnnualResultsStream stream(dir / name, 1, r.hours);
+    stream.append(r.lux.data(), 1);
+    stream.commitAs(dir / name);
+    EXPECT_FALSE(fs::is_symlink(fs::symlink_status(dir / name))) << name;
+    EXPECT_EQ(slurp(dir / name), encodeAnnualResults(r)) << name;
+  }
   EXPECT_EQ(slurp(dir / "victim"), "keep");
-  EXPECT_EQ(slurp(dir / "there.f32"), "old");
 }
 
 // The index of the file is its fixed row size: a sensor range read at its offset.

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace candela {
@@ -81,6 +82,37 @@ TEST(RunOutputs, AFolderOfOtherFilesIsRefused) {
   fs::create_symlink(out, out.parent_path() / "link");
   EXPECT_THROW(checkResultFolder(out.parent_path() / "link"), InputError);
   EXPECT_NO_THROW(checkResultFolder(out.parent_path() / "fresh"));
+}
+
+// A study that streams (the annual one): its files are unnamed temporaries beside the result
+// until the end, and the result folder itself appears only when written into, so a run that
+// stops midway leaves nothing; once committed, the streamed file is in the result.
+TEST(RunOutputs, AStreamingRunLeavesNothingUntilItIsCommitted) {
+  const fs::path parent = scratch("streaming");
+  const fs::path out = parent / "out";
+  {
+    RunOutputFolder folder(out);
+    EXPECT_EQ(folder.beside(), parent);
+    AtomicFile streamed(folder.beside() / "hourly.f32");
+    streamed.write("rows");
+    EXPECT_FALSE(fs::exists(parent / "hourly.f32"));  // unnamed, or else a hidden exclusive name
+    EXPECT_FALSE(fs::exists(out));                      // no folder before the first write
+  }  // a failed run: nothing made
+  EXPECT_TRUE(fs::is_empty(parent));
+  {
+    RunOutputFolder folder(out);
+    auto streamed = std::make_unique<AtomicFile>(folder.beside() / "hourly.f32");
+    streamed->write("rows");
+    folder.write([&](const fs::path& dir) {
+      streamed->commitAs(dir / "hourly.f32");
+      writeFileAtomic(dir / "summary.json", "{}\n");
+    });
+    EXPECT_FALSE(fs::exists(out));  // not before commit
+    folder.commit();
+  }
+  EXPECT_EQ(slurp(out / "hourly.f32"), "rows");
+  EXPECT_TRUE(fs::exists(out / kResultMarker));
+  EXPECT_TRUE(strays(parent, "out").empty());
 }
 
 }  // namespace
