@@ -67,15 +67,27 @@ struct NodeField {
   }
 };
 
-NodeField nodeField(const PlanLayout& layout, const std::vector<double>& values) {
-  const int nx = layout.columns, ny = layout.rows;
-  NodeField f{layout, nx, ny,
-              std::vector<double>(static_cast<std::size_t>(nx) * ny, std::numeric_limits<double>::quiet_NaN())};
+// The field on a lattice of blocks of `f` × `f` cells: a block's value is the mean of its
+// sensors' (NaN without any), its node the block's centre (coarse.originM, f × the spacing).
+NodeField nodeField(const PlanLayout& layout, const std::vector<double>& values, int f, PlanLayout& coarse) {
+  coarse.regular = true;
+  coarse.columns = (layout.columns + f - 1) / f;
+  coarse.rows = (layout.rows + f - 1) / f;
+  coarse.originM = layout.originM;
+  coarse.spacingM = layout.spacingM * static_cast<double>(f);
+  const int nx = coarse.columns, ny = coarse.rows;
+  std::vector<double> sum(static_cast<std::size_t>(nx) * ny, 0.0);
+  std::vector<uint32_t> count(sum.size(), 0);
   for (std::size_t k = 0; k < layout.cells.size() && k < values.size(); ++k) {
     const glm::ivec2 c = layout.cells[k];
-    if (c.x >= 0 && c.y >= 0 && c.x < nx && c.y < ny) f.field[static_cast<std::size_t>(c.y) * nx + c.x] = values[k];
+    if (c.x < 0 || c.y < 0 || c.x >= layout.columns || c.y >= layout.rows) continue;
+    const std::size_t at = static_cast<std::size_t>(c.y / f) * nx + static_cast<std::size_t>(c.x / f);
+    sum[at] += values[k];
+    ++count[at];
   }
-  return f;
+  for (std::size_t at = 0; at < sum.size(); ++at)
+    sum[at] = count[at] ? sum[at] / count[at] : std::numeric_limits<double>::quiet_NaN();
+  return NodeField{coarse, nx, ny, std::move(sum)};
 }
 
 // Marching squares: the segments of the `level` line in each lattice cell whose four nodes have values.
@@ -98,9 +110,10 @@ std::vector<Segment> levelSegments(const NodeField& f, double level) {
           if (above[k] != centreAbove) segments.push_back({edge[(k + 3) % 4], edge[k]});
         continue;
       }
-      std::vector<EdgeKey> crossed;
-      for (int k = 0; k < 4; ++k)
-        if (above[k] != above[(k + 1) % 4]) crossed.push_back(edge[k]);
+      EdgeKey crossed[2];
+      int n = 0;
+      for (int k = 0; k < 4 && n < 2; ++k)
+        if (above[k] != above[(k + 1) % 4]) crossed[n++] = edge[k];
       segments.push_back({crossed[0], crossed[1]});
     }
   }
@@ -152,7 +165,9 @@ std::vector<ContourLine> joinSegments(const std::vector<Segment>& segments, cons
 
 std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level) {
   if (!layout.regular || layout.columns < 2 || layout.rows < 2) return {};
-  const NodeField field = nodeField(layout, values);
+  const int f = (std::max(layout.columns, layout.rows) + kMaxContourNodes - 1) / kMaxContourNodes;
+  PlanLayout coarse;
+  const NodeField field = nodeField(layout, values, f, coarse);
   return joinSegments(levelSegments(field, level), field, level);
 }
 

@@ -13,6 +13,8 @@ namespace candela {
 
 // Regular grids with more cells than this are drawn as one picture instead of an element a cell.
 inline constexpr std::size_t kMaxSvgCells = 20000;
+// Isolines are traced on at most this many nodes along each side of the lattice (isolines).
+inline constexpr int kMaxContourNodes = 256;
 
 struct PlanOptions {
   double maxPlanWidthPx = 480.0;      // the plan is scaled to fit these, aspect kept
@@ -41,7 +43,12 @@ struct ContourLine {
 
 // Marching squares (Lorensen & Cline's cube cases in 2-D) over the lattice of cell centres of a
 // regular layout, linear interpolation along cell edges, saddles resolved by the mean of the
-// four corners. Squares with a missing corner (cells outside a polygon) are skipped.
+// four corners. Squares with a missing corner (cells outside a polygon) are skipped. A lattice of
+// more than kMaxContourNodes nodes along a side is first averaged over square blocks of cells
+// (the mean of the block's sensors, at the block's centre) down to at most that many: lines
+// finer than that are below a plan's resolution, and a dense grid's sampling noise would
+// otherwise draw millions of tiny loops (the time and memory a 10⁶-point grid's plan takes stay
+// bounded).
 std::vector<ContourLine> isolines(const PlanLayout& layout, const std::vector<double>& values, double level);
 
 // The whole plan, `<svg ...>...</svg>`. The colour scale is the caller's so that plans and

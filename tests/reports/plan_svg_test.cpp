@@ -50,6 +50,27 @@ TEST(Isolines, RadialFieldGivesClosedCircle) {
   for (const Vec2& p : lines[0].points) EXPECT_NEAR(glm::length(p), r, h * h / (8.0 * r) + 1e-12);
 }
 
+// A dense grid (10⁶ points) whose values carry a checkerboard of noise five times the field's
+// step from one cell to the next: traced cell by cell it would give thousands of tiny loops; on
+// blocks of 4 × 4 cells (1000 / kMaxContourNodes rounded up) the noise cancels and the cone
+// f = |p| gives one circle, off by no more than the block mean's and the interpolation's bias,
+// a²/(24 r) + a²/(8 r) for blocks of side a (f'' ≤ 1/r).
+TEST(Isolines, DenseNoisyGridsAreTracedOnBlocks) {
+  std::vector<double> v;
+  const int n = 1000;
+  const double h = 0.002, r = 0.6;
+  PlanLayout L = lattice(n, n, h, v, [](Vec2 p) { return glm::length(p); });
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) v[static_cast<std::size_t>(j) * n + i] += (i + j) % 2 ? 0.01 : -0.01;
+  const int f = (n + kMaxContourNodes - 1) / kMaxContourNodes;
+  ASSERT_EQ(f, 4);
+  const auto lines = isolines(L, v, r);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(lines[0].closed);
+  const double a = f * h;
+  for (const Vec2& p : lines[0].points) EXPECT_NEAR(glm::length(p), r, a * a / (6.0 * r) + 1e-12);
+}
+
 // Cells outside a polygon are missing: no isoline crosses the hole.
 TEST(Isolines, SkipsMissingCells) {
   std::vector<double> v;
