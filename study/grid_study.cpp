@@ -198,6 +198,9 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   // 2. All grids as one list (grids in case order): point k of the run uses random stream k, so
   // the numbers depend on the seed only, never on threads.
   std::vector<SensorPoint> all;
+  std::size_t total = 0;
+  for (const PreparedGrid& g : grids) total += g.grid.size();
+  all.reserve(total);  // one allocation: growing would copy every point held so far
   for (const PreparedGrid& g : grids) all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
   const Tracer tracer(*scene);
   // Warnings on the input, before tracing: a strict run stops here.
@@ -242,6 +245,8 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
           }
         });
   }
+  const std::size_t pointCount = all.size();
+  std::vector<SensorPoint>().swap(all);  // not needed again: the report's memory takes its place
 
   // Warnings on the results, before anything is written.
   for (std::size_t gi = 0; gi < grids.size(); ++gi)
@@ -254,7 +259,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   result.outDir = run.outDir;
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
-  describeSettings(data, c, *scene, trace, all.size());
+  describeSettings(data, c, *scene, trace, pointCount);
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0)
     data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)",

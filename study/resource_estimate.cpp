@@ -5,6 +5,8 @@
 #include "photometry/sky_patches.h"
 #include "engine/render.h"
 #include "engine/tracer.h"
+#include "engine/sensors.h"
+#include "reports/plan_svg.h"
 #include "reports/report_data.h"
 #include "study/case_file.h"
 #include "study/sensor_grid.h"
@@ -23,9 +25,9 @@ namespace {
 constexpr uint64_t kProcessBytes = 16ull << 20;
 
 // Text written per CSV row (8 numbers of up to ~12 characters) and the HTML plan's share of a
-// point (one SVG cell); each is built in memory before it is written atomically.
+// cell (one SVG element, up to kMaxSvgCells of them); each is built in memory before it is written.
 constexpr uint64_t kCsvRowBytes = 110;
-constexpr uint64_t kReportBytesPerPoint = 120;
+constexpr uint64_t kReportBytesPerCell = 120;
 
 // Ward's records are shared by the points near them: a plane grid at EN 12464-1 spacing gets
 // fewer records than points. One record per point is the bound used (dense grids get fewer).
@@ -127,15 +129,27 @@ void checkResources(const ResourceEstimate& e, const ResourceLimits& limits, con
 
 uint64_t bytesPerGridPoint(const TraceSettings& s) {
   const bool cache = s.method == Method::kCache && s.maxBounces > 0;  // as computeIrradiance
-  // The prepared grid (points, plane coordinates, cells), the list of all points, the estimates,
-  // the report's copies (points, lux, error, values, the sorted copy of the statistics) and the
-  // report's cell; the CSV is written 4096 rows at a time (reports/csv_writer.cpp), not held.
-  // The grid's vectors grow by push_back: 1.5 × their size on average (capacity doubles).
-  const uint64_t grid = 3 * (sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2)) / 2;
-  const uint64_t traced = sizeof(SensorPoint) + sizeof(IrradianceEstimate);
-  const uint64_t report = sizeof(ReportPoint) + 4 * sizeof(double);
-  return grid + traced + report + kReportBytesPerPoint + (cache ? kCacheBytesPerPoint : 0);
+  // Kept for the whole run: the prepared grid (points, plane coordinates, cells; the capacity
+  // push_back leaves over is never touched, so never resident) and each point's lux and error.
+  const uint64_t kept = sizeof(SensorPoint) + sizeof(Vec2) + sizeof(glm::ivec2) + 2 * sizeof(double);
+  // Then one of two phases. Tracing: the list of all points and the cache's records; the
+  // estimates come a block at a time (gridBlockBytes) and the CSV rows go out with their block.
+  const uint64_t tracing = sizeof(SensorPoint) + (cache ? kCacheBytesPerPoint : 0);
+  // Reporting: the report's values and their sorted copy, the plan's cells and plane coordinates
+  // (the plan's SVG is bounded by kMaxSvgCells, gridPlanBytes).
+  const uint64_t reporting = 2 * sizeof(double) + sizeof(Vec2) + sizeof(glm::ivec2);
+  return kept + std::max(tracing, reporting);
 }
+
+namespace {
+
+// The block of estimates a grid study holds while it traces (engine/sensors.h).
+uint64_t gridBlockBytes() { return kSensorBlockPoints * sizeof(IrradianceEstimate); }
+
+// A grid's plan in the report: an SVG element a cell, or one picture beyond kMaxSvgCells cells.
+uint64_t gridPlanBytes(std::size_t points) { return std::min<uint64_t>(points, kMaxSvgCells) * kReportBytesPerCell; }
+
+}  // namespace
 
 uint64_t bytesPerInputPoint(const TraceSettings& s) {
   const bool cache = s.method == Method::kCache && s.maxBounces > 0;
@@ -272,13 +286,14 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   e.baseBytes = sceneBytes(scene);
   const SourceCounts n = countSources(scene);
   const uint64_t perPoint = bytesPerGridPoint(s);
+  if (!c.grids.empty()) e.baseBytes += gridBlockBytes();
   double points = 0.0;
   for (std::size_t i = 0; i < c.grids.size() && i < gridPoints.size(); ++i) {
     MemoryItem m;
     m.what = "grid '" + c.grids[i].name + "'";
     m.loc = c.grids[i].loc;
-    m.bytes = gridPoints[i] * perPoint;
-    m.detail = std::to_string(gridPoints[i]) + " points x " + std::to_string(perPoint) + " B";
+    m.bytes = gridPoints[i] * perPoint + gridPlanBytes(gridPoints[i]);
+    m.detail = std::to_string(gridPoints[i]) + " points x " + std::to_string(perPoint) + " B and its plan";
     e.memory.push_back(std::move(m));
     points += static_cast<double>(gridPoints[i]);
   }
