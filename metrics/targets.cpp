@@ -32,4 +32,12 @@ TargetCheck checkTargets(const GridStats& stats, const GridTargets& targets, dou
   return c;
 }
 
+double immediateSurroundingLux(double taskLux) {
+  // (task Ē_m at least, surrounding Ē_m), from the top row down.
+  static constexpr double kRows[][2] = {{750.0, 500.0}, {500.0, 300.0}, {300.0, 200.0}, {200.0, 150.0}};
+  for (const auto& row : kRows)
+    if (taskLux >= row[0]) return row[1];
+  return taskLux;
+}
+
 }  // namespace candela

@@ -34,4 +34,21 @@ struct TargetCheck {
 // caller accept e.g. the rounding of printed values (default 0: strict).
 TargetCheck checkTargets(const GridStats& stats, const GridTargets& targets, double relativeTolerance = 0.0);
 
+// EN 12464-1:2021, the areas around a task area (clause 4.3 in the 2002 and 2011 editions): the
+// immediate surrounding is a band at least 0.5 m wide around it, the background a band at least
+// 3 m wide around that, within the limits of the space; U0 at least 0.40 and 0.10. Values as
+// tabulated in Fagerhult's summary of the 2021 edition (fagerhult.com, "EN 12464-1: illuminance
+// and uniformity requirements") and Trilux's (trilux.com, "Background lighting").
+inline constexpr double kImmediateSurroundingWidthM = 0.5;
+inline constexpr double kBackgroundWidthM = 3.0;
+inline constexpr double kImmediateSurroundingUniformity = 0.40;
+inline constexpr double kBackgroundUniformity = 0.10;
+// The maintained illuminance the immediate surrounding needs for a task area's Ē_m (the
+// standard's table relating them: ≥ 750 lx → 500 lx, 500 → 300, 300 → 200, 200 → 150, and
+// 150 lx or less: the task area's own value); a task value between the table's rows takes the
+// row at or below it (400 lx → 200 lx, as 300 lx).
+double immediateSurroundingLux(double taskLux);
+// The background's: a third of the immediate surrounding's.
+inline double backgroundLux(double taskLux) { return immediateSurroundingLux(taskLux) / 3.0; }
+
 }  // namespace candela

@@ -291,6 +291,50 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
   h << "</section>\n";
 }
 
+// EN 12464-1:2021 per task area: the task area, its immediate surrounding and its background,
+// required against achieved Ē and U0, the UGR at the observers standing there, Ra as required.
+void taskAreasSection(std::ostringstream& h, const ReportData& data) {
+  if (data.taskAreas.empty()) return;
+  h << "<section class=\"grid\" id=\"task-areas\">\n<h2>Task areas (EN 12464-1:2021)</h2>\n<p class=\"sub\">Each "
+       "task area with its immediate surrounding (a band 0.5 m wide) and its background (a band 3 m wide beyond it, "
+       "within the room). The surrounding needs the maintained illuminance the standard relates to the task "
+       "area's (750 lx or more: 500 lx; 500: 300; 300: 200; 200: 150; 150 or less: the task's) and U<sub>0</sub> "
+       "≥ 0.40; the background a third of the surrounding's and U<sub>0</sub> ≥ 0.10. UGR is the highest "
+       "at the observers standing in these areas.</p>\n";
+  for (const TaskAreaReport& a : data.taskAreas) {
+    h << "<h3>" << xmlEscape(a.name) << " " << badge(a.verdict) << "</h3>\n<table>\n<thead><tr><th>Area</th>"
+         "<th class=\"num\">Points</th><th class=\"num\">Required Ē<sub>m</sub></th><th class=\"num\">Ē</th>"
+         "<th class=\"num\">Required U<sub>0</sub></th><th class=\"num\">U<sub>0</sub></th><th>Result</th></tr>"
+         "</thead>\n<tbody>\n";
+    const std::pair<const char*, int> rows[] = {
+        {"Task area", a.task}, {"Immediate surrounding", a.surrounding}, {"Background", a.background}};
+    for (const auto& [label, i] : rows) {
+      if (i < 0) {
+        h << "<tr><td>" << label << "</td><td colspan=\"6\">none: the task area and its surrounding fill the room"
+          << "</td></tr>\n";
+        continue;
+      }
+      const GridReport& g = data.grids[static_cast<std::size_t>(i)];
+      h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << label << "</a></td><td class=\"num\">" << g.stats.count
+        << "</td><td class=\"num\">" << (g.targets.averageLux ? valueText(*g.targets.averageLux) + " lx" : "—")
+        << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << " lx</td><td class=\"num\">"
+        << (g.targets.uniformity ? formatFixed(*g.targets.uniformity, 2) : "—") << "</td><td class=\"num\">"
+        << formatFixed(g.stats.u0, 2) << "</td><td>" << badge(g.check.overall) << "</td></tr>\n";
+    }
+    h << "<tr><td>Discomfort glare</td><td colspan=\"2\">" << a.observers.size() << " observer"
+      << (a.observers.size() == 1 ? "" : "s") << "</td><td class=\"num\" colspan=\"2\">UGR<sub>L</sub> "
+      << (a.ugrLimit ? formatFixed(*a.ugrLimit, 0) : "—") << "</td><td class=\"num\">UGR "
+      << (a.ugr ? formatFixed(*a.ugr, 1) : a.observers.empty() ? "no observer" : "no luminaire in view") << "</td><td>"
+      << badge(a.ugrVerdict) << "</td></tr>\n";
+    if (a.ra)
+      h << "<tr><td>Colour rendering</td><td colspan=\"5\">R<sub>a</sub> ≥ " << formatFixed(*a.ra, 0)
+        << " required: to be checked on the lamps' data (the photometric files do not state it)</td><td>"
+        << badge(Verdict::kNotChecked) << "</td></tr>\n";
+    h << "</tbody>\n</table>\n";
+  }
+  h << "</section>\n";
+}
+
 // The metrics table of a point-in-time grid: calculated values against their targets.
 void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
   const std::string u = unitText(g.unit);
@@ -407,6 +451,7 @@ std::string htmlReport(const ReportData& data) {
   pageHeader(h, data);
   warningsSection(h, data.warnings);
   summarySection(h, data);
+  taskAreasSection(h, data);
   // One section per grid: plan and metrics.
   for (std::size_t i = 0; i < data.grids.size(); ++i) {
     const GridReport& g = data.grids[i];

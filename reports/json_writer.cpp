@@ -52,6 +52,10 @@ std::string summaryJson(const ReportData& data) {
              {"verdict_average", verdictName(g.check.average)},
              {"verdict_uniformity", verdictName(g.check.uniformity)},
              {"verdict", verdictName(g.check.overall)}};
+    if (!g.taskArea.empty()) {
+      o["task_area"] = g.taskArea;
+      o["area"] = g.area;
+    }
     if (g.annual) {
       const GridAnnualSummary& a = g.annual->summary;
       o["DA300"] = number(a.DA300);
@@ -96,6 +100,21 @@ std::string summaryJson(const ReportData& data) {
                          {"background_luminance_cd_m2", number(o.backgroundCdM2)}});
   }
   j["observers"] = observers;
+  json taskAreas = json::array();
+  for (const TaskAreaReport& a : data.taskAreas) {
+    auto gridName = [&](int i) { return i >= 0 ? json(data.grids[static_cast<std::size_t>(i)].name) : json(); };
+    taskAreas.push_back({{"name", a.name},
+                         {"task_grid", gridName(a.task)},
+                         {"surrounding_grid", gridName(a.surrounding)},
+                         {"background_grid", gridName(a.background)},
+                         {"ugr_limit", optionalNumber(a.ugrLimit)},
+                         {"ugr", optionalNumber(a.ugr)},
+                         {"ugr_observers", a.observers},
+                         {"verdict_ugr", verdictName(a.ugrVerdict)},
+                         {"ra_required", optionalNumber(a.ra)},
+                         {"verdict", verdictName(a.verdict)}});
+  }
+  j["task_areas"] = taskAreas;
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();
   for (const Warning& w : data.warnings)

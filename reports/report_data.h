@@ -67,6 +67,8 @@ struct AnnualGridReport {
 // One grid's results and verdicts.
 struct GridReport {
   std::string name;
+  std::string taskArea;              // the [[task_area]] that made the grid, else empty
+  std::string area;                  // then "task area", "immediate surrounding" or "background"
   std::string description;           // e.g. "horizontal, 0.80 m above floor"
   std::string quantity = "Illuminance";
   std::string unit = "lx";           // "lx", or "%" for daylight factor grids
@@ -130,11 +132,26 @@ struct ObserverReport {
   }
 };
 
+// A [[task_area]] checked as EN 12464-1:2021 asks (docs/en12464.md): its grids (indices into
+// ReportData::grids; -1 for a band left empty by the room), the highest UGR of the observers
+// standing in its areas against its limit, and the overall verdict (fail when any checked line
+// fails, pass when every checked line passes).
+struct TaskAreaReport {
+  std::string name;
+  int task = -1, surrounding = -1, background = -1;
+  std::optional<double> ugrLimit, ugr;
+  std::vector<std::string> observers;  // those standing in the task area or its bands
+  std::optional<double> ra;            // required Ra, stated (the luminaire files do not give it)
+  Verdict ugrVerdict = Verdict::kNotChecked;
+  Verdict verdict = Verdict::kNotChecked;
+};
+
 struct ReportData {
   RunInfo run;
   std::vector<GridReport> grids;
   std::vector<ViewReport> views;
   std::vector<ObserverReport> observers;
+  std::vector<TaskAreaReport> taskAreas;
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };

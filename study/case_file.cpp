@@ -1,11 +1,15 @@
 #include "study/case_file.h"
+
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/portals.h"
+#include "metrics/targets.h"
 
 #include <toml++/toml.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -498,6 +502,114 @@ void readGrid(const Context& c, const toml::table& t, int index, std::set<std::s
   out.grids.push_back(std::move(g));
 }
 
+// A task area's band as a grid: the lattice over the task's box grown by `toM` (clipped to the
+// room when given), keeping the points between fromM and toM of the task's outline.
+GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area area, double fromM, double toM,
+                  const std::optional<std::array<Vec2, 2>>& room) {
+  GridSpec g;
+  g.name = name;
+  g.loc = a.loc;
+  g.taskArea = a.name;
+  g.area = area;
+  PlaneGridSpec& p = g.plane;
+  p.origin = Vec3(0.0, 0.0, a.heightM);
+  Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const Vec2& v : a.outline) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  lo -= Vec2(toM);
+  hi += Vec2(toM);
+  if (room) {
+    lo = glm::max(lo, glm::min((*room)[0], (*room)[1]));
+    hi = glm::min(hi, glm::max((*room)[0], (*room)[1]));
+  }
+  g.clipToRoom = !room;
+  p.isRectangle = true;
+  p.outline = {lo, hi};
+  p.band = {a.outline, fromM, toM};
+  return g;
+}
+
+void readTaskArea(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[task_area]]");
+  TaskAreaSpec a;
+  a.loc = tab.loc();
+  a.name = "task area " + std::to_string(index + 1);
+  if (auto n = tab.get("name")) {
+    a.name = asString(c, *n, "name");
+    if (a.name.empty()) c.fail(*n, "'name' must not be empty");
+  }
+  const toml::node* cn = tab.get("corners");
+  const toml::node* pn = tab.get("polygon");
+  if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
+  if (!cn && !pn) throw InputError(a.loc, "a task area needs 'corners' = [[x0, y0], [x1, y1]] or a 'polygon'");
+  if (cn) {
+    const std::vector<Vec2> k = asPointList(c, *cn, "corners");
+    if (k.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+    const Vec2 lo = glm::min(k[0], k[1]), hi = glm::max(k[0], k[1]);
+    if (!(hi.x > lo.x && hi.y > lo.y)) c.fail(*cn, "'corners' span a zero area");
+    a.outline = {lo, Vec2(hi.x, lo.y), hi, Vec2(lo.x, hi.y)};
+  } else {
+    a.outline = asPointList(c, *pn, "polygon");
+    if (a.outline.size() < 3) c.fail(*pn, "'polygon' needs at least 3 points");
+    if (!(std::abs(polygonArea(a.outline)) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
+  }
+  a.heightM = asNumber(c, tab.require("height"), "height");
+  a.maintainedLux = asNumber(c, tab.require("maintained_illuminance"), "maintained_illuminance");
+  checkMin(tab, "maintained_illuminance", a.maintainedLux, 0.0, true, " lx");
+  a.uniformity = optNumber(tab, "uniformity");
+  if (a.uniformity) checkRange(tab, "uniformity", *a.uniformity, 0.0, 1.0, "");
+  if (const toml::node* n = tab.get("ugr_limit")) {
+    a.ugrLimit = asNumber(c, *n, "ugr_limit");
+    checkRange(tab, "ugr_limit", *a.ugrLimit, 0.0, 40.0, "");
+  }
+  a.ra = optNumber(tab, "ra");
+  if (a.ra) checkRange(tab, "ra", *a.ra, 0.0, 100.0, "");
+  std::optional<std::array<Vec2, 2>> room;
+  if (const toml::node* n = tab.get("room")) {
+    const std::vector<Vec2> k = asPointList(c, *n, "room");
+    if (k.size() != 2) c.fail(*n, "'room' must be two corners [[x0, y0], [x1, y1]] of the space");
+    room = std::array<Vec2, 2>{k[0], k[1]};
+    for (const Vec2& v : a.outline)
+      if (v.x < std::min(k[0].x, k[1].x) || v.x > std::max(k[0].x, k[1].x) || v.y < std::min(k[0].y, k[1].y) ||
+          v.y > std::max(k[0].y, k[1].y))
+        c.fail(*n, "the task area reaches outside its 'room'");
+  }
+  std::optional<double> spacing;
+  if (const toml::node* n = tab.get("spacing")) {
+    spacing = asNumber(c, *n, "spacing");
+    checkMin(tab, "spacing", *spacing, 0.0, true, " m");
+  }
+  tab.finish();
+
+  GridSpec task;
+  task.name = a.name;
+  task.loc = a.loc;
+  task.taskArea = a.name;
+  task.area = GridSpec::Area::kTask;
+  task.plane.isRectangle = false;
+  task.plane.outline = a.outline;
+  task.plane.origin = Vec3(0.0, 0.0, a.heightM);
+  task.plane.spacingM = spacing;
+  task.targetAverageLux = a.maintainedLux;
+  task.targetUniformity = a.uniformity;
+  GridSpec surrounding = taskBand(a, a.name + " surrounding", GridSpec::Area::kSurrounding, 0.0,
+                                  kImmediateSurroundingWidthM, room);
+  surrounding.targetAverageLux = immediateSurroundingLux(a.maintainedLux);
+  surrounding.targetUniformity = kImmediateSurroundingUniformity;
+  GridSpec background = taskBand(a, a.name + " background", GridSpec::Area::kBackground, kImmediateSurroundingWidthM,
+                                 kImmediateSurroundingWidthM + kBackgroundWidthM, room);
+  background.targetAverageLux = backgroundLux(a.maintainedLux);
+  background.targetUniformity = kBackgroundUniformity;
+  for (GridSpec* g : {&task, &surrounding, &background}) {
+    if (!names.insert(g->name).second) throw InputError(a.loc, "two grids are named '" + g->name + "'");
+    countPlaneGrid(g->plane, g->loc);
+    out.grids.push_back(std::move(*g));
+  }
+  out.taskAreas.push_back(std::move(a));
+}
+
 void readView(const Context& c, const toml::table& t, int index, CaseFile& out) {
   Table tab(t, c, "[[view]]");
   ViewSpec v;
@@ -703,11 +815,11 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   out.output.dir = (c.dir / "out").lexically_normal();
 
   static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "portal", "site", "sky", "grid",
-                                                  "view", "observer", "settings", "annual", "output"};
+                                                  "task_area", "view", "observer", "settings", "annual", "output"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
-                                               "' (expected case, scene, luminaire, portal, site, sky, grid, view, observer, settings, annual or "
+                                               "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, view, observer, settings, annual or "
                                                "output)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
@@ -723,10 +835,14 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   }
   if (auto t = singleTable(c, root, "site")) readSite(c, *t, out.site);
   if (auto t = singleTable(c, root, "sky")) readSky(c, *t, out.sky);
+  std::set<std::string> gridNames;
   if (auto a = tableArray(c, root, "grid")) {
-    std::set<std::string> names;
     int index = 0;
-    for (const toml::node& n : *a) readGrid(c, *n.as_table(), index++, names, out);
+    for (const toml::node& n : *a) readGrid(c, *n.as_table(), index++, gridNames, out);
+  }
+  if (auto a = tableArray(c, root, "task_area")) {
+    int index = 0;
+    for (const toml::node& n : *a) readTaskArea(c, *n.as_table(), index++, gridNames, out);
   }
   if (auto a = tableArray(c, root, "view")) {
     int index = 0;

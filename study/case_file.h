@@ -87,6 +87,26 @@ struct GridSpec {
   std::optional<double> targetUniformity;  // U0 = Emin/Eavg
   bool daylightFactor = false;          // report the grid as a daylight factor in %
   FileLoc loc;                          // the [[grid]] entry
+  // Grids a [[task_area]] makes: its name and which of its areas this is; a background without
+  // a `room` is clipped to the scene's plan extent when it is made (study/prepared_grid.cpp).
+  std::string taskArea;
+  enum class Area { kNone, kTask, kSurrounding, kBackground } area = Area::kNone;
+  bool clipToRoom = false;
+};
+
+// A [[task_area]] (EN 12464-1:2021): the task area with its required maintained illuminance and
+// uniformity, which makes three grids: the task area, its immediate surrounding (a 0.5 m band)
+// and the background (a 3 m band beyond, within the room), each with the standard's targets
+// (metrics/targets.h). The UGR limit is checked at the observers standing in the three areas.
+struct TaskAreaSpec {
+  std::string name;
+  std::vector<Vec2> outline;            // plan polygon (a rectangle's four corners)
+  double heightM = 0.8;
+  double maintainedLux = 500.0;         // Ē_m of the task area
+  std::optional<double> uniformity;     // U0 of the task area
+  std::optional<double> ugrLimit;       // UGR_L
+  std::optional<double> ra;             // required colour rendering index (stated, not computed)
+  FileLoc loc;
 };
 
 // A [[view]]: the camera (engine/camera.h) with its name and contrast points.
@@ -158,6 +178,7 @@ struct CaseFile {
   std::vector<GridSpec> grids;
   std::vector<ViewSpec> views;
   std::vector<ObserverSpec> observers;  // [[observer]]
+  std::vector<TaskAreaSpec> taskAreas;  // [[task_area]]; their grids are in `grids`
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

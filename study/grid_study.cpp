@@ -14,6 +14,7 @@
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
+#include "study/task_area_report.h"
 #include "study/view_glare.h"
 #include "study/view_study.h"
 #include "study/warnings.h"
@@ -302,6 +303,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     r.backgroundCdM2 = g.backgroundCdM2;
     data.observers.push_back(std::move(r));
   }
+  addTaskAreaReports(c, data);
   data.run.runTimeS = secondsSince(run.start);
 
   // 4. Write: the folder is committed as a whole.

@@ -48,8 +48,8 @@ PlanLayout planLayout(const PreparedGrid& g) {
     l.cells = g.grid.cell;
     l.planPositions = g.grid.uv;
     const PlaneGridSpec& p = g.spec->plane;
-    l.outline = p.outline;
-    if (p.isRectangle && p.outline.size() == 2) {
+    l.outline = p.band.inner.empty() ? p.outline : std::vector<Vec2>{};  // a band: its points show it
+    if (p.band.inner.empty() && p.isRectangle && p.outline.size() == 2) {
       const Vec2 a = p.outline[0], b = p.outline[1];
       l.outline = {a, Vec2(b.x, a.y), b, Vec2(a.x, b.y)};
     }
@@ -64,10 +64,20 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   std::vector<PreparedGrid> grids;
   checkOutputNames(c);
   for (const GridSpec& spec : c.grids) {
-    checkGridInside(spec, bounds);
+    // A task area's bands without a `room` end at the scene's plan extent (its walls, for a room).
+    GridSpec clipped;
+    if (spec.clipToRoom) {
+      clipped = spec;
+      std::vector<Vec2>& o = clipped.plane.outline;
+      o = {glm::max(o[0], Vec2(bounds.lo.x, bounds.lo.y)), glm::min(o[1], Vec2(bounds.hi.x, bounds.hi.y))};
+      if (!(o[1].x > o[0].x && o[1].y > o[0].y)) continue;
+      if (countPlaneGrid(clipped.plane, spec.loc) == 0) continue;  // a task area that fills the room
+    }
+    const GridSpec& made = spec.clipToRoom ? clipped : spec;
+    checkGridInside(made, bounds);
     PreparedGrid g;
     g.spec = &spec;
-    g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(spec.plane, spec.loc) : readPointsFile(spec.pointsFile);
+    g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(made.plane, spec.loc) : readPointsFile(spec.pointsFile);
     g.fileStem = safeFileName(spec.name);
     grids.push_back(std::move(g));
   }

@@ -138,6 +138,11 @@ SensorGrid planeGrid(const PlaneGridSpec& spec, const FileLoc& loc, bool store, 
         if (!insidePolygon(polygon, uv)) continue;
         if (spec.borderM > 0.0 && distanceToOutline(polygon, uv) < spec.borderM) continue;
       }
+      if (!spec.band.inner.empty()) {
+        if (insidePolygon(spec.band.inner, uv)) continue;
+        const double d = distanceToOutline(spec.band.inner, uv);
+        if (!(d > spec.band.fromM && d <= spec.band.toM)) continue;
+      }
       ++count;
       if (!store) continue;
       g.points.push_back({spec.origin + uv.x * spec.uAxis + uv.y * spec.vAxis, normal});
@@ -145,7 +150,9 @@ SensorGrid planeGrid(const PlaneGridSpec& spec, const FileLoc& loc, bool store, 
       g.cell.emplace_back(i, j);
     }
   }
-  if (count == 0) throw InputError(loc, "no grid point falls inside the outline; reduce the spacing or border");
+  // A band may be empty (a task area that fills its room has no background).
+  if (count == 0 && spec.band.inner.empty())
+    throw InputError(loc, "no grid point falls inside the outline; reduce the spacing or border");
   return g;
 }
 

@@ -31,6 +31,14 @@ struct PlaneGridSpec {
   // Maximum spacing between points in m; unset means EN 12464-1 automatic (autoGridSpacingM).
   std::optional<double> spacingM;
   double borderM = 0.0;  // band (m) along the outline left without points
+  // A band around an area (EN 12464-1's immediate surrounding and background of a task area):
+  // only the points outside `inner` (a polygon in plane coordinates) whose distance to it is
+  // more than fromM and at most toM are kept; the outline then bounds the lattice (the room's
+  // limits). Empty `inner`: no band.
+  struct Band {
+    std::vector<Vec2> inner;
+    double fromM = 0.0, toM = 0.0;
+  } band;
 };
 
 // A generated grid. Plane grids are regular lattices: the cell (i, j) has its centre at
@@ -65,8 +73,8 @@ double gridDimensionM(double sideAM, double sideBM);
 // ("the number of points ... is d/p rounded up", EN 12464-1:2021 5.4), at least 1.
 int cellsAlong(double lengthM, double maxSpacingM);
 
-// The points of a planar grid at the cell centres. Throws InputError(loc, ...) when the area is
-// empty, the border eats it, the axes are not orthonormal or the grid would exceed 10 million
+// The points of a planar grid at the cell centres (none: a band that is empty). Throws
+// InputError(loc, ...) when the area is empty, the border eats it, the axes are not orthonormal or the grid would exceed 10 million
 // points.
 SensorGrid makePlaneGrid(const PlaneGridSpec& spec, const FileLoc& loc = {});
 // The number of points makePlaneGrid would make, with the same checks and errors, without

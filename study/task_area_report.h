@@ -1,0 +1,14 @@
+// EN 12464-1:2021 task areas in the report: each [[task_area]]'s three grids and the observers
+// standing in them, with the verdicts (docs/en12464.md).
+#pragma once
+
+#include "reports/report_data.h"
+#include "study/case_file.h"
+
+namespace candela {
+
+// The grid reports' task-area labels and data.taskAreas, from the case and the grid and
+// observer reports already in `data` (grids matched by name).
+void addTaskAreaReports(const CaseFile& c, ReportData& data);
+
+}  // namespace candela
