@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/distribution.h"
+#include "engine/response.h"
 #include "engine/tracer.h"
 
 #include <cstddef>
@@ -10,10 +11,15 @@
 
 namespace candela {
 
-// One sensor: a point and the unit normal of the surface it measures illuminance on.
+// One sensor: a point and the unit normal of the surface it measures illuminance on; or, for
+// another quantity (engine/response.h), its vertical axis as `normal` and, semi-cylindrical,
+// the horizontal direction it faces.
 struct SensorPoint {
   Vec3 position;  // m
   Vec3 normal;    // unit vector
+  Quantity quantity = Quantity::kPlanar;
+  Vec3 facing{1.0, 0.0, 0.0};  // unit, perpendicular to normal (semi-cylindrical only)
+  Response response() const { return {quantity, normal, facing}; }
 };
 
 // Estimates irradiance at every sensor (point i uses random stream i), on `threads` threads
