@@ -14,6 +14,7 @@
 #include "base/warning.h"
 #include "metrics/annual.h"
 #include "metrics/grid_stats.h"
+#include "metrics/modelling.h"
 #include "metrics/targets.h"
 
 namespace candela {
@@ -68,7 +69,9 @@ struct AnnualGridReport {
 struct GridReport {
   std::string name;
   std::string description;           // e.g. "horizontal, 0.80 m above floor"
-  std::string quantity = "Illuminance";
+  std::string quantity = "Illuminance";  // or e.g. "Cylindrical illuminance Ē_z", "Daylight factor"
+  // The case's `quantity` as written ("cylindrical", ...): empty when the grid gives none.
+  std::string quantityKey;
   std::string unit = "lx";           // "lx", or "%" for daylight factor grids
   std::vector<double> values;        // per point, in `unit`
   GridStats stats;                   // in `unit`
@@ -76,6 +79,7 @@ struct GridReport {
   TargetCheck check;
   PlanLayout layout;
   std::optional<AnnualGridReport> annual;  // set for grids of an annual run ([sky] type = "annual")
+  std::optional<ModellingResult> modelling;  // set for grids with `modelling = true`
 };
 
 // The run as a whole.
