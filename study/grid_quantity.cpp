@@ -50,7 +50,7 @@ SensorPoint quantitySensor(GridQuantity q, const Vec3& position, const Vec2& fac
     case GridQuantity::kCylindrical: s.quantity = Quantity::kCylindrical; break;
     case GridQuantity::kSemiCylindrical:
       s.quantity = Quantity::kSemiCylindrical;
-      s.facing = f;
+      s.normal = f;  // the direction it faces (engine/sensors.h)
       break;
     case GridQuantity::kHemispherical: s.quantity = Quantity::kHemispherical; break;
   }

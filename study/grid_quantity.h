@@ -26,13 +26,8 @@ inline bool needsFacing(GridQuantity q) { return q == GridQuantity::kVertical ||
 
 // The sensor of quantity q at `position` (m): planar on +Z (horizontal) or on the unit
 // horizontal `facing` (vertical); about the vertical axis +Z otherwise, semi-cylindrical facing
-// `facing`. `facing` is a plan direction (need not be unit; not zero where needsFacing).
+// `facing` (its `normal`, engine/sensors.h: the grid CSV's dx, dy, dz). `facing` is a plan
+// direction (need not be unit; not zero where needsFacing).
 SensorPoint quantitySensor(GridQuantity q, const Vec3& position, const Vec2& facing = Vec2(1.0, 0.0));
-
-// The direction a grid CSV writes for sensor s (dx, dy, dz): its normal, or for a
-// semi-cylindrical sensor the direction it faces.
-inline Vec3 sensorDirection(const SensorPoint& s) {
-  return s.quantity == Quantity::kSemiCylindrical ? s.facing : s.normal;
-}
 
 }  // namespace candela

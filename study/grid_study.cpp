@@ -205,7 +205,7 @@ class GridCsvFiles {
     if (grids_[gi].spec->modelling) return;
     const SensorPoint& p = grids_[gi].grid.points[k];
     const double v[3] = {lux, errorLux, 100.0 * lux / outsideLux_};
-    writers_[gi]->row(p.position, sensorDirection(p), v);
+    writers_[gi]->row(p.position, p.normal, v);
   }
   // Every row of the modelling grids, from their values once all are traced.
   void modellingRows(const std::vector<GridValues>& values) {
@@ -218,7 +218,7 @@ class GridCsvFiles {
         v.insert(v.end(), {g.cylindricalLux[k], g.cylindricalErrorLux[k], g.horizontalLux[k], g.horizontalErrorLux[k],
                            pointModellingRatio(g.cylindricalLux[k], g.horizontalLux[k])});
         const SensorPoint& p = grids_[gi].grid.points[k];
-        writers_[gi]->row(p.position, sensorDirection(p), v.data());
+        writers_[gi]->row(p.position, p.normal, v.data());
       }
     }
   }
