@@ -20,7 +20,7 @@ constexpr int kSub = 2;
 // E ≈ (π / MN) Σ L(θ_j, φ_k) with θ_j = asin√((j + X)/M) and φ_k = 2π(k + Y)/N, one sample per
 // stratum) and what their variance needs.
 // A non-planar response (engine/response.h) draws its rays with density w/W instead and weighs
-// them by W = ∫ w dω instead of π (docs/quantities.md#the-hemisphere-part).
+// them by W = ∫ w dω instead of π (docs/quantities.md#the-estimator).
 struct SensorEstimate {
   SensorEstimate(TraceContext& c, Rng& j, const Vec3& point, const Response& r, const IrradianceCache* ic)
       : ctx(c), jitter(j), p(point), n(r.n), response(r), cache(ic), frame(Frame::fromNormal(r.n)),

@@ -96,7 +96,7 @@ TEST(Response, HemisphericalIsTheMeanOverUpperNormalsForLightFromAbove) {
     EXPECT_NEAR(r.weight(d), mean(d), 2e-5) << theta;
     EXPECT_NEAR(r.weight(d), 0.25 * (1.0 + std::cos(degToRad(theta))), 1e-15);
   }
-  // Below the horizon the contract counts nothing (docs/quantities.md#hemispherical).
+  // Below the horizon the contract counts nothing (docs/quantities.md#definitions-as-responses).
   EXPECT_EQ(r.weight(fromAngles(91.0, 0.0)), 0.0);
   EXPECT_EQ(r.weight(fromAngles(180.0, 0.0)), 0.0);
 }
