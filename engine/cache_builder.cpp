@@ -38,10 +38,12 @@ int recordThetaStrata(const TraceSettings& s) {
 }
 int recordPhiStrata(const TraceSettings& s) { return std::max(2, s.cache.recordSamples / recordThetaStrata(s)); }
 
-// The cacheable first hits of mTheta × nPhi stratified cosine rays from o (the strata in order,
-// jittered by dirRng), appended to out; shared by cacheQueries and recordQueries.
-// 8 parameters: the ray fan (origin, frame, strata, skip, stream) and the output are separate inputs.
-void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& frame, int mTheta, int nPhi,
+// The cacheable first hits of mTheta × nPhi stratified rays from o (the strata in order,
+// jittered by dirRng, each (u1, u2) made a direction by dirOf: cosine-weighted about a frame's
+// normal, or a sensor response's warp), appended to out; shared by cacheQueries and recordQueries.
+// 8 parameters: the ray fan (origin, warp, strata, skip, stream) and the output are separate inputs.
+template <class DirectionOf>
+void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const DirectionOf& dirOf, int mTheta, int nPhi,
                             uint32_t skip, Rng& dirRng, std::vector<CacheQuery>& out) {
   const Scene& scene = tracer.scene();
   uint64_t rays = 0;
@@ -49,7 +51,7 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Frame& fr
     const int j = c / nPhi, k = c % nPhi;
     const double u1 = (j + dirRng.uniform()) / mTheta;
     const double u2 = (k + dirRng.uniform()) / nPhi;
-    const Vec3 dir = frame.toWorld(sampleCosineHemisphere(u1, u2));
+    const Vec3 dir = dirOf(u1, u2);
     RayHit h;
     ++rays;
     if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
@@ -142,14 +144,28 @@ bool limitRadiusByGradient(IrradianceRecord& r, const CacheSettings& c) {
   return true;
 }
 
+// A frame's cosine-weighted directions.
+auto cosineAbout(const Frame& frame) {
+  return [frame](double u1, double u2) { return frame.toWorld(sampleCosineHemisphere(u1, u2)); };
+}
+
 }  // namespace
 
 void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                   std::vector<CacheQuery>& out) {
+  cacheQueries(tracer, p, Response::planar(n), pointIndex, s, out);
+}
+
+void cacheQueries(const Tracer& tracer, const Vec3& p, const Response& response, uint64_t pointIndex,
+                  const TraceSettings& s, std::vector<CacheQuery>& out) {
   if (s.maxBounces < 1) return;
   Rng dirRng(s.seed, kDirectionStream + pointIndex);
-  hemisphereCacheQueries(tracer, p, Frame::fromNormal(n), hemisphereThetaStrata(s), hemispherePhiStrata(s),
-                         kNoShape, dirRng, out);
+  const int m = hemisphereThetaStrata(s, response), n = hemispherePhiStrata(s, response);
+  if (response.isPlanar())
+    hemisphereCacheQueries(tracer, p, cosineAbout(Frame::fromNormal(response.n)), m, n, kNoShape, dirRng, out);
+  else
+    hemisphereCacheQueries(tracer, p, [&response](double u1, double u2) { return response.sample(u1, u2); }, m, n,
+                           kNoShape, dirRng, out);
 }
 
 bool cacheVisible(const Tracer& tracer, const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
@@ -183,7 +199,7 @@ double harmonicMeanDistance(const Tracer& tracer, const CacheQuery& q, int rays,
 void recordQueries(const Tracer& tracer, const IrradianceRecord& r, uint64_t stream, const TraceSettings& s,
                    std::vector<CacheQuery>& out) {
   Rng dirRng(s.seed, stream + kRecordDirectionOffset);
-  hemisphereCacheQueries(tracer, r.p + Tracer::originOffset(r.p) * r.n, Frame::fromNormal(r.n),
+  hemisphereCacheQueries(tracer, r.p + Tracer::originOffset(r.p) * r.n, cosineAbout(Frame::fromNormal(r.n)),
                          recordThetaStrata(s), recordPhiStrata(s), r.skip, dirRng, out);
 }
 
@@ -249,7 +265,7 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
   const BuildContext ctx{tracer, threads, distribution};
   // Phase A: first diffuse hits of each point's initial hemisphere cells.
   const QuerySource pointQueries{points.size(), [&](size_t i, std::vector<CacheQuery>& out) {
-                                    cacheQueries(tracer, points[i].position, points[i].normal, i, settings, out);
+                                    cacheQueries(tracer, points[i].position, points[i].response(), i, settings, out);
                                   }};
   placeRecords(cache, ctx, pointQueries, kRadiusStream, settings);
   // Second level: phase A over the first level's record rays (the directions phase B will

@@ -8,6 +8,7 @@
 
 #include "base/distribution.h"
 #include "engine/irradiance_cache.h"
+#include "engine/response.h"
 
 #include <cstdint>
 #include <vector>
@@ -36,6 +37,9 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
 // 6 parameters: the sensor estimate's own inputs plus the output list.
 void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                   std::vector<CacheQuery>& out);
+// The same for a sensor of another response (engine/response.h): its warp's directions.
+void cacheQueries(const Tracer& tracer, const Vec3& p, const Response& response, uint64_t pointIndex,
+                  const TraceSettings& s, std::vector<CacheQuery>& out);
 // Harmonic mean distance (m) to the surfaces seen from q over `rays` stratified cosine rays
 // (Ward et al. 1988's R_i); infinity when every ray escapes.
 double harmonicMeanDistance(const Tracer& tracer, const CacheQuery& q, int rays, Rng& rng);

@@ -48,8 +48,11 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
   const Vec3& n = at.n;
   LightScratch& sc = ctx.light;
   const Strata2D strata(k);
+  // A non-planar response has no closed form for an area source: the plain mean of its samples
+  // (unbiased) estimates it; a point luminaire is still one point, one shadow ray.
+  const Response* response = at.response;
   Rgb exact(0.0);
-  const bool haveExact = unoccludedIrradiance(light, scene, p, n, exact, &sc.clipped);
+  const bool haveExact = !response && unoccludedIrradiance(light, scene, p, n, exact, &sc.clipped);
   if (haveExact && photopic(exact) <= 0.0) return Rgb(0.0);  // the source cannot reach this side
   // Polygon sources are sampled over their part above the receiver's horizon, so that every
   // sample tells about visibility.
@@ -69,7 +72,8 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
   // A point luminaire (no opening; the only luminaire with a closed form) is one point: one
   // shadow ray says all there is. A luminaire with an opening is sampled over it at every
   // distance (lights.cpp), k stratified points, by the plain mean below.
-  const bool point = light.kind == Light::Kind::kLuminaire && haveExact;
+  const bool point = light.kind == Light::Kind::kLuminaire &&
+                     (response ? scene.luminaires[light.luminaire].sizeM() <= 0.0 : haveExact);
   const int kk = point ? 1 : k;
   // Per-stratum terms for the variance (zero where a sample tells nothing).
   if (variance) {
@@ -84,7 +88,7 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
     const bool ok = clippedPolygon ? sampleClippedPolygon(light, sc.tris, sc.cumulative, p, u.x, u.y, ls)
                                    : sampleLight(light, scene, p, u.x, u.y, ls);
     if (!ok) continue;
-    const double cosI = glm::dot(n, ls.dir);
+    const double cosI = response ? response->weight(ls.dir) : glm::dot(n, ls.dir);
     if (cosI <= 0.0) continue;
     const Rgb f = ls.weight * cosI;
     // Nothing sent this way (a downlight seen from above its opening): no shadow ray; the sums
@@ -148,7 +152,9 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     const Vec3 pi = p - 2.0 * dp * nm, ni = n - 2.0 * glm::dot(n, nm) * nm;
     const Rgb colour = scene.materials[mirror.material].color;
     const Vec3 side = dp > 0.0 ? nm : -nm;
-    const Receiver image{pi, ni, skip};
+    // A response seen in the mirror: w at the real arrival direction, the image's reflected.
+    const Response mirrored = at.response ? at.response->mirrored(nm) : Response{};
+    const Receiver image{pi, ni, skip, at.response ? &mirrored : nullptr};
     for (const Light& light : ctx.tracer.sources().lights) {
       // Glows are not sampled in mirrors: paths count them there (pathRadiance).
       if (light.glow || (light.kind == Light::Kind::kArea && light.shape == ms)) continue;
@@ -222,10 +228,12 @@ Rgb skyIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance
       dir = trueToModel(sky.model->sample(u.x, u.y, &ps), sky.northDeg);
       if (ps <= 0.0) continue;
     }
-    const double cosI = glm::dot(at.n, dir);
+    // A response's weight and the density its hemisphere rays are drawn with (w/W); the cosine
+    // and cos/π for planar illuminance.
+    const double cosI = at.response ? at.response->weight(dir) : glm::dot(at.n, dir);
     if (cosI <= 0.0) continue;
     const SkyMisTerms t = skyMisTerms(ctx.tracer, dir, at.p, at.n, misRatio, portalRatio);
-    const double pc = cosI * kInvPi;
+    const double pc = at.response ? at.response->density(dir) : cosI * kInvPi;
     const double denom = t.sky * t.sky + t.portal * t.portal + pc * pc;
     // w_i / (m_i p_i) of the strategy that drew dir.
     const double wOverMp = throughPortal ? (t.pp > 0.0 ? t.portal * t.portal / denom / (kPortal * t.pp) : 0.0)

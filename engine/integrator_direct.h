@@ -5,6 +5,7 @@
 // heuristic (Veach 1997, "Robust Monte Carlo methods for light transport simulation", §9.2).
 #pragma once
 
+#include "engine/response.h"
 #include "engine/trace_context.h"
 
 #include <cstdint>
@@ -12,11 +13,14 @@
 namespace candela {
 
 // A point receiving light: position, unit normal of the side that receives, and the flat shape
-// it lies on (skipped by its shadow rays), or kNoShape.
+// it lies on (skipped by its shadow rays), or kNoShape. A sensor of another quantity than planar
+// illuminance (engine/response.h) gives its response, n then its axis: the sources' light is
+// weighted by w(ω) instead of the cosine, the portals are seen from the axis.
 struct Receiver {
   Vec3 p{0.0};
   Vec3 n{0.0, 0.0, 1.0};
   uint32_t skip = kNoShape;
+  const Response* response = nullptr;  // a non-planar response, or none (planar on n)
 };
 
 // Direct irradiance at `at` from every sampled source with k stratified samples each; adds the

@@ -19,15 +19,20 @@ constexpr int kSub = 2;
 // One sensor point's estimate in progress: its hemisphere strata (the paper's eq. 3,
 // E ≈ (π / MN) Σ L(θ_j, φ_k) with θ_j = asin√((j + X)/M) and φ_k = 2π(k + Y)/N, one sample per
 // stratum) and what their variance needs.
+// A non-planar response (engine/response.h) draws its rays with density w/W instead and weighs
+// them by W = ∫ w dω instead of π (docs/quantities.md#the-estimator).
 struct SensorEstimate {
-  SensorEstimate(TraceContext& c, Rng& j, const Vec3& point, const Vec3& normal, const IrradianceCache* ic)
-      : ctx(c), jitter(j), p(point), n(normal), cache(ic), frame(Frame::fromNormal(normal)) {}
+  SensorEstimate(TraceContext& c, Rng& j, const Vec3& point, const Response& r, const IrradianceCache* ic)
+      : ctx(c), jitter(j), p(point), n(r.n), response(r), cache(ic), frame(Frame::fromNormal(r.n)),
+        total(r.integral()) {}
   TraceContext& ctx;
   Rng& jitter;  // the stream of the strata's jitter
   const Vec3 p, n;
+  const Response response;
   const IrradianceCache* cache;
   CacheUse use;
   Frame frame;
+  const double total;  // W: π for planar illuminance
   int mTheta = 0, nPhi = 0, cells = 0;
   double misRatio = 1.0;
   std::vector<Rgb> value;  // each cell's mean radiance
@@ -43,12 +48,13 @@ Rgb sampleCell(SensorEstimate& e, int cell, double su, double sv, int sub) {
   const int j = cell / e.nPhi, k = cell % e.nPhi;
   const double u1 = (j + (su + e.jitter.uniform()) / sub) / e.mTheta;
   const double u2 = (k + (sv + e.jitter.uniform()) / sub) / e.nPhi;
-  const Vec3 dir = e.frame.toWorld(sampleCosineHemisphere(u1, u2));
+  const bool planar = e.response.isPlanar();
+  const Vec3 dir = planar ? e.frame.toWorld(sampleCosineHemisphere(u1, u2)) : e.response.sample(u1, u2);
   // The ray's share of E (the sky tally runs with adaptiveFraction 0: never refined).
-  const TallyFactor tf(e.ctx.tally, kPi / e.cells);
+  const TallyFactor tf(e.ctx.tally, e.total / e.cells);
   e.use.tally.setCell(cell);
   PathState st;
-  st.misCosPdf = glm::dot(dir, e.n) * kInvPi;
+  st.misCosPdf = planar ? glm::dot(dir, e.n) * kInvPi : e.response.density(dir);
   st.misRatio = e.misRatio;
   st.litPoint = e.p;  // where estimateIrradiance sampled the sources
   st.lighting = true;
@@ -157,22 +163,29 @@ double stratifiedVariance(const std::vector<double>& y, int m, int n, const std:
 
 IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex,
                                       const TraceSettings& s, const EstimatorInputs& in) {
+  return estimateIrradiance(tracer, p, Response::planar(n), pointIndex, s, in);
+}
+
+IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Response& response,
+                                      uint64_t pointIndex, const TraceSettings& s, const EstimatorInputs& in) {
   Rng rng(s.seed, pointIndex);
   // Path method: directions from the point's one stream; cache method: from a stream of their
   // own (see cacheQueries).
   Rng dirRng(s.seed, kDirectionStream + pointIndex);
   TraceContext ctx(tracer, s, rng, in.tally);
-  SensorEstimate e(ctx, in.cache ? dirRng : rng, p, n, in.cache);
+  SensorEstimate e(ctx, in.cache ? dirRng : rng, p, response, in.cache);
+  const Vec3& n = response.n;
   e.use.cache = in.cache;
   e.use.depth = 0;
   IrradianceEstimate est;
   double var = 0.0;
-  const int cellsN = hemisphereThetaStrata(s) * hemispherePhiStrata(s);
+  const int cellsN = hemisphereThetaStrata(s, response) * hemispherePhiStrata(s, response);
   e.misRatio = static_cast<double>(std::max(1, s.lightSamples)) / cellsN;
-  est.irradiance = directIrradiance(ctx, {p, n, kNoShape}, std::max(1, s.lightSamples), &var, e.misRatio);
+  const Receiver at{p, n, kNoShape, response.isPlanar() ? nullptr : &response};
+  est.irradiance = directIrradiance(ctx, at, std::max(1, s.lightSamples), &var, e.misRatio);
 
-  e.mTheta = hemisphereThetaStrata(s);
-  e.nPhi = hemispherePhiStrata(s);
+  e.mTheta = hemisphereThetaStrata(s, response);
+  e.nPhi = hemispherePhiStrata(s, response);
   const int cells = e.cells = e.mTheta * e.nPhi;
   e.value.assign(cells, Rgb(0.0));
   e.y.assign(cells, 0.0);
@@ -191,11 +204,13 @@ IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const
   if (refine > 0) refineStrata(e, refine);
   Rgb sum(0.0);
   for (int c = 0; c < cells; ++c) sum += e.value[c];
-  est.irradiance += kPi * sum / static_cast<double>(cells);
-  var += stratifiedVariance(e.y, e.mTheta, e.nPhi, &e.ownBetween, &e.ownWithin, in.cache ? &e.dRec : nullptr);
+  est.irradiance += e.total * sum / static_cast<double>(cells);
+  // stratifiedVariance is that of π/(MN) Σ y: (W/π)² times it for W/(MN) Σ y (1 when planar).
+  const double scale = (e.total / kPi) * (e.total / kPi);
+  var += scale * stratifiedVariance(e.y, e.mTheta, e.nPhi, &e.ownBetween, &e.ownWithin, in.cache ? &e.dRec : nullptr);
   // The cached share, by the law of total variance (docs/estimator.md#the-records-share).
   if (in.cache && !e.use.tally.empty()) {
-    est.varianceRecordsPhotopic = e.use.tally.recordVariance(*in.cache, kPi / static_cast<double>(cells), &e.counts);
+    est.varianceRecordsPhotopic = e.use.tally.recordVariance(*in.cache, e.total / static_cast<double>(cells), &e.counts);
     var += est.varianceRecordsPhotopic;
   }
   est.variancePhotopic = var;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "engine/irradiance_cache.h"
+#include "engine/response.h"
 #include "engine/tracer.h"
 
 #include <algorithm>
@@ -27,6 +28,17 @@ inline int hemisphereThetaStrata(const TraceSettings& s) {
 inline int hemispherePhiStrata(const TraceSettings& s) {
   return std::max(1, s.hemisphereSamples / hemisphereThetaStrata(s));
 }
+// The strata of a response's rays (engine/response.h). The cylindrical family spans θ in
+// [0, π] with its density sin²θ/(π/2) largest at the horizon, where a stratum is π/(2M) high
+// and 2π/N wide: N ≈ 4M makes them square, and an even M puts the horizon (sky against ground)
+// on a stratum boundary. Planar and hemispherical take the hemisphere's.
+inline int hemisphereThetaStrata(const TraceSettings& s, const Response& r) {
+  if (r.kind != Quantity::kCylindrical && r.kind != Quantity::kSemiCylindrical) return hemisphereThetaStrata(s);
+  return std::max(2, 2 * static_cast<int>(std::lround(0.25 * std::sqrt(static_cast<double>(s.hemisphereSamples)))));
+}
+inline int hemispherePhiStrata(const TraceSettings& s, const Response& r) {
+  return std::max(1, s.hemisphereSamples / hemisphereThetaStrata(s, r));
+}
 
 // What an estimate reads and reports besides its point: the frozen irradiance cache
 // (Method::kCache; the indirect irradiance at the hemisphere rays' first diffuse hits), and the
@@ -39,6 +51,10 @@ struct EstimatorInputs {
 // Irradiance on the side of unit normal n at p from random stream pointIndex (Tracer::irradiance).
 IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex,
                                       const TraceSettings& s, const EstimatorInputs& in);
+// The quantity of `response` at p (engine/response.h): the sources' light weighted by w(ω), the
+// M × N strata drawn with density w/W (docs/quantities.md); planar: the call above.
+IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Response& response,
+                                      uint64_t pointIndex, const TraceSettings& s, const EstimatorInputs& in);
 
 // Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k) from second
 // differences along φ (n ≥ 3) or collapsed pairs; cells refined by adaptive super-sampling

@@ -74,7 +74,7 @@ bool sampleToTarget(const Tracer& tracer, const SensorPoint& pt, uint64_t base, 
     if (cache && b.recordsVariance() > 0.5 * goal * goal) return false;
     const int target = std::min<double>(maxBatches, std::max<double>(b.count() + 1, b.wanted(goal)));
     while (b.count() < target)
-      b.add(tracer.irradiance(pt.position, pt.normal, base + kBatchStride * static_cast<uint64_t>(b.count()), s,
+      b.add(tracer.irradiance(pt.position, pt.response(), base + kBatchStride * static_cast<uint64_t>(b.count()), s,
                               cache));
   }
   return true;
@@ -85,14 +85,14 @@ bool sampleToTarget(const Tracer& tracer, const SensorPoint& pt, uint64_t base, 
 // path method (unbiased, and its batches do reduce every part of the error).
 IrradianceEstimate estimatePoint(const Tracer& tracer, const SensorPoint& pt, size_t i, const TraceSettings& s,
                                  const IrradianceCache* cache) {
-  IrradianceEstimate first = tracer.irradiance(pt.position, pt.normal, i, s, cache);
+  IrradianceEstimate first = tracer.irradiance(pt.position, pt.response(), i, s, cache);
   if (s.targetRelativeError <= 0.0) return first;
   Batches b(first);
   if (sampleToTarget(tracer, pt, i, s, cache, b)) return b.result(false);
   TraceSettings path = s;
   path.method = Method::kPath;
   const uint64_t base = i + kWithoutCacheStream;
-  Batches p(tracer.irradiance(pt.position, pt.normal, base, path, nullptr));
+  Batches p(tracer.irradiance(pt.position, pt.response(), base, path, nullptr));
   sampleToTarget(tracer, pt, base, path, nullptr, p);
   return p.result(true);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "base/distribution.h"
+#include "engine/response.h"
 #include "engine/tracer.h"
 
 #include <cstddef>
@@ -10,10 +11,22 @@
 
 namespace candela {
 
-// One sensor: a point and the unit normal of the surface it measures illuminance on.
+// One sensor: a point and the unit normal of the surface it measures illuminance on, or a
+// quantity about the vertical (engine/response.h; EN 12464-1 defines them so): cylindrical and
+// hemispherical illuminance about +Z (normal +Z), semi-cylindrical facing the horizontal unit
+// `normal`. 56 B: a grid of 10⁶ points holds its sensors in 56 MB.
 struct SensorPoint {
   Vec3 position;  // m
   Vec3 normal;    // unit vector
+  Quantity quantity = Quantity::kPlanar;
+  Response response() const {
+    const Vec3 up(0.0, 0.0, 1.0);
+    switch (quantity) {
+      case Quantity::kPlanar: return Response::planar(normal);
+      case Quantity::kSemiCylindrical: return {quantity, up, normal};
+      default: return {quantity, up, Vec3(1.0, 0.0, 0.0)};
+    }
+  }
 };
 
 // Estimates irradiance at every sensor (point i uses random stream i), on `threads` threads

@@ -133,6 +133,13 @@ IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t poi
   return estimateIrradiance(*this, p, n, pointIndex, s, in);
 }
 
+IrradianceEstimate Tracer::irradiance(const Vec3& p, const Response& response, uint64_t pointIndex,
+                                      const TraceSettings& s, const IrradianceCache* cache) const {
+  EstimatorInputs in;
+  in.cache = cache;
+  return estimateIrradiance(*this, p, response, pointIndex, s, in);
+}
+
 void Tracer::skyCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                              const SkyPatches& patches, double* direct, double* indirect,
                              bool directByPatch) const {

@@ -12,6 +12,7 @@
 #include "engine/lights.h"
 #include "engine/octree.h"
 #include "engine/portals.h"
+#include "engine/response.h"
 #include "engine/trace_settings.h"
 #include "engine/scene.h"
 #include "photometry/sky_patches.h"
@@ -64,6 +65,10 @@ class Tracer {
   // from a frozen cache (Method::kCache); a hit no record covers is path traced instead.
   IrradianceEstimate irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                                 const IrradianceCache* cache) const;
+  // The quantity a sensor response measures at p (engine/response.h: cylindrical,
+  // semi-cylindrical, hemispherical or planar illuminance), in the same units; cache as above.
+  IrradianceEstimate irradiance(const Vec3& p, const Response& response, uint64_t pointIndex, const TraceSettings& s,
+                                const IrradianceCache* cache = nullptr) const;
 
   // Daylight coefficients at a sensor (docs/annual.md): the illuminance in lux that a luminance
   // of 1 cd/m² over each patch of `patches` (index 0 the ground) gives at p, added to direct[]

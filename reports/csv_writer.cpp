@@ -141,6 +141,11 @@ std::string summaryCsv(const ReportData& data) {
   if (anyAnnual)
     out += ",DA300,cDA300,UDI_fell_short,UDI_supplementary,UDI_autonomous,UDI_exceeded,sDA300_50,ASE1000_250,"
            "occupied_hours,coefficients_time_s,product_time_s";
+  // The quantity and modelling columns only when some grid gives them (a case without keeps its bytes).
+  bool anyQuantity = false;
+  for (const GridReport& g : data.grids) anyQuantity = anyQuantity || !g.quantityKey.empty() || g.modelling;
+  if (anyQuantity)
+    out += ",quantity,cylindrical_average_lux,horizontal_average_lux,modelling_ratio,verdict_modelling";
   out += "\n";
   auto optionalTime = [](const std::optional<double>& t) { return t ? formatNumber(*t, 6) : std::string(); };
   for (const GridReport& g : data.grids) {
@@ -174,6 +179,16 @@ std::string summaryCsv(const ReportData& data) {
       f.push_back(optionalTime(data.run.productTimeS));
     } else if (anyAnnual) {
       f.insert(f.end(), 11, "");
+    }
+    if (anyQuantity) {
+      f.push_back(csvField(g.quantity));
+      if (g.modelling) {
+        const ModellingResult& m = *g.modelling;
+        for (double v : {m.cylindricalAverageLux, m.horizontalAverageLux, m.ratio}) f.push_back(formatNumber(v));
+        f.push_back(verdictName(m.verdict));
+      } else {
+        f.insert(f.end(), 4, "");
+      }
     }
     for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
     out += "\n";

@@ -59,6 +59,9 @@ std::filesystem::path writeAnnualGridCsv(const std::filesystem::path& dir, const
 //   DA300,cDA300,UDI_fell_short,UDI_supplementary,UDI_autonomous,UDI_exceeded (grid means, % of
 //   occupied hours),sDA300_50,ASE1000_250 (% of sensors),occupied_hours,coefficients_time_s,
 //   product_time_s (s)
+// and, only when some grid has a `quantity` or `modelling` (docs/quantities.md):
+//   quantity (the grid's quantity as the report names it),cylindrical_average_lux,
+//   horizontal_average_lux,modelling_ratio,verdict_modelling (empty without modelling)
 // `settings` is "key=value;key=value". Fields are quoted as RFC 4180 when needed.
 std::string summaryCsv(const ReportData& data);
 

@@ -79,6 +79,28 @@ std::string valueText(double v) {
 
 std::string unitText(const std::string& unit) { return unit == "%" ? "%" : " " + xmlEscape(unit); }
 
+// A quantity's name with its symbol's index as a subscript: "Cylindrical illuminance Ē_z" →
+// "Cylindrical illuminance Ē<sub>z</sub>" (the text escaped).
+std::string quantityHtml(const std::string& name) {
+  const std::size_t u = name.rfind('_');
+  if (u == std::string::npos || u + 1 == name.size()) return xmlEscape(name);
+  return xmlEscape(name.substr(0, u)) + "<sub>" + xmlEscape(name.substr(u + 1)) + "</sub>";
+}
+
+// The modelling rows of a grid (EN 12464-1:2021: Ē_z/Ē_h within 0.30–0.60).
+void modellingTable(std::ostringstream& h, const ModellingResult& m) {
+  h << "<table class=\"modelling\">\n<thead><tr><th>Modelling</th><th class=\"num\">Calculated</th>"
+       "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
+  h << "<tr><td>Average cylindrical illuminance Ē<sub>z</sub></td><td class=\"num\">" << valueText(m.cylindricalAverageLux)
+    << " lx</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Average horizontal illuminance Ē<sub>h</sub></td><td class=\"num\">" << valueText(m.horizontalAverageLux)
+    << " lx</td><td class=\"num\">—</td><td></td></tr>\n";
+  h << "<tr><td>Modelling ratio<span class=\"f\">Ē<sub>z</sub> / Ē<sub>h</sub></span></td><td class=\"num\">"
+    << formatFixed(m.ratio, 2) << "</td><td class=\"num\">" << formatFixed(kModellingRatioMin, 2) << "–"
+    << formatFixed(kModellingRatioMax, 2) << "</td><td>" << badge(m.verdict) << "</td></tr>\n";
+  h << "</tbody>\n</table>\n";
+}
+
 // Percent in tables: one decimal.
 std::string pctText(double v) { return formatFixed(v, 1) + " %"; }
 
@@ -279,6 +301,13 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
       << badge(g.check.overall) << "</td></tr>\n";
   }
   h << "</tbody>\n</table>\n";
+  for (std::size_t i = 0; i < data.grids.size(); ++i)
+    if (const std::optional<ModellingResult>& m = data.grids[i].modelling)
+      h << "<p>Modelling on <a href=\"#grid-" << i + 1 << "\">" << xmlEscape(data.grids[i].name)
+        << "</a>: Ē<sub>z</sub> / Ē<sub>h</sub> = " << formatFixed(m->cylindricalAverageLux, 0) << " lx / "
+        << formatFixed(m->horizontalAverageLux, 0) << " lx = " << formatFixed(m->ratio, 2) << " (EN 12464-1:2021: "
+        << formatFixed(kModellingRatioMin, 2) << "–" << formatFixed(kModellingRatioMax, 2) << ") " << badge(m->verdict)
+        << "</p>\n";
   std::size_t rated = 0, passed = 0;
   for (const ObserverReport& o : data.observers)
     if (const std::optional<bool> pass = o.pass()) {
@@ -342,7 +371,9 @@ void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
        "<th class=\"num\">Target</th><th>Result</th></tr></thead>\n<tbody>\n";
   std::string quantity = g.quantity;
   for (char& ch : quantity) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  h << "<tr><td>Average " << xmlEscape(quantity) << " Ē</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
+  // A named quantity carries its own symbol ("cylindrical illuminance Ē_z").
+  const std::string label = g.quantityKey.empty() ? xmlEscape(quantity) + " Ē" : quantityHtml(quantity);
+  h << "<tr><td>Average " << label << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
     << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
     << badge(g.check.average) << "</td></tr>\n";
   h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">E<sub>min</sub> / Ē</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
@@ -361,13 +392,15 @@ void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
     h << "<tr><td>Grid spacing</td><td class=\"num\">" << formatFixed(g.layout.spacingM.x, 3) << " × "
       << formatFixed(g.layout.spacingM.y, 3) << " m</td><td class=\"num\">—</td><td></td></tr>\n";
   h << "<tr><th>Overall</th><th></th><th></th><th>" << badge(g.check.overall) << "</th></tr>\n";
-  h << "</tbody>\n</table>\n</div>\n";
+  h << "</tbody>\n</table>\n";
+  if (g.modelling) modellingTable(h, *g.modelling);
+  h << "</div>\n";
 }
 
 // The section of point-in-time grid `i` (0-based): its plan and metrics.
 void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, double northDeg) {
   h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
-    << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << xmlEscape(g.quantity) << " in " << xmlEscape(g.unit);
+    << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << quantityHtml(g.quantity) << " in " << xmlEscape(g.unit);
   if (!g.description.empty()) h << " · " << xmlEscape(g.description);
   h << "</p>\n<div class=\"grid-body\">\n";
   if (!g.values.empty()) {

@@ -56,6 +56,15 @@ std::string summaryJson(const ReportData& data) {
       o["task_area"] = g.taskArea;
       o["area"] = g.area;
     }
+    if (!g.quantityKey.empty()) o["quantity_key"] = g.quantityKey;
+    if (g.modelling) {
+      const ModellingResult& m = *g.modelling;
+      o["modelling"] = {{"cylindrical_average_lux", number(m.cylindricalAverageLux)},
+                        {"horizontal_average_lux", number(m.horizontalAverageLux)},
+                        {"ratio", number(m.ratio)},
+                        {"range", {kModellingRatioMin, kModellingRatioMax}},
+                        {"verdict", verdictName(m.verdict)}};
+    }
     if (g.annual) {
       const GridAnnualSummary& a = g.annual->summary;
       o["DA300"] = number(a.DA300);

@@ -14,6 +14,7 @@
 #include "base/warning.h"
 #include "metrics/annual.h"
 #include "metrics/grid_stats.h"
+#include "metrics/modelling.h"
 #include "metrics/targets.h"
 
 namespace candela {
@@ -70,7 +71,9 @@ struct GridReport {
   std::string taskArea;              // the [[task_area]] that made the grid, else empty
   std::string area;                  // then "task area", "immediate surrounding" or "background"
   std::string description;           // e.g. "horizontal, 0.80 m above floor"
-  std::string quantity = "Illuminance";
+  std::string quantity = "Illuminance";  // or e.g. "Cylindrical illuminance Ē_z", "Daylight factor"
+  // The case's `quantity` as written ("cylindrical", ...): empty when the grid gives none.
+  std::string quantityKey;
   std::string unit = "lx";           // "lx", or "%" for daylight factor grids
   std::vector<double> values;        // per point, in `unit`
   GridStats stats;                   // in `unit`
@@ -78,6 +81,7 @@ struct GridReport {
   TargetCheck check;
   PlanLayout layout;
   std::optional<AnnualGridReport> annual;  // set for grids of an annual run ([sky] type = "annual")
+  std::optional<ModellingResult> modelling;  // set for grids with `modelling = true`
 };
 
 // The run as a whole.

@@ -132,9 +132,16 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
   in.north = in.site.trueNorthDeg();
   in.scene = loadAnnualScene(c, in.north);
   in.grids = prepareGrids(c, gridBounds(*in.scene));
-  for (const GridSpec& g : c.grids)
+  for (const GridSpec& g : c.grids) {
     if (g.daylightFactor)
       throw InputError(g.loc, "grid '" + g.name + "': daylight_factor needs [sky] type = \"cie-overcast\", not an annual sky");
+    // The daylight coefficients are those of planar illuminance on each sensor's normal.
+    if (g.quantity)
+      throw InputError(g.quantityLoc, "grid '" + g.name + "': 'quantity' applies to point-in-time runs, not an annual sky "
+                                      "(annual metrics are of the sensors' planar illuminance)");
+    if (g.modelling)
+      throw InputError(g.modellingLoc, "grid '" + g.name + "': 'modelling' applies to point-in-time runs, not an annual sky");
+  }
   for (const PreparedGrid& g : in.grids)
     for (const SensorPoint& p : g.grid.points) {
       in.positions.push_back(p.position);

@@ -475,6 +475,39 @@ void readPlaneGrid(Table& tab, GridSpec& g) {
   if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
 }
 
+// 'quantity', 'facing' and 'modelling' (docs/case-format.md#grid): what the points measure.
+void readGridQuantity(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  const toml::node* qn = tab.get("quantity");
+  const toml::node* fn = tab.get("facing");
+  if (qn) {
+    const std::string name = asString(c, *qn, "quantity");
+    g.quantity = parseGridQuantity(name);
+    if (!g.quantity)
+      c.fail(*qn, "unknown quantity '" + name +
+                      "' (expected horizontal, vertical, cylindrical, semi-cylindrical or hemispherical)");
+    g.quantityLoc = c.at(*qn);
+    if (const toml::node* nn = tab.get("normal"))
+      c.fail(*nn, "give either 'normal' (planar illuminance on it) or 'quantity', not both");
+    if (g.daylightFactor && *g.quantity != GridQuantity::kHorizontal)
+      c.fail(*qn, "daylight_factor is defined on horizontal illuminance: quantity must be \"horizontal\"");
+  }
+  const bool wantsFacing = g.quantity && needsFacing(*g.quantity);
+  if (fn) {
+    if (!wantsFacing) c.fail(*fn, "'facing' applies to quantity = \"vertical\" or \"semi-cylindrical\" only");
+    g.facing = asVec2(c, *fn, "facing", "a horizontal direction [x, y]");
+    if (!(glm::length(g.facing) > 0.0)) c.fail(*fn, "'facing' must not be the zero vector");
+    g.facing = glm::normalize(g.facing);
+  } else if (wantsFacing) {
+    c.fail(*qn, "quantity \"" + std::string(gridQuantityKey(*g.quantity)) +
+                    "\" needs 'facing' = [x, y], the horizontal direction it faces");
+  }
+  if (const toml::node* mn = tab.get("modelling")) {
+    g.modelling = asBool(c, *mn, "modelling");
+    g.modellingLoc = c.at(*mn);
+  }
+}
+
 void readGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
   Table tab(t, c, "[[grid]]");
   GridSpec g;
@@ -495,6 +528,7 @@ void readGrid(const Context& c, const toml::table& t, int index, std::set<std::s
   g.targetUniformity = optNumber(tab, "target_uniformity");
   if (g.targetUniformity) checkRange(tab, "target_uniformity", *g.targetUniformity, 0.0, 1.0, "");
   if (auto n = tab.get("daylight_factor")) g.daylightFactor = asBool(c, *n, "daylight_factor");
+  readGridQuantity(tab, g);
   tab.finish();
   // Border and spacing problems (the border eats the area, a million-point grid) show here,
   // at the grid's line, rather than in the middle of a run.

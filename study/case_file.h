@@ -15,6 +15,7 @@
 #include "engine/camera.h"
 #include "engine/luminaire_source.h"
 #include "photometry/sky_type.h"
+#include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
 
 namespace candela {
@@ -86,6 +87,15 @@ struct GridSpec {
   std::optional<double> targetAverageLux;
   std::optional<double> targetUniformity;  // U0 = Emin/Eavg
   bool daylightFactor = false;          // report the grid as a daylight factor in %
+  // `quantity` (study/grid_quantity.h): unset, planar illuminance on the grid's normal (the
+  // points file's normals), as before the key existed.
+  std::optional<GridQuantity> quantity;
+  FileLoc quantityLoc;
+  Vec2 facing{1.0, 0.0};                // `facing`: plan direction, vertical and semi-cylindrical
+  // `modelling`: cylindrical and horizontal illuminance at every point too, and their ratio
+  // (EN 12464-1:2021 modelling).
+  bool modelling = false;
+  FileLoc modellingLoc;
   FileLoc loc;                          // the [[grid]] entry
   // Grids a [[task_area]] makes: its name and which of its areas this is; a background without
   // a `room` is clipped to the scene's plan extent when it is made (study/prepared_grid.cpp).

@@ -5,12 +5,14 @@
 #include "engine/rad_sky.h"
 #include "engine/sensors.h"
 #include "metrics/grid_stats.h"
+#include "metrics/modelling.h"
 #include "metrics/targets.h"
 #include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"
+#include "study/grid_quantity.h"
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
@@ -96,9 +98,60 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
 
 // A grid's values as the run keeps them: its points' illuminance and standard error (lux),
 // 16 B a point; everything else of an estimate goes to the grid's CSV as it comes (below).
+// A modelling grid keeps its cylindrical and horizontal values too (the grid's own when its
+// quantity is one of them).
 struct GridValues {
   std::vector<double> lux, errorLux;
+  std::vector<double> cylindricalLux, cylindricalErrorLux, horizontalLux, horizontalErrorLux;
 };
+
+// Whether every sensor of the grid already measures q (a horizontal grid's default normals are
+// horizontal illuminance).
+bool measures(const PreparedGrid& g, GridQuantity q) {
+  const SensorPoint want = quantitySensor(q, Vec3(0.0));
+  for (const SensorPoint& p : g.grid.points)
+    if (p.quantity != want.quantity || p.normal != want.normal) return false;
+  return !g.grid.points.empty();
+}
+
+// A run of consecutive points of the traced list: grid `grid`'s own points, or the sensors of
+// one of its modelling quantities at its positions.
+struct Segment {
+  std::size_t grid = 0, count = 0;
+  std::vector<double>*lux = nullptr, *errorLux = nullptr;
+};
+
+// The traced list: every grid's own points in case order (point k uses random stream k, as
+// before modelling existed), then the modelling grids' cylindrical and horizontal sensors that
+// their own points are not. Fills `segments` in the same order.
+std::vector<SensorPoint> tracedPoints(const std::vector<PreparedGrid>& grids, std::vector<GridValues>& values,
+                                      std::vector<Segment>& segments) {
+  std::vector<SensorPoint> all;
+  std::size_t total = 0;
+  for (const PreparedGrid& g : grids)
+    total += g.grid.size() * (g.spec->modelling ? 1 + !measures(g, GridQuantity::kCylindrical) +
+                                                      !measures(g, GridQuantity::kHorizontal)
+                                                : 1);
+  all.reserve(total);  // one allocation: growing would copy every point held so far
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    const PreparedGrid& g = grids[gi];
+    all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
+    segments.push_back({gi, g.grid.size(), &values[gi].lux, &values[gi].errorLux});
+  }
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    const PreparedGrid& g = grids[gi];
+    if (!g.spec->modelling) continue;
+    GridValues& v = values[gi];
+    for (GridQuantity q : {GridQuantity::kCylindrical, GridQuantity::kHorizontal}) {
+      if (measures(g, q)) continue;  // copied from the grid's own values after tracing
+      for (const SensorPoint& p : g.grid.points) all.push_back(quantitySensor(q, p.position));
+      const bool cyl = q == GridQuantity::kCylindrical;
+      segments.push_back({gi, g.grid.size(), cyl ? &v.cylindricalLux : &v.horizontalLux,
+                          cyl ? &v.cylindricalErrorLux : &v.horizontalErrorLux});
+    }
+  }
+  return all;
+}
 
 // The grids' reports (metrics and verdicts) from the values of all points, grids in case order;
 // daylight-factor grids in % of the outside horizontal illuminance.
@@ -109,6 +162,10 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g);
+    if (g.spec->quantity) {
+      r.quantity = gridQuantityName(*g.spec->quantity);
+      r.quantityKey = gridQuantityKey(*g.spec->quantity);
+    }
     if (g.spec->daylightFactor) {
       r.quantity = "Daylight factor";
       r.unit = "%";
@@ -117,6 +174,7 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
     } else {
       r.values = values[gi].lux;
     }
+    if (g.spec->modelling) r.modelling = modellingRatio(values[gi].cylindricalLux, values[gi].horizontalLux);
     r.stats = computeGridStats(r.values);
     r.targets = {g.spec->targetAverageLux, g.spec->targetUniformity};
     r.check = checkTargets(r.stats, r.targets);
@@ -127,7 +185,9 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
 
 // The grids' CSVs written as the estimates come, a block at a time, each into an unnamed
 // temporary beside the result folder (base/atomic_file.h) that goes into the folder when it is
-// committed: illuminance_lux, error_lux and, for daylight-factor grids, daylight_factor_pct.
+// committed: illuminance_lux (or the quantity's column, e.g. cylindrical_illuminance_lux),
+// error_lux and, for daylight-factor grids, daylight_factor_pct; modelling grids add their
+// cylindrical and horizontal values and the point's ratio, written once all are traced.
 class GridCsvFiles {
  public:
   GridCsvFiles(const std::filesystem::path& beside, const std::vector<PreparedGrid>& grids, double outsideLux)
@@ -135,18 +195,39 @@ class GridCsvFiles {
     std::filesystem::create_directories(beside);
     for (const PreparedGrid& g : grids) {
       auto file = std::make_unique<AtomicFile>(beside / (g.fileStem + ".csv"));
-      std::vector<std::string> columns = {"illuminance_lux", "error_lux"};
+      std::vector<std::string> columns = {g.spec->quantity ? gridQuantityColumn(*g.spec->quantity) : "illuminance_lux",
+                                          "error_lux"};
       if (g.spec->daylightFactor) columns.emplace_back("daylight_factor_pct");
+      if (g.spec->modelling)
+        for (const char* c : {"cylindrical_illuminance_lux", "cylindrical_error_lux", "horizontal_illuminance_lux",
+                              "horizontal_error_lux", "modelling_ratio"})
+          columns.emplace_back(c);
       AtomicFile* f = file.get();
       writers_.push_back(std::make_unique<PointsCsvWriter>([f](std::string_view piece) { f->write(piece); }, columns));
       files_.push_back(std::move(file));
     }
   }
-  // Point k of grid gi.
+  // Point k of grid gi as it comes; modelling grids wait for modellingRows.
   void row(std::size_t gi, std::size_t k, double lux, double errorLux) {
+    if (grids_[gi].spec->modelling) return;
     const SensorPoint& p = grids_[gi].grid.points[k];
     const double v[3] = {lux, errorLux, 100.0 * lux / outsideLux_};
     writers_[gi]->row(p.position, p.normal, v);
+  }
+  // Every row of the modelling grids, from their values once all are traced.
+  void modellingRows(const std::vector<GridValues>& values) {
+    for (std::size_t gi = 0; gi < grids_.size(); ++gi) {
+      if (!grids_[gi].spec->modelling) continue;
+      const GridValues& g = values[gi];
+      for (std::size_t k = 0; k < g.lux.size(); ++k) {
+        std::vector<double> v = {g.lux[k], g.errorLux[k]};
+        if (grids_[gi].spec->daylightFactor) v.push_back(100.0 * g.lux[k] / outsideLux_);
+        v.insert(v.end(), {g.cylindricalLux[k], g.cylindricalErrorLux[k], g.horizontalLux[k], g.horizontalErrorLux[k],
+                           pointModellingRatio(g.cylindricalLux[k], g.horizontalLux[k])});
+        const SensorPoint& p = grids_[gi].grid.points[k];
+        writers_[gi]->row(p.position, p.normal, v.data());
+      }
+    }
   }
   void commitInto(const std::filesystem::path& dir) {
     for (std::size_t gi = 0; gi < files_.size(); ++gi) {
@@ -196,13 +277,14 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
   observer.estimated(needs);
 
-  // 2. All grids as one list (grids in case order): point k of the run uses random stream k, so
-  // the numbers depend on the seed only, never on threads.
-  std::vector<SensorPoint> all;
-  std::size_t total = 0;
-  for (const PreparedGrid& g : grids) total += g.grid.size();
-  all.reserve(total);  // one allocation: growing would copy every point held so far
-  for (const PreparedGrid& g : grids) all.insert(all.end(), g.grid.points.begin(), g.grid.points.end());
+  // 2. All grids as one list (grids in case order, then the modelling grids' other sensors):
+  // point k of the run uses random stream k, so the numbers depend on the seed only, never on
+  // threads.
+  std::vector<GridValues> values(grids.size());
+  std::vector<Segment> segments;
+  std::vector<SensorPoint> all = tracedPoints(grids, values, segments);
+  std::size_t gridPoints = 0;
+  for (const PreparedGrid& g : grids) gridPoints += g.grid.size();
   const Tracer tracer(*scene);
   // Warnings on the input, before tracing: a strict run stops here.
   Warnings warnings = pointInTimeWarnings(c, tracer, grids);
@@ -223,30 +305,37 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
       throw InputError(FileLoc{run.outDir.string(), 0, 0}, std::string("cannot write the results: ") + e.what());
     }
   }
-  std::vector<GridValues> values(grids.size());
-  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
-    values[gi].lux.reserve(grids[gi].grid.size());
-    values[gi].errorLux.reserve(grids[gi].grid.size());
+  for (const Segment& seg : segments) {
+    seg.lux->reserve(seg.count);
+    seg.errorLux->reserve(seg.count);
   }
   std::size_t withoutCache = 0;
   {
     const ObservedStep step(observer, "tracing", all.size());
-    std::size_t gi = 0;  // the grid of the block's next point
+    std::size_t si = 0;  // the segment of the block's next point
     computeIrradianceInBlocks(
         tracer, all, trace.settings, trace.threads, [&step](std::size_t done) { step(done); }, processes,
         [&](std::size_t first, const IrradianceEstimate* est, std::size_t n) {
           checkFinite(est, n, "the grids' illuminance", first);
           for (std::size_t j = 0; j < n; ++j) {
-            while (values[gi].lux.size() == grids[gi].grid.size()) ++gi;
+            while (segments[si].lux->size() == segments[si].count) ++si;
+            const Segment& seg = segments[si];
             const double lux = est[j].illuminanceLux(), err = est[j].standardErrorLux();
-            if (csvFiles) csvFiles->row(gi, values[gi].lux.size(), lux, err);
-            values[gi].lux.push_back(lux);
-            values[gi].errorLux.push_back(err);
+            if (csvFiles && si < grids.size()) csvFiles->row(seg.grid, seg.lux->size(), lux, err);
+            seg.lux->push_back(lux);
+            seg.errorLux->push_back(err);
             withoutCache += est[j].withoutCache;
           }
         });
   }
-  const std::size_t pointCount = all.size();
+  // A modelling grid whose own sensors are cylindrical or horizontal takes its values for them.
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
+    if (!grids[gi].spec->modelling) continue;
+    GridValues& v = values[gi];
+    if (measures(grids[gi], GridQuantity::kCylindrical)) v.cylindricalLux = v.lux, v.cylindricalErrorLux = v.errorLux;
+    if (measures(grids[gi], GridQuantity::kHorizontal)) v.horizontalLux = v.lux, v.horizontalErrorLux = v.errorLux;
+  }
+  if (csvFiles) csvFiles->modellingRows(values);
   std::vector<SensorPoint>().swap(all);  // not needed again: the report's memory takes its place
 
   // Warnings on the results, before anything is written.
@@ -260,7 +349,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   result.outDir = run.outDir;
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
-  describeSettings(data, c, *scene, trace, pointCount);
+  describeSettings(data, c, *scene, trace, gridPoints);
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0)
     data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)",

@@ -22,19 +22,33 @@ bool isHorizontalUp(const PlaneGridSpec& p) {
   return p.uAxis == Vec3(1, 0, 0) && p.vAxis == Vec3(0, 1, 0) && glm::length(n - Vec3(0, 0, 1)) < 1e-9;
 }
 
+// ", facing (x, y)" for the quantities that face a plan direction, else "".
+std::string facingText(const GridSpec& s) {
+  if (!s.quantity || !needsFacing(*s.quantity)) return "";
+  return ", facing (" + formatNumber(s.facing.x, 4) + ", " + formatNumber(s.facing.y, 4) + ")";
+}
+
 }  // namespace
+
+int estimatesPerPoint(const GridSpec& spec) {
+  if (!spec.modelling) return 1;
+  const bool horizontal = spec.quantity ? *spec.quantity == GridQuantity::kHorizontal
+                                        : spec.kind == GridKind::kPlane && isHorizontalUp(spec.plane);
+  const bool cylindrical = spec.quantity && *spec.quantity == GridQuantity::kCylindrical;
+  return 1 + !horizontal + !cylindrical;
+}
 
 // One line a reader of the report understands: orientation, height, spacing, border.
 std::string gridDescription(const PreparedGrid& g) {
   const GridSpec& s = *g.spec;
-  if (s.kind == GridKind::kPoints) return "sensor points from " + s.pointsFile.filename().string();
+  if (s.kind == GridKind::kPoints) return "sensor points from " + s.pointsFile.filename().string() + facingText(s);
   const PlaneGridSpec& p = s.plane;
   std::string d = isHorizontalUp(p) ? "horizontal, " + fixed(p.origin.z, 2) + " m above floor level"
                                     : "plane through " + vecText(p.origin) + " m, sensors facing " +
                                           vecText(g.grid.points.front().normal);
   d += ", spacing " + fixed(g.grid.spacingM.x, 2) + " × " + fixed(g.grid.spacingM.y, 2) + " m";
   if (p.borderM > 0.0) d += ", border " + fixed(p.borderM, 2) + " m";
-  return d;
+  return d + facingText(s);
 }
 
 PlanLayout planLayout(const PreparedGrid& g) {
@@ -78,6 +92,9 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
     PreparedGrid g;
     g.spec = &spec;
     g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(made.plane, spec.loc) : readPointsFile(spec.pointsFile);
+    // A quantity replaces the grid's normals by its own sensor at each position.
+    if (spec.quantity)
+      for (SensorPoint& p : g.grid.points) p = quantitySensor(*spec.quantity, p.position, spec.facing);
     g.fileStem = safeFileName(spec.name);
     grids.push_back(std::move(g));
   }

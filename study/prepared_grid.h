@@ -24,6 +24,12 @@ struct PreparedGrid {
 // collisions (study/output_names.h); throws InputError at the entry's line.
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds);
 
+// Estimates a point of the grid costs the study: 1, plus for `modelling` its cylindrical and
+// horizontal sensors unless the grid's own quantity is that (default normals of an upward plane
+// grid are horizontal). An upper bound before the points are made (a points file's normals are
+// not read).
+int estimatesPerPoint(const GridSpec& spec);
+
 // One line a reader of the report understands: orientation, height, spacing, border.
 std::string gridDescription(const PreparedGrid& g);
 

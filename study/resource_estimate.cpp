@@ -9,6 +9,7 @@
 #include "reports/plan_svg.h"
 #include "reports/report_data.h"
 #include "study/case_file.h"
+#include "study/prepared_grid.h"
 #include "study/sensor_grid.h"
 #include "study/trace_options.h"
 
@@ -287,15 +288,25 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   const SourceCounts n = countSources(scene);
   const uint64_t perPoint = bytesPerGridPoint(s);
   if (!c.grids.empty()) e.baseBytes += gridBlockBytes();
+  // A modelling grid's other sensors (study/grid_study.cpp): each a traced point, its estimate,
+  // its kept value and error, and its cache records.
+  const bool cache = s.method == Method::kCache && s.maxBounces > 0;
+  const uint64_t perExtra =
+      sizeof(SensorPoint) + sizeof(IrradianceEstimate) + 2 * sizeof(double) + (cache ? kCacheBytesPerPoint : 0);
   double points = 0.0;
   for (std::size_t i = 0; i < c.grids.size() && i < gridPoints.size(); ++i) {
+    const int estimates = estimatesPerPoint(c.grids[i]);
+    const uint64_t bytes = perPoint + static_cast<uint64_t>(estimates - 1) * perExtra;
     MemoryItem m;
     m.what = "grid '" + c.grids[i].name + "'";
     m.loc = c.grids[i].loc;
-    m.bytes = gridPoints[i] * perPoint + gridPlanBytes(gridPoints[i]);
-    m.detail = std::to_string(gridPoints[i]) + " points x " + std::to_string(perPoint) + " B and its plan";
+    m.bytes = gridPoints[i] * bytes + gridPlanBytes(gridPoints[i]);
+    m.detail = std::to_string(gridPoints[i]) + " points x " + std::to_string(bytes) + " B and its plan";
+    if (estimates > 1) m.detail += " (" + std::to_string(estimates) + " estimates each: modelling)";
     e.memory.push_back(std::move(m));
-    points += static_cast<double>(gridPoints[i]);
+    // Every estimate costs the rays of one: the quantities draw as many hemisphere rays and
+    // light samples as planar illuminance (engine/response.h).
+    points += static_cast<double>(gridPoints[i]) * estimates;
   }
   const double batches = expectedBatchesPerPoint(s);
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires)});

@@ -21,6 +21,8 @@ constexpr double kClosedVolumeM = 0.5;    // a luminaire enclosed this close on 
 constexpr double kSiteToleranceDeg = 1.0;
 constexpr std::size_t kSensorsPerLuminaireCheck = 16;
 constexpr std::size_t kGlowShapesChecked = 64;
+// EN 12464-1:2021's heights for modelling, m above the floor (z = 0), and the leeway of a grid.
+constexpr double kSeatedEyeHeightM = 1.2, kStandingEyeHeightM = 1.6, kModellingHeightToleranceM = 0.1;
 
 std::string num(double v) { return formatNumber(v, 4); }
 std::string vec(const Vec3& p) { return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")"; }
@@ -223,6 +225,23 @@ void checkGridSpacing(const PreparedGrid& g, Warnings& out) {
                    spec.loc});
 }
 
+void checkModellingHeight(const PreparedGrid& g, Warnings& out) {
+  const GridSpec& spec = *g.spec;
+  if (!spec.modelling || g.grid.points.empty()) return;
+  // Every point within kModellingHeightToleranceM of one of the two heights.
+  auto near = [](double z, double h) { return std::abs(z - h) <= kModellingHeightToleranceM + 1e-9; };
+  for (const SensorPoint& p : g.grid.points) {
+    const double z = p.position.z;
+    if (near(z, kSeatedEyeHeightM) || near(z, kStandingEyeHeightM)) continue;
+    out.push_back({"modelling_height",
+                   "grid '" + spec.name + "': modelling (EN 12464-1:2021) is assessed at " + num(kSeatedEyeHeightM) +
+                       " m (seated) or " + num(kStandingEyeHeightM) + " m (standing) above the floor; this grid has a point at " +
+                       num(z) + " m, where the ratio Ez/Eh describes no one's view",
+                   spec.modellingLoc});
+    return;
+  }
+}
+
 void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out) {
   const std::vector<SensorPoint>& pts = *set.points;
   if (pts.empty() || tracer.scene().surfaceCount() == 0) return;
@@ -356,6 +375,7 @@ Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std:
   checkLuminaires(tracer, c.luminaires, sets, w);
   checkPhotometry(tracer.scene(), c.luminaires, w);
   for (const PreparedGrid& g : grids) checkGridSpacing(g, w);
+  for (const PreparedGrid& g : grids) checkModellingHeight(g, w);
   for (const SensorSet& set : sets) checkSensors(tracer, set, w);
   return w;
 }

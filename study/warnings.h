@@ -49,6 +49,11 @@ void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>
 // (after the border) along a side.
 void checkGridSpacing(const PreparedGrid& grid, Warnings& out);
 
+// modelling_height: a grid with `modelling = true` with a point farther than 0.1 m from both
+// 1.2 m (seated) and 1.6 m (standing) above the floor, the heights EN 12464-1:2021 rates
+// modelling at.
+void checkModellingHeight(const PreparedGrid& grid, Warnings& out);
+
 // sensor_near_surface (a surface within 5 mm that cuts the sensor's hemisphere) and
 // sensor_outside_room (outside the scene's box without a sky, or open to the outside where most
 // sensors of the set are enclosed): 11 rays per sensor.
@@ -79,8 +84,8 @@ void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& 
 void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warnings& out);
 
 // The point-in-time study's checks on its input, before tracing, in the order it runs them
-// (`candela run` of a case without an annual sky): light sources, site, luminaires, grids,
-// sensors. The tracer is the study's own.
+// (`candela run` of a case without an annual sky): light sources, site, luminaires, grids
+// (spacing, modelling height), sensors. The tracer is the study's own.
 Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std::vector<PreparedGrid>& grids);
 
 // The annual study's checks on its input: site against weather, grids, sensors (through a

@@ -49,3 +49,21 @@ candela_run_test(pattern_base_option 0 "\"code\": \"pattern_replaced\"" pattern_
 # An OBJ file as a [[scene]], its materials in a Radiance file listed after it (docs/engine.md):
 # the panel's exact illuminance, 11218.4965 lx.
 candela_run_test(obj_scene 0 "\"average\": 11218.49" obj_scene/case.toml --quality draft)
+
+# Modelling (EN 12464-1:2021, docs/quantities.md): summary.json's grids[i].modelling holds the
+# averages of the grid's cylindrical and horizontal CSV columns, their ratio and its verdict; a
+# cylindrical grid takes its own values as Ē_z. A modelling grid away from 1.2 m and 1.6 m is
+# warned of at its `modelling` line.
+add_test(NAME cli.run.modelling COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/modelling.sh $<TARGET_FILE:candela>
+         ${RUN_DATA}/modelling/case.toml 0:seated 1:standing)
+candela_run_test(modelling_summary 0 "\"horizontal_average_lux\"" modelling/case.toml)
+candela_run_test(modelling_height_warning 0 "modelling (EN 12464-1:2021) is assessed at 1.2 m (seated) or 1.6 m (standing) above the floor; this grid has a point at 0.8 m"
+                 ${DATA}/study/quantities.toml)
+candela_run_test(quantity_unknown 2 "quantity_unknown.toml:8: unknown quantity 'cylinder'"
+                 ${DATA}/cases/errors/quantity_unknown.toml)
+candela_run_test(quantity_needs_facing 2 "quantity_missing_facing.toml:8: quantity \"vertical\" needs 'facing'"
+                 ${DATA}/cases/errors/quantity_missing_facing.toml)
+# EN 12464-1:2021 task areas (docs/en12464.md): the task area, its surrounding and background as
+# grids with their own CSVs, and the task area's verdict in summary.json.
+candela_run_test(task_area 0 "\"surrounding_grid\": \"desk surrounding\"" task_area/case.toml --quality draft)
+candela_run_test(task_area_bad 2 "no_corners.toml:1: a task area needs 'corners'" task_area/no_corners.toml)

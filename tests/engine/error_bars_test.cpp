@@ -114,6 +114,44 @@ TEST(ErrorBars, PathTracerCoversItsShare) {
   EXPECT_LE(b, kHi);
 }
 
+// Cylindrical, semi-cylindrical and hemispherical illuminance (engine/response.h) 1.2 m above
+// the open grey ground (ρ 0.3) under the uniform glow dome: ∫ w over the upper hemisphere is
+// π/2 for the cylindrical pair, over the lower the same (docs/quantities.md), the ground's
+// radiance ρL; the rays of the cylindrical family go below the horizon too, into the ground's
+// light. About a vertical axis the hemispherical estimate sees L alone and is exact (its warp
+// draws ∝ w), so its axis is tilted by β = 60° as tiltedSensor's: (1 + cos θ')/4 over the tilted
+// hemisphere is ¼ of its solid angle above and below the horizon (a lune of 2(π − β) sr
+// above, 2β below) plus ¼ of the tilted plane's illuminance.
+TEST(ErrorBars, QuantitiesCoverTheirShare) {
+  const Scene ground = skyOverGround();
+  const Tracer tg(ground);
+  TraceSettings s;
+  s.hemisphereSamples = 64;
+  s.lightSamples = 4;
+  s.firstBounceSplit = 4;
+  const Vec3 up(0, 0, 1), p(0, 0, 1.2);
+  const double L = kLumensPerWatt;
+  const struct {
+    Response r;
+    double exact;
+    const char* what;
+  } cases[] = {{{Quantity::kCylindrical, up, Vec3(1, 0, 0)}, 0.5 * kPi * L * 1.3, "path, cylindrical over open ground"},
+               {{Quantity::kSemiCylindrical, up, glm::normalize(Vec3(1, 1, 0))}, 0.5 * kPi * L * 1.3,
+                "path, semi-cylindrical over open ground"},
+               {{Quantity::kHemispherical, tiltedSensor().normal, Vec3(0, 1, 0)},
+                0.25 * (L * (2.0 * (kPi - degToRad(kBeta)) + 0.3 * 2.0 * degToRad(kBeta)) + tiltedExact()),
+                "path, hemispherical about a tilted axis over open ground"}};
+  for (const auto& c : cases) {
+    const double a = coverage([&](uint64_t seed) {
+      TraceSettings t = s;
+      t.seed = seed;
+      return tg.irradiance(p, c.r, 0, t);
+    }, c.exact, c.what);
+    EXPECT_GE(a, kLo) << c.what;
+    EXPECT_LE(a, kHi) << c.what;
+  }
+}
+
 TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
   // Direct light only: a 1 m light panel 2 m above the sensor, and a black sheet halfway up
   // covering x < 0: a ray to the panel point (x, y, 2) crosses z = 1 at (x/2, y/2), so exactly

@@ -39,5 +39,15 @@ TEST(Targets, NothingToCheck) {
   EXPECT_STREQ(verdictName(Verdict::kFail), "fail");
 }
 
+// The EN 12464-1:2021 relation of the immediate surrounding's Ē_m to the task area's, row by row,
+// and between rows (the row at or below); the background takes a third.
+TEST(Targets, ImmediateSurroundingAndBackgroundFromTheTaskArea) {
+  const double rows[][2] = {{1000.0, 500.0}, {750.0, 500.0}, {500.0, 300.0}, {400.0, 200.0}, {300.0, 200.0},
+                            {200.0, 150.0},  {150.0, 150.0}, {100.0, 100.0}, {50.0, 50.0}};
+  for (const auto& r : rows) EXPECT_EQ(immediateSurroundingLux(r[0]), r[1]) << r[0];
+  EXPECT_DOUBLE_EQ(backgroundLux(500.0), 100.0);
+  EXPECT_DOUBLE_EQ(backgroundLux(150.0), 50.0);
+}
+
 }  // namespace
 }  // namespace candela

@@ -233,6 +233,42 @@ TEST(Summary, ObserversInJsonAndCsv) {
   EXPECT_NE(row.find(",,22,pass,0,"), std::string::npos) << row;
 }
 
+// A grid's quantity and modelling (docs/quantities.md): summary.json's quantity_key and
+// modelling block, summary.csv's extra columns only when some grid has them.
+TEST(Summary, QuantityAndModellingInJsonAndCsv) {
+  ReportData d = testing_sample::sampleReport();
+  const std::string plainCsv = summaryCsv(d);
+  EXPECT_EQ(plainCsv.find("modelling_ratio"), std::string::npos);
+  EXPECT_EQ(summaryJson(d).find("modelling"), std::string::npos);
+  d.grids[0].quantity = "Cylindrical illuminance Ē_z";
+  d.grids[0].quantityKey = "cylindrical";
+  d.grids[0].modelling = modellingRatio({100.0, 200.0}, {300.0, 500.0});
+  const nlohmann::json j = nlohmann::json::parse(summaryJson(d));
+  EXPECT_EQ(j["grids"][0]["quantity"], "Cylindrical illuminance Ē_z");
+  EXPECT_EQ(j["grids"][0]["quantity_key"], "cylindrical");
+  const nlohmann::json& m = j["grids"][0]["modelling"];
+  EXPECT_DOUBLE_EQ(m["cylindrical_average_lux"].get<double>(), 150.0);
+  EXPECT_DOUBLE_EQ(m["horizontal_average_lux"].get<double>(), 400.0);
+  EXPECT_DOUBLE_EQ(m["ratio"].get<double>(), 0.375);
+  EXPECT_EQ(m["range"], nlohmann::json({0.3, 0.6}));
+  EXPECT_EQ(m["verdict"], "pass");
+  EXPECT_FALSE(j["grids"][1].contains("modelling"));
+  EXPECT_FALSE(j["grids"][1].contains("quantity_key"));
+  const auto rows = parseCsv(summaryCsv(d));
+  const std::vector<std::string>& head = rows[0];
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  };
+  ASSERT_LT(col("verdict_modelling"), head.size());
+  EXPECT_EQ(head.back(), "verdict_modelling");
+  EXPECT_EQ(rows[1][col("quantity")], "Cylindrical illuminance Ē_z");
+  EXPECT_EQ(rows[1][col("modelling_ratio")], "0.375");
+  EXPECT_EQ(rows[1][col("verdict_modelling")], "pass");
+  EXPECT_EQ(rows[2][col("quantity")], "Illuminance");
+  EXPECT_EQ(rows[2][col("modelling_ratio")], "");
+  EXPECT_EQ(rows[2].size(), head.size());
+}
+
 TEST(Summary, CsvFieldQuoting) {
   EXPECT_EQ(csvField("plain"), "plain");
   EXPECT_EQ(csvField("a,b"), "\"a,b\"");

@@ -74,6 +74,24 @@ TEST(HtmlReport, HasEachGridsPlanAndTable) {
 
 // scripts/screenshot_report.sh sets CANDELA_SAMPLE_REPORT to get the sample report for the
 // manual visual check (docs/reports.md); without it this test only writes to a temp folder.
+// A named quantity in the grid's heading and metrics (its symbol's index as a subscript), and a
+// modelling grid's ratio under the summary and in its section.
+TEST(HtmlReport, ShowsTheQuantityAndModelling) {
+  ReportData d = testing_sample::sampleReport();
+  EXPECT_EQ(htmlReport(d).find("Modelling"), std::string::npos);
+  d.grids[1].quantity = "Cylindrical illuminance Ē_z";
+  d.grids[1].quantityKey = "cylindrical";
+  d.grids[1].modelling = modellingRatio({100.0}, {400.0});
+  const std::string html = htmlReport(d);
+  EXPECT_NE(html.find("<p class=\"sub\">Cylindrical illuminance Ē<sub>z</sub> in lx"), std::string::npos);
+  EXPECT_NE(html.find("<td>Average cylindrical illuminance Ē<sub>z</sub></td>"), std::string::npos);
+  EXPECT_NE(html.find("Modelling on <a href=\"#grid-2\">Desk &lt;A&amp;B&gt;</a>: Ē<sub>z</sub> / Ē<sub>h</sub> = 100 lx / "
+                      "400 lx = 0.25 (EN 12464-1:2021: 0.30–0.60) <span class=\"badge fail\">fail</span>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">0.25</td><td class=\"num\">0.30–0.60</td><td><span class=\"badge fail\">"),
+            std::string::npos);
+}
+
 TEST(HtmlReport, WritesSampleForScreenshot) {
   const char* target = std::getenv("CANDELA_SAMPLE_REPORT");
   const fs::path path = target ? fs::path(target) : fs::path(testing::TempDir()) / "candela_sample_report.html";

@@ -122,6 +122,31 @@ TEST(CaseFile, DefaultsOfAMinimalCase) {
   EXPECT_EQ(c.output.dir, (casesDir() / "out").lexically_normal());
 }
 
+// [[grid]] quantity, facing, modelling: read as written, facing normalised, and absent keys
+// leave the grid as before (planar on its normal, no modelling).
+TEST(CaseFile, GridQuantityKeys) {
+  const fs::path path = casesDir() / "errors" / "quantity.toml";
+  const std::string grid = "[[grid]]\ncorners = [[0, 0], [4, 3]]\nheight = 1.2\n";
+  const CaseFile c = parseCaseFile(grid + "quantity = \"semi-cylindrical\"\nfacing = [0, -2]\nmodelling = true\n" + grid +
+                                       "quantity = \"cylindrical\"\n" + grid,
+                                   path);
+  ASSERT_EQ(c.grids.size(), 3u);
+  EXPECT_EQ(c.grids[0].quantity, GridQuantity::kSemiCylindrical);
+  EXPECT_EQ(c.grids[0].quantityLoc.line, 4);
+  EXPECT_EQ(c.grids[0].facing, Vec2(0.0, -1.0));
+  EXPECT_TRUE(c.grids[0].modelling);
+  EXPECT_EQ(c.grids[0].modellingLoc.line, 6);
+  EXPECT_EQ(c.grids[1].quantity, GridQuantity::kCylindrical);
+  EXPECT_FALSE(c.grids[1].modelling);
+  EXPECT_FALSE(c.grids[2].quantity.has_value());
+  EXPECT_FALSE(c.grids[2].modelling);
+  // Every name reads back to its quantity.
+  for (GridQuantity q : {GridQuantity::kHorizontal, GridQuantity::kVertical, GridQuantity::kCylindrical,
+                         GridQuantity::kSemiCylindrical, GridQuantity::kHemispherical})
+    EXPECT_EQ(parseGridQuantity(gridQuantityKey(q)), q);
+  EXPECT_FALSE(parseGridQuantity("Cylindrical").has_value());
+}
+
 TEST(CaseFile, AnnualKeysAndTheirDefaults) {
   const fs::path path = casesDir() / "errors" / "annual.toml";  // relative paths resolve from here
   const std::string head = "[sky]\ntype = \"annual\"\nweather = \"../../epw/synthetic_golden_2026.epw\"\n";
@@ -262,7 +287,19 @@ INSTANTIATE_TEST_SUITE_P(
                     // A grid at 1e19 m under a sky once aborted the process inside Embree.
                     ErrorCase{"huge_height.toml", 4, "'height' must lie within ±1e7"},
                     // A NUL once silently cut the path short.
-                    ErrorCase{"nul_path.toml", 2, "'file' must not contain a NUL character"}),
+                    ErrorCase{"nul_path.toml", 2, "'file' must not contain a NUL character"},
+                    // Illuminance quantities (docs/case-format.md#grid).
+                    ErrorCase{"quantity_unknown.toml", 8, "unknown quantity 'cylinder' (expected horizontal, vertical"},
+                    ErrorCase{"quantity_missing_facing.toml", 8, "quantity \"vertical\" needs 'facing' = [x, y]"},
+                    ErrorCase{"quantity_semi_missing_facing.toml", 9,
+                              "quantity \"semi-cylindrical\" needs 'facing' = [x, y]"},
+                    ErrorCase{"quantity_zero_facing.toml", 9, "'facing' must not be the zero vector"},
+                    ErrorCase{"quantity_facing_not_needed.toml", 9,
+                              "'facing' applies to quantity = \"vertical\" or \"semi-cylindrical\" only"},
+                    ErrorCase{"quantity_facing_3d.toml", 9, "'facing' must be a horizontal direction [x, y]"},
+                    ErrorCase{"quantity_with_normal.toml", 8, "give either 'normal'"},
+                    ErrorCase{"quantity_daylight_factor.toml", 9, "daylight_factor is defined on horizontal illuminance"},
+                    ErrorCase{"modelling_not_bool.toml", 8, "'modelling' must be true or false, got a string"}),
     [](const testing::TestParamInfo<ErrorCase>& info) {
       std::string n = info.param.file;
       return n.substr(0, n.find('.'));
@@ -289,6 +326,61 @@ TEST(CaseFile, GridOutsideTheSceneNamesTheGridLine) {
 
 TEST(CaseFile, MissingCaseFile) {
   EXPECT_THROW(readCaseFile(casesDir() / "no_such_case.toml"), InputError);
+}
+
+// A [[task_area]] makes three grids (the task area, its immediate surrounding and background)
+// with EN 12464-1:2021's targets derived from the task's Ē_m.
+TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
+  const fs::path path = casesDir() / "errors" / "task_area.toml";
+  const CaseFile c = parseCaseFile(
+      "[[task_area]]\nname = \"desk\"\ncorners = [[2.8, 1.8], [1.2, 1.0]]\nheight = 0.75\n"
+      "maintained_illuminance = 750\nuniformity = 0.7\nugr_limit = 19\nra = 80\nroom = [[0, 0], [4, 3]]\n",
+      path);
+  ASSERT_EQ(c.taskAreas.size(), 1u);
+  ASSERT_EQ(c.grids.size(), 3u);
+  const TaskAreaSpec& a = c.taskAreas[0];
+  EXPECT_EQ(a.outline.size(), 4u);
+  EXPECT_EQ(a.ugrLimit.value(), 19.0);
+  EXPECT_EQ(a.ra.value(), 80.0);
+  EXPECT_EQ(c.grids[0].name, "desk");
+  EXPECT_EQ(c.grids[0].area, GridSpec::Area::kTask);
+  EXPECT_EQ(c.grids[0].targetAverageLux.value(), 750.0);
+  EXPECT_EQ(c.grids[0].targetUniformity.value(), 0.7);
+  EXPECT_EQ(c.grids[1].name, "desk surrounding");
+  EXPECT_EQ(c.grids[1].targetAverageLux.value(), 500.0);
+  EXPECT_EQ(c.grids[1].targetUniformity.value(), 0.40);
+  EXPECT_EQ(c.grids[2].name, "desk background");
+  EXPECT_DOUBLE_EQ(c.grids[2].targetAverageLux.value(), 500.0 / 3.0);
+  EXPECT_EQ(c.grids[2].targetUniformity.value(), 0.10);
+  // The background's lattice ends at the room's walls; the bands' widths are the standard's.
+  EXPECT_EQ(c.grids[2].plane.outline[0], Vec2(0.0, 0.0));
+  EXPECT_EQ(c.grids[2].plane.outline[1], Vec2(4.0, 3.0));
+  EXPECT_EQ(c.grids[1].plane.band.toM, 0.5);
+  EXPECT_EQ(c.grids[2].plane.band.fromM, 0.5);
+  EXPECT_EQ(c.grids[2].plane.band.toM, 3.5);
+  EXPECT_FALSE(c.grids[2].clipToRoom);
+  for (const GridSpec& g : c.grids) EXPECT_EQ(g.plane.origin.z, 0.75);
+  auto error = [&](const std::string& text) {
+    try {
+      parseCaseFile(text, path);
+    } catch (const InputError& e) {
+      return std::to_string(e.loc().line) + ": " + e.what();
+    }
+    return std::string("accepted");
+  };
+  const std::string body = "height = 0.8\nmaintained_illuminance = 500\n";
+  EXPECT_NE(error("[[task_area]]\n" + body).find("needs 'corners'"), std::string::npos);
+  EXPECT_NE(error("[[task_area]]\ncorners = [[0, 0], [1, 1]]\npolygon = [[0, 0], [1, 0], [0, 1]]\n" + body)
+                .find("either 'corners' or 'polygon'"),
+            std::string::npos);
+  EXPECT_NE(error("[[task_area]]\ncorners = [[0, 0], [1, 1]]\n" + body + "room = [[0.5, 0], [3, 3]]\n")
+                .find("reaches outside its 'room'"),
+            std::string::npos);
+  EXPECT_EQ(error("[[task_area]]\ncorners = [[0, 0], [1, 1]]\n" + body + "ugr_limit = 50\n").rfind("5: ", 0), 0u);
+  EXPECT_NE(error("[[grid]]\nname = \"desk\"\ncorners = [[0, 0], [1, 1]]\nheight = 0.8\n"
+                  "[[task_area]]\nname = \"desk\"\ncorners = [[0, 0], [1, 1]]\n" + body)
+                .find("two grids are named 'desk'"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -180,6 +180,42 @@ TEST(SensorGrid, ReadsPointsFileFixture) {
   EXPECT_THROW(readPointsFile(std::string(CANDELA_TEST_DATA) + "/cases/points/missing.pts"), InputError);
 }
 
+// A band around a rectangular task area (EN 12464-1's immediate surrounding, 0.5 m, and the
+// background beyond it, within a room): every point lies outside the task at a distance within
+// the band, and the points' cells cover the band's exact area (a rectangle's offset: P·w + πw²,
+// its perimeter P), up to the cells cut by the band's inner and outer edges: at most their length
+// times the spacing.
+TEST(SensorGrid, TaskAreaBandsHaveTheirWidthAndArea) {
+  const std::vector<Vec2> task = {{1.0, 1.0}, {2.6, 1.0}, {2.6, 1.8}, {1.0, 1.8}};
+  const double P = 2.0 * (1.6 + 0.8), A = 1.6 * 0.8, w = 0.5, h = 0.01;
+  PlaneGridSpec s;
+  s.origin = Vec3(0.0, 0.0, 0.75);
+  s.spacingM = h;
+  s.outline = {Vec2(1.0 - w, 1.0 - w), Vec2(2.6 + w, 1.8 + w)};
+  s.band = {task, 0.0, w};
+  const SensorGrid near = makePlaneGrid(s);
+  for (const Vec2& uv : near.uv) {
+    EXPECT_FALSE(insidePolygon(task, uv));
+    EXPECT_LE(distanceToOutline(task, uv), w);
+  }
+  const double bandArea = P * w + kPi * w * w;
+  EXPECT_NEAR(near.size() * h * h, bandArea, (P + (P + 2.0 * kPi * w)) * h);
+  // The background in a 4 m × 3 m room: the room less the task and its surrounding (the 3 m band
+  // reaches every wall), its cells cut by the surrounding's outer edge and the walls.
+  s.outline = {Vec2(0.0, 0.0), Vec2(4.0, 3.0)};
+  s.band = {task, w, w + 3.0};
+  const SensorGrid far = makePlaneGrid(s);
+  for (const Vec2& uv : far.uv) {
+    const double d = distanceToOutline(task, uv);
+    EXPECT_GT(d, w);
+    EXPECT_LE(d, w + 3.0);
+  }
+  EXPECT_NEAR(far.size() * h * h, 12.0 - A - bandArea, ((P + 2.0 * kPi * w) + 14.0) * h);
+  // A task area that fills the room leaves an empty background, not an error.
+  s.outline = {Vec2(1.0, 1.0), Vec2(2.6, 1.8)};
+  EXPECT_EQ(countPlaneGrid(s), 0u);
+}
+
 }  // namespace
 TEST(ReadPoints, ByteOrderMarkAndEveryLineEnding) {
   for (const char* f : {"bom_crlf.pts", "cr_only.pts"}) {

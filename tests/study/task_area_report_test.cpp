@@ -1,0 +1,73 @@
+// A task area's verdict from its three grids' and its observers' (study/task_area_report.h).
+#include "study/task_area_report.h"
+
+#include <gtest/gtest.h>
+
+namespace candela {
+namespace {
+
+// A case of one 500 lx task area (two corners at (1, 1) and (2, 2)) and two observers, one in
+// its background and one 5 m away, and the grid and observer reports a run would make.
+struct Fixture {
+  CaseFile c;
+  ReportData data;
+  Fixture() {
+    c = parseCaseFile("[[task_area]]\nname = \"desk\"\ncorners = [[1, 1], [2, 2]]\nheight = 0.8\n"
+                      "maintained_illuminance = 500\nugr_limit = 19\n"
+                      "[[observer]]\nname = \"near\"\nposition = [4.0, 1.5]\ndirection = [-1, 0]\n"
+                      "[[observer]]\nname = \"far\"\nposition = [7.6, 1.5]\ndirection = [-1, 0]\n",
+                      "case.toml");
+    for (const GridSpec& g : c.grids) {
+      GridReport r;
+      r.name = g.name;
+      r.check.overall = Verdict::kPass;
+      data.grids.push_back(r);
+    }
+    for (const ObserverSpec& o : c.observers) {
+      ObserverReport r;
+      r.name = o.name;
+      r.ugr = 25.0;  // only an observer in the areas counts
+      data.observers.push_back(r);
+    }
+    data.observers[0].ugr = 17.5;
+  }
+};
+
+TEST(TaskAreaReport, GridsObserversAndVerdicts) {
+  Fixture f;
+  addTaskAreaReports(f.c, f.data);
+  ASSERT_EQ(f.data.taskAreas.size(), 1u);
+  const TaskAreaReport& a = f.data.taskAreas[0];
+  EXPECT_EQ(a.task, 0);
+  EXPECT_EQ(a.surrounding, 1);
+  EXPECT_EQ(a.background, 2);
+  EXPECT_EQ(f.data.grids[1].area, "immediate surrounding");
+  EXPECT_EQ(f.data.grids[2].taskArea, "desk");
+  // "near" stands 2 m from the desk (within 0.5 + 3 m), "far" 5.6 m away.
+  ASSERT_EQ(a.observers, std::vector<std::string>{"near"});
+  EXPECT_EQ(a.ugr.value(), 17.5);
+  EXPECT_EQ(a.ugrVerdict, Verdict::kPass);
+  EXPECT_EQ(a.verdict, Verdict::kPass);
+}
+
+TEST(TaskAreaReport, AnyFailingLineFailsTheTaskArea) {
+  Fixture f;
+  f.data.grids[2].check.overall = Verdict::kFail;  // the background too dark
+  addTaskAreaReports(f.c, f.data);
+  EXPECT_EQ(f.data.taskAreas[0].verdict, Verdict::kFail);
+  Fixture g;
+  g.data.observers[0].ugr = 21.0;  // above UGR_L 19
+  addTaskAreaReports(g.c, g.data);
+  EXPECT_EQ(g.data.taskAreas[0].ugrVerdict, Verdict::kFail);
+  EXPECT_EQ(g.data.taskAreas[0].verdict, Verdict::kFail);
+  // Without an observer in its areas the UGR line is not checked, and the grids decide.
+  Fixture h;
+  h.c.observers.resize(0);
+  h.data.observers.clear();
+  addTaskAreaReports(h.c, h.data);
+  EXPECT_EQ(h.data.taskAreas[0].ugrVerdict, Verdict::kNotChecked);
+  EXPECT_EQ(h.data.taskAreas[0].verdict, Verdict::kPass);
+}
+
+}  // namespace
+}  // namespace candela
