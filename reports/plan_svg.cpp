@@ -363,37 +363,62 @@ std::vector<double> contourLevels(const PlanPage& p) {
   return levels;
 }
 
-// The label of a contour line `length` px long: at half its length, along the line, never upside down.
+// A contour label placed on the plan: its centre (px) and the radius of a disc that holds its
+// text at any rotation, so that two labels whose discs do not meet cannot overlap.
+struct PlacedLabel {
+  Vec2 centre;
+  double radius;
+};
+
+// The label of a contour line `length` px long, along the line and never upside down: at half
+// its length, else at the first of 30 %, 70 %, 15 % and 85 % where it meets no label already
+// placed and stays inside the plan; none when every place is taken.
 void writeContourLabel(std::ostringstream& labels, const PlanPage& p, const ContourLine& line, double length,
-                       double level) {
-  double walked = 0.0;
-  for (std::size_t i = 1; i < line.points.size(); ++i) {
-    const double d = glm::length(line.points[i] - line.points[i - 1]) * p.k;
-    if (walked + d >= 0.5 * length) {
+                       double level, std::vector<PlacedLabel>& placed) {
+  const std::string text = formatNumber(level, 4);
+  // 11 px bold digits are at most 0.62 em wide, plus the 3 px halo on each side.
+  const double w = 0.62 * 11.0 * static_cast<double>(text.size()) + 6.0, h = 11.0 + 6.0;
+  const double radius = 0.5 * std::hypot(w, h);
+  for (double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
+    double walked = 0.0;
+    for (std::size_t i = 1; i < line.points.size(); ++i) {
+      const double d = glm::length(line.points[i] - line.points[i - 1]) * p.k;
+      if (walked + d < at * length) {
+        walked += d;
+        continue;
+      }
       const Vec2 a = line.points[i - 1], b = line.points[i];
-      const double f = d > 0 ? (0.5 * length - walked) / d : 0.0;
+      const double f = d > 0 ? (at * length - walked) / d : 0.0;
       const Vec2 m = a + f * (b - a);
+      const Vec2 c(p.X(m.x), p.Y(m.y));
+      const bool inside = c.x - 0.5 * w >= p.left && c.x + 0.5 * w <= p.left + p.planW && c.y - 0.5 * h >= p.top &&
+                          c.y + 0.5 * h <= p.top + p.planH;
+      bool free = inside;
+      for (const PlacedLabel& q : placed) free = free && glm::length(q.centre - c) >= q.radius + radius;
+      if (!free) break;  // try the next place along the line
       double angle = radToDeg(std::atan2(-(b.y - a.y), b.x - a.x));
       if (angle > 90.0) angle -= 180.0;
       if (angle < -90.0) angle += 180.0;
-      labels << "<text x=\"" << px(p.X(m.x)) << "\" y=\"" << px(p.Y(m.y)) << "\" transform=\"rotate(" << px(angle)
-             << " " << px(p.X(m.x)) << " " << px(p.Y(m.y))
+      labels << "<text x=\"" << px(c.x) << "\" y=\"" << px(c.y) << "\" transform=\"rotate(" << px(angle) << " "
+             << px(c.x) << " " << px(c.y)
              << ")\" text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
                 "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
-             << formatNumber(level, 4) << "</text>\n";
-      break;
+             << text << "</text>\n";
+      placed.push_back({c, radius});
+      return;
     }
-    walked += d;
   }
 }
 
-// Isolines with labels at the middle of each long enough line; the labels are drawn last, over every line.
+// Isolines with labels on each long enough line where they meet no other label; the labels are
+// drawn last, over every line.
 void writeContours(std::ostringstream& s, const PlanPage& p) {
   const PlanLayout& L = p.grid.layout;
   if (!(p.opt.contours && L.regular)) return;
   const std::vector<double> levels = contourLevels(p);
   s << "<g clip-path=\"url(#" << p.opt.idPrefix << "-clip)\">\n";
   std::ostringstream labels;
+  std::vector<PlacedLabel> placed;
   for (double level : levels) {
     for (const ContourLine& line : isolines(L, p.grid.values, level)) {
       if (line.points.size() < 2) continue;
@@ -405,7 +430,7 @@ void writeContours(std::ostringstream& s, const PlanPage& p) {
       }
       s << "\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\"1.1\" stroke-linejoin=\"round\"/>\n";
       if (length < 60.0) continue;
-      writeContourLabel(labels, p, line, length, level);
+      writeContourLabel(labels, p, line, length, level, placed);
     }
   }
   s << labels.str() << "</g>\n";

@@ -4,6 +4,7 @@
 #include <png.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "sample_report.h"
@@ -103,6 +104,60 @@ TEST(PlanSvg, DrawsCellsContoursLegendScaleBarAndNorth) {
   EXPECT_NE(svg.find(">lx</text>"), std::string::npos);  // legend unit
   EXPECT_NE(svg.find(" m</text>"), std::string::npos);   // scale bar
   EXPECT_NE(svg.find("plan-scale"), std::string::npos);  // gradient id with the prefix
+}
+
+// Isoline labels never overlap: on a field whose lines run 10 px apart (less than a label's
+// 17 px height), every label's box (11 px bold digits 0.556 em wide, as Helvetica's, and the
+// 3 px halo) is apart from every other's (separating axes of the rotated boxes), and labels are
+// still drawn, spread along the lines.
+TEST(PlanSvg, ContourLabelsDoNotOverlap) {
+  std::vector<double> values;
+  GridReport g;
+  g.name = "ramp";
+  g.layout = lattice(40, 20, 0.1, values, [](Vec2 p) { return 100.0 * (p.y + 1.0); });  // 4 m × 2 m
+  g.values = values;
+  g.stats = computeGridStats(g.values);
+  PlanOptions o;
+  o.cellValues = false;
+  for (double v = 5.0; v < 200.0; v += 8.33) o.contourLevels.push_back(v);  // 1/12 m apart: 10 px at 120 px/m
+  const std::string svg = planSvg(g, niceScale(0.0, 200.0), o);
+  struct Box {
+    Vec2 c;
+    double angleDeg, w, h;
+  };
+  std::vector<Box> boxes;
+  const std::string mark = "font-size=\"11\" font-weight=\"600\"";
+  for (std::size_t at = svg.find(mark); at != std::string::npos; at = svg.find(mark, at + 1)) {
+    const std::size_t open = svg.rfind("<text", at), close = svg.find("</text>", at);
+    const std::string tag = svg.substr(open, close - open);
+    if (tag.find("dominant-baseline=\"central\"") == std::string::npos) continue;  // the legend's unit
+    double x = 0, y = 0, a = 0;
+    ASSERT_EQ(std::sscanf(tag.c_str(), "<text x=\"%lf\" y=\"%lf\" transform=\"rotate(%lf", &x, &y, &a), 3) << tag;
+    const std::size_t digits = tag.size() - tag.rfind('>') - 1;
+    boxes.push_back({Vec2(x, y), a, 0.556 * 11.0 * static_cast<double>(digits) + 6.0, 11.0 + 6.0});
+  }
+  ASSERT_GE(boxes.size(), 4u);
+  auto corners = [](const Box& b) {
+    const double r = degToRad(b.angleDeg);
+    const Vec2 u(std::cos(r), std::sin(r)), v(-std::sin(r), std::cos(r));
+    return std::vector<Vec2>{b.c + 0.5 * b.w * u + 0.5 * b.h * v, b.c - 0.5 * b.w * u + 0.5 * b.h * v,
+                             b.c - 0.5 * b.w * u - 0.5 * b.h * v, b.c + 0.5 * b.w * u - 0.5 * b.h * v};
+  };
+  auto apart = [&](const Box& a, const Box& b) {
+    const std::vector<Vec2> ca = corners(a), cb = corners(b);
+    for (const std::vector<Vec2>* poly : {&ca, &cb})
+      for (std::size_t i = 0; i < 4; ++i) {
+        const Vec2 e = (*poly)[(i + 1) % 4] - (*poly)[i], n(-e.y, e.x);
+        double loA = 1e300, hiA = -1e300, loB = 1e300, hiB = -1e300;
+        for (const Vec2& q : ca) loA = std::min(loA, glm::dot(n, q)), hiA = std::max(hiA, glm::dot(n, q));
+        for (const Vec2& q : cb) loB = std::min(loB, glm::dot(n, q)), hiB = std::max(hiB, glm::dot(n, q));
+        if (hiA <= loB || hiB <= loA) return true;
+      }
+    return false;
+  };
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+      EXPECT_TRUE(apart(boxes[i], boxes[j])) << "labels " << i << " and " << j << " overlap";
 }
 
 // RFC 4648 base64 decoding (the test's own), of the plan picture's data URI.
