@@ -90,13 +90,19 @@ double sphereExact(double rho) {
                                (1.0 - rho * (1.0 - r * r)));
 }
 
-TEST(ErrorBars, PathTracerCoversItsShare) {
-  const Scene ground = skyOverGround(), sphere = integratingSphere(0.5);
-  const Tracer tg(ground), ts(sphere);
+// Few samples a point, so that many seeds' estimates spread enough to count their coverage.
+TraceSettings coverageSettings() {
   TraceSettings s;
   s.hemisphereSamples = 64;
   s.lightSamples = 4;
   s.firstBounceSplit = 4;
+  return s;
+}
+
+TEST(ErrorBars, PathTracerCoversItsShare) {
+  const Scene ground = skyOverGround(), sphere = integratingSphere(0.5);
+  const Tracer tg(ground), ts(sphere);
+  TraceSettings s = coverageSettings();
   const SensorPoint tilted = tiltedSensor();
   const double a = coverage([&](uint64_t seed) {
     TraceSettings t = s;
@@ -125,10 +131,7 @@ TEST(ErrorBars, PathTracerCoversItsShare) {
 TEST(ErrorBars, QuantitiesCoverTheirShare) {
   const Scene ground = skyOverGround();
   const Tracer tg(ground);
-  TraceSettings s;
-  s.hemisphereSamples = 64;
-  s.lightSamples = 4;
-  s.firstBounceSplit = 4;
+  TraceSettings s = coverageSettings();
   const Vec3 up(0, 0, 1), p(0, 0, 1.2);
   const double L = kLumensPerWatt;
   const struct {
@@ -249,10 +252,7 @@ TargetRun coverageWithTarget(const Tracer& tracer, const SensorPoint& p, const T
 TEST(ErrorBars, TargetErrorReachesItsTargetAndCoversItsShare) {
   const Scene ground = skyOverGround();
   const Tracer tg(ground);
-  TraceSettings s;
-  s.hemisphereSamples = 64;
-  s.lightSamples = 4;
-  s.firstBounceSplit = 4;
+  TraceSettings s = coverageSettings();
   s.targetRelativeError = 0.01;
   const TargetRun r = coverageWithTarget(tg, tiltedSensor(), s, tiltedExact(), "path with --target-error 1 %, tilted sensor");
   const double worst = r.worst, a = r.share;
