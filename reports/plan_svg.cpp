@@ -210,8 +210,10 @@ struct PlanPage {
     k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);
     planW = ext.x * k;
     planH = ext.y * k;
+    // A narrow plan (a corridor) keeps a legend tall enough to read its ticks.
+    legendH = std::max(planH, kMinLegendPx);
     width = left + planW + legendGap + legendBar + legendLabels;
-    height = top + planH + 64;
+    height = top + std::max(planH + 64, legendH + 20);
   }
   double X(double u) const { return left + (u - lo.x) * k; }
   double Y(double v) const { return top + (hi.y - v) * k; }
@@ -222,7 +224,8 @@ struct PlanPage {
   Vec2 lo, hi, ext;
   double k = 0.0;  // px per m
   double planW = 0.0, planH = 0.0;
-  double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70;
+  static constexpr double kMinLegendPx = 150;
+  double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70, legendH = 0.0;
   double width = 0.0, height = 0.0;
 };
 
@@ -372,13 +375,15 @@ struct PlacedLabel {
 
 // The label of a contour line `length` px long, along the line and never upside down: at half
 // its length, else at the first of 30 %, 70 %, 15 % and 85 % where it meets no label already
-// placed and stays inside the plan; none when every place is taken.
+// placed and stays inside the plan; none when every place is taken or the line is not 12 px
+// longer than the label.
 void writeContourLabel(std::ostringstream& labels, const PlanPage& p, const ContourLine& line, double length,
                        double level, std::vector<PlacedLabel>& placed) {
   const std::string text = formatNumber(level, 4);
   // 11 px bold digits are at most 0.62 em wide, plus the 3 px halo on each side.
   const double w = 0.62 * 11.0 * static_cast<double>(text.size()) + 6.0, h = 11.0 + 6.0;
   const double radius = 0.5 * std::hypot(w, h);
+  if (length < w + 12.0) return;  // the label would hide the line (a corridor's lines are short)
   for (double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
     double walked = 0.0;
     for (std::size_t i = 1; i < line.points.size(); ++i) {
@@ -429,7 +434,6 @@ void writeContours(std::ostringstream& s, const PlanPage& p) {
         if (i) length += glm::length(line.points[i] - line.points[i - 1]) * p.k;
       }
       s << "\" fill=\"none\" stroke=\"#1a1a1a\" stroke-width=\"1.1\" stroke-linejoin=\"round\"/>\n";
-      if (length < 60.0) continue;
       writeContourLabel(labels, p, line, length, level, placed);
     }
   }
@@ -480,7 +484,7 @@ void writeScaleBarAndNorth(std::ostringstream& s, const PlanPage& p) {
 // Legend: colour bar with ticks in the grid's unit.
 void writeLegend(std::ostringstream& s, const PlanPage& p) {
   const double legendBar = p.legendBar;
-  const double lx = p.left + p.planW + p.legendGap, ly = p.top, lh = p.planH;
+  const double lx = p.left + p.planW + p.legendGap, ly = p.top, lh = p.legendH;
   s << "<text x=\"" << px(lx) << "\" y=\"" << px(ly - 10) << "\" font-size=\"11\" font-weight=\"600\" fill=\"#333\">"
     << xmlEscape(p.grid.unit) << "</text>\n";
   s << "<rect x=\"" << px(lx) << "\" y=\"" << px(ly) << "\" width=\"" << px(legendBar) << "\" height=\"" << px(lh)
