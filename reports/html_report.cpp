@@ -62,8 +62,18 @@ section.warnings { background:#fff4e0; border-left:6px solid #d98c00; }
 section.warnings h2 { color:#8a5300; }
 section.warnings li { margin:4px 0; } section.warnings code { font-size:12px; color:var(--muted); }
 footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
-@media print { body { background:#fff; } .page { box-shadow:none; margin:0; max-width:none; }
-               section.grid { break-inside:avoid; } }
+@page { size:A4; margin:12mm 11mm; }
+@media print {
+  body { background:#fff; font-size:12px; -webkit-print-color-adjust:exact; print-color-adjust:exact; }
+  .page { box-shadow:none; margin:0; max-width:none; }
+  header { padding:0 0 10px; } section { padding:12px 0; border-bottom:none; } footer { padding:10px 0 0; }
+  section.grid, section.settings { break-before:page; }
+  h2, h3 { break-after:avoid; }
+  table, tr, figure, svg, img, .metrics, .grid-body { break-inside:avoid; }
+  svg { max-width:100%; height:auto; }
+  .views img { max-width:100%; }
+  a { color:inherit; text-decoration:none; }
+}
 )css";
 
 std::string badge(Verdict v) {
