@@ -169,21 +169,30 @@ void annualSummaryTable(std::ostringstream& h, const AnnualPage& page) {
   const RunInfo& run = page.run;
   h << "<div class=\"metrics\">\n<table>\n<thead><tr><th>Metric</th><th class=\"num\">Value</th><th>Meaning</th></tr>"
        "</thead>\n<tbody>\n";
-  auto row = [&](const char* name, const std::string& value, const char* meaning) {
+  auto row = [&](const char* name, const std::string& value, const std::string& meaning) {
     h << "<tr><td>" << name << "</td><td class=\"num\">" << value << "</td><td>" << meaning << "</td></tr>\n";
   };
-  row("DA300", pctText(s.DA300), "occupied hours with E ≥ 300 lx (mean over sensors)");
-  row("cDA300", pctText(s.cDA300), "as DA300 with partial credit E/300 below 300 lx");
-  row("UDI_fell_short", pctText(s.UDI_fell_short), "occupied hours with E &lt; 100 lx");
-  row("UDI_supplementary", pctText(s.UDI_supplementary), "100 ≤ E &lt; 300 lx");
-  row("UDI_autonomous", pctText(s.UDI_autonomous), "300 ≤ E ≤ 3000 lx");
-  row("UDI_exceeded", pctText(s.UDI_exceeded), "E &gt; 3000 lx");
-  row("sDA300_50", pctText(s.sDA300_50), "sensors with DA300 ≥ 50 %");
-  row("ASE1000_250", pctText(s.ASE1000_250), "sensors with more than 250 h of direct sun ≥ 1000 lx");
-  row("sun hours", formatFixed(s.sunHoursMean, 0) + " h", "hours of the year with direct sun on the sensor (mean over sensors)");
-  row("occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
-  if (run.coefficientsTimeS) row("coefficients_time_s", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
-  if (run.productTimeS) row("product_time_s", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
+  row("Daylight autonomy DA<sub>300</sub>", pctText(s.DA300), "occupied hours with E ≥ 300 lx (mean over sensors)");
+  row("Continuous daylight autonomy cDA<sub>300</sub>", pctText(s.cDA300),
+      "as DA<sub>300</sub> with partial credit E/300 below 300 lx");
+  row("Useful daylight illuminance, fell short (UDI-f)", pctText(s.UDI_fell_short), "occupied hours with E &lt; 100 lx");
+  row("UDI supplementary (UDI-s)", pctText(s.UDI_supplementary), "100 ≤ E &lt; 300 lx");
+  row("UDI autonomous (UDI-a)", pctText(s.UDI_autonomous), "300 ≤ E ≤ 3000 lx");
+  row("UDI exceeded (UDI-e)", pctText(s.UDI_exceeded), "E &gt; 3000 lx");
+  // LEED v4.1 EQ Daylight, option 1 (USGBC): 1, 2 or 3 points from an sDA300/50% of 40, 55 or
+  // 75 %; an ASE1000,250 above 10 % is to be reported and its glare addressed.
+  const int points = s.sDA300_50 >= 75.0 ? 3 : s.sDA300_50 >= 55.0 ? 2 : s.sDA300_50 >= 40.0 ? 1 : 0;
+  row("Spatial daylight autonomy sDA<sub>300/50%</sub>", pctText(s.sDA300_50),
+      ("sensors with DA<sub>300</sub> ≥ 50 %; LEED v4.1 option 1: " + std::to_string(points) +
+       " point" + (points == 1 ? "" : "s") + " (1 from 40 %, 2 from 55 %, 3 from 75 %)"));
+  row("Annual sunlight exposure ASE<sub>1000,250</sub>", pctText(s.ASE1000_250),
+      s.ASE1000_250 > 10.0 ? "sensors with more than 250 h of direct sun ≥ 1000 lx; above LEED v4.1's 10 %: glare "
+                             "to be addressed"
+                           : "sensors with more than 250 h of direct sun ≥ 1000 lx; within LEED v4.1's 10 %");
+  row("Sun hours", formatFixed(s.sunHoursMean, 0) + " h", "hours of the year with direct sun on the sensor (mean over sensors)");
+  row("Occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
+  if (run.coefficientsTimeS) row("Daylight-coefficient time", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
+  if (run.productTimeS) row("Hourly product time", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
   h << "</tbody>\n</table>\n</div>\n</div>\n";
 }
 

@@ -120,16 +120,30 @@ TEST(HtmlReport, AnnualSectionHasTheMetricsPlansAndTemporalMap) {
   ASSERT_NE(at, std::string::npos);
   const std::string section = html.substr(at, html.find("</section>", at) - at);
   EXPECT_NE(section.find("Annual daylight: Daylit office"), std::string::npos);
+  // Every metric under its human name (never the summary.json key).
   for (const auto& [name, v] : std::vector<std::pair<std::string, double>>{
-           {"DA300", s.DA300}, {"cDA300", s.cDA300}, {"UDI_fell_short", s.UDI_fell_short},
-           {"UDI_supplementary", s.UDI_supplementary}, {"UDI_autonomous", s.UDI_autonomous},
-           {"UDI_exceeded", s.UDI_exceeded}, {"sDA300_50", s.sDA300_50}, {"ASE1000_250", s.ASE1000_250}})
+           {"Daylight autonomy DA<sub>300</sub>", s.DA300},
+           {"Continuous daylight autonomy cDA<sub>300</sub>", s.cDA300},
+           {"Useful daylight illuminance, fell short (UDI-f)", s.UDI_fell_short},
+           {"UDI supplementary (UDI-s)", s.UDI_supplementary},
+           {"UDI autonomous (UDI-a)", s.UDI_autonomous},
+           {"UDI exceeded (UDI-e)", s.UDI_exceeded},
+           {"Spatial daylight autonomy sDA<sub>300/50%</sub>", s.sDA300_50},
+           {"Annual sunlight exposure ASE<sub>1000,250</sub>", s.ASE1000_250}})
     EXPECT_NE(section.find("<td>" + name + "</td><td class=\"num\">" + formatFixed(v, 1) + " %</td>"),
               std::string::npos)
         << name << " " << v;
-  EXPECT_NE(section.find("<td>occupied hours</td><td class=\"num\">3650</td>"), std::string::npos);
-  EXPECT_NE(section.find("<td>coefficients_time_s</td><td class=\"num\">12.50 s</td>"), std::string::npos);
-  EXPECT_NE(section.find("<td>product_time_s</td><td class=\"num\">0.75 s</td>"), std::string::npos);
+  for (const char* key : {"UDI_fell_short", "sDA300_50", "ASE1000_250", "coefficients_time_s"})
+    EXPECT_EQ(section.find(std::string("<td>") + key), std::string::npos) << key;
+  // LEED v4.1 option 1's points for the sDA (1 from 40 %, 2 from 55 %, 3 from 75 %) and the
+  // ASE's 10 %.
+  const int points = s.sDA300_50 >= 75.0 ? 3 : s.sDA300_50 >= 55.0 ? 2 : s.sDA300_50 >= 40.0 ? 1 : 0;
+  EXPECT_NE(section.find("LEED v4.1 option 1: " + std::to_string(points) + " point"), std::string::npos);
+  EXPECT_NE(section.find(s.ASE1000_250 > 10.0 ? "above LEED v4.1's 10 %" : "within LEED v4.1's 10 %"),
+            std::string::npos);
+  EXPECT_NE(section.find("<td>Occupied hours</td><td class=\"num\">3650</td>"), std::string::npos);
+  EXPECT_NE(section.find("<td>Daylight-coefficient time</td><td class=\"num\">12.50 s</td>"), std::string::npos);
+  EXPECT_NE(section.find("<td>Hourly product time</td><td class=\"num\">0.75 s</td>"), std::string::npos);
   // DA plan + four UDI small multiples + the sDA/ASE plan.
   EXPECT_EQ(count(section, "<svg "), 6u);
   EXPECT_EQ(count(section, "class=\"plan sda-ase\""), 1u);
