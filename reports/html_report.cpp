@@ -302,12 +302,27 @@ void warningsSection(std::ostringstream& h, const std::vector<Warning>& warnings
 
 // Summary of every grid.
 void summarySection(std::ostringstream& h, const ReportData& data) {
+  // The EN 12464-1 sentence and its symbols for illuminance grids; daylight factors (%) and annual
+  // grids are said what they are.
+  bool lux = false, df = false, annual = false;
+  for (const GridReport& g : data.grids) (g.annual ? annual : g.unit == "%" ? df : lux) = true;
   h << "<section class=\"summary\">\n<h2>Summary</h2>\n<p class=\"sub\">Calculated values on each calculation "
-       "grid against its design targets (EN 12464-1: maintained illuminance Ē<sub>m</sub> and uniformity "
-       "U<sub>0</sub> = E<sub>min</sub>/Ē must not fall below the requirement).</p>\n"
-    << "<table>\n<thead><tr><th>Grid</th><th class=\"num\">Points</th><th class=\"num\">Ē</th>"
-       "<th class=\"num\">E<sub>min</sub></th><th class=\"num\">E<sub>max</sub></th><th class=\"num\">U<sub>0</sub></th>"
-       "<th class=\"num\">Target Ē<sub>m</sub></th><th class=\"num\">Target U<sub>0</sub></th><th>Result</th></tr></thead>\n<tbody>\n";
+       "grid against its design targets";
+  if (lux)
+    h << " (EN 12464-1: maintained illuminance Ē<sub>m</sub> and uniformity U<sub>0</sub> = E<sub>min</sub>/Ē must "
+         "not fall below the requirement)";
+  if (df) h << (lux ? "; daylight" : ". Daylight") << " factors in % of the outside horizontal illuminance under the CIE overcast sky";
+  if (annual)
+    h << (lux || df ? "; annual" : ". Annual") << " grids by their daylight autonomy DA in % of the occupied hours "
+      << "(mean over the sensors; sDA, ASE and UDI in their own sections)";
+  h << ".</p>\n";
+  const bool mixed = lux + df + annual > 1;
+  const std::string e = lux ? "E" : df ? "D" : "DA", mean = lux ? "Ē" : df ? "D̄" : "mean DA";
+  h << "<table>\n<thead><tr><th>Grid</th><th class=\"num\">Points</th><th class=\"num\">" << (mixed ? "Average" : mean)
+    << "</th><th class=\"num\">" << (mixed ? "Minimum" : e + "<sub>min</sub>") << "</th><th class=\"num\">"
+    << (mixed ? "Maximum" : e + "<sub>max</sub>")
+    << "</th><th class=\"num\">U<sub>0</sub></th><th class=\"num\">Target " << (lux ? "Ē<sub>m</sub>" : mean)
+    << "</th><th class=\"num\">Target U<sub>0</sub></th><th>Result</th></tr></thead>\n<tbody>\n";
   for (std::size_t i = 0; i < data.grids.size(); ++i) {
     const GridReport& g = data.grids[i];
     const std::string u = unitText(g.unit);
@@ -391,20 +406,27 @@ void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
   std::string quantity = g.quantity;
   for (char& ch : quantity) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   // A named quantity carries its own symbol ("cylindrical illuminance Ē_z").
-  const std::string label = g.quantityKey.empty() ? xmlEscape(quantity) + " Ē" : quantityHtml(quantity);
+  // Daylight-factor grids (%) in the daylight factor's symbols: D̄, D_min, D_max.
+  const bool df = g.unit == "%";
+  const std::string e = df ? "D" : "E", mean = df ? "D̄" : "Ē";
+  const std::string label = df ? "daylight factor D̄"
+                               : g.quantityKey.empty() ? xmlEscape(quantity) + " Ē" : quantityHtml(quantity);
   h << "<tr><td>Average " << label << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << u << "</td><td class=\"num\">"
     << (g.targets.averageLux ? "≥ " + valueText(*g.targets.averageLux) + u : "—") << "</td><td>"
     << badge(g.check.average) << "</td></tr>\n";
-  h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">E<sub>min</sub> / Ē</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
+  h << "<tr><td>Uniformity U<sub>0</sub><span class=\"f\">" << e << "<sub>min</sub> / " << mean
+    << "</span></td><td class=\"num\">" << formatFixed(g.stats.u0, 2)
     << "</td><td class=\"num\">" << (g.targets.uniformity ? "≥ " + formatFixed(*g.targets.uniformity, 2) : "—")
     << "</td><td>" << badge(g.check.uniformity) << "</td></tr>\n";
-  h << "<tr><td>Minimum E<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
+  h << "<tr><td>Minimum " << e << "<sub>min</sub></td><td class=\"num\">" << valueText(g.stats.minimumLux) << u
     << "</td><td class=\"num\">—</td><td></td></tr>\n";
-  h << "<tr><td>Maximum E<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
+  h << "<tr><td>Maximum " << e << "<sub>max</sub></td><td class=\"num\">" << valueText(g.stats.maximumLux) << u
     << "</td><td class=\"num\">—</td><td></td></tr>\n";
-  h << "<tr><td>Median</td><td class=\"num\">" << valueText(g.stats.medianLux) << u
+  h << "<tr><td>Median" << (df ? " daylight factor (EN 17037's D)" : "") << "</td><td class=\"num\">"
+    << valueText(g.stats.medianLux) << u
     << "</td><td class=\"num\">—</td><td></td></tr>\n";
-  h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">E<sub>min</sub> / E<sub>max</sub></span></td><td class=\"num\">"
+  h << "<tr><td>Diversity U<sub>d</sub><span class=\"f\">" << e << "<sub>min</sub> / " << e
+    << "<sub>max</sub></span></td><td class=\"num\">"
     << formatFixed(g.stats.ud, 2) << "</td><td class=\"num\">—</td><td></td></tr>\n";
   h << "<tr><td>Calculation points</td><td class=\"num\">" << g.stats.count << "</td><td class=\"num\">—</td><td></td></tr>\n";
   if (g.layout.regular)

@@ -92,6 +92,30 @@ TEST(HtmlReport, ShowsTheQuantityAndModelling) {
             std::string::npos);
 }
 
+// A daylight-factor run is reported in the daylight factor's words and symbols, never under
+// EN 12464-1's illuminance sentence.
+TEST(HtmlReport, DaylightFactorGridsInTheirOwnTerms) {
+  ReportData d = testing_sample::sampleReport();
+  for (GridReport& g : d.grids) {
+    g.quantity = "Daylight factor";
+    g.unit = "%";
+  }
+  const std::string html = htmlReport(d);
+  EXPECT_EQ(html.find("EN 12464-1: maintained illuminance"), std::string::npos);
+  EXPECT_NE(html.find("Daylight factors in % of the outside horizontal illuminance under the CIE overcast sky"),
+            std::string::npos);
+  EXPECT_NE(html.find("<th class=\"num\">D̄</th><th class=\"num\">D<sub>min</sub></th>"), std::string::npos);
+  EXPECT_NE(html.find("<td>Average daylight factor D̄</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>Minimum D<sub>min</sub></td>"), std::string::npos);
+  EXPECT_EQ(html.find("<td>Minimum E<sub>min</sub></td>"), std::string::npos);
+  // With an illuminance grid beside them, the columns are named for both.
+  d.grids[0].unit = "lx";
+  d.grids[0].quantity = "Illuminance";
+  const std::string mixed = htmlReport(d);
+  EXPECT_NE(mixed.find("EN 12464-1: maintained illuminance"), std::string::npos);
+  EXPECT_NE(mixed.find("<th class=\"num\">Average</th><th class=\"num\">Minimum</th>"), std::string::npos);
+}
+
 TEST(HtmlReport, WritesSampleForScreenshot) {
   const char* target = std::getenv("CANDELA_SAMPLE_REPORT");
   const fs::path path = target ? fs::path(target) : fs::path(testing::TempDir()) / "candela_sample_report.html";
