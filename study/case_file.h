@@ -30,6 +30,7 @@ struct ScenePath {
 struct LuminairePlacement {
   std::filesystem::path file;           // IES LM-63 or EULUMDAT
   std::string name;                     // `name` or "luminaire<N>"; arrays append "[row,col]"
+  std::string entryName;                // the entry's `name` or "luminaire<N>", as written
   Vec3 positionM{0.0};                  // photometric centre, m
   Vec3 aim{0.0, 0.0, -1.0};             // unit direction of the photometric nadir
   double spinDeg = 0.0;                 // rotation about the aim; 0: C0 plane towards +X
@@ -38,6 +39,9 @@ struct LuminairePlacement {
   // `opening_reflectance` in [0, 1]: the luminous opening becomes an opaque diffuse surface of
   // this reflectance (engine/luminaire_opening.h); absent: no surface (light passes the opening).
   std::optional<double> openingReflectance;
+  // `power_w`: the luminaire's input power in W (> 0), in place of the file's input watts (the
+  // luminaire schedule and the installed power, study/luminaire_schedule.h); unset: the file's.
+  std::optional<double> powerW;
   int entry = 0;                        // index of the [[luminaire]] entry (0-based)
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
@@ -180,6 +184,14 @@ struct CaseFile {
   std::filesystem::path path;           // the case file itself
   std::string name;                     // [case] name, default: the file's stem
   std::string description;
+  // [case] floor_area (m², > 0): the area the power density is over; unset: the plan (x-y)
+  // extent of the scene's bounding box (study/luminaire_schedule.h).
+  std::optional<double> floorAreaM2;
+  // [case] reference_grid: the grid whose average illuminance W/m²/100 lx is taken on (a grid
+  // of the case, horizontal illuminance, not a daylight factor); empty: the first such [[grid]],
+  // else the first task area's task grid.
+  std::string referenceGrid;
+  FileLoc referenceGridLoc;
   std::vector<ScenePath> scenes;
   std::vector<LuminairePlacement> luminaires;
   std::vector<Portal> portals;          // [[portal]]: openings that guide sky sampling
