@@ -256,6 +256,7 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
   p.entry = entry;
   p.loc = tab.loc();
   p.file = filePath(tab, "file", "luminaire file");
+  p.fileText = asString(c, tab.require("file"), "file");
   p.name = "luminaire" + std::to_string(entry + 1);
   if (auto n = tab.get("name")) p.name = asString(c, *n, "name");
   p.entryName = p.name;

@@ -29,6 +29,7 @@ struct ScenePath {
 // placement per fitting.
 struct LuminairePlacement {
   std::filesystem::path file;           // IES LM-63 or EULUMDAT
+  std::string fileText;                 // the `file` key as written (reports name it so)
   std::string name;                     // `name` or "luminaire<N>"; arrays append "[row,col]"
   std::string entryName;                // the entry's `name` or "luminaire<N>", as written
   Vec3 positionM{0.0};                  // photometric centre, m
