@@ -1,7 +1,7 @@
 // The power density of a lighting installation (EN 12464-1:2021 asks for the energy efficiency
-// of the lighting to be considered; EN 15193-1 and the design tools state it as W/m² and as
-// W/m²/100 lx, the installed power per floor area normalised to 100 lx of maintained
-// illuminance): pure functions of the installed power, the area and the average illuminance.
+// of the lighting to be considered; the design tools state it as W/m² and as W/m²/100 lx, the
+// installed power per floor area normalised to 100 lx of maintained illuminance): pure
+// functions of the installed power, the area and the average illuminance.
 #pragma once
 
 #include <optional>
