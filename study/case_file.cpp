@@ -256,10 +256,8 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
   p.entry = entry;
   p.loc = tab.loc();
   p.file = filePath(tab, "file", "luminaire file");
-  p.fileText = asString(c, tab.require("file"), "file");
   p.name = "luminaire" + std::to_string(entry + 1);
   if (auto n = tab.get("name")) p.name = asString(c, *n, "name");
-  p.entryName = p.name;
   p.positionM = asVec3(c, tab.require("position"), "position");
   if (auto n = tab.get("aim")) p.aim = asDirection(c, *n, "aim");
   p.spinDeg = numberOr(tab, "spin", 0.0);
@@ -299,6 +297,7 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
     columns = static_cast<int>(k);
   }
   tab.finish();
+  out.luminaireEntries.push_back({p.name, asString(c, tab.require("file"), "file"), p.loc});
   // Columns run along +X and rows along +Y from `position`, the first fitting.
   const bool isArray = rows > 1 || columns > 1;
   for (int r = 0; r < rows; ++r) {

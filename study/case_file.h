@@ -29,9 +29,7 @@ struct ScenePath {
 // placement per fitting.
 struct LuminairePlacement {
   std::filesystem::path file;           // IES LM-63 or EULUMDAT
-  std::string fileText;                 // the `file` key as written (reports name it so)
   std::string name;                     // `name` or "luminaire<N>"; arrays append "[row,col]"
-  std::string entryName;                // the entry's `name` or "luminaire<N>", as written
   Vec3 positionM{0.0};                  // photometric centre, m
   Vec3 aim{0.0, 0.0, -1.0};             // unit direction of the photometric nadir
   double spinDeg = 0.0;                 // rotation about the aim; 0: C0 plane towards +X
@@ -43,10 +41,18 @@ struct LuminairePlacement {
   // `power_w`: the luminaire's input power in W (> 0), in place of the file's input watts (the
   // luminaire schedule and the installed power, study/luminaire_schedule.h); unset: the file's.
   std::optional<double> powerW;
-  int entry = 0;                        // index of the [[luminaire]] entry (0-based)
+  int entry = 0;                        // index of the [[luminaire]] entry (0-based): CaseFile::luminaireEntries
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
   LuminaireMounting mounting() const { return {name, positionM, aim, spinDeg, multiplier * maintenanceFactor}; }
+};
+
+// What a [[luminaire]] entry says once for all its placements (kept apart from them: a 10⁶
+// fitting array would hold each string 10⁶ times).
+struct LuminaireEntry {
+  std::string name;                     // `name` or "luminaire<N>", without an array's "[row,col]"
+  std::string fileText;                 // the `file` key as written (reports name the file so)
+  FileLoc loc;                          // the [[luminaire]] entry
 };
 
 struct SiteSpec {
@@ -195,6 +201,7 @@ struct CaseFile {
   FileLoc referenceGridLoc;
   std::vector<ScenePath> scenes;
   std::vector<LuminairePlacement> luminaires;
+  std::vector<LuminaireEntry> luminaireEntries;  // one per [[luminaire]] entry, in case order
   std::vector<Portal> portals;          // [[portal]]: openings that guide sky sampling
   SiteSpec site;
   SkySpec sky;

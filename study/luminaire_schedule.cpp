@@ -58,10 +58,21 @@ std::string lampText(const PhotometricWeb& web) {
   return out;
 }
 
-LuminaireTypeReport typeReport(const LuminairePlacement& p, const PhotometricWeb& web) {
+// The name and the file of the [[luminaire]] entry a placement comes from, as the case writes
+// them (a case made in code without entries: the placement's own).
+std::string entryName(const CaseFile& c, const LuminairePlacement& p) {
+  const std::size_t i = static_cast<std::size_t>(p.entry);
+  return i < c.luminaireEntries.size() ? c.luminaireEntries[i].name : p.name;
+}
+std::string entryFile(const CaseFile& c, const LuminairePlacement& p) {
+  const std::size_t i = static_cast<std::size_t>(p.entry);
+  return i < c.luminaireEntries.size() ? c.luminaireEntries[i].fileText : p.file.filename().string();
+}
+
+LuminaireTypeReport typeReport(const CaseFile& c, const LuminairePlacement& p, const PhotometricWeb& web) {
   const LuminaireSummary s = summarizeLuminaire(web);
   LuminaireTypeReport t;
-  t.file = p.fileText.empty() ? p.file.filename().string() : p.fileText;
+  t.file = entryFile(c, p);
   t.manufacturer = keyword(web.info(), "MANUFAC");
   t.luminaire = keyword(web.info(), "LUMINAIRE");
   t.catalogueNumber = keyword(web.info(), "LUMCAT");
@@ -102,11 +113,11 @@ std::vector<LuminaireTypeReport> luminaireSchedule(const CaseFile& c, const Scen
     if (!web) continue;
     const Key key{p.file, p.multiplier, p.maintenanceFactor, p.powerW.value_or(-1.0)};
     auto [it, added] = index.try_emplace(key, types.size());
-    if (added) types.push_back(typeReport(p, *web));
+    if (added) types.push_back(typeReport(c, p, *web));
     LuminaireTypeReport& t = types[it->second];
     ++t.count;
-    if (std::find(t.entries.begin(), t.entries.end(), p.entryName) == t.entries.end())
-      t.entries.push_back(p.entryName);
+    const std::string entry = entryName(c, p);
+    if (std::find(t.entries.begin(), t.entries.end(), entry) == t.entries.end()) t.entries.push_back(entry);
   }
   return types;
 }

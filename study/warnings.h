@@ -82,7 +82,7 @@ void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& 
 // luminaire_power_unknown: a [[luminaire]] entry whose photometric file gives no input power
 // (0 W) and which has no `power_w`: the installed power and W/m² leave it out, so they are a
 // lower bound. Once per entry, at its line.
-void checkLuminairePower(const Scene& scene, const std::vector<LuminairePlacement>& luminaires, Warnings& out);
+void checkLuminairePower(const Scene& scene, const CaseFile& c, Warnings& out);
 
 // weather_missing_hours: records of the weather file with missing irradiance (counted by the
 // EPW reader: a missing mark, an empty field or -999), whose sky is taken as dark.

@@ -411,6 +411,13 @@ TEST(CaseFile, ReadsPowerFloorAreaAndReferenceGrid) {
   ASSERT_EQ(c.luminaires.size(), 5u);
   for (int i = 0; i < 4; ++i) EXPECT_EQ(c.luminaires[i].powerW.value(), 23.5);
   EXPECT_FALSE(c.luminaires[4].powerW.has_value());  // the file's input watts
+  // The entries, once each for all their fittings: names without "[row,col]", files as written.
+  ASSERT_EQ(c.luminaireEntries.size(), 2u);
+  EXPECT_EQ(c.luminaireEntries[0].name, "luminaire1");
+  EXPECT_EQ(c.luminaires[3].name, "luminaire1[2,2]");
+  EXPECT_EQ(c.luminaires[3].entry, 0);
+  EXPECT_EQ(c.luminaireEntries[1].fileText, "../full/luminaires/downlight.ies");
+  EXPECT_EQ(c.luminaireEntries[1].loc.line, 9);
   const CaseFile plain = parseCaseFile("[case]\nname = \"x\"\n", path);
   EXPECT_FALSE(plain.floorAreaM2.has_value());
   EXPECT_TRUE(plain.referenceGrid.empty());
