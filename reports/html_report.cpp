@@ -7,6 +7,7 @@
 #include "base/atomic_file.h"
 #include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
+#include "reports/installation_html.h"
 #include "reports/plan_svg.h"
 
 namespace candela {
@@ -58,6 +59,14 @@ h3 { font-size:14px; margin:18px 0 6px; font-weight:600; }
 .multiples figcaption, .temporal figcaption { font-size:11px; color:var(--muted); margin-top:2px; max-width:560px; }
 .temporal img { max-width:100%; }
 td code { font-size:12px; }
+.schedule td, .surfaces td, .energy td { vertical-align:top; }
+.schedule td .f, .surfaces td .f { display:block; color:var(--muted); font-size:11px; }
+.schedule td.num, .schedule th.num { white-space:nowrap; }
+.schedule td.lum { overflow-wrap:anywhere; }
+.schedule td.polar { width:216px; padding:4px 8px 4px 0; }
+.schedule td.polar svg { display:block; }
+table.kv.energy { max-width:none; }
+.energy td:first-child { width:26%; }
 section.warnings { background:#fff4e0; border-left:6px solid #d98c00; }
 section.warnings h2 { color:#8a5300; }
 section.warnings li { margin:4px 0; } section.warnings code { font-size:12px; color:var(--muted); }
@@ -526,6 +535,8 @@ std::string htmlReport(const ReportData& data) {
   warningsSection(h, data.warnings);
   summarySection(h, data);
   taskAreasSection(h, data);
+  if (data.installation)
+    h << luminaireScheduleHtml(*data.installation) << energyHtml(*data.installation) << surfacesHtml(*data.installation);
   // One section per grid: plan and metrics.
   for (std::size_t i = 0; i < data.grids.size(); ++i) {
     const GridReport& g = data.grids[i];

@@ -19,6 +19,48 @@ nlohmann::json optionalNumber(const std::optional<double>& v) { return v ? nlohm
 // JSON has no NaN/Inf; write null instead of invalid JSON.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
+// The luminaire schedule, the surfaces and the energy figures of a point-in-time run.
+void addInstallation(nlohmann::json& j, const InstallationReport& in) {
+  using nlohmann::json;
+  json luminaires = json::array();
+  for (const LuminaireTypeReport& t : in.luminaires)
+    luminaires.push_back({{"file", t.file},
+                          {"entries", t.entries},
+                          {"manufacturer", t.manufacturer},
+                          {"luminaire", t.luminaire},
+                          {"catalogue_number", t.catalogueNumber},
+                          {"lamp", t.lamp},
+                          {"count", t.count},
+                          {"flux_lm", number(t.fluxLm)},
+                          {"lamp_flux_lm", optionalNumber(t.lampFluxLm)},
+                          {"power_w", optionalNumber(t.powerW)},
+                          {"power_source", t.powerW ? json(t.powerFromCase ? "case" : "file") : json()},
+                          {"light_output_ratio", optionalNumber(t.lightOutputRatio)},
+                          {"multiplier", number(t.multiplier)},
+                          {"maintenance_factor", number(t.maintenanceFactor)},
+                          {"efficacy_lm_per_w", optionalNumber(t.efficacyLmPerW)}});
+  j["luminaires"] = luminaires;
+  json surfaces = json::array();
+  for (const SurfaceMaterialReport& s : in.surfaces)
+    surfaces.push_back({{"material", s.material},
+                        {"type", s.type},
+                        {"reflectance", number(s.reflectance)},
+                        {"specular_reflectance", number(s.specularReflectance)},
+                        {"transmittance", optionalNumber(s.transmittance)},
+                        {"surfaces", s.surfaces}});
+  j["surfaces"] = surfaces;
+  const EnergyReport& e = in.energy;
+  j["energy"] = {{"installed_power_w", number(e.installedPowerW)},
+                 {"installed_power_is_lower_bound", !e.luminairesWithoutPower.empty()},
+                 {"floor_area_m2", optionalNumber(e.floorAreaM2)},
+                 {"floor_area_source", e.floorAreaM2 ? json(e.floorAreaFromCase ? "case" : "scene plan extent") : json()},
+                 {"power_density_w_m2", optionalNumber(e.powerDensityWm2)},
+                 {"power_density_w_m2_per_100lx", optionalNumber(e.powerDensityWm2Per100Lux)},
+                 {"reference_grid", e.referenceGrid.empty() ? json() : json(e.referenceGrid)},
+                 {"reference_grid_average_lux", e.referenceGrid.empty() ? json() : number(e.referenceAverageLux)},
+                 {"luminaires_without_power", e.luminairesWithoutPower}};
+}
+
 }  // namespace
 
 std::string summaryJson(const ReportData& data) {
@@ -124,6 +166,7 @@ std::string summaryJson(const ReportData& data) {
                          {"verdict", verdictName(a.verdict)}});
   }
   j["task_areas"] = taskAreas;
+  if (data.installation) addInstallation(j, *data.installation);
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();
   for (const Warning& w : data.warnings)

@@ -25,7 +25,18 @@ namespace candela {
 //   "views": [{"name", "mean_luminance_cd_m2" (solid-angle weighted mean over the image),
 //              "mean_luminance_relative_standard_error", "glare_source_luminance_cd_m2" (the
 //              image's DGP glare sources pooled), "glare_source_luminance_relative_standard_error"
-//              (fractions; null when unknown, or the view has no image glare source)}]
+//              (fractions; null when unknown, or the view has no image glare source)}],
+//   point-in-time runs only (docs/reports.md, "Luminaire schedule, energy and surfaces"):
+//   "luminaires": [{"file", "entries", "manufacturer", "luminaire", "catalogue_number", "lamp",
+//                   "count", "flux_lm", "lamp_flux_lm" (null: absolute photometry), "power_w"
+//                   (null: unknown), "power_source" ("file", "case"), "light_output_ratio"
+//                   (null: absolute), "multiplier", "maintenance_factor", "efficacy_lm_per_w"}],
+//   "surfaces": [{"material", "type", "reflectance", "specular_reflectance", "transmittance"
+//                 (null where the material passes no light), "surfaces"}],
+//   "energy": {"installed_power_w", "installed_power_is_lower_bound", "floor_area_m2",
+//              "floor_area_source" ("case", "scene plan extent"), "power_density_w_m2",
+//              "power_density_w_m2_per_100lx", "reference_grid", "reference_grid_average_lux",
+//              "luminaires_without_power"}
 // }
 // Values are in each grid's unit (lux, or % for daylight-factor grids); verdicts "pass",
 // "fail" or "n/a".

@@ -16,8 +16,9 @@ struct PolarCurve {
 };
 
 struct PolarPlotOptions {
-  std::string title;      // drawn above the plot when not empty
-  double sizePx = 480.0;  // width of the drawing; the legend adds height below
+  std::string title;      // drawn above the plot when not empty, in as many lines as it needs
+  double sizePx = 480.0;  // width of the drawing; the title and the legend add height
+  bool legend = true;     // each curve's style and label below the plot
 };
 
 // Ring spacing in cd for a plot whose largest intensity is maxCd: a 1, 2, 2.5 or 5 x 10^k step
@@ -25,7 +26,9 @@ struct PolarPlotOptions {
 double polarRingStepCd(double maxCd);
 
 // The SVG document (UTF-8 text). Nadir points down, zenith up; rings every polarRingStepCd,
-// labelled in cd; radial lines every 30 deg; a legend below with each curve's style.
+// labelled in cd inside each ring; radial lines every 30 deg, labelled outside; a legend below
+// with each curve's style. A title wider than the drawing is broken into lines (at spaces,
+// else inside a word), never clipped.
 std::string polarPlotSvg(const std::vector<PolarCurve>& curves, const PolarPlotOptions& options = {});
 
 }  // namespace candela

@@ -16,6 +16,7 @@
 #include "metrics/grid_stats.h"
 #include "metrics/modelling.h"
 #include "metrics/targets.h"
+#include "reports/polar_plot_svg.h"
 
 namespace candela {
 
@@ -150,12 +151,67 @@ struct TaskAreaReport {
   Verdict verdict = Verdict::kNotChecked;
 };
 
+// One type of luminaire of the case (the luminaire schedule, docs/en12464.md): the placements
+// with the same photometric file, multiplier, maintenance factor and power. Texts as the file
+// gives them (empty when it does not); flux per luminaire with the multiplier, before the
+// maintenance factor.
+struct LuminaireTypeReport {
+  std::string file;                       // the photometric file, as the case names it
+  std::vector<std::string> entries;       // the [[luminaire]] entries' names, in case order
+  std::string manufacturer, luminaire, catalogueNumber, lamp;
+  std::size_t count = 0;                  // luminaires placed (every fitting of an array)
+  double fluxLm = 0.0;                    // luminaire flux, lm
+  std::optional<double> lampFluxLm;       // rated lamp flux, lm; unset for absolute photometry
+  std::optional<double> powerW;           // input power per luminaire, W; unset when unknown
+  bool powerFromCase = false;             // `power_w` given in place of the file's
+  std::optional<double> lightOutputRatio; // fraction; unset for absolute photometry
+  double multiplier = 1.0;
+  double maintenanceFactor = 1.0;
+  std::optional<double> efficacyLmPerW;   // fluxLm / powerW; unset when the power is unknown
+  std::vector<PolarCurve> polar;          // C0-C180 and C90-C270 intensity curves, cd
+};
+
+// A material a surface of the scene uses, with its photopic reflectance (and transmittance for
+// the materials that pass light): the engine's derived values (Radiance's definitions).
+struct SurfaceMaterialReport {
+  std::string material;                   // the scene's name of it
+  std::string type;                       // Radiance type: "plastic", "metal", "trans", "glass", ...
+  double reflectance = 0.0;               // photopic, diffuse and specular, at normal incidence
+  double specularReflectance = 0.0;       // the specular part of it
+  std::optional<double> transmittance;    // photopic, at normal incidence; trans and glass only
+  std::size_t surfaces = 0;               // surfaces (primitives, mesh triangles) of it
+};
+
+// The installed power of the luminaires over the floor area, and normalised by the reference
+// grid's average illuminance (W/m²/100 lx).
+struct EnergyReport {
+  double installedPowerW = 0.0;           // Σ count × power over the types with known power
+  std::optional<double> floorAreaM2;      // unset: no geometry and no [case] floor_area
+  bool floorAreaFromCase = false;         // [case] floor_area; else the scene's plan extent
+  Vec2 planExtentM{0.0};                  // the scene's bounding box in x and y, m
+  std::optional<double> powerDensityWm2;
+  std::optional<double> powerDensityWm2Per100Lux;
+  std::string referenceGrid;              // empty: no horizontal illuminance grid
+  std::string referenceGridReason;        // why it is that grid, for the reader
+  double referenceAverageLux = 0.0;
+  std::vector<std::string> luminairesWithoutPower;  // [[luminaire]] entries of unknown power
+};
+
+// What the point-in-time study adds about the installation: the luminaire schedule, the surfaces'
+// reflectances and the energy figures.
+struct InstallationReport {
+  std::vector<LuminaireTypeReport> luminaires;
+  std::vector<SurfaceMaterialReport> surfaces;
+  EnergyReport energy;
+};
+
 struct ReportData {
   RunInfo run;
   std::vector<GridReport> grids;
   std::vector<ViewReport> views;
   std::vector<ObserverReport> observers;
   std::vector<TaskAreaReport> taskAreas;
+  std::optional<InstallationReport> installation;  // point-in-time runs
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };

@@ -207,6 +207,15 @@ void readCase(const Context& c, const toml::table& t, CaseFile& out) {
   Table tab(t, c, "[case]");
   if (auto n = tab.get("name")) out.name = asString(c, *n, "name");
   if (auto n = tab.get("description")) out.description = asString(c, *n, "description");
+  if (tab.get("floor_area")) {
+    out.floorAreaM2 = numberOr(tab, "floor_area", 0.0);
+    checkMin(tab, "floor_area", *out.floorAreaM2, 0.0, true, " m²");
+  }
+  if (auto n = tab.get("reference_grid")) {
+    out.referenceGrid = asString(c, *n, "reference_grid");
+    out.referenceGridLoc = c.at(*n);
+    if (out.referenceGrid.empty()) c.fail(*n, "'reference_grid' must not be empty");
+  }
   tab.finish();
 }
 
@@ -264,6 +273,10 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
     p.openingReflectance = numberOr(tab, "opening_reflectance", 0.0);
     checkRange(tab, "opening_reflectance", *p.openingReflectance, 0.0, 1.0, " (a diffuse reflectance)");
   }
+  if (tab.get("power_w")) {
+    p.powerW = numberOr(tab, "power_w", 0.0);
+    checkMin(tab, "power_w", *p.powerW, 0.0, true, " W (the luminaire's input power)");
+  }
 
   int rows = 1, columns = 1;
   Vec2 spacing(0.0);
@@ -284,6 +297,7 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
     columns = static_cast<int>(k);
   }
   tab.finish();
+  out.luminaireEntries.push_back({p.name, asString(c, tab.require("file"), "file"), p.loc});
   // Columns run along +X and rows along +Y from `position`, the first fitting.
   const bool isArray = rows > 1 || columns > 1;
   for (int r = 0; r < rows; ++r) {
@@ -819,6 +833,29 @@ void readAnnual(const Context& c, const toml::table& t, AnnualSpec& a) {
   tab.finish();
 }
 
+// [case] reference_grid names a grid of the case (a [[grid]] or a task area's) that is not a
+// daylight-factor grid and measures horizontal illuminance (the points' normals are checked when
+// the grids are made: study/luminaire_schedule.h).
+void checkReferenceGrid(const CaseFile& c) {
+  if (c.referenceGrid.empty()) return;
+  std::string names;
+  for (const GridSpec& g : c.grids) {
+    if (g.name == c.referenceGrid) {
+      if (g.daylightFactor)
+        throw InputError(c.referenceGridLoc, "'reference_grid' names grid '" + g.name +
+                                                 "', a daylight-factor grid: W/m²/100 lx needs an illuminance grid");
+      if (g.quantity && *g.quantity != GridQuantity::kHorizontal)
+        throw InputError(c.referenceGridLoc, "'reference_grid' names grid '" + g.name + "' of " +
+                                                 gridQuantityKey(*g.quantity) +
+                                                 " illuminance: W/m²/100 lx needs horizontal illuminance");
+      return;
+    }
+    names += (names.empty() ? "" : ", ") + ("'" + g.name + "'");
+  }
+  throw InputError(c.referenceGridLoc, "'reference_grid' names no grid of the case: '" + c.referenceGrid +
+                                           "' (the grids: " + (names.empty() ? "none" : names) + ")");
+}
+
 void readOutput(const Context& c, const toml::table& t, OutputSpec& o) {
   Table tab(t, c, "[output]");
   if (const toml::node* n = tab.get("dir")) {
@@ -887,6 +924,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
     int index = 0;
     for (const toml::node& n : *a) readObserver(c, *n.as_table(), index++, names, out);
   }
+  checkReferenceGrid(out);
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
   if (auto t = singleTable(c, root, "annual")) {
     readAnnual(c, *t, out.annual);

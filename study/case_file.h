@@ -38,10 +38,21 @@ struct LuminairePlacement {
   // `opening_reflectance` in [0, 1]: the luminous opening becomes an opaque diffuse surface of
   // this reflectance (engine/luminaire_opening.h); absent: no surface (light passes the opening).
   std::optional<double> openingReflectance;
-  int entry = 0;                        // index of the [[luminaire]] entry (0-based)
+  // `power_w`: the luminaire's input power in W (> 0), in place of the file's input watts (the
+  // luminaire schedule and the installed power, study/luminaire_schedule.h); unset: the file's.
+  std::optional<double> powerW;
+  int entry = 0;                        // index of the [[luminaire]] entry (0-based): CaseFile::luminaireEntries
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
   LuminaireMounting mounting() const { return {name, positionM, aim, spinDeg, multiplier * maintenanceFactor}; }
+};
+
+// What a [[luminaire]] entry says once for all its placements (kept apart from them: a 10⁶
+// fitting array would hold each string 10⁶ times).
+struct LuminaireEntry {
+  std::string name;                     // `name` or "luminaire<N>", without an array's "[row,col]"
+  std::string fileText;                 // the `file` key as written (reports name the file so)
+  FileLoc loc;                          // the [[luminaire]] entry
 };
 
 struct SiteSpec {
@@ -180,8 +191,17 @@ struct CaseFile {
   std::filesystem::path path;           // the case file itself
   std::string name;                     // [case] name, default: the file's stem
   std::string description;
+  // [case] floor_area (m², > 0): the area the power density is over; unset: the plan (x-y)
+  // extent of the scene's bounding box (study/luminaire_schedule.h).
+  std::optional<double> floorAreaM2;
+  // [case] reference_grid: the grid whose average illuminance W/m²/100 lx is taken on (a grid
+  // of the case, horizontal illuminance, not a daylight factor); empty: the first such [[grid]],
+  // else the first task area's task grid.
+  std::string referenceGrid;
+  FileLoc referenceGridLoc;
   std::vector<ScenePath> scenes;
   std::vector<LuminairePlacement> luminaires;
+  std::vector<LuminaireEntry> luminaireEntries;  // one per [[luminaire]] entry, in case order
   std::vector<Portal> portals;          // [[portal]]: openings that guide sky sampling
   SiteSpec site;
   SkySpec sky;

@@ -13,6 +13,7 @@
 #include "study/case_scene.h"
 #include "study/finite_results.h"
 #include "study/grid_quantity.h"
+#include "study/luminaire_schedule.h"
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
@@ -105,14 +106,8 @@ struct GridValues {
   std::vector<double> cylindricalLux, cylindricalErrorLux, horizontalLux, horizontalErrorLux;
 };
 
-// Whether every sensor of the grid already measures q (a horizontal grid's default normals are
-// horizontal illuminance).
-bool measures(const PreparedGrid& g, GridQuantity q) {
-  const SensorPoint want = quantitySensor(q, Vec3(0.0));
-  for (const SensorPoint& p : g.grid.points)
-    if (p.quantity != want.quantity || p.normal != want.normal) return false;
-  return !g.grid.points.empty();
-}
+// Whether every sensor of the grid already measures q (study/prepared_grid.h).
+bool measures(const PreparedGrid& g, GridQuantity q) { return gridMeasures(g, q); }
 
 // A run of consecutive points of the traced list: grid `grid`'s own points, or the sensors of
 // one of its modelling quantities at its positions.
@@ -275,6 +270,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
   const ResourceEstimate needs = estimateGridStudy(c, gridPointCounts(c), *scene, trace.settings, trace.threads);
   checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
   const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
+  const ReferenceGrid reference = referenceGrid(c, grids);  // W/m²/100 lx over its Ē
   observer.estimated(needs);
 
   // 2. All grids as one list (grids in case order, then the modelling grids' other sensors):
@@ -356,6 +352,10 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
                                    std::to_string(withoutCache));
   data.warnings = warnings;
   gridReports(data, grids, values, outsideLux);
+  InstallationReport& installation = data.installation.emplace();
+  installation.luminaires = luminaireSchedule(c, *scene);
+  installation.surfaces = surfaceMaterials(*scene);
+  installation.energy = energyReport(c, installation.luminaires, scene->bounds(), reference, data.grids);
   values.clear();
   values.shrink_to_fit();
   // Each view's pictures are written as soon as it is rendered, as unnamed temporaries beside the

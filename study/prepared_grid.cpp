@@ -101,6 +101,13 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   return grids;
 }
 
+bool gridMeasures(const PreparedGrid& g, GridQuantity q) {
+  const SensorPoint want = quantitySensor(q, Vec3(0.0));
+  for (const SensorPoint& p : g.grid.points)
+    if (p.quantity != want.quantity || p.normal != want.normal) return false;
+  return !g.grid.points.empty();
+}
+
 Box gridBounds(const Scene& scene) {
   Box bounds = scene.bounds();
   if (scene.sky) {

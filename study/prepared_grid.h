@@ -35,6 +35,11 @@ std::string gridDescription(const PreparedGrid& g);
 
 PlanLayout planLayout(const PreparedGrid& g);
 
+// Whether every sensor of the grid measures q (a horizontal plane grid's default normals measure
+// horizontal illuminance; a points file's points do when their normals are +Z); false for a grid
+// without points.
+bool gridMeasures(const PreparedGrid& g, GridQuantity q);
+
 // The bounds grids must lie in: the scene's, unbounded in z under a sky (an open scene).
 Box gridBounds(const Scene& scene);
 

@@ -358,6 +358,22 @@ void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& 
   }
 }
 
+void checkLuminairePower(const Scene& scene, const CaseFile& c, Warnings& out) {
+  std::set<int> warned;
+  for (std::size_t i = 0; i < c.luminaires.size() && i < scene.luminaires.size(); ++i) {
+    const LuminairePlacement& p = c.luminaires[i];
+    const PhotometricWeb* web = scene.luminaires[i].web.get();
+    if (!web || p.powerW || web->inputWatts() > 0.0 || !warned.insert(p.entry).second) continue;
+    const std::size_t e = static_cast<std::size_t>(p.entry);
+    const std::string name = e < c.luminaireEntries.size() ? c.luminaireEntries[e].name : p.name;
+    out.push_back({"luminaire_power_unknown",
+                   "luminaire '" + name + "': its photometric file " + p.file.filename().string() +
+                       " gives no input power and the entry has no 'power_w'; the installed power and the power "
+                       "density leave it out (a lower bound)",
+                   p.loc});
+  }
+}
+
 void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warnings& out) {
   if (weather.missingIrradianceHours == 0) return;
   out.push_back({"weather_missing_hours",
@@ -374,6 +390,7 @@ Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std:
   const std::vector<SensorSet> sets = sensorSets(grids);
   checkLuminaires(tracer, c.luminaires, sets, w);
   checkPhotometry(tracer.scene(), c.luminaires, w);
+  checkLuminairePower(tracer.scene(), c, w);
   for (const PreparedGrid& g : grids) checkGridSpacing(g, w);
   for (const PreparedGrid& g : grids) checkModellingHeight(g, w);
   for (const SensorSet& set : sets) checkSensors(tracer, set, w);

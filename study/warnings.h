@@ -79,12 +79,18 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lu
 // zero (the luminaire gives no light). Once per file, at its first [[luminaire]] entry.
 void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& luminaires, Warnings& out);
 
+// luminaire_power_unknown: a [[luminaire]] entry whose photometric file gives no input power
+// (0 W) and which has no `power_w`: the installed power and W/m² leave it out, so they are a
+// lower bound. Once per entry, at its line.
+void checkLuminairePower(const Scene& scene, const CaseFile& c, Warnings& out);
+
 // weather_missing_hours: records of the weather file with missing irradiance (counted by the
 // EPW reader: a missing mark, an empty field or -999), whose sky is taken as dark.
 void checkWeatherGaps(const EpwFile& weather, const std::string& fileName, Warnings& out);
 
 // The point-in-time study's checks on its input, before tracing, in the order it runs them
-// (`candela run` of a case without an annual sky): light sources, site, luminaires, grids
+// (`candela run` of a case without an annual sky): light sources, site, luminaires (placement,
+// photometry, power), grids
 // (spacing, modelling height), sensors. The tracer is the study's own.
 Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std::vector<PreparedGrid>& grids);
 

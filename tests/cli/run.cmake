@@ -67,3 +67,12 @@ candela_run_test(quantity_needs_facing 2 "quantity_missing_facing.toml:8: quanti
 # grids with their own CSVs, and the task area's verdict in summary.json.
 candela_run_test(task_area 0 "\"surrounding_grid\": \"desk surrounding\"" task_area/case.toml --quality draft)
 candela_run_test(task_area_bad 2 "no_corners.toml:1: a task area needs 'corners'" task_area/no_corners.toml)
+# Energy and the luminaire schedule (docs/en12464.md): summary.json's energy and luminaires, a
+# bad power_w at its line, and a luminaire of unknown power warned of at its entry.
+candela_run_test(energy_summary 0 "\"power_density_w_m2_per_100lx\"" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml
+                 --quality draft)
+candela_run_test(power_w_bad 2 "bad_power_w.toml:5: 'power_w' must be greater than 0 W" ${DATA}/cases/errors/bad_power_w.toml)
+candela_run_test(floor_area_bad 2 "bad_floor_area.toml:4: 'floor_area' must be greater than 0" ${DATA}/cases/errors/bad_floor_area.toml)
+candela_run_test(power_unknown_warning 0 "power_unknown/case.toml:7: luminaire 'spot': its photometric file defined.ies gives no input power"
+                 power_unknown/case.toml)
+candela_run_test(power_unknown_summary 0 "\"installed_power_is_lower_bound\": true" power_unknown/case.toml)

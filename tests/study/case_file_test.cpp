@@ -299,7 +299,17 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"quantity_facing_3d.toml", 9, "'facing' must be a horizontal direction [x, y]"},
                     ErrorCase{"quantity_with_normal.toml", 8, "give either 'normal'"},
                     ErrorCase{"quantity_daylight_factor.toml", 9, "daylight_factor is defined on horizontal illuminance"},
-                    ErrorCase{"modelling_not_bool.toml", 8, "'modelling' must be true or false, got a string"}),
+                    ErrorCase{"modelling_not_bool.toml", 8, "'modelling' must be true or false, got a string"},
+                    // Energy and the luminaire schedule (docs/en12464.md).
+                    ErrorCase{"bad_power_w.toml", 5,
+                              "'power_w' must be greater than 0 W (the luminaire's input power), got 0"},
+                    ErrorCase{"power_w_text.toml", 5, "'power_w' must be a number, got a string"},
+                    ErrorCase{"bad_floor_area.toml", 4, "'floor_area' must be greater than 0 m², got -12.5"},
+                    ErrorCase{"unknown_reference_grid.toml", 3,
+                              "'reference_grid' names no grid of the case: 'workplane' (the grids: 'desk')"},
+                    ErrorCase{"reference_grid_daylight_factor.toml", 3, "a daylight-factor grid"},
+                    ErrorCase{"reference_grid_vertical.toml", 3,
+                              "grid 'wall' of cylindrical illuminance: W/m²/100 lx needs horizontal illuminance"}),
     [](const testing::TestParamInfo<ErrorCase>& info) {
       std::string n = info.param.file;
       return n.substr(0, n.find('.'));
@@ -381,6 +391,36 @@ TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
                   "[[task_area]]\nname = \"desk\"\ncorners = [[0, 0], [1, 1]]\n" + body)
                 .find("two grids are named 'desk'"),
             std::string::npos);
+}
+
+// Energy (docs/case-format.md): a luminaire's `power_w` applies to every fitting of its array,
+// `[case] floor_area` and `reference_grid` are read as written; a task area's grid may be the
+// reference.
+TEST(CaseFile, ReadsPowerFloorAreaAndReferenceGrid) {
+  const fs::path path = casesDir() / "errors" / "energy.toml";
+  const CaseFile c = parseCaseFile(
+      "[case]\nfloor_area = 42.5\nreference_grid = \"desk\"\n"
+      "[[luminaire]]\nfile = \"../full/luminaires/downlight.ies\"\nposition = [1, 1, 2.8]\npower_w = 23.5\n"
+      "array = { rows = 2, columns = 2, spacing = [1, 1] }\n"
+      "[[luminaire]]\nfile = \"../full/luminaires/downlight.ies\"\nposition = [3, 1, 2.8]\n"
+      "[[task_area]]\nname = \"desk\"\ncorners = [[1, 1], [2, 2]]\nheight = 0.8\nmaintained_illuminance = 500\n",
+      path);
+  EXPECT_EQ(c.floorAreaM2.value(), 42.5);
+  EXPECT_EQ(c.referenceGrid, "desk");
+  EXPECT_EQ(c.referenceGridLoc.line, 3);
+  ASSERT_EQ(c.luminaires.size(), 5u);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(c.luminaires[i].powerW.value(), 23.5);
+  EXPECT_FALSE(c.luminaires[4].powerW.has_value());  // the file's input watts
+  // The entries, once each for all their fittings: names without "[row,col]", files as written.
+  ASSERT_EQ(c.luminaireEntries.size(), 2u);
+  EXPECT_EQ(c.luminaireEntries[0].name, "luminaire1");
+  EXPECT_EQ(c.luminaires[3].name, "luminaire1[2,2]");
+  EXPECT_EQ(c.luminaires[3].entry, 0);
+  EXPECT_EQ(c.luminaireEntries[1].fileText, "../full/luminaires/downlight.ies");
+  EXPECT_EQ(c.luminaireEntries[1].loc.line, 9);
+  const CaseFile plain = parseCaseFile("[case]\nname = \"x\"\n", path);
+  EXPECT_FALSE(plain.floorAreaM2.has_value());
+  EXPECT_TRUE(plain.referenceGrid.empty());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // with exit 0 and nothing unusual before; each now carries its warning (code, file, line), and
 // the same case without the problem, and the demo cases, carry none.
 #include "study/warnings.h"
+#include "photometry/photometric_file.h"
 
 #include "base/units.h"
 #include "engine/rad_reader.h"
@@ -113,6 +114,26 @@ TEST(Warnings, LuminairesOutsideEnclosedOrInMillimetres) {
   EXPECT_EQ(w[2].loc.line, 12);
   EXPECT_EQ(w[3].loc.line, 15);
   for (const Warning& x : w) EXPECT_EQ(x.loc.file, (kDir / "case.toml").string());
+}
+
+// luminaire_power_unknown: a photometric file with 0 input watts (a real one: the shared
+// reference's defined.ies) and no `power_w`; once per [[luminaire]] entry, however many fittings
+// its array has, at the entry's line. `power_w` or a file with its watts gives none.
+TEST(Warnings, LuminaireOfUnknownPower) {
+  const std::string noWatts = (fs::path(CANDELA_REFERENCE) / "photometry" / "renderpipeline" / "defined.ies").string();
+  ASSERT_EQ(readPhotometricFile(noWatts).inputWatts(), 0.0);
+  const std::string lum = "[[luminaire]]\nfile = \"" + noWatts + "\"\nposition = [1.0, 1.5, 2.79]\n";
+  const std::string text = kRoom +                                                          // lines 1–2
+                           kLuminaire +                                                     // lines 3–5: 36 W
+                           lum + "array = { rows = 1, columns = 2, spacing = [1.0, 1.0] }\n" +  // line 6
+                           lum + "power_w = 40\n" +                                        // line 10: given
+                           kGrid;
+  const Warnings w = inputWarnings(caseOf(text));
+  ASSERT_EQ(codes(w), std::vector<std::string>{"luminaire_power_unknown"}) << dump(w);
+  EXPECT_EQ(w[0].loc.line, 6);
+  EXPECT_NE(w[0].message.find("luminaire 'luminaire2': its photometric file defined.ies gives no input power"),
+            std::string::npos)
+      << w[0].message;
 }
 
 TEST(Warnings, GridSpacingLargerThanItsArea) {
