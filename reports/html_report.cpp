@@ -78,7 +78,10 @@ footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
   header { padding:0 0 10px; } section { padding:12px 0; border-bottom:none; } footer { padding:10px 0 0; }
   section.grid, section.settings { break-before:page; }
   h2, h3 { break-after:avoid; }
-  table, tr, figure, svg, img, .metrics, .grid-body { break-inside:avoid; }
+  tr, figure, svg, img, .metrics, .grid-body { break-inside:avoid; }
+  thead { display:table-header-group; }
+  .schedule td.polar { width:136px; } .schedule td.polar svg { width:128px; height:auto; }
+  .schedule td.lum { min-width:52mm; } .schedule th { font-size:10px; }
   svg { max-width:100%; height:auto; }
   .views img { max-width:100%; }
   a { color:inherit; text-decoration:none; }
