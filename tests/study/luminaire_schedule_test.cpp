@@ -18,6 +18,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 namespace candela {
 namespace {
@@ -127,9 +128,10 @@ struct CaseRun {
   json summary;
 };
 
-// Writes the room and the case into a fresh folder and runs it.
+// Writes the room and the case into a fresh folder of this process's own (CTest runs a suite's
+// tests as parallel processes, each emptying the folder first) and runs it.
 CaseRun runText(const std::string& name, const std::string& text, bool strict = false) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("schedule_" + name);
+  const fs::path dir = fs::path(testing::TempDir()) / ("schedule_" + name + "." + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "room.rad") << kRoom;
@@ -350,7 +352,7 @@ TEST(Energy, UnknownPowerIsALowerBoundWithAWarning) {
 
 // Which grid W/m²/100 lx is taken on, from the prepared grids alone.
 TEST(ReferenceGrid, ExplicitElseFirstHorizontalGridElseTheFirstTaskGrid) {
-  const fs::path path = fs::path(testing::TempDir()) / "reference.toml";
+  const fs::path path = fs::path(testing::TempDir()) / ("reference." + std::to_string(::getpid()) + ".toml");
   Box room;
   room.extend(Vec3(0.0));
   room.extend(Vec3(6.0, 4.0, 3.0));
