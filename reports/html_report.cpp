@@ -451,15 +451,16 @@ void gridMetricsTable(std::ostringstream& h, const GridReport& g) {
 }
 
 // The section of point-in-time grid `i` (0-based): its plan and metrics.
-void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, double northDeg) {
+void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, const ReportData& data) {
   h << "<section class=\"grid\" id=\"grid-" << i + 1 << "\">\n<h2><span class=\"n\">" << i + 1 << "</span>"
     << xmlEscape(g.name) << "</h2>\n<p class=\"sub\">" << quantityHtml(g.quantity) << " in " << xmlEscape(g.unit);
   if (!g.description.empty()) h << " · " << xmlEscape(g.description);
   h << "</p>\n<div class=\"grid-body\">\n";
   if (!g.values.empty()) {
     PlanOptions opt;
-    opt.northDeg = northDeg;
+    opt.northDeg = data.northDeg;
     opt.idPrefix = "plan" + std::to_string(i + 1);
+    if (g.planIsXY) opt.markers = data.planMarkers;
     const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
     h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
       << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
@@ -549,7 +550,7 @@ std::string htmlReport(const ReportData& data) {
       annualSection(h, AnnualPage{g, i, data.run, data.northDeg});
       continue;
     }
-    gridSection(h, g, i, data.northDeg);
+    gridSection(h, g, i, data);
   }
   for (std::size_t i = 0; i < data.views.size(); ++i) viewSection(h, data.views[i], i);
   observersSection(h, data.observers);

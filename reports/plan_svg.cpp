@@ -501,6 +501,37 @@ void writeLegend(std::ostringstream& s, const PlanPage& p) {
 
 }  // namespace
 
+// The markers inside the plan's extent, over the cells and isolines: luminaires as squares with
+// a cross, observers as dots with an arrow along their line of sight; their names beside them
+// when few enough to read.
+void writeMarkers(std::ostringstream& s, const PlanPage& p) {
+  std::vector<const PlanMarker*> inside;
+  for (const PlanMarker& m : p.opt.markers)
+    if (m.positionM.x >= p.lo.x && m.positionM.x <= p.hi.x && m.positionM.y >= p.lo.y && m.positionM.y <= p.hi.y)
+      inside.push_back(&m);
+  if (inside.empty()) return;
+  const bool named = inside.size() <= kMaxNamedMarkers;
+  s << "<g class=\"markers\" font-size=\"9\" fill=\"#111\">\n";
+  for (const PlanMarker* m : inside) {
+    const double x = p.X(m->positionM.x), y = p.Y(m->positionM.y);
+    if (m->kind == PlanMarker::Kind::kLuminaire) {
+      s << "<rect x=\"" << px(x - 4) << "\" y=\"" << px(y - 4) << "\" width=\"8\" height=\"8\" fill=\"#fff\" "
+        << "stroke=\"#111\" stroke-width=\"1\"/><path d=\"M" << px(x - 4) << " " << px(y - 4) << "L" << px(x + 4)
+        << " " << px(y + 4) << "M" << px(x + 4) << " " << px(y - 4) << "L" << px(x - 4) << " " << px(y + 4)
+        << "\" stroke=\"#111\" stroke-width=\"0.8\"/>\n";
+    } else {
+      const Vec2 d = glm::length(m->direction) > 0.0 ? glm::normalize(m->direction) : Vec2(0.0, 1.0);
+      s << "<circle cx=\"" << px(x) << "\" cy=\"" << px(y) << "\" r=\"4\" fill=\"#d0342c\" stroke=\"#fff\" "
+        << "stroke-width=\"1\"/><line x1=\"" << px(x) << "\" y1=\"" << px(y) << "\" x2=\"" << px(x + 14 * d.x)
+        << "\" y2=\"" << px(y - 14 * d.y) << "\" stroke=\"#d0342c\" stroke-width=\"1.6\"/>\n";
+    }
+    if (named)
+      s << "<text x=\"" << px(x + 6) << "\" y=\"" << px(y - 6) << "\" stroke=\"#fff\" stroke-width=\"2.5\" "
+        << "paint-order=\"stroke\">" << xmlEscape(m->name) << "</text>\n";
+  }
+  s << "</g>\n";
+}
+
 std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanOptions& opt) {
   const PlanPage page(grid, scale, opt);
   std::ostringstream s;
@@ -508,6 +539,7 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
   writeCells(s, page);
   writeCellValues(s, page);
   writeContours(s, page);
+  writeMarkers(s, page);
   writeAxes(s, page);
   writeScaleBarAndNorth(s, page);
   writeLegend(s, page);

@@ -25,7 +25,11 @@ struct PlanOptions {
   double northDeg = 0.0;              // true north, degrees clockwise from plan +Y
   std::string idPrefix = "plan";      // makes element ids unique when several plans share a page
   bool standalone = false;            // add the SVG namespace (files); HTML5 inline SVG needs none
+  // Luminaires (a square with a cross) and observers (a dot with their line of sight) drawn over
+  // the plan where they fall inside it, named when there are at most kMaxNamedMarkers of them.
+  std::vector<PlanMarker> markers;
 };
+inline constexpr std::size_t kMaxNamedMarkers = 40;
 
 // What a plan of `layout` shows, in plan coordinates (m): its outline, lattice and points, from
 // lo to hi; at least 1 m wide in each direction where they are not (a single row, a point).

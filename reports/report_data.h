@@ -67,8 +67,18 @@ struct AnnualGridReport {
 };
 
 // One grid's results and verdicts.
+// What a plan shows besides its grid (report.html): a luminaire's position or an observer's, in
+// plan coordinates x, y (m), with its name; an observer's line of sight.
+struct PlanMarker {
+  enum class Kind { kLuminaire, kObserver } kind = Kind::kLuminaire;
+  Vec2 positionM{0.0};
+  Vec2 direction{0.0, 1.0};  // observers
+  std::string name;
+};
+
 struct GridReport {
   std::string name;
+  bool planIsXY = false;             // the plan's coordinates are x, y (a horizontal grid): markers fit it
   std::string taskArea;              // the [[task_area]] that made the grid, else empty
   std::string area;                  // then "task area", "immediate surrounding" or "background"
   std::string description;           // e.g. "horizontal, 0.80 m above floor"
@@ -211,6 +221,7 @@ struct ReportData {
   std::vector<ViewReport> views;
   std::vector<ObserverReport> observers;
   std::vector<TaskAreaReport> taskAreas;
+  std::vector<PlanMarker> planMarkers;  // luminaires and observers, drawn on horizontal grids' plans
   std::optional<InstallationReport> installation;  // point-in-time runs
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order

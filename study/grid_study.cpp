@@ -157,6 +157,8 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g);
+    r.planIsXY = g.spec->kind == GridKind::kPoints ||
+                 (g.spec->plane.uAxis == Vec3(1, 0, 0) && g.spec->plane.vAxis == Vec3(0, 1, 0));
     if (g.spec->quantity) {
       r.quantity = gridQuantityName(*g.spec->quantity);
       r.quantityKey = gridQuantityKey(*g.spec->quantity);
@@ -393,6 +395,14 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     data.observers.push_back(std::move(r));
   }
   addTaskAreaReports(c, data);
+  // The plans show where the luminaires and observers are (up to 2000 luminaires: more symbols
+  // than that make no readable plan, and a 10⁶-fitting array would hold them all again).
+  constexpr std::size_t kMaxLuminaireMarkers = 2000;
+  if (c.luminaires.size() <= kMaxLuminaireMarkers)
+    for (const LuminairePlacement& l : c.luminaires)
+      data.planMarkers.push_back({PlanMarker::Kind::kLuminaire, Vec2(l.positionM.x, l.positionM.y), Vec2(0.0), l.name});
+  for (const ObserverSpec& o : c.observers)
+    data.planMarkers.push_back({PlanMarker::Kind::kObserver, o.positionM, o.direction, o.name});
   data.run.runTimeS = secondsSince(run.start);
 
   // 4. Write: the folder is committed as a whole.

@@ -160,6 +160,37 @@ TEST(PlanSvg, ContourLabelsDoNotOverlap) {
       EXPECT_TRUE(apart(boxes[i], boxes[j])) << "labels " << i << " and " << j << " overlap";
 }
 
+// Luminaires and observers on the plan: a symbol at each one inside the plan's extent (at the
+// plan's own px of its position: 480 px across 4 m, the frame 44 px from the left, 30 px from
+// the top), none outside it, and their names while there are few.
+TEST(PlanSvg, MarksLuminairesAndObserversInsideThePlan) {
+  std::vector<double> values;
+  GridReport g;
+  g.layout = lattice(8, 4, 0.5, values, [](Vec2 p) { return 100.0 + p.x; });  // x −2…2, y −1…1
+  g.values = values;
+  g.stats = computeGridStats(values);
+  PlanOptions o;
+  o.cellValues = false;
+  o.markers = {{PlanMarker::Kind::kLuminaire, Vec2(1.0, 0.5), Vec2(0.0), "L1"},
+               {PlanMarker::Kind::kLuminaire, Vec2(9.0, 0.5), Vec2(0.0), "far"},
+               {PlanMarker::Kind::kObserver, Vec2(-1.0, -0.5), Vec2(0.0, 1.0), "seat"}};
+  const std::string svg = planSvg(g, niceScale(0.0, 200.0), o);
+  const double k = 480.0 / 4.0;
+  auto X = [&](double x) { return svgNumber(44.0 + (x + 2.0) * k); };
+  auto Y = [&](double y) { return svgNumber(30.0 + (1.0 - y) * k); };
+  EXPECT_NE(svg.find("<rect x=\"" + svgNumber(44.0 + 3.0 * k - 4) + "\" y=\"" + svgNumber(30.0 + 0.5 * k - 4) + "\""),
+            std::string::npos);
+  EXPECT_NE(svg.find("<circle cx=\"" + X(-1.0) + "\" cy=\"" + Y(-0.5) + "\""), std::string::npos);
+  EXPECT_NE(svg.find(">L1</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">seat</text>"), std::string::npos);
+  EXPECT_EQ(svg.find(">far</text>"), std::string::npos);  // outside the plan
+  // Past kMaxNamedMarkers the symbols stay, the names go.
+  o.markers.assign(kMaxNamedMarkers + 1, {PlanMarker::Kind::kLuminaire, Vec2(0.0), Vec2(0.0), "many"});
+  const std::string crowded = planSvg(g, niceScale(0.0, 200.0), o);
+  EXPECT_EQ(crowded.find(">many</text>"), std::string::npos);
+  EXPECT_NE(crowded.find("<g class=\"markers\""), std::string::npos);
+}
+
 // RFC 4648 base64 decoding (the test's own), of the plan picture's data URI.
 std::vector<uint8_t> unbase64(const std::string& text) {
   const std::string table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
