@@ -403,7 +403,8 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
       << badge(a.ugrVerdict) << "</td></tr>\n";
     if (a.ra)
       h << "<tr><td>Colour rendering</td><td colspan=\"5\">R<sub>a</sub> ≥ " << formatFixed(*a.ra, 0)
-        << " required: to be checked on the lamps' data (the photometric files do not state it)</td><td>"
+        << " required: to be checked on the lamps' data (IES files do not state it; see the luminaire "
+           "schedule for an EULUMDAT file's colour rendering)</td><td>"
         << badge(Verdict::kNotChecked) << "</td></tr>\n";
     h << "</tbody>\n</table>\n";
   }
