@@ -1,0 +1,276 @@
+#include "study/case_grids.h"
+
+#include "metrics/targets.h"
+#include "study/case_toml.h"
+#include "study/grid_quantity.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace candela {
+
+using namespace case_toml;
+
+namespace {
+
+// The grid's 'name' (default grid<n>), unique among the case's grids.
+void readGridName(Table& tab, int index, std::set<std::string>& names, GridSpec& g) {
+  const Context& c = tab.ctx();
+  g.name = "grid" + std::to_string(index + 1);
+  if (auto n = tab.get("name")) {
+    g.name = asString(c, *n, "name");
+    if (g.name.empty()) c.fail(*n, "'name' must not be empty");
+  }
+  if (!names.insert(g.name).second) {
+    const toml::node* n = tab.get("name");
+    throw InputError(n ? c.at(*n) : g.loc, "two grids are named '" + g.name + "'");
+  }
+}
+
+void readPointsGrid(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  g.kind = GridKind::kPoints;
+  g.pointsFile = filePath(tab, "file", "sensor points file");
+  for (const char* key : {"corners", "outline", "height", "spacing", "border", "normal", "origin", "axes"})
+    if (const toml::node* n = tab.get(key)) c.fail(*n, keyText(key) + " applies to kind = \"plane\" grids only");
+}
+
+// A plane grid's area: 'corners' of a rectangle or an 'outline' polygon.
+void readPlaneArea(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
+  const Context& c = tab.ctx();
+  const toml::node* cn = tab.get("corners");
+  const toml::node* on = tab.get("outline");
+  if (cn && on) c.fail(*on, "give either 'corners' or 'outline', not both");
+  if (!cn && !on) throw InputError(gridLoc, "a plane grid needs 'corners' = [[x0, y0], [x1, y1]] or an 'outline'");
+  if (cn) {
+    p.isRectangle = true;
+    p.outline = asPointList(c, *cn, "corners");
+    if (p.outline.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+    const Vec2 d = p.outline[1] - p.outline[0];
+    if (!(std::abs(d.x * d.y) > 0.0)) c.fail(*cn, "'corners' span a zero area");
+  } else {
+    p.isRectangle = false;
+    p.outline = asPointList(c, *on, "outline");
+    if (p.outline.size() < 3) c.fail(*on, "'outline' needs at least 3 points");
+    if (!(std::abs(polygonArea(p.outline)) > 0.0)) c.fail(*on, "'outline' encloses a zero area");
+  }
+}
+
+// Where a plane grid lies: at a 'height' (horizontal) or by 'origin' and 'axes'.
+void readPlanePlacement(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
+  const Context& c = tab.ctx();
+  const toml::node* hn = tab.get("height");
+  const toml::node* orn = tab.get("origin");
+  const toml::node* axn = tab.get("axes");
+  if (orn || axn) {
+    // A plane in any orientation: origin + u·axes[0] + v·axes[1].
+    if (hn) c.fail(*hn, "'height' applies to horizontal grids; a grid with 'origin' and 'axes' is placed by them");
+    if (!orn || !axn) throw InputError(gridLoc, "a grid with 'origin' also needs 'axes' = [[ux, uy, uz], [vx, vy, vz]], and vice versa");
+    p.origin = asVec3(c, *orn, "origin");
+    const toml::array& ax = asArray(c, *axn, "axes", 2, "two directions [[ux, uy, uz], [vx, vy, vz]]");
+    p.uAxis = asDirection(c, ax[0], "axes");
+    p.vAxis = asDirection(c, ax[1], "axes");
+    if (std::abs(glm::dot(p.uAxis, p.vAxis)) > 1e-6) c.fail(*axn, "the two 'axes' must be perpendicular");
+  } else {
+    if (!hn) throw InputError(gridLoc, "a plane grid needs 'height' (m) of the horizontal plane");
+    p.origin = Vec3(0.0, 0.0, asNumber(c, *hn, "height"));
+  }
+}
+
+void readPlaneGrid(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  g.kind = GridKind::kPlane;
+  if (const toml::node* n = tab.get("file")) c.fail(*n, "'file' applies to kind = \"points\" grids only");
+  PlaneGridSpec& p = g.plane;
+  readPlaneArea(tab, g.loc, p);
+  readPlanePlacement(tab, g.loc, p);
+  if (const toml::node* sn = tab.get("spacing")) {
+    if (sn->is_string()) {
+      if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
+    } else {
+      p.spacingM = asNumber(c, *sn, "spacing");
+      checkMin(tab, "spacing", *p.spacingM, 0.0, true, " m");
+    }
+  }
+  p.borderM = numberOr(tab, "border", 0.0);
+  checkMin(tab, "border", p.borderM, 0.0, false, " m");
+  if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
+}
+
+// 'quantity', 'facing' and 'modelling' (docs/case-format.md#grid): what the points measure.
+void readGridQuantity(Table& tab, GridSpec& g) {
+  const Context& c = tab.ctx();
+  const toml::node* qn = tab.get("quantity");
+  const toml::node* fn = tab.get("facing");
+  if (qn) {
+    const std::string name = asString(c, *qn, "quantity");
+    g.quantity = parseGridQuantity(name);
+    if (!g.quantity)
+      c.fail(*qn, "unknown quantity '" + name +
+                      "' (expected horizontal, vertical, cylindrical, semi-cylindrical or hemispherical)");
+    g.quantityLoc = c.at(*qn);
+    if (const toml::node* nn = tab.get("normal"))
+      c.fail(*nn, "give either 'normal' (planar illuminance on it) or 'quantity', not both");
+    if (g.daylightFactor && *g.quantity != GridQuantity::kHorizontal)
+      c.fail(*qn, "daylight_factor is defined on horizontal illuminance: quantity must be \"horizontal\"");
+  }
+  const bool wantsFacing = g.quantity && needsFacing(*g.quantity);
+  if (fn) {
+    if (!wantsFacing) c.fail(*fn, "'facing' applies to quantity = \"vertical\" or \"semi-cylindrical\" only");
+    g.facing = asVec2(c, *fn, "facing", "a horizontal direction [x, y]");
+    if (!(glm::length(g.facing) > 0.0)) c.fail(*fn, "'facing' must not be the zero vector");
+    g.facing = glm::normalize(g.facing);
+  } else if (wantsFacing) {
+    c.fail(*qn, "quantity \"" + std::string(gridQuantityKey(*g.quantity)) +
+                    "\" needs 'facing' = [x, y], the horizontal direction it faces");
+  }
+  if (const toml::node* mn = tab.get("modelling")) {
+    g.modelling = asBool(c, *mn, "modelling");
+    g.modellingLoc = c.at(*mn);
+  }
+}
+
+}  // namespace
+
+void readGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[grid]]");
+  GridSpec g;
+  g.loc = tab.loc();
+  readGridName(tab, index, names, g);
+  std::string kind = "plane";
+  const toml::node* kn = tab.get("kind");
+  if (kn) kind = asString(c, *kn, "kind");
+  if (kind == "points") {
+    readPointsGrid(tab, g);
+  } else if (kind == "plane") {
+    readPlaneGrid(tab, g);
+  } else {
+    c.fail(*kn, "unknown grid kind '" + kind + "' (expected plane or points)");
+  }
+  g.targetAverageLux = optNumber(tab, "target_average");
+  if (g.targetAverageLux) checkMin(tab, "target_average", *g.targetAverageLux, 0.0, false, " lx");
+  g.targetUniformity = optNumber(tab, "target_uniformity");
+  if (g.targetUniformity) checkRange(tab, "target_uniformity", *g.targetUniformity, 0.0, 1.0, "");
+  if (auto n = tab.get("daylight_factor")) g.daylightFactor = asBool(c, *n, "daylight_factor");
+  readGridQuantity(tab, g);
+  tab.finish();
+  // Border and spacing problems (the border eats the area, a million-point grid) show here,
+  // at the grid's line, rather than in the middle of a run.
+  if (g.kind == GridKind::kPlane) countPlaneGrid(g.plane, g.loc);
+  out.grids.push_back(std::move(g));
+}
+
+namespace {
+
+// A task area's band as a grid: the lattice over the task's box grown by `toM` (clipped to the
+// room when given), keeping the points between fromM and toM of the task's outline.
+GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area area, double fromM, double toM,
+                  const std::optional<std::array<Vec2, 2>>& room) {
+  GridSpec g;
+  g.name = name;
+  g.loc = a.loc;
+  g.taskArea = a.name;
+  g.area = area;
+  PlaneGridSpec& p = g.plane;
+  p.origin = Vec3(0.0, 0.0, a.heightM);
+  Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const Vec2& v : a.outline) {
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  lo -= Vec2(toM);
+  hi += Vec2(toM);
+  if (room) {
+    lo = glm::max(lo, glm::min((*room)[0], (*room)[1]));
+    hi = glm::min(hi, glm::max((*room)[0], (*room)[1]));
+  }
+  g.clipToRoom = !room;
+  p.isRectangle = true;
+  p.outline = {lo, hi};
+  p.band = {a.outline, fromM, toM};
+  return g;
+}
+
+}  // namespace
+
+void readTaskArea(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  Table tab(t, c, "[[task_area]]");
+  TaskAreaSpec a;
+  a.loc = tab.loc();
+  a.name = "task area " + std::to_string(index + 1);
+  if (auto n = tab.get("name")) {
+    a.name = asString(c, *n, "name");
+    if (a.name.empty()) c.fail(*n, "'name' must not be empty");
+  }
+  const toml::node* cn = tab.get("corners");
+  const toml::node* pn = tab.get("polygon");
+  if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
+  if (!cn && !pn) throw InputError(a.loc, "a task area needs 'corners' = [[x0, y0], [x1, y1]] or a 'polygon'");
+  if (cn) {
+    const std::vector<Vec2> k = asPointList(c, *cn, "corners");
+    if (k.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+    const Vec2 lo = glm::min(k[0], k[1]), hi = glm::max(k[0], k[1]);
+    if (!(hi.x > lo.x && hi.y > lo.y)) c.fail(*cn, "'corners' span a zero area");
+    a.outline = {lo, Vec2(hi.x, lo.y), hi, Vec2(lo.x, hi.y)};
+  } else {
+    a.outline = asPointList(c, *pn, "polygon");
+    if (a.outline.size() < 3) c.fail(*pn, "'polygon' needs at least 3 points");
+    if (!(std::abs(polygonArea(a.outline)) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
+  }
+  a.heightM = asNumber(c, tab.require("height"), "height");
+  a.maintainedLux = asNumber(c, tab.require("maintained_illuminance"), "maintained_illuminance");
+  checkMin(tab, "maintained_illuminance", a.maintainedLux, 0.0, true, " lx");
+  a.uniformity = optNumber(tab, "uniformity");
+  if (a.uniformity) checkRange(tab, "uniformity", *a.uniformity, 0.0, 1.0, "");
+  if (const toml::node* n = tab.get("ugr_limit")) {
+    a.ugrLimit = asNumber(c, *n, "ugr_limit");
+    checkRange(tab, "ugr_limit", *a.ugrLimit, 0.0, 40.0, "");
+  }
+  a.ra = optNumber(tab, "ra");
+  if (a.ra) checkRange(tab, "ra", *a.ra, 0.0, 100.0, "");
+  std::optional<std::array<Vec2, 2>> room;
+  if (const toml::node* n = tab.get("room")) {
+    const std::vector<Vec2> k = asPointList(c, *n, "room");
+    if (k.size() != 2) c.fail(*n, "'room' must be two corners [[x0, y0], [x1, y1]] of the space");
+    room = std::array<Vec2, 2>{k[0], k[1]};
+    for (const Vec2& v : a.outline)
+      if (v.x < std::min(k[0].x, k[1].x) || v.x > std::max(k[0].x, k[1].x) || v.y < std::min(k[0].y, k[1].y) ||
+          v.y > std::max(k[0].y, k[1].y))
+        c.fail(*n, "the task area reaches outside its 'room'");
+  }
+  std::optional<double> spacing;
+  if (const toml::node* n = tab.get("spacing")) {
+    spacing = asNumber(c, *n, "spacing");
+    checkMin(tab, "spacing", *spacing, 0.0, true, " m");
+  }
+  tab.finish();
+
+  GridSpec task;
+  task.name = a.name;
+  task.loc = a.loc;
+  task.taskArea = a.name;
+  task.area = GridSpec::Area::kTask;
+  task.plane.isRectangle = false;
+  task.plane.outline = a.outline;
+  task.plane.origin = Vec3(0.0, 0.0, a.heightM);
+  task.plane.spacingM = spacing;
+  task.targetAverageLux = a.maintainedLux;
+  task.targetUniformity = a.uniformity;
+  GridSpec surrounding = taskBand(a, a.name + " surrounding", GridSpec::Area::kSurrounding, 0.0,
+                                  kImmediateSurroundingWidthM, room);
+  surrounding.targetAverageLux = immediateSurroundingLux(a.maintainedLux);
+  surrounding.targetUniformity = kImmediateSurroundingUniformity;
+  GridSpec background = taskBand(a, a.name + " background", GridSpec::Area::kBackground, kImmediateSurroundingWidthM,
+                                 kImmediateSurroundingWidthM + kBackgroundWidthM, room);
+  background.targetAverageLux = backgroundLux(a.maintainedLux);
+  background.targetUniformity = kBackgroundUniformity;
+  for (GridSpec* g : {&task, &surrounding, &background}) {
+    if (!names.insert(g->name).second) throw InputError(a.loc, "two grids are named '" + g->name + "'");
+    countPlaneGrid(g->plane, g->loc);
+    out.grids.push_back(std::move(*g));
+  }
+  out.taskAreas.push_back(std::move(a));
+}
+
+}  // namespace candela
