@@ -163,17 +163,23 @@ void readGrid(const Context& c, const toml::table& t, int index, std::set<std::s
 
 namespace {
 
-// A task area's band as a grid: the lattice over the task's box grown by `toM` (clipped to the
-// room when given), keeping the points between fromM and toM of the task's outline.
-GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area area, double fromM, double toM,
-                  const std::optional<std::array<Vec2, 2>>& room) {
+// One of a task area's grids, horizontal at its height: named, placed and labelled.
+GridSpec taskAreaGrid(const TaskAreaSpec& a, const std::string& name, GridSpec::Area area) {
   GridSpec g;
   g.name = name;
   g.loc = a.loc;
   g.taskArea = a.name;
   g.area = area;
+  g.plane.origin = Vec3(0.0, 0.0, a.heightM);
+  return g;
+}
+
+// A task area's band as a grid: the lattice over the task's box grown by `toM` (clipped to the
+// room when given), keeping the points between fromM and toM of the task's outline.
+GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area area, double fromM, double toM,
+                  const std::optional<std::array<Vec2, 2>>& room) {
+  GridSpec g = taskAreaGrid(a, name, area);
   PlaneGridSpec& p = g.plane;
-  p.origin = Vec3(0.0, 0.0, a.heightM);
   Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const Vec2& v : a.outline) {
     lo = glm::min(lo, v);
@@ -246,14 +252,9 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
   }
   tab.finish();
 
-  GridSpec task;
-  task.name = a.name;
-  task.loc = a.loc;
-  task.taskArea = a.name;
-  task.area = GridSpec::Area::kTask;
+  GridSpec task = taskAreaGrid(a, a.name, GridSpec::Area::kTask);
   task.plane.isRectangle = false;
   task.plane.outline = a.outline;
-  task.plane.origin = Vec3(0.0, 0.0, a.heightM);
   task.plane.spacingM = spacing;
   task.targetAverageLux = a.maintainedLux;
   task.targetUniformity = a.uniformity;

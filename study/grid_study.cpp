@@ -157,8 +157,7 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g);
-    r.planIsXY = g.spec->kind == GridKind::kPoints ||
-                 (g.spec->plane.uAxis == Vec3(1, 0, 0) && g.spec->plane.vAxis == Vec3(0, 1, 0));
+    r.planIsXY = g.spec->kind == GridKind::kPoints || inPlanCoordinates(g.spec->plane);
     if (g.spec->quantity) {
       r.quantity = gridQuantityName(*g.spec->quantity);
       r.quantityKey = gridQuantityKey(*g.spec->quantity);

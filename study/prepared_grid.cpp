@@ -19,7 +19,7 @@ std::string vecText(const Vec3& v) {
 
 bool isHorizontalUp(const PlaneGridSpec& p) {
   const Vec3 n = p.normal ? *p.normal : glm::cross(p.uAxis, p.vAxis);
-  return p.uAxis == Vec3(1, 0, 0) && p.vAxis == Vec3(0, 1, 0) && glm::length(n - Vec3(0, 0, 1)) < 1e-9;
+  return inPlanCoordinates(p) && glm::length(n - Vec3(0, 0, 1)) < 1e-9;
 }
 
 // ", facing (x, y)" for the quantities that face a plan direction, else "".
@@ -85,13 +85,13 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
       std::vector<Vec2>& o = clipped.plane.outline;
       o = {glm::max(o[0], Vec2(bounds.lo.x, bounds.lo.y)), glm::min(o[1], Vec2(bounds.hi.x, bounds.hi.y))};
       if (!(o[1].x > o[0].x && o[1].y > o[0].y)) continue;
-      if (countPlaneGrid(clipped.plane, spec.loc) == 0) continue;  // a task area that fills the room
     }
     const GridSpec& made = spec.clipToRoom ? clipped : spec;
     checkGridInside(made, bounds);
     PreparedGrid g;
     g.spec = &spec;
     g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(made.plane, spec.loc) : readPointsFile(spec.pointsFile);
+    if (g.grid.size() == 0) continue;  // a band its room leaves empty (a task area filling the room)
     // A quantity replaces the grid's normals by its own sensor at each position.
     if (spec.quantity)
       for (SensorPoint& p : g.grid.points) p = quantitySensor(*spec.quantity, p.position, spec.facing);

@@ -100,29 +100,26 @@ void RunOutputFolder::guard(const std::function<void()>& work) const {
   }
 }
 
+const fs::path& RunOutputFolder::folder() {
+  if (tmp_.empty()) tmp_ = createTemporaryFolder(parent_, outDir_.filename().string() + ".tmp");
+  return tmp_;
+}
+
 void RunOutputFolder::write(const std::function<void(const fs::path&)>& write) {
-  guard([&] {
-    if (tmp_.empty()) tmp_ = createTemporaryFolder(parent_, outDir_.filename().string() + ".tmp");
-    write(tmp_);
-  });
+  guard([&] { write(folder()); });
 }
 
 void RunOutputFolder::commit() {
-  if (!active_) return;
-  write([](const fs::path&) {});  // the folder, should nothing have been written into it
-  try {
-    writeFileAtomic(tmp_ / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
-    fs::permissions(tmp_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                              fs::perms::others_read | fs::perms::others_exec);
-    const fs::path old = swapInto(tmp_, outDir_);
+  guard([&] {
+    const fs::path dir = folder();  // made here should nothing have been written into it
+    writeFileAtomic(dir / kResultMarker, "candela " CANDELA_VERSION " result folder\n");
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                             fs::perms::others_read | fs::perms::others_exec);
+    const fs::path old = swapInto(dir, outDir_);
     tmp_.clear();
     std::error_code ec;
     if (!old.empty()) fs::remove_all(old, ec);
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    cannotWrite(outDir_, e);
-  }
+  });
 }
 
 void writeRunOutputs(const fs::path& outDir, const std::function<void(const fs::path&)>& write) {

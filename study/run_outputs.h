@@ -47,6 +47,9 @@ class RunOutputFolder {
   void commit();
 
  private:
+  // The temporary result folder, made on first use.
+  const std::filesystem::path& folder();
+
   std::filesystem::path outDir_, parent_, tmp_;
   bool active_ = true;
 };

@@ -41,6 +41,12 @@ struct PlaneGridSpec {
   } band;
 };
 
+// The plane's coordinates (u, v) are the world's (x, y): the default axes (a horizontal plane, or
+// one whose sensors face elsewhere), so that plan positions can be drawn on its plan.
+inline bool inPlanCoordinates(const PlaneGridSpec& p) {
+  return p.uAxis == Vec3(1, 0, 0) && p.vAxis == Vec3(0, 1, 0);
+}
+
 // A generated grid. Plane grids are regular lattices: the cell (i, j) has its centre at
 // latticeOriginUv + ((i + ½)·spacingM.x, (j + ½)·spacingM.y) in plane coordinates; cells outside
 // a polygon or inside the border band are left out.

@@ -32,27 +32,36 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
 }  // namespace
 
 void addTaskAreaReports(const CaseFile& c, ReportData& data) {
-  for (const GridSpec& spec : c.grids) {
-    if (spec.area == GridSpec::Area::kNone) continue;
-    for (GridReport& g : data.grids)
-      if (g.name == spec.name) {
-        g.taskArea = spec.taskArea;
-        g.area = areaName(spec.area);
-      }
-  }
+  std::vector<TaskAreaReport>& areas = data.taskAreas;
   for (const TaskAreaSpec& a : c.taskAreas) {
     TaskAreaReport r;
     r.name = a.name;
     r.ugrLimit = a.ugrLimit;
     r.ra = a.ra;
+    areas.push_back(std::move(r));
+  }
+  // Each task area's grids: the reports of the grids it made (a band its room leaves empty has
+  // none), labelled.
+  for (const GridSpec& spec : c.grids) {
+    if (spec.area == GridSpec::Area::kNone) continue;
+    const auto g = std::find_if(data.grids.begin(), data.grids.end(),
+                                [&](const GridReport& r) { return r.name == spec.name; });
+    if (g == data.grids.end()) continue;
+    g->taskArea = spec.taskArea;
+    g->area = areaName(spec.area);
+    TaskAreaReport& r = *std::find_if(areas.begin(), areas.end(),
+                                      [&](const TaskAreaReport& a) { return a.name == spec.taskArea; });
+    int& slot = spec.area == GridSpec::Area::kTask          ? r.task
+                : spec.area == GridSpec::Area::kSurrounding ? r.surrounding
+                                                            : r.background;
+    slot = static_cast<int>(g - data.grids.begin());
+  }
+  for (std::size_t ai = 0; ai < c.taskAreas.size(); ++ai) {
+    const TaskAreaSpec& a = c.taskAreas[ai];
+    TaskAreaReport& r = areas[ai];
     std::vector<Verdict> verdicts;
-    for (std::size_t i = 0; i < data.grids.size(); ++i) {
-      const GridReport& g = data.grids[i];
-      if (g.taskArea != a.name) continue;
-      int& slot = g.area == "task area" ? r.task : g.area == "immediate surrounding" ? r.surrounding : r.background;
-      slot = static_cast<int>(i);
-      verdicts.push_back(g.check.overall);
-    }
+    for (int i : {r.task, r.surrounding, r.background})
+      if (i >= 0) verdicts.push_back(data.grids[static_cast<std::size_t>(i)].check.overall);
     // The observers standing in the task area, its surrounding or its background.
     const double reach = kImmediateSurroundingWidthM + kBackgroundWidthM;
     for (std::size_t k = 0; k < c.observers.size() && k < data.observers.size(); ++k) {
@@ -66,7 +75,6 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
       r.ugrVerdict = !r.ugr || *r.ugr <= *r.ugrLimit ? Verdict::kPass : Verdict::kFail;
     verdicts.push_back(r.ugrVerdict);
     r.verdict = combine(verdicts);
-    data.taskAreas.push_back(std::move(r));
   }
 }
 
