@@ -40,4 +40,41 @@ double immediateSurroundingLux(double taskLux) {
   return taskLux;
 }
 
+const char* roomSurfaceName(RoomSurface s) {
+  switch (s) {
+    case RoomSurface::kWall: return "wall";
+    case RoomSurface::kCeiling: return "ceiling";
+    case RoomSurface::kFloor: return "floor";
+    case RoomSurface::kNone: break;
+  }
+  return "surface";
+}
+
+std::optional<RoomType> parseRoomType(const std::string& key) {
+  if (key == "general") return RoomType::kGeneral;
+  if (key == "office") return RoomType::kOffice;
+  if (key == "education" || key == "school") return RoomType::kEducation;
+  if (key == "healthcare") return RoomType::kHealthcare;
+  return std::nullopt;
+}
+
+const char* roomTypeKey(RoomType t) {
+  switch (t) {
+    case RoomType::kOffice: return "office";
+    case RoomType::kEducation: return "education";
+    case RoomType::kHealthcare: return "healthcare";
+    case RoomType::kGeneral: break;
+  }
+  return "general";
+}
+
+GridTargets roomSurfaceTargets(RoomType type, RoomSurface surface) {
+  const bool demanding = type != RoomType::kGeneral;
+  GridTargets t;
+  if (surface == RoomSurface::kWall) t.averageLux = demanding ? 75.0 : 50.0;
+  if (surface == RoomSurface::kCeiling) t.averageLux = demanding ? 50.0 : 30.0;
+  if (t.averageLux) t.uniformity = kRoomSurfaceUniformity;
+  return t;
+}
+
 }  // namespace candela

@@ -51,4 +51,23 @@ double immediateSurroundingLux(double taskLux);
 // The background's: a third of the immediate surrounding's.
 inline double backgroundLux(double taskLux) { return immediateSurroundingLux(taskLux) / 3.0; }
 
+// The surfaces of a room EN 12464-1:2021 sets requirements for (walls and ceiling); floors and
+// surfaces between (tilted more than 30° from either) have none.
+enum class RoomSurface { kNone, kWall, kCeiling, kFloor };
+const char* roomSurfaceName(RoomSurface s);  // "wall", "ceiling", "floor", "surface"
+
+// `room_type` of a [[surface_grid]]: which of the standard's wall and ceiling requirements apply.
+// kGeneral: any work place, walls Ē_m ≥ 50 lx and ceiling Ē_m ≥ 30 lx; kOffice, kEducation and
+// kHealthcare (offices, schools, hospitals): walls ≥ 75 lx and ceiling ≥ 50 lx; U0 ≥ 0.10 for
+// all (EN 12464-1:2021, illumination of walls and ceilings, as summarised by esse-ci.com, "Wall
+// and ceiling illuminance", and trilux.com, "Photometric requirements according to EN 12464-1").
+enum class RoomType { kGeneral, kOffice, kEducation, kHealthcare };
+// "general", "office", "education", "healthcare" (and "school" for education); unset: unknown.
+std::optional<RoomType> parseRoomType(const std::string& key);
+const char* roomTypeKey(RoomType t);
+inline constexpr double kRoomSurfaceUniformity = 0.10;
+// The required Ē_m and U0 of a room surface of a room type; unset targets for a floor or a
+// surface that is neither wall nor ceiling.
+GridTargets roomSurfaceTargets(RoomType type, RoomSurface surface);
+
 }  // namespace candela

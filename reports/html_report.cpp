@@ -366,6 +366,23 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
   h << "</section>\n";
 }
 
+// The head of a table of areas' required against achieved Ē and U0, with `first` naming them.
+void requiredAchievedHead(std::ostringstream& h, const char* first) {
+  h << "<table>\n<thead><tr><th>" << first << "</th><th class=\"num\">Points</th><th class=\"num\">Required "
+       "Ē<sub>m</sub></th><th class=\"num\">Ē</th><th class=\"num\">Required U<sub>0</sub></th><th "
+       "class=\"num\">U<sub>0</sub></th><th>Result</th></tr></thead>\n<tbody>\n";
+}
+
+// One row of such a table: grid i, linked to its section.
+void requiredAchievedRow(std::ostringstream& h, const std::string& label, const ReportData& data, int i) {
+  const GridReport& g = data.grids[static_cast<std::size_t>(i)];
+  h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << label << "</a></td><td class=\"num\">" << g.stats.count
+    << "</td><td class=\"num\">" << (g.targets.averageLux ? valueText(*g.targets.averageLux) + " lx" : "—")
+    << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << " lx</td><td class=\"num\">"
+    << (g.targets.uniformity ? formatFixed(*g.targets.uniformity, 2) : "—") << "</td><td class=\"num\">"
+    << formatFixed(g.stats.u0, 2) << "</td><td>" << badge(g.check.overall) << "</td></tr>\n";
+}
+
 // EN 12464-1:2021 per task area: the task area, its immediate surrounding and its background,
 // required against achieved Ē and U0, the UGR at the observers standing there, Ra as required.
 void taskAreasSection(std::ostringstream& h, const ReportData& data) {
@@ -377,10 +394,8 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
        "≥ 0.40; the background a third of the surrounding's and U<sub>0</sub> ≥ 0.10. UGR is the highest "
        "at the observers standing in these areas.</p>\n";
   for (const TaskAreaReport& a : data.taskAreas) {
-    h << "<h3>" << xmlEscape(a.name) << " " << badge(a.verdict) << "</h3>\n<table>\n<thead><tr><th>Area</th>"
-         "<th class=\"num\">Points</th><th class=\"num\">Required Ē<sub>m</sub></th><th class=\"num\">Ē</th>"
-         "<th class=\"num\">Required U<sub>0</sub></th><th class=\"num\">U<sub>0</sub></th><th>Result</th></tr>"
-         "</thead>\n<tbody>\n";
+    h << "<h3>" << xmlEscape(a.name) << " " << badge(a.verdict) << "</h3>\n";
+    requiredAchievedHead(h, "Area");
     const std::pair<const char*, int> rows[] = {
         {"Task area", a.task}, {"Immediate surrounding", a.surrounding}, {"Background", a.background}};
     for (const auto& [label, i] : rows) {
@@ -389,12 +404,7 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
           << "</td></tr>\n";
         continue;
       }
-      const GridReport& g = data.grids[static_cast<std::size_t>(i)];
-      h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << label << "</a></td><td class=\"num\">" << g.stats.count
-        << "</td><td class=\"num\">" << (g.targets.averageLux ? valueText(*g.targets.averageLux) + " lx" : "—")
-        << "</td><td class=\"num\">" << valueText(g.stats.averageLux) << " lx</td><td class=\"num\">"
-        << (g.targets.uniformity ? formatFixed(*g.targets.uniformity, 2) : "—") << "</td><td class=\"num\">"
-        << formatFixed(g.stats.u0, 2) << "</td><td>" << badge(g.check.overall) << "</td></tr>\n";
+      requiredAchievedRow(h, label, data, i);
     }
     h << "<tr><td>Discomfort glare</td><td colspan=\"2\">" << a.observers.size() << " observer"
       << (a.observers.size() == 1 ? "" : "s") << "</td><td class=\"num\" colspan=\"2\">UGR<sub>L</sub> "
@@ -406,6 +416,29 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
         << " required: to be checked on the lamps' data (IES files do not state it; see the luminaire "
            "schedule for an EULUMDAT file's colour rendering)</td><td>"
         << badge(Verdict::kNotChecked) << "</td></tr>\n";
+    h << "</tbody>\n</table>\n";
+  }
+  h << "</section>\n";
+}
+
+// EN 12464-1:2021 walls and ceilings: each [[surface_grid]]'s grids, one per plane of the
+// surfaces it names, required against achieved Ē and U0.
+void surfaceGridsSection(std::ostringstream& h, const ReportData& data) {
+  if (data.surfaceGrids.empty()) return;
+  h << "<section class=\"grid\" id=\"walls-ceilings\">\n<h2>Walls and ceiling (EN 12464-1:2021)</h2>\n<p "
+       "class=\"sub\">Illuminance on the room's surfaces, a grid for each plane, sensors facing the room. The standard "
+       "asks, in any work place, for walls Ē<sub>m</sub> ≥ 50 lx and ceilings Ē<sub>m</sub> ≥ 30 lx; in offices, "
+       "education and health care for walls ≥ 75 lx and ceilings ≥ 50 lx; U<sub>0</sub> ≥ 0.10 for all.</p>\n";
+  for (const SurfaceGridReport& s : data.surfaceGrids) {
+    h << "<h3>" << xmlEscape(s.name) << " " << badge(s.verdict) << "</h3>\n";
+    if (!s.roomType.empty()) h << "<p>Requirements of the room type: " << xmlEscape(s.roomType) << ".</p>\n";
+    requiredAchievedHead(h, "Surface");
+    for (int i : s.grids) {
+      const GridReport& g = data.grids[static_cast<std::size_t>(i)];
+      std::string label = g.name.substr(std::min(g.name.size(), s.name.size() + 2));  // without "<name>: "
+      label += " (" + g.roomSurface + ")";
+      requiredAchievedRow(h, label, data, i);
+    }
     h << "</tbody>\n</table>\n";
   }
   h << "</section>\n";
@@ -462,6 +495,7 @@ void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, cons
     opt.northDeg = data.northDeg;
     opt.idPrefix = "plan" + std::to_string(i + 1);
     if (g.planIsXY) opt.markers = data.planMarkers;
+    opt.northArrow = g.planIsXY;
     const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
     h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
       << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
@@ -540,6 +574,7 @@ std::string htmlReport(const ReportData& data) {
   warningsSection(h, data.warnings);
   summarySection(h, data);
   taskAreasSection(h, data);
+  surfaceGridsSection(h, data);
   if (data.installation)
     h << luminaireScheduleHtml(*data.installation) << energyHtml(*data.installation) << surfacesHtml(*data.installation);
   // One section per grid: plan and metrics.

@@ -98,6 +98,10 @@ std::string summaryJson(const ReportData& data) {
       o["task_area"] = g.taskArea;
       o["area"] = g.area;
     }
+    if (!g.surfaceGrid.empty()) {
+      o["surface_grid"] = g.surfaceGrid;
+      o["room_surface"] = g.roomSurface;
+    }
     if (!g.quantityKey.empty()) o["quantity_key"] = g.quantityKey;
     if (g.modelling) {
       const ModellingResult& m = *g.modelling;
@@ -166,6 +170,16 @@ std::string summaryJson(const ReportData& data) {
                          {"verdict", verdictName(a.verdict)}});
   }
   j["task_areas"] = taskAreas;
+  json surfaceGrids = json::array();
+  for (const SurfaceGridReport& s : data.surfaceGrids) {
+    json grids = json::array();
+    for (int i : s.grids) grids.push_back(data.grids[static_cast<std::size_t>(i)].name);
+    surfaceGrids.push_back({{"name", s.name},
+                            {"room_type", s.roomType.empty() ? json() : json(s.roomType)},
+                            {"grids", grids},
+                            {"verdict", verdictName(s.verdict)}});
+  }
+  j["surface_grids"] = surfaceGrids;
   if (data.installation) addInstallation(j, *data.installation);
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();

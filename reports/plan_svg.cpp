@@ -460,8 +460,8 @@ void writeAxes(std::ostringstream& s, const PlanPage& p) {
   s << "</g>\n";
 }
 
-// Scale bar under the plan, bottom left, and the north arrow, top right above the plan, rotated
-// to true north.
+// Scale bar under the plan, bottom left, and the north arrow (plans, not elevations), top right
+// above the plan, rotated to true north.
 void writeScaleBarAndNorth(std::ostringstream& s, const PlanPage& p) {
   {
     const double len = niceLength(p.ext.x / 4.0);
@@ -471,7 +471,7 @@ void writeScaleBarAndNorth(std::ostringstream& s, const PlanPage& p) {
       << px(w / 2) << "\" height=\"5\" fill=\"#fff\" stroke=\"#333\" stroke-width=\"0.8\"/><text x=\""
       << px(x0 + w + 6) << "\" y=\"" << px(y0 + 5) << "\">" << formatNumber(len, 3) << " m</text></g>\n";
   }
-  {
+  if (p.opt.northArrow) {
     const double cx = p.left + p.planW - 12, cy = 15;
     s << "<g transform=\"translate(" << px(cx) << " " << px(cy) << ") rotate(" << px(p.opt.northDeg)
       << ")\"><circle r=\"12\" fill=\"#fff\" stroke=\"#666\" stroke-width=\"0.8\"/>"

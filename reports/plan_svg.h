@@ -23,6 +23,7 @@ struct PlanOptions {
   bool contours = true;
   bool cellValues = true;             // print values in cells when cells are >= 30 px, <= 200 cells
   double northDeg = 0.0;              // true north, degrees clockwise from plan +Y
+  bool northArrow = true;             // false for an elevation (a wall's grid)
   std::string idPrefix = "plan";      // makes element ids unique when several plans share a page
   bool standalone = false;            // add the SVG namespace (files); HTML5 inline SVG needs none
   // Luminaires (a square with a cross) and observers (a dot with their line of sight) drawn over

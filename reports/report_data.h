@@ -81,6 +81,8 @@ struct GridReport {
   bool planIsXY = false;             // the plan's coordinates are x, y (a horizontal grid): markers fit it
   std::string taskArea;              // the [[task_area]] that made the grid, else empty
   std::string area;                  // then "task area", "immediate surrounding" or "background"
+  std::string surfaceGrid;           // the [[surface_grid]] that made the grid, else empty
+  std::string roomSurface;           // then "wall", "ceiling", "floor" or "surface"
   std::string description;           // e.g. "horizontal, 0.80 m above floor"
   std::string quantity = "Illuminance";  // or e.g. "Cylindrical illuminance Ē_z", "Daylight factor"
   // The case's `quantity` as written ("cylindrical", ...): empty when the grid gives none.
@@ -161,6 +163,16 @@ struct TaskAreaReport {
   Verdict verdict = Verdict::kNotChecked;
 };
 
+// A [[surface_grid]] (walls and ceilings, EN 12464-1:2021): its grids (indices into
+// ReportData::grids), the room type whose requirements it is checked against (empty: the case's
+// own targets or none) and the overall verdict.
+struct SurfaceGridReport {
+  std::string name;
+  std::string roomType;
+  std::vector<int> grids;
+  Verdict verdict = Verdict::kNotChecked;
+};
+
 // One type of luminaire of the case (the luminaire schedule, docs/en12464.md): the placements
 // with the same photometric file, multiplier, maintenance factor and power. Texts as the file
 // gives them (empty when it does not); flux per luminaire with the multiplier, before the
@@ -221,6 +233,7 @@ struct ReportData {
   std::vector<ViewReport> views;
   std::vector<ObserverReport> observers;
   std::vector<TaskAreaReport> taskAreas;
+  std::vector<SurfaceGridReport> surfaceGrids;
   std::vector<PlanMarker> planMarkers;  // luminaires and observers, drawn on horizontal grids' plans
   std::optional<InstallationReport> installation;  // point-in-time runs
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)

@@ -130,6 +130,9 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
                          " hourly records; an annual study needs a full year (8760 or 8784)");
   in.site = caseSite(c, &epw.location);
   in.north = in.site.trueNorthDeg();
+  if (!c.surfaceGrids.empty())
+    throw InputError(c.surfaceGrids.front().loc, "[[surface_grid]] applies to point-in-time runs, not an annual sky "
+                                                 "(the walls' and ceiling's EN 12464-1 requirements are for electric lighting)");
   in.scene = loadAnnualScene(c, in.north);
   in.grids = prepareGrids(c, gridBounds(*in.scene));
   for (const GridSpec& g : c.grids) {

@@ -452,13 +452,14 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   out.name = path.stem().string();
   out.output.dir = (c.dir / "out").lexically_normal();
 
-  static const std::set<std::string> kTopLevel = {"case", "scene", "luminaire", "portal", "site", "sky", "grid",
-                                                  "task_area", "view", "observer", "settings", "annual", "output"};
+  static const std::set<std::string> kTopLevel = {"case",      "scene",        "luminaire", "portal",   "site",
+                                                  "sky",       "grid",         "task_area", "surface_grid",
+                                                  "view",      "observer",     "settings",  "annual",   "output"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
-                                               "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, view, observer, settings, annual or "
-                                               "output)");
+                                               "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, "
+                                               "surface_grid, view, observer, settings, annual or output)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -481,6 +482,10 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "task_area")) {
     int index = 0;
     for (const toml::node& n : *a) readTaskArea(c, *n.as_table(), index++, gridNames, out);
+  }
+  if (auto a = tableArray(c, root, "surface_grid")) {
+    int index = 0;
+    for (const toml::node& n : *a) readSurfaceGrid(c, *n.as_table(), index++, gridNames, out);
   }
   if (auto a = tableArray(c, root, "view")) {
     int index = 0;

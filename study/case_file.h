@@ -15,6 +15,7 @@
 #include "engine/camera.h"
 #include "engine/luminaire_source.h"
 #include "photometry/sky_type.h"
+#include "metrics/targets.h"
 #include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
 
@@ -113,6 +114,26 @@ struct GridSpec {
   std::string taskArea;
   enum class Area { kNone, kTask, kSurrounding, kBackground } area = Area::kNone;
   bool clipToRoom = false;
+  // Grids a [[surface_grid]] makes (study/surface_grids.h): its name, the scene surfaces this
+  // grid lies on (their identifiers) and which surface of the room they are.
+  std::string surfaceGrid;
+  std::vector<std::string> onSurfaces;
+  RoomSurface roomSurface = RoomSurface::kNone;
+};
+
+// A [[surface_grid]] (EN 12464-1:2021 walls and ceilings): a grid on every flat scene surface
+// whose identifier matches one of `patterns` (globs, * and ?), one grid for each plane they lie
+// in, sensors on the surface's side facing the room. The targets are the case's or, with a
+// `room_type`, the standard's for walls and ceilings (metrics/targets.h).
+struct SurfaceGridSpec {
+  std::string name;
+  std::vector<std::string> patterns;
+  std::optional<RoomType> roomType;
+  enum class Side { kAuto, kFront, kBack } side = Side::kAuto;
+  std::optional<double> spacingM;       // unset: EN 12464-1 automatic for each surface
+  double offsetM = 0.001;               // sensors this far off the surface, into the room
+  std::optional<double> targetAverageLux, targetUniformity;  // override the room type's
+  FileLoc loc, patternsLoc;
 };
 
 // A [[task_area]] (EN 12464-1:2021): the task area with its required maintained illuminance and
@@ -209,6 +230,9 @@ struct CaseFile {
   std::vector<ViewSpec> views;
   std::vector<ObserverSpec> observers;  // [[observer]]
   std::vector<TaskAreaSpec> taskAreas;  // [[task_area]]; their grids are in `grids`
+  // [[surface_grid]]: their grids need the scene, and are added to `grids` when it is read
+  // (withSurfaceGrids, study/surface_grids.h).
+  std::vector<SurfaceGridSpec> surfaceGrids;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

@@ -57,6 +57,20 @@ void readPlaneArea(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
   }
 }
 
+// 'spacing': a number (m, > 0) or "auto" (unset: EN 12464-1's automatic spacing).
+std::optional<double> readSpacing(Table& tab) {
+  const Context& c = tab.ctx();
+  const toml::node* sn = tab.get("spacing");
+  if (!sn) return std::nullopt;
+  if (sn->is_string()) {
+    if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
+    return std::nullopt;
+  }
+  const double m = asNumber(c, *sn, "spacing");
+  checkMin(tab, "spacing", m, 0.0, true, " m");
+  return m;
+}
+
 // Where a plane grid lies: at a 'height' (horizontal) or by 'origin' and 'axes'.
 void readPlanePlacement(Table& tab, const FileLoc& gridLoc, PlaneGridSpec& p) {
   const Context& c = tab.ctx();
@@ -85,14 +99,7 @@ void readPlaneGrid(Table& tab, GridSpec& g) {
   PlaneGridSpec& p = g.plane;
   readPlaneArea(tab, g.loc, p);
   readPlanePlacement(tab, g.loc, p);
-  if (const toml::node* sn = tab.get("spacing")) {
-    if (sn->is_string()) {
-      if (sn->as_string()->get() != "auto") c.fail(*sn, "'spacing' must be a number (m) or \"auto\"");
-    } else {
-      p.spacingM = asNumber(c, *sn, "spacing");
-      checkMin(tab, "spacing", *p.spacingM, 0.0, true, " m");
-    }
-  }
+  p.spacingM = readSpacing(tab);
   p.borderM = numberOr(tab, "border", 0.0);
   checkMin(tab, "border", p.borderM, 0.0, false, " m");
   if (const toml::node* nn = tab.get("normal")) p.normal = asDirection(c, *nn, "normal");
@@ -272,6 +279,49 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
     out.grids.push_back(std::move(*g));
   }
   out.taskAreas.push_back(std::move(a));
+}
+
+void readSurfaceGrid(const Context& c, const toml::table& t, int index, std::set<std::string>& names,
+                     CaseFile& out) {
+  Table tab(t, c, "[[surface_grid]]");
+  SurfaceGridSpec s;
+  s.loc = tab.loc();
+  s.name = "surfaces " + std::to_string(index + 1);
+  if (auto n = tab.get("name")) {
+    s.name = asString(c, *n, "name");
+    if (s.name.empty()) c.fail(*n, "'name' must not be empty");
+  }
+  if (!names.insert(s.name).second) throw InputError(s.loc, "two grids are named '" + s.name + "'");
+  const toml::node& pn = tab.require("surfaces");
+  s.patternsLoc = c.at(pn);
+  const toml::array& patterns = asArray(c, pn, "surfaces", 0, "an array of surface identifiers or patterns");
+  if (patterns.empty()) c.fail(pn, "'surfaces' must name at least one surface (an identifier or a pattern such as \"wall_*\")");
+  for (const toml::node& n : patterns) {
+    s.patterns.push_back(asString(c, n, "surfaces"));
+    if (s.patterns.back().empty()) c.fail(n, "'surfaces' holds an empty identifier");
+  }
+  if (const toml::node* n = tab.get("room_type")) {
+    const std::string key = asString(c, *n, "room_type");
+    s.roomType = parseRoomType(key);
+    if (!s.roomType)
+      c.fail(*n, "unknown room_type '" + key + "' (expected general, office, education, school or healthcare)");
+  }
+  if (const toml::node* n = tab.get("side")) {
+    const std::string side = asString(c, *n, "side");
+    if (side == "auto") s.side = SurfaceGridSpec::Side::kAuto;
+    else if (side == "front") s.side = SurfaceGridSpec::Side::kFront;
+    else if (side == "back") s.side = SurfaceGridSpec::Side::kBack;
+    else c.fail(*n, "unknown side '" + side + "' (expected auto, front or back)");
+  }
+  s.spacingM = readSpacing(tab);
+  s.offsetM = numberOr(tab, "offset", s.offsetM);
+  checkRange(tab, "offset", s.offsetM, 0.0, 0.1, " m");
+  s.targetAverageLux = optNumber(tab, "target_average");
+  if (s.targetAverageLux) checkMin(tab, "target_average", *s.targetAverageLux, 0.0, false, " lx");
+  s.targetUniformity = optNumber(tab, "target_uniformity");
+  if (s.targetUniformity) checkRange(tab, "target_uniformity", *s.targetUniformity, 0.0, 1.0, "");
+  tab.finish();
+  out.surfaceGrids.push_back(std::move(s));
 }
 
 }  // namespace candela

@@ -18,4 +18,8 @@ void readGrid(const case_toml::Context& c, const toml::table& t, int index, std:
 void readTaskArea(const case_toml::Context& c, const toml::table& t, int index, std::set<std::string>& names,
                   CaseFile& out);
 
+// Appends the [[surface_grid]] `t` to out.surfaceGrids (its grids are made with the scene).
+void readSurfaceGrid(const case_toml::Context& c, const toml::table& t, int index, std::set<std::string>& names,
+                     CaseFile& out);
+
 }  // namespace candela

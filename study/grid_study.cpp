@@ -17,6 +17,7 @@
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
+#include "study/surface_grids.h"
 #include "study/task_area_report.h"
 #include "study/view_glare.h"
 #include "study/view_study.h"
@@ -244,16 +245,19 @@ class GridCsvFiles {
 // From this many luminaires on, placing them costs seconds, so their memory is checked first.
 constexpr std::size_t kLuminairesCheckedFirst = 10000;
 
-RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer) {
+RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObserver& observer) {
   // 1. Everything that can be wrong with the input is found here, before any tracing. Large
   // luminaire arrays are checked before they are placed (placing 10⁶ takes about a minute); the
   // whole case's estimate follows once the scene is loaded.
-  if (c.luminaires.size() >= kLuminairesCheckedFirst) {
+  if (asRead.luminaires.size() >= kLuminairesCheckedFirst) {
     ResourceEstimate luminaires;
-    addLuminaires(luminaires, c);
-    checkResources(luminaires, run.request.limits, FileLoc{c.path.string(), 0, 0});
+    addLuminaires(luminaires, asRead);
+    checkResources(luminaires, run.request.limits, FileLoc{asRead.path.string(), 0, 0});
   }
-  const std::unique_ptr<Scene> scene = loadCaseScene(c);
+  const std::unique_ptr<Scene> scene = loadCaseScene(asRead);
+  // The walls' and ceilings' grids lie on the scene's surfaces: from here on they are grids of
+  // the case like any other.
+  const CaseFile c = withSurfaceGrids(asRead, *scene);
   // Daylight factor grids need the CIE overcast sky: DF = 100 E / E_h,outside (percent). The
   // case's, or the scene's own from `gensky -c` (skybright.cal's sky type 2).
   const auto* sceneSky = scene->sky && scene->sky->fromScene ? dynamic_cast<const RadianceSky*>(scene->sky->model.get())
@@ -394,6 +398,7 @@ RunResult runGridStudy(const CaseFile& c, const RunContext& run, StudyObserver& 
     data.observers.push_back(std::move(r));
   }
   addTaskAreaReports(c, data);
+  addSurfaceGridReports(c, data);
   // The plans show where the luminaires and observers are (up to 2000 luminaires: more symbols
   // than that make no readable plan, and a 10⁶-fitting array would hold them all again).
   constexpr std::size_t kMaxLuminaireMarkers = 2000;

@@ -43,6 +43,18 @@ std::string gridDescription(const PreparedGrid& g) {
   const GridSpec& s = *g.spec;
   if (s.kind == GridKind::kPoints) return "sensor points from " + s.pointsFile.filename().string() + facingText(s);
   const PlaneGridSpec& p = s.plane;
+  if (!s.surfaceGrid.empty()) {
+    std::string d = "on the " + std::string(roomSurfaceName(s.roomSurface)) + " surface";
+    d += s.onSurfaces.size() == 1 ? " " : "s ";
+    for (std::size_t k = 0; k < s.onSurfaces.size() && k < 8; ++k) d += (k ? ", " : "") + s.onSurfaces[k];
+    if (s.onSurfaces.size() > 8) d += " and " + std::to_string(s.onSurfaces.size() - 8) + " more";
+    d += ", sensors facing " + vecText(*p.normal) + ", spacing " + fixed(g.grid.spacingM.x, 2) + " × " +
+         fixed(g.grid.spacingM.y, 2) + " m";
+    if (!p.holes.empty())
+      d += "; where " + std::to_string(p.holes.size()) + " other surface" + (p.holes.size() == 1 ? " lies" : "s lie") +
+           " on it (furniture's back, glazing), no points";
+    return d;
+  }
   std::string d = isHorizontalUp(p) ? "horizontal, " + fixed(p.origin.z, 2) + " m above floor level"
                                     : "plane through " + vecText(p.origin) + " m, sensors facing " +
                                           vecText(g.grid.points.front().normal);
@@ -87,7 +99,7 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
       if (!(o[1].x > o[0].x && o[1].y > o[0].y)) continue;
     }
     const GridSpec& made = spec.clipToRoom ? clipped : spec;
-    checkGridInside(made, bounds);
+    if (spec.surfaceGrid.empty()) checkGridInside(made, bounds);  // a surface's grid lies on the scene
     PreparedGrid g;
     g.spec = &spec;
     g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(made.plane, spec.loc) : readPointsFile(spec.pointsFile);

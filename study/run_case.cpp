@@ -149,7 +149,8 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   run.startedAt = localTimeNow();
   CaseFile c = readCaseFile(caseFile);
   c.settings.scene = sceneReadOptions(&c.settings, request.trace);
-  if (c.grids.empty()) throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
+  if (c.grids.empty() && c.surfaceGrids.empty())
+    throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   checkOnRankZero(request.processes(), [&] { checkResultFolder(run.outDir); });
   if (c.sky.type.kind == SkyKind::kAnnual) return runAnnualStudy(c, run, observer);

@@ -138,6 +138,13 @@ SensorGrid planeGrid(const PlaneGridSpec& spec, const FileLoc& loc, bool store, 
         if (!insidePolygon(polygon, uv)) continue;
         if (spec.borderM > 0.0 && distanceToOutline(polygon, uv) < spec.borderM) continue;
       }
+      if (!spec.pieces.empty() &&
+          std::none_of(spec.pieces.begin(), spec.pieces.end(),
+                       [&](const std::vector<Vec2>& piece) { return insidePolygon(piece, uv); }))
+        continue;
+      if (std::any_of(spec.holes.begin(), spec.holes.end(),
+                      [&](const std::vector<Vec2>& hole) { return insidePolygon(hole, uv); }))
+        continue;
       if (!spec.band.inner.empty()) {
         if (insidePolygon(spec.band.inner, uv)) continue;
         const double d = distanceToOutline(spec.band.inner, uv);
@@ -150,8 +157,9 @@ SensorGrid planeGrid(const PlaneGridSpec& spec, const FileLoc& loc, bool store, 
       g.cell.emplace_back(i, j);
     }
   }
-  // A band may be empty (a task area that fills its room has no background).
-  if (count == 0 && spec.band.inner.empty())
+  // A band may be empty (a task area that fills its room has no background), and so may a
+  // surface's pieces (slivers narrower than the spacing): their callers decide.
+  if (count == 0 && spec.band.inner.empty() && spec.pieces.empty() && spec.holes.empty())
     throw InputError(loc, "no grid point falls inside the outline; reduce the spacing or border");
   return g;
 }

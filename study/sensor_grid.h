@@ -39,6 +39,13 @@ struct PlaneGridSpec {
     std::vector<Vec2> inner;
     double fromM = 0.0, toM = 0.0;
   } band;
+  // An area made of several polygons (a wall in pieces around its windows, a mesh's triangles):
+  // only the points inside one of them are kept; the outline then bounds the lattice. Empty:
+  // the outline is the area.
+  std::vector<std::vector<Vec2>> pieces;
+  // Parts of the area that are not there to be lit: points inside one of these polygons are left
+  // out (a cabinet's back or a pane lying on a wall).
+  std::vector<std::vector<Vec2>> holes;
 };
 
 // The plane's coordinates (u, v) are the world's (x, y): the default axes (a horizontal plane, or

@@ -78,4 +78,25 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
   }
 }
 
+void addSurfaceGridReports(const CaseFile& c, ReportData& data) {
+  for (const SurfaceGridSpec& s : c.surfaceGrids) {
+    SurfaceGridReport r;
+    r.name = s.name;
+    if (s.roomType) r.roomType = roomTypeKey(*s.roomType);
+    std::vector<Verdict> verdicts;
+    for (const GridSpec& spec : c.grids) {
+      if (spec.surfaceGrid != s.name) continue;
+      const auto g = std::find_if(data.grids.begin(), data.grids.end(),
+                                  [&](const GridReport& gr) { return gr.name == spec.name; });
+      if (g == data.grids.end()) continue;
+      g->surfaceGrid = s.name;
+      g->roomSurface = roomSurfaceName(spec.roomSurface);
+      r.grids.push_back(static_cast<int>(g - data.grids.begin()));
+      verdicts.push_back(g->check.overall);
+    }
+    r.verdict = combine(verdicts);
+    data.surfaceGrids.push_back(std::move(r));
+  }
+}
+
 }  // namespace candela

@@ -67,6 +67,10 @@ candela_run_test(quantity_needs_facing 2 "quantity_missing_facing.toml:8: quanti
 # grids with their own CSVs, and the task area's verdict in summary.json.
 candela_run_test(task_area 0 "\"surrounding_grid\": \"desk surrounding\"" task_area/case.toml --quality draft)
 candela_run_test(task_area_bad 2 "no_corners.toml:1: a task area needs 'corners'" task_area/no_corners.toml)
+# Walls and ceilings (docs/en12464.md): [[surface_grid]] grids in summary.json; a pattern that names
+# no surface at the line of 'surfaces'.
+candela_run_test(surface_grid 0 "\"room_surface\": \"wall\"" surface_grid/case.toml)
+candela_run_test(surface_grid_typo 2 "typo.toml:5: no surface of the scene is named 'cieling'" surface_grid/typo.toml)
 # Energy and the luminaire schedule (docs/en12464.md): summary.json's energy and luminaires, a
 # bad power_w at its line, and a luminaire of unknown power warned of at its entry.
 candela_run_test(energy_summary 0 "\"power_density_w_m2_per_100lx\"" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml

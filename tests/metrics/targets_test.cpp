@@ -51,3 +51,26 @@ TEST(Targets, ImmediateSurroundingAndBackgroundFromTheTaskArea) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// EN 12464-1:2021 walls and ceilings: 50 / 30 lx in any work place, 75 / 50 lx in offices,
+// education and health care, U0 ≥ 0.10; nothing for floors or surfaces between.
+TEST(Targets, RoomSurfacesOfEachRoomType) {
+  EXPECT_EQ(roomSurfaceTargets(RoomType::kGeneral, RoomSurface::kWall).averageLux, 50.0);
+  EXPECT_EQ(roomSurfaceTargets(RoomType::kGeneral, RoomSurface::kCeiling).averageLux, 30.0);
+  for (RoomType t : {RoomType::kOffice, RoomType::kEducation, RoomType::kHealthcare}) {
+    EXPECT_EQ(roomSurfaceTargets(t, RoomSurface::kWall).averageLux, 75.0);
+    EXPECT_EQ(roomSurfaceTargets(t, RoomSurface::kCeiling).averageLux, 50.0);
+    EXPECT_EQ(roomSurfaceTargets(t, RoomSurface::kWall).uniformity, 0.10);
+    EXPECT_FALSE(roomSurfaceTargets(t, RoomSurface::kFloor).averageLux.has_value());
+    EXPECT_FALSE(roomSurfaceTargets(t, RoomSurface::kNone).uniformity.has_value());
+    EXPECT_EQ(parseRoomType(roomTypeKey(t)), t);
+  }
+  EXPECT_EQ(parseRoomType("school"), RoomType::kEducation);
+  EXPECT_FALSE(parseRoomType("Office").has_value());
+}
+
+}  // namespace
+}  // namespace candela

@@ -393,6 +393,57 @@ TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
             std::string::npos);
 }
 
+// A [[surface_grid]] is read as written; its grids are made with the scene (study/surface_grids.h).
+TEST(CaseFile, ReadsSurfaceGrids) {
+  const fs::path path = casesDir() / "errors" / "surface_grid.toml";
+  const CaseFile c = parseCaseFile(
+      "[[surface_grid]]\nname = \"walls\"\nsurfaces = [\"wall_*\", \"door\"]\nroom_type = \"school\"\n"
+      "side = \"back\"\nspacing = 0.4\noffset = 0.002\ntarget_uniformity = 0.2\n"
+      "[[surface_grid]]\nsurfaces = [\"ceiling\"]\nspacing = \"auto\"\n",
+      path);
+  ASSERT_EQ(c.surfaceGrids.size(), 2u);
+  EXPECT_TRUE(c.grids.empty());
+  const SurfaceGridSpec& s = c.surfaceGrids[0];
+  EXPECT_EQ(s.patterns, (std::vector<std::string>{"wall_*", "door"}));
+  EXPECT_EQ(s.roomType, RoomType::kEducation);
+  EXPECT_EQ(s.side, SurfaceGridSpec::Side::kBack);
+  EXPECT_EQ(s.spacingM, 0.4);
+  EXPECT_EQ(s.offsetM, 0.002);
+  EXPECT_EQ(s.targetUniformity, 0.2);
+  EXPECT_FALSE(s.targetAverageLux.has_value());
+  EXPECT_EQ(s.patternsLoc.line, 3);
+  const SurfaceGridSpec& d = c.surfaceGrids[1];
+  EXPECT_EQ(d.name, "surfaces 2");
+  EXPECT_FALSE(d.spacingM.has_value());
+  EXPECT_FALSE(d.roomType.has_value());
+  EXPECT_EQ(d.side, SurfaceGridSpec::Side::kAuto);
+  EXPECT_EQ(d.offsetM, 0.001);
+  auto error = [&](const std::string& text) {
+    try {
+      parseCaseFile(text, path);
+    } catch (const InputError& e) {
+      return std::to_string(e.loc().line) + ": " + e.what();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(error("[[surface_grid]]\nname = \"w\"\n").find("needs the key 'surfaces'"), std::string::npos);
+  EXPECT_EQ(error("[[surface_grid]]\nsurfaces = []\n").rfind("2: ", 0), 0u);
+  EXPECT_EQ(error("[[surface_grid]]\nsurfaces = [\"\"]\n").rfind("2: ", 0), 0u);
+  EXPECT_EQ(error("[[surface_grid]]\nsurfaces = \"wall_*\"\n").rfind("2: ", 0), 0u);
+  EXPECT_NE(error("[[surface_grid]]\nsurfaces = [\"w\"]\nroom_type = \"kitchen\"\n").find("3: unknown room_type"),
+            std::string::npos);
+  EXPECT_NE(error("[[surface_grid]]\nsurfaces = [\"w\"]\nside = \"inside\"\n").find("3: unknown side"),
+            std::string::npos);
+  EXPECT_EQ(error("[[surface_grid]]\nsurfaces = [\"w\"]\noffset = 0.5\n").rfind("3: ", 0), 0u);
+  EXPECT_EQ(error("[[surface_grid]]\nsurfaces = [\"w\"]\nspacing = 0\n").rfind("3: ", 0), 0u);
+  EXPECT_NE(error("[[surface_grid]]\nsurfaces = [\"w\"]\nheight = 1\n").find("3: unknown key 'height'"),
+            std::string::npos);
+  EXPECT_NE(error("[[grid]]\nname = \"w\"\ncorners = [[0, 0], [1, 1]]\nheight = 0.8\n"
+                  "[[surface_grid]]\nname = \"w\"\nsurfaces = [\"w\"]\n")
+                .find("two grids are named 'w'"),
+            std::string::npos);
+}
+
 // Energy (docs/case-format.md): a luminaire's `power_w` applies to every fitting of its array,
 // `[case] floor_area` and `reference_grid` are read as written; a task area's grid may be the
 // reference.

@@ -1,6 +1,8 @@
 // A task area's verdict from its three grids' and its observers' (study/task_area_report.h).
 #include "study/task_area_report.h"
 
+#include "reports/html_report.h"
+
 #include <gtest/gtest.h>
 
 namespace candela {
@@ -67,6 +69,58 @@ TEST(TaskAreaReport, AnyFailingLineFailsTheTaskArea) {
   addTaskAreaReports(h.c, h.data);
   EXPECT_EQ(h.data.taskAreas[0].ugrVerdict, Verdict::kNotChecked);
   EXPECT_EQ(h.data.taskAreas[0].verdict, Verdict::kPass);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// A [[surface_grid]]'s grids (as withSurfaceGrids makes them) labelled in the report, its verdict
+// failing with any wall, and the report's table of them.
+TEST(SurfaceGridReport, GridsLabelledAndVerdict) {
+  CaseFile c;
+  SurfaceGridSpec s;
+  s.name = "walls";
+  s.roomType = RoomType::kOffice;
+  c.surfaceGrids.push_back(s);
+  ReportData data;
+  for (const char* name : {"workplane", "walls: wall_north", "walls: wall_east"}) {
+    GridSpec g;
+    g.name = name;
+    if (g.name != "workplane") {
+      g.surfaceGrid = "walls";
+      g.roomSurface = RoomSurface::kWall;
+    }
+    c.grids.push_back(g);
+    GridReport r;
+    r.name = name;
+    r.values = {80.0, 120.0};
+    r.stats = computeGridStats(r.values);
+    r.targets = {75.0, 0.10};
+    r.check = checkTargets(r.stats, r.targets);
+    data.grids.push_back(r);
+  }
+  addSurfaceGridReports(c, data);
+  ASSERT_EQ(data.surfaceGrids.size(), 1u);
+  const SurfaceGridReport& r = data.surfaceGrids[0];
+  EXPECT_EQ(r.grids, (std::vector<int>{1, 2}));
+  EXPECT_EQ(r.roomType, "office");
+  EXPECT_EQ(r.verdict, Verdict::kPass);
+  EXPECT_EQ(data.grids[2].roomSurface, "wall");
+  EXPECT_TRUE(data.grids[0].surfaceGrid.empty());
+  const std::string html = htmlReport(data);
+  EXPECT_NE(html.find("Walls and ceiling (EN 12464-1:2021)"), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"#grid-3\">wall_east (wall)</a>"), std::string::npos);
+
+  // A wall below 75 lx fails the entry.
+  data.surfaceGrids.clear();
+  data.grids[1].values = {40.0, 60.0};
+  data.grids[1].stats = computeGridStats(data.grids[1].values);
+  data.grids[1].check = checkTargets(data.grids[1].stats, data.grids[1].targets);
+  addSurfaceGridReports(c, data);
+  EXPECT_EQ(data.surfaceGrids[0].verdict, Verdict::kFail);
 }
 
 }  // namespace
