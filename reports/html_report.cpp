@@ -411,11 +411,20 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
       << (a.ugrLimit ? formatFixed(*a.ugrLimit, 0) : "—") << "</td><td class=\"num\">UGR "
       << (a.ugr ? formatFixed(*a.ugr, 1) : a.observers.empty() ? "no observer" : "no luminaire in view") << "</td><td>"
       << badge(a.ugrVerdict) << "</td></tr>\n";
-    if (a.ra)
-      h << "<tr><td>Colour rendering</td><td colspan=\"5\">R<sub>a</sub> ≥ " << formatFixed(*a.ra, 0)
-        << " required: to be checked on the lamps' data (IES files do not state it; see the luminaire "
-           "schedule for an EULUMDAT file's colour rendering)</td><td>"
-        << badge(Verdict::kNotChecked) << "</td></tr>\n";
+    if (a.ra) {
+      h << "<tr><td>Colour rendering</td><td colspan=\"5\">R<sub>a</sub> ≥ " << formatFixed(*a.ra, 0) << " required; ";
+      if (a.leastRa) {
+        h << "the luminaires' lamps: R<sub>a</sub> ≥ " << formatFixed(*a.leastRa, 0) << " (their files' colour rendering)";
+      } else if (!a.raUnknown.empty()) {
+        std::string files;
+        for (const std::string& f : a.raUnknown) files += (files.empty() ? "" : ", ") + f;
+        h << "to be checked on the lamps' data: " << xmlEscape(files) << " state" << (a.raUnknown.size() == 1 ? "s" : "")
+          << " no colour rendering (IES files do not)";
+      } else {
+        h << "no luminaire in the case";
+      }
+      h << "</td><td>" << badge(a.raVerdict) << "</td></tr>\n";
+    }
     h << "</tbody>\n</table>\n";
   }
   h << "</section>\n";

@@ -30,6 +30,8 @@ void addInstallation(nlohmann::json& j, const InstallationReport& in) {
                           {"luminaire", t.luminaire},
                           {"catalogue_number", t.catalogueNumber},
                           {"lamp", t.lamp},
+                          {"colour_rendering", t.colourRendering},
+                          {"ra_least", optionalNumber(t.leastRa)},
                           {"count", t.count},
                           {"flux_lm", number(t.fluxLm)},
                           {"lamp_flux_lm", optionalNumber(t.lampFluxLm)},
@@ -167,6 +169,9 @@ std::string summaryJson(const ReportData& data) {
                          {"ugr_observers", a.observers},
                          {"verdict_ugr", verdictName(a.ugrVerdict)},
                          {"ra_required", optionalNumber(a.ra)},
+                         {"ra_least", optionalNumber(a.leastRa)},
+                         {"ra_unknown", a.raUnknown},
+                         {"verdict_ra", verdictName(a.raVerdict)},
                          {"verdict", verdictName(a.verdict)}});
   }
   j["task_areas"] = taskAreas;

@@ -158,7 +158,13 @@ struct TaskAreaReport {
   int task = -1, surrounding = -1, background = -1;
   std::optional<double> ugrLimit, ugr;
   std::vector<std::string> observers;  // those standing in the task area or its bands
-  std::optional<double> ra;            // required Ra, stated (the luminaire files do not give it)
+  std::optional<double> ra;            // required Ra
+  // The least Ra of the luminaires over the task area and its bands (else of all the case's) where
+  // every one's file states it (EULUMDAT's colour rendering); the files that do not (IES); the
+  // verdict: checked only when every one states it (study/task_area_report.cpp).
+  std::optional<double> leastRa;
+  std::vector<std::string> raUnknown;
+  Verdict raVerdict = Verdict::kNotChecked;
   Verdict ugrVerdict = Verdict::kNotChecked;
   Verdict verdict = Verdict::kNotChecked;
 };
@@ -181,6 +187,8 @@ struct LuminaireTypeReport {
   std::string file;                       // the photometric file, as the case names it
   std::vector<std::string> entries;       // the [[luminaire]] entries' names, in case order
   std::string manufacturer, luminaire, catalogueNumber, lamp;
+  std::string colourRendering;            // EULUMDAT lamp set 1's field as written; empty for IES
+  std::optional<double> leastRa;          // the least Ra it promises (study/luminaire_schedule.h)
   std::size_t count = 0;                  // luminaires placed (every fitting of an array)
   double fluxLm = 0.0;                    // luminaire flux, lm
   std::optional<double> lampFluxLm;       // rated lamp flux, lm; unset for absolute photometry

@@ -6,6 +6,7 @@
 #include "photometry/luminaire_summary.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -69,6 +70,43 @@ std::string entryFile(const CaseFile& c, const LuminairePlacement& p) {
   return i < c.luminaireEntries.size() ? c.luminaireEntries[i].fileText : p.file.filename().string();
 }
 
+}  // namespace
+
+std::optional<double> leastColourRendering(const std::string& field) {
+  // A number of two or three digits, 0…100, that is not part of a group code ("1B" has one digit).
+  for (std::size_t i = 0; i < field.size();) {
+    if (!std::isdigit(static_cast<unsigned char>(field[i]))) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < field.size() && std::isdigit(static_cast<unsigned char>(field[j]))) ++j;
+    const bool groupCode = j - i == 1;
+    if (!groupCode && j - i <= 3) {
+      const double v = std::stod(field.substr(i, j - i));
+      if (v <= 100.0) return v;
+    }
+    i = j;
+  }
+  // CIE colour rendering groups: a digit 1–4 with A or B for 1 and 2.
+  static constexpr struct {
+    const char* code;
+    double leastRa;
+  } kGroups[] = {{"1A", 90}, {"1B", 80}, {"2A", 70}, {"2B", 60}};
+  std::string upper = field;
+  for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  for (const auto& g : kGroups)
+    if (upper.find(g.code) != std::string::npos) return g.leastRa;
+  const std::size_t b = upper.find_first_not_of(' '), e = upper.find_last_not_of(' ');
+  if (b != std::string::npos && b == e) {
+    if (upper[b] == '3') return 40.0;
+    if (upper[b] == '4') return 20.0;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
 LuminaireTypeReport typeReport(const CaseFile& c, const LuminairePlacement& p, const PhotometricWeb& web) {
   const LuminaireSummary s = summarizeLuminaire(web);
   LuminaireTypeReport t;
@@ -77,6 +115,10 @@ LuminaireTypeReport typeReport(const CaseFile& c, const LuminairePlacement& p, c
   t.luminaire = keyword(web.info(), "LUMINAIRE");
   t.catalogueNumber = keyword(web.info(), "LUMCAT");
   t.lamp = lampText(web);
+  if (!web.info().lampSets.empty()) {
+    t.colourRendering = web.info().lampSets.front().colourRendering;
+    t.leastRa = leastColourRendering(t.colourRendering);
+  }
   t.multiplier = p.multiplier;
   t.maintenanceFactor = p.maintenanceFactor;
   t.fluxLm = s.totalLumens * p.multiplier;

@@ -9,6 +9,7 @@
 #include "study/case_file.h"
 #include "study/prepared_grid.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,12 @@ namespace candela {
 // maintenance factor and `power_w` make one type; types in the order of their first placement.
 // `scene` is the case's (loadCaseScene): its luminaires[i] is placement i, with the file's web.
 std::vector<LuminaireTypeReport> luminaireSchedule(const CaseFile& c, const Scene& scene);
+
+// The least Ra an EULUMDAT colour rendering field promises: its number where it gives one
+// ("80", "Ra 80", "1B/86": 80, 86), else the least of its CIE colour rendering group (1A: 90,
+// 1B: 80, 2A: 70, 2B: 60, 3: 40, 4: 20; CIE 29.2 as EN 12464-1:2002 tabulated them); unset when
+// it says neither (empty, free text).
+std::optional<double> leastColourRendering(const std::string& field);
 
 // The materials the scene's surfaces use, in the scene's order of the materials, with their
 // photopic reflectance (diffuse + specular, at normal incidence) and, for trans and glass, their

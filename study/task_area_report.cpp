@@ -29,6 +29,40 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
   return out;
 }
 
+// The task area's required Ra against the least Ra of the luminaires over it: those placed (in
+// plan) in the task area, its surrounding or its background, else every luminaire of the case.
+// Checked when every such luminaire's file states its colour rendering (EULUMDAT), else not
+// (those files named).
+void checkColourRendering(const CaseFile& c, const TaskAreaSpec& area, const ReportData& data, TaskAreaReport& r) {
+  if (!data.installation || data.installation->luminaires.empty()) return;
+  const std::vector<LuminaireTypeReport>& types = data.installation->luminaires;
+  const double reach = kImmediateSurroundingWidthM + kBackgroundWidthM;
+  std::vector<bool> over(types.size(), false);
+  for (const LuminairePlacement& p : c.luminaires) {
+    const Vec2 plan(p.positionM.x, p.positionM.y);
+    if (!insidePolygon(area.outline, plan) && distanceToOutline(area.outline, plan) > reach) continue;
+    const std::size_t e = static_cast<std::size_t>(p.entry);
+    const std::string& entry = e < c.luminaireEntries.size() ? c.luminaireEntries[e].name : p.name;
+    for (std::size_t t = 0; t < types.size(); ++t)
+      if (std::find(types[t].entries.begin(), types[t].entries.end(), entry) != types[t].entries.end()) over[t] = true;
+  }
+  if (std::none_of(over.begin(), over.end(), [](bool b) { return b; })) over.assign(types.size(), true);
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (!over[i]) continue;
+    const LuminaireTypeReport& t = types[i];
+    if (!t.leastRa) {
+      if (std::find(r.raUnknown.begin(), r.raUnknown.end(), t.file) == r.raUnknown.end()) r.raUnknown.push_back(t.file);
+      continue;
+    }
+    r.leastRa = std::min(r.leastRa.value_or(*t.leastRa), *t.leastRa);
+  }
+  if (!r.raUnknown.empty()) {
+    r.leastRa.reset();
+    return;
+  }
+  r.raVerdict = *r.leastRa >= *r.ra ? Verdict::kPass : Verdict::kFail;
+}
+
 }  // namespace
 
 void addTaskAreaReports(const CaseFile& c, ReportData& data) {
@@ -74,6 +108,8 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
     if (r.ugrLimit && !r.observers.empty())
       r.ugrVerdict = !r.ugr || *r.ugr <= *r.ugrLimit ? Verdict::kPass : Verdict::kFail;
     verdicts.push_back(r.ugrVerdict);
+    if (r.ra) checkColourRendering(c, a, data, r);
+    verdicts.push_back(r.raVerdict);
     r.verdict = combine(verdicts);
   }
 }

@@ -216,6 +216,13 @@ TEST_F(ScheduleCase, FluxPowerAndLorAreTheFilesOwn) {
   EXPECT_EQ(l[2]["manufacturer"], "Osram GmbH");
   EXPECT_EQ(l[2]["luminaire"], "T16 G5 54W Fluorescent");
   EXPECT_EQ(l[2]["catalogue_number"], "FL-T16-54W");
+  // Its colour rendering as lamp set 1 states it, and the least Ra that promises; IES: none.
+  const std::string cr = readPhotometricFile(kFluorescent).info().lampSets.at(0).colourRendering;
+  EXPECT_EQ(l[2]["colour_rendering"], cr);
+  const std::optional<double> ra = leastColourRendering(cr);
+  if (ra) EXPECT_EQ(l[2]["ra_least"], *ra);
+  else EXPECT_TRUE(l[2]["ra_least"].is_null());
+  EXPECT_TRUE(l[0]["ra_least"].is_null());
 
   // Absolute photometry: no lamp flux and no LOR; the multiplier scales the flux, not the power.
   EXPECT_TRUE(l[3]["lamp_flux_lm"].is_null());
@@ -289,6 +296,27 @@ TEST_F(ScheduleCase, ReportShowsTheScheduleEnergyAndSurfacesInWords) {
     ++plots;
   EXPECT_EQ(plots, 4u);
   EXPECT_NE(html.find(">A, B</text>"), std::string::npos);
+}
+
+// EULUMDAT colour rendering fields as manufacturers write them (the shared reference's files:
+// "1B/80", "70", "25", "1B", "1A", "1A/90", "1B/86"), CIE 29.2's groups' least Ra otherwise.
+TEST(ColourRendering, NumberElseGroupElseNothing) {
+  EXPECT_EQ(leastColourRendering("1B/80"), 80.0);
+  EXPECT_EQ(leastColourRendering("1B/86"), 86.0);
+  EXPECT_EQ(leastColourRendering("1A/90"), 90.0);
+  EXPECT_EQ(leastColourRendering("70"), 70.0);
+  EXPECT_EQ(leastColourRendering("25"), 25.0);
+  EXPECT_EQ(leastColourRendering("Ra>80"), 80.0);
+  EXPECT_EQ(leastColourRendering("1A"), 90.0);
+  EXPECT_EQ(leastColourRendering("1b"), 80.0);
+  EXPECT_EQ(leastColourRendering("2A"), 70.0);
+  EXPECT_EQ(leastColourRendering("2B"), 60.0);
+  EXPECT_EQ(leastColourRendering(" 3 "), 40.0);
+  EXPECT_EQ(leastColourRendering("4"), 20.0);
+  EXPECT_FALSE(leastColourRendering("").has_value());
+  EXPECT_FALSE(leastColourRendering("n/a").has_value());
+  EXPECT_FALSE(leastColourRendering("5").has_value());
+  EXPECT_FALSE(leastColourRendering("1000").has_value());
 }
 
 TEST(Energy, FloorAreaAndReferenceGridFromTheCase) {

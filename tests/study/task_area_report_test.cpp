@@ -77,6 +77,59 @@ TEST(TaskAreaReport, AnyFailingLineFailsTheTaskArea) {
 namespace candela {
 namespace {
 
+// The required Ra against the least Ra of the luminaires over the task area (else the case's):
+// checked when every one's file states it.
+TEST(TaskAreaReport, ColourRenderingFromTheLuminaireFiles) {
+  auto run = [](std::vector<std::optional<double>> leastRa) {
+    Fixture f;
+    f.c.taskAreas[0].ra = 80.0;
+    InstallationReport& in = f.data.installation.emplace();
+    int k = 0;
+    for (const std::optional<double>& ra : leastRa) {
+      LuminaireTypeReport t;
+      t.file = "lum" + std::to_string(k++) + (ra ? ".ldt" : ".ies");
+      t.leastRa = ra;
+      in.luminaires.push_back(t);
+    }
+    addTaskAreaReports(f.c, f.data);
+    return f.data.taskAreas[0];
+  };
+  TaskAreaReport a = run({80.0, 90.0});
+  EXPECT_EQ(a.leastRa, 80.0);
+  EXPECT_EQ(a.raVerdict, Verdict::kPass);
+  EXPECT_EQ(a.verdict, Verdict::kPass);
+  a = run({90.0, 70.0});
+  EXPECT_EQ(a.leastRa, 70.0);
+  EXPECT_EQ(a.raVerdict, Verdict::kFail);
+  EXPECT_EQ(a.verdict, Verdict::kFail);
+  a = run({90.0, std::nullopt});
+  EXPECT_FALSE(a.leastRa.has_value());
+  EXPECT_EQ(a.raUnknown, std::vector<std::string>{"lum1.ies"});
+  EXPECT_EQ(a.raVerdict, Verdict::kNotChecked);
+  EXPECT_EQ(a.verdict, Verdict::kPass);  // the grids and UGR pass; Ra is left to the reader
+
+  // Only the luminaires over the task area and its bands count: an IES downlight 6 m away does not.
+  Fixture f;
+  f.c.taskAreas[0].ra = 80.0;
+  InstallationReport& in = f.data.installation.emplace();
+  for (const char* name : {"panel", "downlight"}) {
+    LuminaireTypeReport t;
+    t.file = std::string(name) + (name[0] == 'p' ? ".ldt" : ".ies");
+    t.entries = {name};
+    if (name[0] == 'p') t.leastRa = 80.0;
+    in.luminaires.push_back(t);
+    f.c.luminaireEntries.push_back({name, t.file, {}});
+    LuminairePlacement p;
+    p.entry = static_cast<int>(f.c.luminaireEntries.size()) - 1;
+    p.positionM = name[0] == 'p' ? Vec3(1.5, 1.5, 2.8) : Vec3(1.5, 9.0, 2.8);  // the desk spans y 1..2
+    f.c.luminaires.push_back(p);
+  }
+  addTaskAreaReports(f.c, f.data);
+  EXPECT_EQ(f.data.taskAreas[0].leastRa, 80.0);
+  EXPECT_TRUE(f.data.taskAreas[0].raUnknown.empty());
+  EXPECT_EQ(f.data.taskAreas[0].raVerdict, Verdict::kPass);
+}
+
 // A [[surface_grid]]'s grids (as withSurfaceGrids makes them) labelled in the report, its verdict
 // failing with any wall, and the report's table of them.
 TEST(SurfaceGridReport, GridsLabelledAndVerdict) {
