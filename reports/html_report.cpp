@@ -216,16 +216,18 @@ void udiMultiples(std::ostringstream& h, const AnnualPage& page) {
   using M = SensorAnnualMetrics;
   const std::string id = page.id();
   struct Bin {
-    const char* name;
+    const char* name;   // element ids
+    const char* label;  // what the reader sees
     double M::*perSensor;
     double meanPct;
   };
-  const Bin bins[] = {{"UDI_fell_short", &M::udiFellShort, s.UDI_fell_short},
-                      {"UDI_supplementary", &M::udiSupplementary, s.UDI_supplementary},
-                      {"UDI_autonomous", &M::udiAutonomous, s.UDI_autonomous},
-                      {"UDI_exceeded", &M::udiExceeded, s.UDI_exceeded}};
+  const Bin bins[] = {{"UDI_fell_short", "UDI-f, fell short (E &lt; 100 lx)", &M::udiFellShort, s.UDI_fell_short},
+                      {"UDI_supplementary", "UDI-s, supplementary (100–300 lx)", &M::udiSupplementary,
+                       s.UDI_supplementary},
+                      {"UDI_autonomous", "UDI-a, autonomous (300–3000 lx)", &M::udiAutonomous, s.UDI_autonomous},
+                      {"UDI_exceeded", "UDI-e, exceeded (E &gt; 3000 lx)", &M::udiExceeded, s.UDI_exceeded}};
   h << "<h3>Useful daylight illuminance</h3>\n<div class=\"multiples\">\n";
-  for (const auto& [name, perSensor, meanPct] : bins) {
+  for (const auto& [name, label, perSensor, meanPct] : bins) {
     if (a.sensors.empty()) continue;
     PlanOptions opt;
     opt.northDeg = page.northDeg;
@@ -234,7 +236,7 @@ void udiMultiples(std::ostringstream& h, const AnnualPage& page) {
     opt.maxPlanHeightPx = 170.0;
     opt.contours = false;
     opt.cellValues = false;
-    h << "<figure>\n" << metricPlan(g, name, annualColumn(a, perSensor), opt) << "<figcaption>" << name << ", % of occupied hours ("
+    h << "<figure>\n" << metricPlan(g, std::string(label).substr(0, 5), annualColumn(a, perSensor), opt) << "<figcaption>" << label << ", % of occupied hours ("
       << pctText(meanPct) << " mean)</figcaption>\n</figure>\n";
   }
   h << "</div>\n";
@@ -250,8 +252,8 @@ void sdaAseAndTemporalMap(std::ostringstream& h, const AnnualPage& page) {
     PlanOptions opt;
     opt.idPrefix = page.id() + "-sda";
     h << "<h3>Spatial daylight autonomy and annual sunlight exposure</h3>\n<figure class=\"temporal\">\n"
-      << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA300_50 = " << pctText(s.sDA300_50)
-      << " of sensors, ASE1000_250 = " << pctText(s.ASE1000_250) << " of sensors.</figcaption>\n</figure>\n";
+      << sdaAsePlanSvg(g.layout, pass, ase, opt) << "<figcaption>sDA<sub>300/50%</sub> = " << pctText(s.sDA300_50)
+      << " of sensors, ASE<sub>1000,250</sub> = " << pctText(s.ASE1000_250) << " of sensors.</figcaption>\n</figure>\n";
   }
 
   if (a.chosenSensor >= 0 && !a.chosenSensorLux.empty()) {

@@ -133,8 +133,12 @@ TEST(HtmlReport, AnnualSectionHasTheMetricsPlansAndTemporalMap) {
     EXPECT_NE(section.find("<td>" + name + "</td><td class=\"num\">" + formatFixed(v, 1) + " %</td>"),
               std::string::npos)
         << name << " " << v;
-  for (const char* key : {"UDI_fell_short", "sDA300_50", "ASE1000_250", "coefficients_time_s"})
+  for (const char* key : {"UDI_fell_short", "UDI_supplementary", "UDI_autonomous", "UDI_exceeded", "sDA300_50",
+                          "ASE1000_250", "coefficients_time_s"}) {
     EXPECT_EQ(section.find(std::string("<td>") + key), std::string::npos) << key;
+    EXPECT_EQ(section.find(std::string("<figcaption>") + key), std::string::npos) << key;  // plans' captions
+  }
+  EXPECT_NE(section.find("<figcaption>UDI-a, autonomous (300–3000 lx)"), std::string::npos);
   // LEED v4.1 option 1's points for the sDA (1 from 40 %, 2 from 55 %, 3 from 75 %) and the
   // ASE's 10 %.
   const int points = s.sDA300_50 >= 75.0 ? 3 : s.sDA300_50 >= 55.0 ? 2 : s.sDA300_50 >= 40.0 ? 1 : 0;
