@@ -340,8 +340,12 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   std::vector<SensorPoint>().swap(all);  // not needed again: the report's memory takes its place
 
   // Warnings on the results, before anything is written.
-  for (std::size_t gi = 0; gi < grids.size(); ++gi)
+  // A shard's points of other shards read 0 ± 0 here: their darkness is the merge's to judge.
+  const bool allPoints = !run.request.processes().partial();
+  for (std::size_t gi = 0; gi < grids.size(); ++gi) {
     checkErrorBars(tracer, sets[gi], values[gi].lux.data(), values[gi].errorLux.data(), warnings);
+    if (allPoints) checkDarkSensors(sets[gi], values[gi].lux.data(), values[gi].errorLux.data(), warnings);
+  }
   // A shard holds only its share of the points: merge checks the warnings on all of them.
   throwIfStrict(warnings, run.request.strict && !run.request.processes().partial());
 

@@ -75,6 +75,7 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
       errorLux.push_back(e.standardErrorLux());
     }
     checkErrorBars(tracer, set, lux.data(), errorLux.data(), r.warnings);
+    checkDarkSensors(set, lux.data(), errorLux.data(), r.warnings);
   }
   throwIfStrict(r.warnings, ps.strict);
   return r;

@@ -340,6 +340,25 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lu
                  pointLoc(set, first)});
 }
 
+void checkDarkSensors(const SensorSet& set, const double* lux, const double* errorLux, Warnings& out) {
+  const std::vector<SensorPoint>& pts = *set.points;
+  std::size_t dark = 0, first = 0;
+  bool lit = false;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    lit |= lux[i] > 0.0;
+    if (lux[i] != 0.0 || errorLux[i] != 0.0) continue;
+    if (dark++ == 0) first = i;
+  }
+  if (dark == 0 || !lit) return;
+  out.push_back({"sensor_reads_nothing",
+                 set.name + ": " + countOf(dark, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
+                     " while the others are lit: no ray from " + (dark == 1 ? "it" : "them") +
+                     " reached any light, as from inside furniture or a closed volume; the grid's Emin, U0 and "
+                     "average count " + (dark == 1 ? "it" : "them") + " (leave such points out: a border, a task "
+                     "area's room, the outline)",
+                 pointLoc(set, first)});
+}
+
 void checkPhotometry(const Scene& scene, const std::vector<LuminairePlacement>& luminaires, Warnings& out) {
   std::set<const PhotometricWeb*> seen;
   for (std::size_t i = 0; i < luminaires.size() && i < scene.luminaires.size(); ++i) {

@@ -74,6 +74,10 @@ void checkCaseSite(const CaseFile& c, Warnings& out);
 void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lux, const double* errorLux,
                     Warnings& out);
 
+// sensor_reads_nothing: points of a set that read exactly 0 with a standard error of 0 while
+// another point of the set reads more than 0: no sample from them found light (inside a cabinet,
+// a closed volume), and they pull the set's minimum and uniformity down to 0.
+void checkDarkSensors(const SensorSet& set, const double* lux, const double* errorLux, Warnings& out);
 // luminaire_photometry: a photometric file whose light output ratio exceeds 100 % (more light
 // out than the lamps give: a wrong lamp flux or conversion factor) or whose intensities are all
 // zero (the luminaire gives no light). Once per file, at its first [[luminaire]] entry.
