@@ -202,6 +202,10 @@ GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area
   p.isRectangle = true;
   p.outline = {lo, hi};
   p.band = {a.outline, fromM, toM};
+  // EN 12464-1's automatic spacing for the band itself: a long, narrow area's d is its width
+  // (gridDimensionM), 0.5 m for the surrounding (0.1 m spacing), 3 m for the background (0.4 m),
+  // not the box the lattice covers (which gave 2 points across the surrounding).
+  p.spacingM = autoGridSpacingM(toM - fromM);
   return g;
 }
 

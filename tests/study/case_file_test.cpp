@@ -369,6 +369,12 @@ TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
   EXPECT_EQ(c.grids[2].plane.band.fromM, 0.5);
   EXPECT_EQ(c.grids[2].plane.band.toM, 3.5);
   EXPECT_FALSE(c.grids[2].clipToRoom);
+  // The bands' spacing is EN 12464-1's automatic one for their width: d = 0.5 m and 3 m.
+  EXPECT_FALSE(c.grids[0].plane.spacingM.has_value());
+  EXPECT_EQ(c.grids[1].plane.spacingM, autoGridSpacingM(0.5));
+  EXPECT_EQ(c.grids[2].plane.spacingM, autoGridSpacingM(3.0));
+  EXPECT_NEAR(*c.grids[1].plane.spacingM, 0.1, 1e-12);
+  EXPECT_NEAR(*c.grids[2].plane.spacingM, 0.4, 1e-12);
   for (const GridSpec& g : c.grids) EXPECT_EQ(g.plane.origin.z, 0.75);
   auto error = [&](const std::string& text) {
     try {
