@@ -8,6 +8,7 @@
 #include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
 #include "reports/installation_html.h"
+#include "reports/plan_section_svg.h"
 #include "reports/plan_svg.h"
 
 namespace candela {
@@ -462,10 +463,17 @@ void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, cons
     opt.northDeg = data.northDeg;
     opt.idPrefix = "plan" + std::to_string(i + 1);
     if (g.planIsXY) opt.markers = data.planMarkers;
+    if (g.planIsXY && g.planSection >= 0 && static_cast<std::size_t>(g.planSection) < data.planSections.size())
+      opt.section = &data.planSections[static_cast<std::size_t>(g.planSection)];
     const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
     h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
       << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
-      << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
+      << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".";
+    if (opt.section) {
+      const PlanExtent e = planExtent(g.layout);
+      h << " " << xmlEscape(planSectionCaption(*opt.section, sectionItemsIn(*opt.section, e.lo, e.hi)));
+    }
+    h << "</figcaption>\n</figure>\n";
   }
   gridMetricsTable(h, g);
   h << "</div>\n</section>\n";
