@@ -299,14 +299,16 @@ PlanSection planSection(const Scene& scene, const SectionRequest& request, const
     }
     if (f.role == Role::kOpaque && z.hi <= cut && z.lo > s.floorLevelM + kFurnitureAboveFloorM &&
         std::abs(f.normal.z) >= kHorizontalNormalZ) {
+      // The cap comes first: past it nothing more is held (a terrain's 10⁶ triangles would
+      // otherwise all enter the set of footprints seen).
+      if (footprintVertices + f.points.size() > limits.maxFootprintVertices) {
+        ++s.droppedFootprints;
+        return;
+      }
       PlanFootprint fp;
       fp.outlined = !f.mesh;
       for (const Vec3& p : f.points) fp.outline.emplace_back(p.x, p.y);
       if (planArea(fp.outline) <= 1e-9 || !footprints.insert(footprintKey(fp.outline)).second) return;
-      if (footprintVertices + fp.outline.size() > limits.maxFootprintVertices) {
-        ++s.droppedFootprints;
-        return;
-      }
       footprintVertices += fp.outline.size();
       s.furniture.push_back(std::move(fp));
     }
