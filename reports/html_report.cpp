@@ -79,7 +79,9 @@ footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
   header { padding:0 0 10px; } section { padding:12px 0; border-bottom:none; } footer { padding:10px 0 0; }
   section.grid, section.settings { break-before:page; }
   h2, h3 { break-after:avoid; }
-  tr, figure, svg, img, .metrics, .grid-body { break-inside:avoid; }
+  /* A grid's plan and its metrics table each stay whole; a page may fall between them (a plan
+     with its key and a modelling table do not fit one page under the section's heading). */
+  tr, figure, svg, img, .metrics { break-inside:avoid; }
   thead { display:table-header-group; }
   .schedule td.polar { width:136px; } .schedule td.polar svg { width:128px; height:auto; }
   .schedule td.lum { min-width:52mm; } .schedule th { font-size:10px; }

@@ -17,7 +17,7 @@ std::string px(double v) { return svgNumber(v); }
 constexpr const char* kWallColour = "#222";
 constexpr double kWallWidthPx = 2.8;
 constexpr const char* kGlassColour = "#2f86c9";
-constexpr const char* kGlassBand = "#e3f1fb";
+constexpr const char* kGlassBand = "#d6ebf9";
 constexpr double kOpeningHalfWidthPx = 2.6;   // the blue lines' offset from the glazing
 constexpr double kAboveHalfWidthPx = 3.6;     // beside a 2.8 px wall, clear of it
 constexpr const char* kFurnitureStroke = "#4d4d4d";
