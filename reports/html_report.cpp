@@ -8,6 +8,7 @@
 #include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
 #include "reports/installation_html.h"
+#include "reports/plan_section_svg.h"
 #include "reports/plan_svg.h"
 
 namespace candela {
@@ -78,7 +79,9 @@ footer { padding:14px 36px 22px; font-size:11px; color:var(--muted); }
   header { padding:0 0 10px; } section { padding:12px 0; border-bottom:none; } footer { padding:10px 0 0; }
   section.grid, section.settings { break-before:page; }
   h2, h3 { break-after:avoid; }
-  tr, figure, svg, img, .metrics, .grid-body { break-inside:avoid; }
+  /* A grid's plan and its metrics table each stay whole; a page may fall between them (a plan
+     with its key and a modelling table do not fit one page under the section's heading). */
+  tr, figure, svg, img, .metrics { break-inside:avoid; }
   thead { display:table-header-group; }
   .schedule td.polar { width:136px; } .schedule td.polar svg { width:128px; height:auto; }
   .schedule td.lum { min-width:52mm; } .schedule th { font-size:10px; }
@@ -507,10 +510,17 @@ void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, cons
     opt.idPrefix = "plan" + std::to_string(i + 1);
     if (g.planIsXY) opt.markers = data.planMarkers;
     opt.northArrow = g.planIsXY;
+    if (g.planIsXY && g.planSection >= 0 && static_cast<std::size_t>(g.planSection) < data.planSections.size())
+      opt.section = &data.planSections[static_cast<std::size_t>(g.planSection)];
     const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
     h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
       << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
-      << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".</figcaption>\n</figure>\n";
+      << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".";
+    if (opt.section) {
+      const PlanExtent e = planExtent(g.layout);
+      h << " " << xmlEscape(planSectionCaption(*opt.section, sectionItemsIn(*opt.section, e.lo, e.hi)));
+    }
+    h << "</figcaption>\n</figure>\n";
   }
   gridMetricsTable(h, g);
   h << "</div>\n</section>\n";

@@ -113,6 +113,20 @@ std::string summaryJson(const ReportData& data) {
                         {"range", {kModellingRatioMin, kModellingRatioMax}},
                         {"verdict", verdictName(m.verdict)}};
     }
+    // The plan's section (study/plan_section.h): where it is cut and what it holds, as counts.
+    if (g.planSection >= 0 && static_cast<std::size_t>(g.planSection) < data.planSections.size()) {
+      const PlanSection& p = data.planSections[static_cast<std::size_t>(g.planSection)];
+      o["plan_section"] = {{"cut_height_m", number(p.cutHeightM)},
+                           {"floor_level_m", number(p.floorLevelM)},
+                           {"raised_above_floor", p.raisedAboveFloor},
+                           {"walls", p.walls.size()},
+                           {"openings", p.openings.size()},
+                           {"openings_above", p.openingsAbove.size()},
+                           {"furniture", p.furniture.size()},
+                           {"dropped_segments", p.droppedSegments},
+                           {"dropped_footprints", p.droppedFootprints},
+                           {"skipped_curved", p.skippedCurved}};
+    }
     if (g.annual) {
       const GridAnnualSummary& a = g.annual->summary;
       o["DA300"] = number(a.DA300);

@@ -10,6 +10,7 @@
 
 #include "base/atomic_file.h"
 #include "reports/falsecolor.h"
+#include "reports/plan_section_svg.h"
 #include "reports/png_writer.h"
 
 namespace candela {
@@ -213,10 +214,28 @@ struct PlanPage {
     // A narrow plan (a corridor) keeps a legend tall enough to read its ticks.
     legendH = std::max(planH, kMinLegendPx);
     width = left + planW + legendGap + legendBar + legendLabels;
-    height = top + std::max(planH + 64, legendH + 20);
+    // The key explains a section's lines and the markers with them; markers alone need none.
+    if (opt.section) {
+      key = sectionKeyItems(*opt.section, frame());
+      for (const PlanMarker* m : markersInside()) {
+        key.luminaires = key.luminaires || m->kind == PlanMarker::Kind::kLuminaire;
+        key.observers = key.observers || m->kind == PlanMarker::Kind::kObserver;
+      }
+    }
+    keyH = planKeyHeight(key, width - left - 8);
+    height = top + std::max(planH + 64 + keyH, legendH + 20);
   }
   double X(double u) const { return left + (u - lo.x) * k; }
   double Y(double v) const { return top + (hi.y - v) * k; }
+  PlanFrame frame() const { return {lo, hi, k, left, top, planW, planH, opt.idPrefix}; }
+  // The options' markers that fall inside the plan's extent.
+  std::vector<const PlanMarker*> markersInside() const {
+    std::vector<const PlanMarker*> inside;
+    for (const PlanMarker& m : opt.markers)
+      if (m.positionM.x >= lo.x && m.positionM.x <= hi.x && m.positionM.y >= lo.y && m.positionM.y <= hi.y)
+        inside.push_back(&m);
+    return inside;
+  }
 
   const GridReport& grid;
   const ColorScale& scale;
@@ -227,6 +246,8 @@ struct PlanPage {
   static constexpr double kMinLegendPx = 150;
   double left = 44, top = 30, legendGap = 34, legendBar = 16, legendLabels = 70, legendH = 0.0;
   double width = 0.0, height = 0.0;
+  PlanKeyItems key;   // under the scale bar, when the plan shows a section
+  double keyH = 0.0;  // px
 };
 
 // The <svg> element, the legend's gradient, the clip path of the plan and its background.
@@ -240,7 +261,8 @@ void writeSvgOpen(std::ostringstream& s, const PlanPage& p) {
   s << "<defs><linearGradient id=\"" << id << "-scale\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
   for (int i = 0; i <= 16; ++i) s << "<stop offset=\"" << px(i / 16.0) << "\" stop-color=\"" << hexColor(viridis(i / 16.0)) << "\"/>";
   s << "</linearGradient><clipPath id=\"" << id << "-clip\"><rect x=\"" << px(p.left) << "\" y=\"" << px(p.top)
-    << "\" width=\"" << px(p.planW) << "\" height=\"" << px(p.planH) << "\"/></clipPath></defs>\n";
+    << "\" width=\"" << px(p.planW) << "\" height=\"" << px(p.planH) << "\"/></clipPath>"
+    << (p.opt.section ? sectionClipPath(p.frame()) : "") << "</defs>\n";
   s << "<rect x=\"" << px(p.left) << "\" y=\"" << px(p.top) << "\" width=\"" << px(p.planW) << "\" height=\"" << px(p.planH)
     << "\" fill=\"#f4f4f2\"/>\n";
 }
@@ -327,6 +349,11 @@ void writeCells(std::ostringstream& s, const PlanPage& p) {
         << hexColor(falseColor(grid.values[i], p.scale)) << "\" stroke=\"#333\" stroke-width=\"0.8\"/>\n";
     }
   }
+}
+
+// The calculation area's outline.
+void writeOutline(std::ostringstream& s, const PlanPage& p) {
+  const PlanLayout& L = p.grid.layout;
   if (L.outline.size() >= 3) {
     s << "<polygon points=\"";
     for (const Vec2& q : L.outline) s << px(p.X(q.x)) << "," << px(p.Y(q.y)) << " ";
@@ -440,11 +467,17 @@ void writeContours(std::ostringstream& s, const PlanPage& p) {
   s << labels.str() << "</g>\n";
 }
 
-// The plan's frame and axis ticks in metres along its bottom and left edges.
+// The plan's frame.
+void writeFrame(std::ostringstream& s, const PlanPage& p) {
+  s << "<rect x=\"" << px(p.left) << "\" y=\"" << px(p.top) << "\" width=\"" << px(p.planW) << "\" height=\""
+    << px(p.planH) << "\" fill=\"none\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
+}
+
+// The plan's frame, unless a section drew it under its walls (which often lie on it), and axis
+// ticks in metres along its bottom and left edges.
 void writeAxes(std::ostringstream& s, const PlanPage& p) {
   const double left = p.left, top = p.top, planH = p.planH;
-  s << "<rect x=\"" << px(left) << "\" y=\"" << px(top) << "\" width=\"" << px(p.planW) << "\" height=\"" << px(planH)
-    << "\" fill=\"none\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
+  if (!p.opt.section) writeFrame(s, p);
   const double step = niceLength(std::max(p.ext.x, p.ext.y) / 6.0);
   s << "<g font-size=\"10\" fill=\"#555\">\n";
   for (double u = std::ceil(p.lo.x / step - 1e-9) * step; u <= p.hi.x + 1e-9; u += step) {
@@ -505,10 +538,7 @@ void writeLegend(std::ostringstream& s, const PlanPage& p) {
 // a cross, observers as dots with an arrow along their line of sight; their names beside them
 // when few enough to read.
 void writeMarkers(std::ostringstream& s, const PlanPage& p) {
-  std::vector<const PlanMarker*> inside;
-  for (const PlanMarker& m : p.opt.markers)
-    if (m.positionM.x >= p.lo.x && m.positionM.x <= p.hi.x && m.positionM.y >= p.lo.y && m.positionM.y <= p.hi.y)
-      inside.push_back(&m);
+  const std::vector<const PlanMarker*> inside = p.markersInside();
   if (inside.empty()) return;
   const bool named = inside.size() <= kMaxNamedMarkers;
   s << "<g class=\"markers\" font-size=\"9\" fill=\"#111\">\n";
@@ -537,12 +567,19 @@ std::string planSvg(const GridReport& grid, const ColorScale& scale, const PlanO
   std::ostringstream s;
   writeSvgOpen(s, page);
   writeCells(s, page);
+  if (opt.section) {
+    writeFrame(s, page);
+    writeSectionFurniture(s, *opt.section, page.frame());
+  }
+  writeOutline(s, page);
+  if (opt.section) writeSectionCuts(s, *opt.section, page.frame());
   writeCellValues(s, page);
   writeContours(s, page);
   writeMarkers(s, page);
   writeAxes(s, page);
   writeScaleBarAndNorth(s, page);
   writeLegend(s, page);
+  writePlanKey(s, page.key, page.left, page.top + page.planH + 52, page.width - page.left - 8);
   s << "</svg>\n";
   return s.str();
 }

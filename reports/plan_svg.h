@@ -29,6 +29,9 @@ struct PlanOptions {
   // Luminaires (a square with a cross) and observers (a dot with their line of sight) drawn over
   // the plan where they fall inside it, named when there are at most kMaxNamedMarkers of them.
   std::vector<PlanMarker> markers;
+  // The scene's section at the plan's cut (reports/plan_section_svg.h), drawn over the cells and
+  // under the markers, with a key under the plan; not owned, null: none.
+  const PlanSection* section = nullptr;
 };
 inline constexpr std::size_t kMaxNamedMarkers = 40;
 

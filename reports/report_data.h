@@ -66,7 +66,6 @@ struct AnnualGridReport {
   std::vector<HourStamp> hours;
 };
 
-// One grid's results and verdicts.
 // What a plan shows besides its grid (report.html): a luminaire's position or an observer's, in
 // plan coordinates x, y (m), with its name; an observer's line of sight.
 struct PlanMarker {
@@ -76,6 +75,31 @@ struct PlanMarker {
   std::string name;
 };
 
+// The scene cut horizontally for the plans of horizontal grids (study/plan_section.h), in plan
+// coordinates x, y (m): what the plan draws over the grid's colours and under its markers.
+struct PlanSegment {
+  Vec2 a{0.0}, b{0.0};
+};
+
+struct PlanFootprint {
+  std::vector<Vec2> outline;  // ≥ 3 vertices
+  bool outlined = true;       // false for mesh triangles: their shared edges are not the object's
+};
+
+struct PlanSection {
+  double cutHeightM = 0.0;      // z of the cut plane, m
+  double floorLevelM = 0.0;     // z of the floor under it, m
+  bool raisedAboveFloor = false;  // the grids lie at floor level: the cut is 1 m above the floor
+  std::vector<PlanSegment> walls;          // opaque surfaces crossing the cut plane
+  std::vector<PlanSegment> openings;       // glazing crossing it
+  std::vector<PlanSegment> openingsAbove;  // vertical glazing above it (a sill higher than the cut)
+  std::vector<PlanFootprint> furniture;    // horizontal surfaces between the floor and the cut
+  std::size_t droppedSegments = 0;         // past the cap on segments (study/plan_section.h)
+  std::size_t droppedFootprints = 0;       // past the cap on footprint vertices
+  std::size_t skippedCurved = 0;           // spheres, cones and rings crossing the cut: not drawn
+};
+
+// One grid's results and verdicts.
 struct GridReport {
   std::string name;
   bool planIsXY = false;             // the plan's coordinates are x, y (a horizontal grid): markers fit it
@@ -95,6 +119,7 @@ struct GridReport {
   PlanLayout layout;
   std::optional<AnnualGridReport> annual;  // set for grids of an annual run ([sky] type = "annual")
   std::optional<ModellingResult> modelling;  // set for grids with `modelling = true`
+  int planSection = -1;              // index into ReportData::planSections; -1: none drawn
 };
 
 // The run as a whole.
@@ -243,6 +268,7 @@ struct ReportData {
   std::vector<TaskAreaReport> taskAreas;
   std::vector<SurfaceGridReport> surfaceGrids;
   std::vector<PlanMarker> planMarkers;  // luminaires and observers, drawn on horizontal grids' plans
+  std::vector<PlanSection> planSections;  // one per distinct cut height (GridReport::planSection)
   std::optional<InstallationReport> installation;  // point-in-time runs
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order

@@ -14,6 +14,7 @@
 #include "study/finite_results.h"
 #include "study/grid_quantity.h"
 #include "study/luminaire_schedule.h"
+#include "study/plan_section.h"
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
@@ -411,6 +412,8 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
       data.planMarkers.push_back({PlanMarker::Kind::kLuminaire, Vec2(l.positionM.x, l.positionM.y), Vec2(0.0), l.name});
   for (const ObserverSpec& o : c.observers)
     data.planMarkers.push_back({PlanMarker::Kind::kObserver, o.positionM, o.direction, o.name});
+  // The scene cut at each horizontal grid's plan height: walls, windows and furniture on the plans.
+  addPlanSections(data, *scene, grids);
   data.run.runTimeS = secondsSince(run.start);
 
   // 4. Write: the folder is committed as a whole.

@@ -188,6 +188,29 @@ TEST(Summary, JsonCarriesEachViewsNoise) {
   EXPECT_TRUE(nlohmann::json::parse(summaryJson(data))["views"].is_array());
 }
 
+// A grid's plan section in summary.json: its cut and counts; none for a grid without one.
+TEST(Summary, PlanSectionCounts) {
+  ReportData data = testing_sample::sampleReport();
+  PlanSection p;
+  p.cutHeightM = 1.0;
+  p.floorLevelM = 0.0;
+  p.raisedAboveFloor = true;
+  p.walls = {{Vec2(0.0), Vec2(1.0)}, {Vec2(1.0), Vec2(2.0, 1.0)}};
+  p.openingsAbove = {{Vec2(0.0), Vec2(0.0, 1.0)}};
+  p.droppedSegments = 3;
+  data.planSections = {p};
+  data.grids[0].planSection = 0;
+  const nlohmann::json j = nlohmann::json::parse(summaryJson(data));
+  const nlohmann::json& s = j["grids"][0]["plan_section"];
+  EXPECT_DOUBLE_EQ(s["cut_height_m"].get<double>(), 1.0);
+  EXPECT_TRUE(s["raised_above_floor"].get<bool>());
+  EXPECT_EQ(s["walls"], 2);
+  EXPECT_EQ(s["openings"], 0);
+  EXPECT_EQ(s["openings_above"], 1);
+  EXPECT_EQ(s["dropped_segments"], 3);
+  EXPECT_FALSE(j["grids"][1].contains("plan_section"));
+}
+
 // Observers: UGR, limit and verdict in summary.json and observers.csv; no luminaire in view reads
 // as no UGR and passes its limit; without a limit there is no verdict.
 TEST(Summary, ObserversInJsonAndCsv) {
