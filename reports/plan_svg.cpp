@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -402,15 +403,39 @@ struct PlacedLabel {
 
 // The label of a contour line `length` px long, along the line and never upside down: at half
 // its length, else at the first of 30 %, 70 %, 15 % and 85 % where it meets no label already
-// placed and stays inside the plan; none when every place is taken or the line is not 12 px
-// longer than the label.
+// placed and stays inside the plan; a line not 12 px longer than the label has it upright beside
+// its middle; none when every place is taken.
 void writeContourLabel(std::ostringstream& labels, const PlanPage& p, const ContourLine& line, double length,
                        double level, std::vector<PlacedLabel>& placed) {
   const std::string text = formatNumber(level, 4);
   // 11 px bold digits are at most 0.62 em wide, plus the 3 px halo on each side.
   const double w = 0.62 * 11.0 * static_cast<double>(text.size()) + 6.0, h = 11.0 + 6.0;
   const double radius = 0.5 * std::hypot(w, h);
-  if (length < w + 12.0) return;  // the label would hide the line (a corridor's lines are short)
+  auto fits = [&](const Vec2& c) {
+    bool free = c.x - 0.5 * w >= p.left && c.x + 0.5 * w <= p.left + p.planW && c.y - 0.5 * h >= p.top &&
+                c.y + 0.5 * h <= p.top + p.planH;
+    for (const PlacedLabel& q : placed) free = free && glm::length(q.centre - c) >= q.radius + radius;
+    return free;
+  };
+  auto write = [&](const Vec2& c, std::optional<double> angle) {
+    labels << "<text x=\"" << px(c.x) << "\" y=\"" << px(c.y) << "\"";
+    if (angle) labels << " transform=\"rotate(" << px(*angle) << " " << px(c.x) << " " << px(c.y) << ")\"";
+    labels << " text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
+              "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
+           << text << "</text>\n";
+    placed.push_back({c, radius});
+  };
+  if (length < w + 12.0) {
+    // On the line the label would hide it (a corridor's lines cross its width): upright beside
+    // its middle instead, right, left, above or below, where it fits.
+    if (line.points.empty()) return;
+    const Vec2 mid = line.points[line.points.size() / 2];
+    const Vec2 m(p.X(mid.x), p.Y(mid.y));
+    for (const Vec2& off : {Vec2(0.5 * w + 4.0, 0.0), Vec2(-0.5 * w - 4.0, 0.0), Vec2(0.0, -0.5 * h - 3.0),
+                            Vec2(0.0, 0.5 * h + 3.0)})
+      if (fits(m + off)) return write(m + off, std::nullopt);
+    return;
+  }
   for (double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
     double walked = 0.0;
     for (std::size_t i = 1; i < line.points.size(); ++i) {
@@ -423,21 +448,11 @@ void writeContourLabel(std::ostringstream& labels, const PlanPage& p, const Cont
       const double f = d > 0 ? (at * length - walked) / d : 0.0;
       const Vec2 m = a + f * (b - a);
       const Vec2 c(p.X(m.x), p.Y(m.y));
-      const bool inside = c.x - 0.5 * w >= p.left && c.x + 0.5 * w <= p.left + p.planW && c.y - 0.5 * h >= p.top &&
-                          c.y + 0.5 * h <= p.top + p.planH;
-      bool free = inside;
-      for (const PlacedLabel& q : placed) free = free && glm::length(q.centre - c) >= q.radius + radius;
-      if (!free) break;  // try the next place along the line
+      if (!fits(c)) break;  // try the next place along the line
       double angle = radToDeg(std::atan2(-(b.y - a.y), b.x - a.x));
       if (angle > 90.0) angle -= 180.0;
       if (angle < -90.0) angle += 180.0;
-      labels << "<text x=\"" << px(c.x) << "\" y=\"" << px(c.y) << "\" transform=\"rotate(" << px(angle) << " "
-             << px(c.x) << " " << px(c.y)
-             << ")\" text-anchor=\"middle\" dominant-baseline=\"central\" font-size=\"11\" font-weight=\"600\" "
-                "fill=\"#111\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">"
-             << text << "</text>\n";
-      placed.push_back({c, radius});
-      return;
+      return write(c, angle);
     }
   }
 }

@@ -331,6 +331,7 @@ PlanSection planSection(const Scene& scene, const SectionRequest& request, const
 }
 
 std::optional<double> gridPlanHeight(const PreparedGrid& g) {
+  if (g.spec->roomSurface == RoomSurface::kCeiling) return std::nullopt;
   if (g.spec->kind == GridKind::kPlane)
     return inPlanCoordinates(g.spec->plane) ? std::optional<double>(g.spec->plane.origin.z) : std::nullopt;
   if (g.grid.points.empty()) return std::nullopt;

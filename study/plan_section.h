@@ -76,7 +76,9 @@ PlanSection planSection(const Scene& scene, const SectionRequest& request, const
 
 // The height of a grid whose plan is an x, y plan (m): a plane grid's plane in plan coordinates
 // (study/sensor_grid.h inPlanCoordinates: z = its origin's), a points file's points' mean z when
-// they lie within 0.1 m of one level; none for any other grid.
+// they lie within 0.1 m of one level; none for any other grid, and none for a ceiling's grid
+// ([[surface_grid]]): its plan is a reflected ceiling plan with the luminaires, and a cut at its
+// height would take the ceiling itself for the floor.
 std::optional<double> gridPlanHeight(const PreparedGrid& g);
 
 // Fills data.planSections, one per distinct cut height (to the mm) among the horizontal grids'

@@ -132,7 +132,8 @@ TEST(PlanSvg, ContourLabelsDoNotOverlap) {
     const std::string tag = svg.substr(open, close - open);
     if (tag.find("dominant-baseline=\"central\"") == std::string::npos) continue;  // the legend's unit
     double x = 0, y = 0, a = 0;
-    ASSERT_EQ(std::sscanf(tag.c_str(), "<text x=\"%lf\" y=\"%lf\" transform=\"rotate(%lf", &x, &y, &a), 3) << tag;
+    // Along a line: rotated with it; beside a short one: upright (no transform, angle 0).
+    ASSERT_GE(std::sscanf(tag.c_str(), "<text x=\"%lf\" y=\"%lf\" transform=\"rotate(%lf", &x, &y, &a), 2) << tag;
     const std::size_t digits = tag.size() - tag.rfind('>') - 1;
     boxes.push_back({Vec2(x, y), a, 0.556 * 11.0 * static_cast<double>(digits) + 6.0, 11.0 + 6.0});
   }
@@ -163,6 +164,27 @@ TEST(PlanSvg, ContourLabelsDoNotOverlap) {
 // Luminaires and observers on the plan: a symbol at each one inside the plan's extent (at the
 // plan's own px of its position: 480 px across 4 m, the frame 44 px from the left, 30 px from
 // the top), none outside it, and their names while there are few.
+// A corridor 12 m × 0.8 m with the light changing along it: its isolines cross its width, too
+// short to carry a label on them; each level's line gets its label upright beside it.
+TEST(PlanSvg, ShortIsolinesAreLabelledBesideThem) {
+  std::vector<double> values;
+  GridReport g;
+  g.name = "corridor";
+  g.layout = lattice(30, 2, 0.4, values, [](Vec2 p) { return 280.0 + 30.0 * p.x; });  // 12 m × 0.8 m, x from −6 m
+  g.values = values;
+  g.stats = computeGridStats(g.values);
+  PlanOptions o;
+  o.cellValues = false;
+  o.contourLevels = {150.0, 250.0, 350.0};  // x = −4.3, −1, 2.3 m: far apart along the corridor
+  const std::string svg = planSvg(g, niceScale(100.0, 460.0), o);
+  for (const char* level : {">150</text>", ">250</text>", ">350</text>"}) {
+    const std::size_t at = svg.find(level);
+    ASSERT_NE(at, std::string::npos) << level;
+    const std::string tag = svg.substr(svg.rfind("<text", at), at - svg.rfind("<text", at));
+    EXPECT_EQ(tag.find("rotate("), std::string::npos) << tag;  // upright
+  }
+}
+
 TEST(PlanSvg, MarksLuminairesAndObserversInsideThePlan) {
   std::vector<double> values;
   GridReport g;

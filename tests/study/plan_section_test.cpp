@@ -280,5 +280,21 @@ TEST(PlanSection, AddPlanSectionsOnePerCut) {
   EXPECT_NEAR(totalLength(work.walls), BoxRoom::kPerimeter - BoxRoom::kWindowWidth, 1e-9);
 }
 
+// A ceiling's grid ([[surface_grid]]) is a reflected ceiling plan: no section (its own surface
+// would be taken for the floor and the plan cut a metre above the roof).
+TEST(PlanSection, CeilingGridsGetNone) {
+  const BoxRoom room;
+  GridSpec ceiling;
+  ceiling.plane.origin.z = 2.799;
+  ceiling.plane.normal = Vec3(0, 0, -1);
+  ceiling.surfaceGrid = "ceiling";
+  ceiling.roomSurface = RoomSurface::kCeiling;
+  PreparedGrid g;
+  g.spec = &ceiling;
+  EXPECT_FALSE(gridPlanHeight(g).has_value());
+  ceiling.roomSurface = RoomSurface::kFloor;  // a floor's grid is a plan at floor level as any
+  EXPECT_DOUBLE_EQ(gridPlanHeight(g).value(), 2.799);
+}
+
 }  // namespace
 }  // namespace candela
