@@ -513,7 +513,10 @@ void gridSection(std::ostringstream& h, const GridReport& g, std::size_t i, cons
     if (g.planIsXY && g.planSection >= 0 && static_cast<std::size_t>(g.planSection) < data.planSections.size())
       opt.section = &data.planSections[static_cast<std::size_t>(g.planSection)];
     const ColorScale scale = niceRange(g.stats.minimumLux, g.stats.maximumLux);
-    h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour plan of " << xmlEscape(g.name)
+    // A wall's grid is drawn as an elevation seen from the room, a grid in another plane as that
+    // plane: only a horizontal grid's is a plan.
+    const char* drawing = g.planIsXY ? "plan" : g.roomSurface == "wall" ? "elevation, seen from the room," : "view";
+    h << "<figure>\n" << planSvg(g, scale, opt) << "<figcaption>False-colour " << drawing << " of " << xmlEscape(g.name)
       << " with iso-" << (g.unit == "lx" ? "lux" : "value") << " lines; scale " << formatNumber(scale.minValue, 4)
       << "–" << formatNumber(scale.maxValue, 4) << unitText(g.unit) << ".";
     if (opt.section) {

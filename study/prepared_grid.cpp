@@ -51,8 +51,8 @@ std::string gridDescription(const PreparedGrid& g) {
     d += ", sensors facing " + vecText(*p.normal) + ", spacing " + fixed(g.grid.spacingM.x, 2) + " × " +
          fixed(g.grid.spacingM.y, 2) + " m";
     if (!p.holes.empty())
-      d += "; where " + std::to_string(p.holes.size()) + " other surface" + (p.holes.size() == 1 ? " lies" : "s lie") +
-           " on it (furniture's back, glazing), no points";
+      d += "; no points where " + std::to_string(p.holes.size()) + " other surface" +
+           (p.holes.size() == 1 ? " lies" : "s lie") + " on it (glazing, a cabinet's back)";
     return d;
   }
   std::string d = isHorizontalUp(p) ? "horizontal, " + fixed(p.origin.z, 2) + " m above floor level"

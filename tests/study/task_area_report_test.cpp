@@ -166,6 +166,8 @@ TEST(SurfaceGridReport, GridsLabelledAndVerdict) {
   const std::string html = htmlReport(data);
   EXPECT_NE(html.find("Walls and ceiling (EN 12464-1:2021)"), std::string::npos);
   EXPECT_NE(html.find("<a href=\"#grid-3\">wall_east (wall)</a>"), std::string::npos);
+  EXPECT_NE(html.find("False-colour elevation, seen from the room, of walls: wall_east"), std::string::npos);
+  EXPECT_NE(html.find("False-colour view of workplane"), std::string::npos);  // planIsXY unset here
 
   // A wall below 75 lx fails the entry.
   data.surfaceGrids.clear();
