@@ -352,6 +352,13 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
       << badge(g.check.overall) << "</td></tr>\n";
   }
   h << "</tbody>\n</table>\n";
+  int checked = 0, failed = 0;
+  const Verdict overall = overallVerdict(data, &checked, &failed);
+  if (overall != Verdict::kNotChecked)
+    h << "<p class=\"overall\">Overall result " << badge(overall) << ": "
+      << (failed ? std::to_string(failed) + " of " + std::to_string(checked) + " checked lines fail"
+                 : "all " + std::to_string(checked) + " checked lines pass")
+      << " (grids, walls and ceiling, modelling, colour rendering, observers' UGR).</p>\n";
   for (std::size_t i = 0; i < data.grids.size(); ++i)
     if (const std::optional<ModellingResult>& m = data.grids[i].modelling)
       h << "<p>Modelling on <a href=\"#grid-" << i + 1 << "\">" << xmlEscape(data.grids[i].name)

@@ -199,6 +199,9 @@ std::string summaryJson(const ReportData& data) {
                             {"verdict", verdictName(s.verdict)}});
   }
   j["surface_grids"] = surfaceGrids;
+  int checked = 0, failed = 0;
+  j["verdict"] = verdictName(overallVerdict(data, &checked, &failed));
+  j["verdict_lines"] = {{"checked", checked}, {"failed", failed}};
   if (data.installation) addInstallation(j, *data.installation);
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();

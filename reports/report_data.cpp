@@ -32,4 +32,25 @@ std::string safeFileName(const std::string& name) {
   return s.empty() ? "grid" : s;
 }
 
+Verdict overallVerdict(const ReportData& data, int* checked, int* failed) {
+  int n = 0, bad = 0;
+  auto add = [&](Verdict v) {
+    if (v == Verdict::kNotChecked) return;
+    ++n;
+    bad += v == Verdict::kFail;
+  };
+  for (const GridReport& g : data.grids) {
+    add(g.check.overall);
+    if (g.modelling) add(g.modelling->verdict);
+  }
+  // A task area's and a surface grid's verdicts combine their grids' and observers', counted
+  // here each once: a task area's own further line is its Ra.
+  for (const TaskAreaReport& a : data.taskAreas) add(a.raVerdict);
+  for (const ObserverReport& o : data.observers)
+    if (const std::optional<bool> pass = o.pass()) add(*pass ? Verdict::kPass : Verdict::kFail);
+  if (checked) *checked = n;
+  if (failed) *failed = bad;
+  return bad > 0 ? Verdict::kFail : n > 0 ? Verdict::kPass : Verdict::kNotChecked;
+}
+
 }  // namespace candela

@@ -274,6 +274,12 @@ struct ReportData {
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };
 
+// The run's verdict as a whole (summary.json's "verdict", the report's summary): fail when any
+// checked line fails (a grid's targets, a wall's or ceiling's and a task area's grids included, a
+// modelling ratio, a task area's Ra, an observer's UGR), pass when at least one is checked and all pass, else not checked. `checked`
+// and `failed`, when given, count the lines.
+Verdict overallVerdict(const ReportData& data, int* checked = nullptr, int* failed = nullptr);
+
 // Shortest text that reads back to `v` within `significant` digits ("%.*g"); "nan"/"inf" kept.
 std::string formatNumber(double v, int significant = 8);
 

@@ -156,6 +156,13 @@ TEST(Summary, CsvAndJsonCarryTheMetrics) {
   // The sample is built so that both verdicts occur.
   EXPECT_EQ(j["grids"][0]["verdict"], "pass");
   EXPECT_EQ(j["grids"][1]["verdict"], "fail");
+  // The run's verdict, as overallVerdict counts its lines.
+  int checked = 0, failed = 0;
+  EXPECT_EQ(j["verdict"], verdictName(overallVerdict(testing_sample::sampleReport(), &checked, &failed)));
+  EXPECT_EQ(j["verdict"], "fail");
+  EXPECT_EQ(j["verdict_lines"]["checked"], checked);
+  EXPECT_EQ(j["verdict_lines"]["failed"], failed);
+  EXPECT_GE(failed, 1);
 }
 
 // Each view's noise under the names docs/reports.md gives; unknown or absent values are null.

@@ -154,3 +154,39 @@ TEST(HtmlReport, EmbedsViewPicturesAndMetrics) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// The run's verdict: every checked line counted once, a failing one fails it, nothing checked is
+// no verdict; the report's summary and summary.json state it.
+TEST(OverallVerdict, CountsEveryCheckedLine) {
+  ReportData d;
+  int checked = -1, failed = -1;
+  EXPECT_EQ(overallVerdict(d, &checked, &failed), Verdict::kNotChecked);
+  EXPECT_EQ(checked, 0);
+  GridReport a, b;
+  a.check.overall = Verdict::kPass;
+  b.check.overall = Verdict::kNotChecked;
+  b.modelling.emplace().verdict = Verdict::kPass;
+  d.grids = {a, b};
+  ObserverReport seat;
+  seat.ugrLimit = 19.0;
+  seat.ugr = 17.0;
+  d.observers.push_back(seat);
+  TaskAreaReport desk;
+  desk.raVerdict = Verdict::kPass;
+  desk.ugrVerdict = Verdict::kPass;  // the observer's line, counted with the observers
+  d.taskAreas.push_back(desk);
+  EXPECT_EQ(overallVerdict(d, &checked, &failed), Verdict::kPass);
+  EXPECT_EQ(checked, 4);
+  EXPECT_EQ(failed, 0);
+  EXPECT_NE(htmlReport(d).find("all 4 checked lines pass"), std::string::npos);
+  d.observers[0].ugr = 22.0;
+  EXPECT_EQ(overallVerdict(d, &checked, &failed), Verdict::kFail);
+  EXPECT_EQ(failed, 1);
+  EXPECT_NE(htmlReport(d).find("1 of 4 checked lines fail"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
