@@ -43,6 +43,9 @@ inline constexpr double kImmediateSurroundingWidthM = 0.5;
 inline constexpr double kBackgroundWidthM = 3.0;
 inline constexpr double kImmediateSurroundingUniformity = 0.40;
 inline constexpr double kBackgroundUniformity = 0.10;
+// The uniformity EN 12464-1:2021 asks of the cylindrical illuminance Ē_z where it requires one
+// (trilux.com, "Photometric requirements according to EN 12464-1": "at least 0,10").
+inline constexpr double kCylindricalUniformity = 0.10;
 // The maintained illuminance the immediate surrounding needs for a task area's Ē_m (the
 // standard's table relating them: ≥ 750 lx → 500 lx, 500 → 300, 300 → 200, 200 → 150, and
 // 150 lx or less: the task area's own value); a task value between the table's rows takes the

@@ -385,7 +385,7 @@ void requiredAchievedHead(std::ostringstream& h, const char* first) {
        "class=\"num\">U<sub>0</sub></th><th>Result</th></tr></thead>\n<tbody>\n";
 }
 
-// One row of such a table: grid i, linked to its section.
+// One row of such a table: grid i, linked to its section; `label` is HTML.
 void requiredAchievedRow(std::ostringstream& h, const std::string& label, const ReportData& data, int i) {
   const GridReport& g = data.grids[static_cast<std::size_t>(i)];
   h << "<tr><td><a href=\"#grid-" << i + 1 << "\">" << label << "</a></td><td class=\"num\">" << g.stats.count
@@ -417,6 +417,14 @@ void taskAreasSection(std::ostringstream& h, const ReportData& data) {
         continue;
       }
       requiredAchievedRow(h, label, data, i);
+    }
+    if (a.cylindrical >= 0) {
+      const GridReport& z = data.grids[static_cast<std::size_t>(a.cylindrical)];
+      if (z.targets.averageLux) requiredAchievedRow(h, "Cylindrical Ē<sub>z</sub>", data, a.cylindrical);
+      if (const std::optional<ModellingResult>& m = z.modelling)
+        h << "<tr><td><a href=\"#grid-" << a.cylindrical + 1 << "\">Modelling</a></td><td colspan=\"5\">Ē<sub>z</sub> / "
+             "Ē<sub>h</sub> = " << formatFixed(m->ratio, 2) << " (required " << formatFixed(kModellingRatioMin, 2) << "–"
+          << formatFixed(kModellingRatioMax, 2) << ")</td><td>" << badge(m->verdict) << "</td></tr>\n";
     }
     h << "<tr><td>Discomfort glare</td><td colspan=\"2\">" << a.observers.size() << " observer"
       << (a.observers.size() == 1 ? "" : "s") << "</td><td class=\"num\" colspan=\"2\">UGR<sub>L</sub> "
@@ -458,7 +466,7 @@ void surfaceGridsSection(std::ostringstream& h, const ReportData& data) {
       const GridReport& g = data.grids[static_cast<std::size_t>(i)];
       std::string label = g.name.substr(std::min(g.name.size(), s.name.size() + 2));  // without "<name>: "
       label += " (" + g.roomSurface + ")";
-      requiredAchievedRow(h, label, data, i);
+      requiredAchievedRow(h, xmlEscape(label), data, i);
     }
     h << "</tbody>\n</table>\n";
   }

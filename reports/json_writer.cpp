@@ -178,6 +178,7 @@ std::string summaryJson(const ReportData& data) {
                          {"task_grid", gridName(a.task)},
                          {"surrounding_grid", gridName(a.surrounding)},
                          {"background_grid", gridName(a.background)},
+                         {"cylindrical_grid", gridName(a.cylindrical)},
                          {"ugr_limit", optionalNumber(a.ugrLimit)},
                          {"ugr", optionalNumber(a.ugr)},
                          {"ugr_observers", a.observers},

@@ -181,6 +181,7 @@ struct ObserverReport {
 struct TaskAreaReport {
   std::string name;
   int task = -1, surrounding = -1, background = -1;
+  int cylindrical = -1;  // the Ē_z (and modelling) grid at eye height, when asked for
   std::optional<double> ugrLimit, ugr;
   std::vector<std::string> observers;  // those standing in the task area or its bands
   std::optional<double> ra;            // required Ra

@@ -112,7 +112,7 @@ struct GridSpec {
   // Grids a [[task_area]] makes: its name and which of its areas this is; a background without
   // a `room` is clipped to the scene's plan extent when it is made (study/prepared_grid.cpp).
   std::string taskArea;
-  enum class Area { kNone, kTask, kSurrounding, kBackground } area = Area::kNone;
+  enum class Area { kNone, kTask, kSurrounding, kBackground, kCylindrical } area = Area::kNone;
   bool clipToRoom = false;
   // Grids a [[surface_grid]] makes (study/surface_grids.h): its name, the scene surfaces this
   // grid lies on (their identifiers) and which surface of the room they are.
@@ -147,7 +147,13 @@ struct TaskAreaSpec {
   double maintainedLux = 500.0;         // Ē_m of the task area
   std::optional<double> uniformity;     // U0 of the task area
   std::optional<double> ugrLimit;       // UGR_L
-  std::optional<double> ra;             // required colour rendering index (stated, not computed)
+  std::optional<double> ra;             // required Ra (against the luminaires' colour rendering)
+  // `cylindrical_illuminance` (Ē_z,m required, lx) and `modelling`: a fourth grid over the task
+  // area at `eye_height` (1.2 m seated, 1.6 m standing) of cylindrical illuminance, U0 ≥ 0.10,
+  // with the modelling ratio when asked (EN 12464-1:2021, "Cylindrical illuminance and modelling").
+  std::optional<double> cylindricalLux;
+  bool modelling = false;
+  double eyeHeightM = 1.2;
   FileLoc loc;
 };
 

@@ -256,6 +256,11 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
           v.y > std::max(k[0].y, k[1].y))
         c.fail(*n, "the task area reaches outside its 'room'");
   }
+  a.cylindricalLux = optNumber(tab, "cylindrical_illuminance");
+  if (a.cylindricalLux) checkMin(tab, "cylindrical_illuminance", *a.cylindricalLux, 0.0, true, " lx");
+  if (const toml::node* n = tab.get("modelling")) a.modelling = asBool(c, *n, "modelling");
+  a.eyeHeightM = numberOr(tab, "eye_height", a.eyeHeightM);
+  checkRange(tab, "eye_height", a.eyeHeightM, 0.5, 2.5, " m");
   std::optional<double> spacing;
   if (const toml::node* n = tab.get("spacing")) {
     spacing = asNumber(c, *n, "spacing");
@@ -277,7 +282,23 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
                                  kImmediateSurroundingWidthM + kBackgroundWidthM, room);
   background.targetAverageLux = backgroundLux(a.maintainedLux);
   background.targetUniformity = kBackgroundUniformity;
-  for (GridSpec* g : {&task, &surrounding, &background}) {
+  std::vector<GridSpec*> grids = {&task, &surrounding, &background};
+  // Faces: cylindrical illuminance at the eyes of the people working there, over the task area.
+  GridSpec faces = taskAreaGrid(a, a.name + " cylindrical", GridSpec::Area::kCylindrical);
+  if (a.cylindricalLux || a.modelling) {
+    faces.plane.origin.z = a.eyeHeightM;
+    faces.plane.isRectangle = false;
+    faces.plane.outline = a.outline;
+    faces.plane.spacingM = spacing;
+    faces.quantity = GridQuantity::kCylindrical;
+    faces.quantityLoc = a.loc;
+    faces.modelling = a.modelling;
+    faces.modellingLoc = a.loc;
+    faces.targetAverageLux = a.cylindricalLux;
+    if (a.cylindricalLux) faces.targetUniformity = kCylindricalUniformity;
+    grids.push_back(&faces);
+  }
+  for (GridSpec* g : grids) {
     if (!names.insert(g->name).second) throw InputError(a.loc, "two grids are named '" + g->name + "'");
     countPlaneGrid(g->plane, g->loc);
     out.grids.push_back(std::move(*g));

@@ -14,6 +14,7 @@ const char* areaName(GridSpec::Area a) {
     case GridSpec::Area::kTask: return "task area";
     case GridSpec::Area::kSurrounding: return "immediate surrounding";
     case GridSpec::Area::kBackground: return "background";
+    case GridSpec::Area::kCylindrical: return "cylindrical";
     case GridSpec::Area::kNone: break;
   }
   return "";
@@ -87,15 +88,19 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
                                       [&](const TaskAreaReport& a) { return a.name == spec.taskArea; });
     int& slot = spec.area == GridSpec::Area::kTask          ? r.task
                 : spec.area == GridSpec::Area::kSurrounding ? r.surrounding
-                                                            : r.background;
+                : spec.area == GridSpec::Area::kBackground  ? r.background
+                                                            : r.cylindrical;
     slot = static_cast<int>(g - data.grids.begin());
   }
   for (std::size_t ai = 0; ai < c.taskAreas.size(); ++ai) {
     const TaskAreaSpec& a = c.taskAreas[ai];
     TaskAreaReport& r = areas[ai];
     std::vector<Verdict> verdicts;
-    for (int i : {r.task, r.surrounding, r.background})
+    for (int i : {r.task, r.surrounding, r.background, r.cylindrical})
       if (i >= 0) verdicts.push_back(data.grids[static_cast<std::size_t>(i)].check.overall);
+    if (r.cylindrical >= 0)
+      if (const std::optional<ModellingResult>& m = data.grids[static_cast<std::size_t>(r.cylindrical)].modelling)
+        verdicts.push_back(m->verdict);
     // The observers standing in the task area, its surrounding or its background.
     const double reach = kImmediateSurroundingWidthM + kBackgroundWidthM;
     for (std::size_t k = 0; k < c.observers.size() && k < data.observers.size(); ++k) {

@@ -399,6 +399,34 @@ TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
             std::string::npos);
 }
 
+// A task area's cylindrical illuminance and modelling make a fourth grid over it at eye height.
+TEST(CaseFile, TaskAreaCylindricalAndModellingGrid) {
+  const fs::path path = casesDir() / "errors" / "task_area.toml";
+  const std::string area = "[[task_area]]\nname = \"desk\"\ncorners = [[1, 1], [2, 2]]\nheight = 0.75\n"
+                           "maintained_illuminance = 500\n";
+  const CaseFile c = parseCaseFile(area + "cylindrical_illuminance = 150\nmodelling = true\neye_height = 1.6\n", path);
+  ASSERT_EQ(c.grids.size(), 4u);
+  const GridSpec& z = c.grids[3];
+  EXPECT_EQ(z.name, "desk cylindrical");
+  EXPECT_EQ(z.area, GridSpec::Area::kCylindrical);
+  EXPECT_EQ(z.taskArea, "desk");
+  EXPECT_EQ(z.quantity, GridQuantity::kCylindrical);
+  EXPECT_TRUE(z.modelling);
+  EXPECT_EQ(z.plane.origin.z, 1.6);
+  EXPECT_EQ(z.plane.outline, c.taskAreas[0].outline);
+  EXPECT_EQ(z.targetAverageLux, 150.0);
+  EXPECT_EQ(z.targetUniformity, 0.10);
+  // Modelling alone: the grid without an Ē_z target, at the seated 1.2 m.
+  const CaseFile m = parseCaseFile(area + "modelling = true\n", path);
+  ASSERT_EQ(m.grids.size(), 4u);
+  EXPECT_FALSE(m.grids[3].targetAverageLux.has_value());
+  EXPECT_FALSE(m.grids[3].targetUniformity.has_value());
+  EXPECT_EQ(m.grids[3].plane.origin.z, 1.2);
+  EXPECT_EQ(parseCaseFile(area, path).grids.size(), 3u);
+  EXPECT_THROW(parseCaseFile(area + "eye_height = 3\n", path), InputError);
+  EXPECT_THROW(parseCaseFile(area + "cylindrical_illuminance = 0\n", path), InputError);
+}
+
 // A [[surface_grid]] is read as written; its grids are made with the scene (study/surface_grids.h).
 TEST(CaseFile, ReadsSurfaceGrids) {
   const fs::path path = casesDir() / "errors" / "surface_grid.toml";

@@ -52,6 +52,34 @@ TEST(TaskAreaReport, GridsObserversAndVerdicts) {
   EXPECT_EQ(a.verdict, Verdict::kPass);
 }
 
+// The fourth grid (Ē_z, modelling) joins the task area's lines and verdict, and its table.
+TEST(TaskAreaReport, CylindricalGridAndModellingCount) {
+  Fixture f;
+  f.c = parseCaseFile("[[task_area]]\nname = \"desk\"\ncorners = [[1, 1], [2, 2]]\nheight = 0.8\n"
+                      "maintained_illuminance = 500\ncylindrical_illuminance = 150\nmodelling = true\n",
+                      "case.toml");
+  f.data.grids.clear();
+  f.data.observers.clear();
+  for (const GridSpec& g : f.c.grids) {
+    GridReport r;
+    r.name = g.name;
+    r.check.overall = Verdict::kPass;
+    f.data.grids.push_back(r);
+  }
+  f.data.grids[3].modelling.emplace();
+  f.data.grids[3].modelling->ratio = 0.7;
+  f.data.grids[3].modelling->verdict = Verdict::kFail;  // above 0.60: flat
+  f.data.grids[3].targets.averageLux = 150.0;
+  addTaskAreaReports(f.c, f.data);
+  const TaskAreaReport& a = f.data.taskAreas[0];
+  EXPECT_EQ(a.cylindrical, 3);
+  EXPECT_EQ(f.data.grids[3].area, "cylindrical");
+  EXPECT_EQ(a.verdict, Verdict::kFail);
+  const std::string html = htmlReport(f.data);
+  EXPECT_NE(html.find(">Cylindrical Ē<sub>z</sub></a>"), std::string::npos);
+  EXPECT_NE(html.find("Ē<sub>h</sub> = 0.70 (required 0.30–0.60)"), std::string::npos);
+}
+
 TEST(TaskAreaReport, AnyFailingLineFailsTheTaskArea) {
   Fixture f;
   f.data.grids[2].check.overall = Verdict::kFail;  // the background too dark
