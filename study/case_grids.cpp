@@ -14,14 +14,19 @@ using namespace case_toml;
 
 namespace {
 
+// An entry's 'name', not empty; `dflt` when it has none.
+std::string entryName(Table& tab, std::string dflt) {
+  const toml::node* n = tab.get("name");
+  if (!n) return dflt;
+  const std::string name = asString(tab.ctx(), *n, "name");
+  if (name.empty()) tab.ctx().fail(*n, "'name' must not be empty");
+  return name;
+}
+
 // The grid's 'name' (default grid<n>), unique among the case's grids.
 void readGridName(Table& tab, int index, std::set<std::string>& names, GridSpec& g) {
   const Context& c = tab.ctx();
-  g.name = "grid" + std::to_string(index + 1);
-  if (auto n = tab.get("name")) {
-    g.name = asString(c, *n, "name");
-    if (g.name.empty()) c.fail(*n, "'name' must not be empty");
-  }
+  g.name = entryName(tab, "grid" + std::to_string(index + 1));
   if (!names.insert(g.name).second) {
     const toml::node* n = tab.get("name");
     throw InputError(n ? c.at(*n) : g.loc, "two grids are named '" + g.name + "'");
@@ -215,11 +220,7 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
   Table tab(t, c, "[[task_area]]");
   TaskAreaSpec a;
   a.loc = tab.loc();
-  a.name = "task area " + std::to_string(index + 1);
-  if (auto n = tab.get("name")) {
-    a.name = asString(c, *n, "name");
-    if (a.name.empty()) c.fail(*n, "'name' must not be empty");
-  }
+  a.name = entryName(tab, "task area " + std::to_string(index + 1));
   const toml::node* cn = tab.get("corners");
   const toml::node* pn = tab.get("polygon");
   if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
@@ -311,11 +312,7 @@ void readSurfaceGrid(const Context& c, const toml::table& t, int index, std::set
   Table tab(t, c, "[[surface_grid]]");
   SurfaceGridSpec s;
   s.loc = tab.loc();
-  s.name = "surfaces " + std::to_string(index + 1);
-  if (auto n = tab.get("name")) {
-    s.name = asString(c, *n, "name");
-    if (s.name.empty()) c.fail(*n, "'name' must not be empty");
-  }
+  s.name = entryName(tab, "surfaces " + std::to_string(index + 1));
   if (!names.insert(s.name).second) throw InputError(s.loc, "two grids are named '" + s.name + "'");
   const toml::node& pn = tab.require("surfaces");
   s.patternsLoc = c.at(pn);

@@ -11,6 +11,17 @@ namespace fs = std::filesystem;
 
 fs::path casesDir() { return fs::path(CANDELA_TEST_DATA) / "cases"; }
 
+// "LINE: file:LINE: message" of the InputError parsing `text` as the case `path` throws, or
+// "accepted".
+std::string parseError(const std::string& text, const fs::path& path) {
+  try {
+    parseCaseFile(text, path);
+  } catch (const InputError& e) {
+    return std::to_string(e.loc().line) + ": " + e.what();
+  }
+  return "accepted";
+}
+
 TEST(CaseFile, ReadsEveryKeyOfTheFullCase) {
   const fs::path path = casesDir() / "full" / "case.toml";
   const CaseFile c = readCaseFile(path);
@@ -202,14 +213,7 @@ TEST(CaseFile, ObserverKeysDefaultsAndErrors) {
   EXPECT_EQ(c.observers[1].name, "observer2");
   EXPECT_EQ(c.observers[1].eyeM(), Vec3(4.0, 1.0, 1.6));
   EXPECT_FALSE(c.observers[1].ugrLimit.has_value());
-  auto error = [&](const std::string& text) {
-    try {
-      parseCaseFile(text, path);
-    } catch (const InputError& e) {
-      return std::to_string(e.loc().line) + ": " + e.what();
-    }
-    return std::string("accepted");
-  };
+  auto error = [&](const std::string& text) { return parseError(text, path); };
   EXPECT_EQ(error("[[observer]]\nposition = [0, 0]\n\ndirection = [0, 0]\n").rfind("4: ", 0), 0u);  // at its line
   EXPECT_NE(error("[[observer]]\nposition = [0, 0]\ndirection = [0, 0]\n").find("'direction' must not be zero"),
             std::string::npos);
@@ -376,14 +380,7 @@ TEST(CaseFile, TaskAreaMakesItsThreeGrids) {
   EXPECT_NEAR(*c.grids[1].plane.spacingM, 0.1, 1e-12);
   EXPECT_NEAR(*c.grids[2].plane.spacingM, 0.4, 1e-12);
   for (const GridSpec& g : c.grids) EXPECT_EQ(g.plane.origin.z, 0.75);
-  auto error = [&](const std::string& text) {
-    try {
-      parseCaseFile(text, path);
-    } catch (const InputError& e) {
-      return std::to_string(e.loc().line) + ": " + e.what();
-    }
-    return std::string("accepted");
-  };
+  auto error = [&](const std::string& text) { return parseError(text, path); };
   const std::string body = "height = 0.8\nmaintained_illuminance = 500\n";
   EXPECT_NE(error("[[task_area]]\n" + body).find("needs 'corners'"), std::string::npos);
   EXPECT_NE(error("[[task_area]]\ncorners = [[0, 0], [1, 1]]\npolygon = [[0, 0], [1, 0], [0, 1]]\n" + body)
@@ -452,14 +449,7 @@ TEST(CaseFile, ReadsSurfaceGrids) {
   EXPECT_FALSE(d.roomType.has_value());
   EXPECT_EQ(d.side, SurfaceGridSpec::Side::kAuto);
   EXPECT_EQ(d.offsetM, 0.001);
-  auto error = [&](const std::string& text) {
-    try {
-      parseCaseFile(text, path);
-    } catch (const InputError& e) {
-      return std::to_string(e.loc().line) + ": " + e.what();
-    }
-    return std::string("accepted");
-  };
+  auto error = [&](const std::string& text) { return parseError(text, path); };
   EXPECT_NE(error("[[surface_grid]]\nname = \"w\"\n").find("needs the key 'surfaces'"), std::string::npos);
   EXPECT_EQ(error("[[surface_grid]]\nsurfaces = []\n").rfind("2: ", 0), 0u);
   EXPECT_EQ(error("[[surface_grid]]\nsurfaces = [\"\"]\n").rfind("2: ", 0), 0u);

@@ -301,22 +301,11 @@ TEST_F(ScheduleCase, ReportShowsTheScheduleEnergyAndSurfacesInWords) {
 // EULUMDAT colour rendering fields as manufacturers write them (the shared reference's files:
 // "1B/80", "70", "25", "1B", "1A", "1A/90", "1B/86"), CIE 29.2's groups' least Ra otherwise.
 TEST(ColourRendering, NumberElseGroupElseNothing) {
-  EXPECT_EQ(leastColourRendering("1B/80"), 80.0);
-  EXPECT_EQ(leastColourRendering("1B/86"), 86.0);
-  EXPECT_EQ(leastColourRendering("1A/90"), 90.0);
-  EXPECT_EQ(leastColourRendering("70"), 70.0);
-  EXPECT_EQ(leastColourRendering("25"), 25.0);
-  EXPECT_EQ(leastColourRendering("Ra>80"), 80.0);
-  EXPECT_EQ(leastColourRendering("1A"), 90.0);
-  EXPECT_EQ(leastColourRendering("1b"), 80.0);
-  EXPECT_EQ(leastColourRendering("2A"), 70.0);
-  EXPECT_EQ(leastColourRendering("2B"), 60.0);
-  EXPECT_EQ(leastColourRendering(" 3 "), 40.0);
-  EXPECT_EQ(leastColourRendering("4"), 20.0);
-  EXPECT_FALSE(leastColourRendering("").has_value());
-  EXPECT_FALSE(leastColourRendering("n/a").has_value());
-  EXPECT_FALSE(leastColourRendering("5").has_value());
-  EXPECT_FALSE(leastColourRendering("1000").has_value());
+  const std::pair<const char*, double> promised[] = {{"1B/80", 80}, {"1B/86", 86}, {"1A/90", 90}, {"70", 70},
+                                                     {"25", 25},    {"Ra>80", 80}, {"1A", 90},   {"1b", 80},
+                                                     {"2A", 70},    {"2B", 60},    {" 3 ", 40},  {"4", 20}};
+  for (const auto& [field, ra] : promised) EXPECT_EQ(leastColourRendering(field), ra) << field;
+  for (const char* field : {"", "n/a", "5", "1000"}) EXPECT_FALSE(leastColourRendering(field).has_value()) << field;
 }
 
 TEST(Energy, FloorAreaAndReferenceGridFromTheCase) {
