@@ -152,11 +152,9 @@ RoomSurface classify(const Vec3& facing) {
   return RoomSurface::kNone;
 }
 
-// A group's label: its one identifier, or what its identifiers share ("wall_south" for
-// wall_south_below and wall_south_pier1), or the first with a count.
-std::string groupLabel(std::vector<std::string> names) {
-  std::sort(names.begin(), names.end());
-  names.erase(std::unique(names.begin(), names.end()), names.end());
+// A group's label from its identifiers (sorted, each once): its one identifier, or what they
+// share ("wall_south" for wall_south_below and wall_south_pier1), or the first with a count.
+std::string groupLabel(const std::vector<std::string>& names) {
   if (names.size() == 1) return names.front();
   std::string common = names.front();
   for (const std::string& n : names) {

@@ -30,6 +30,19 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
   return out;
 }
 
+// Whether plan point p stands in task area a, its immediate surrounding or its background (within
+// 0.5 + 3 m of it): the observers and luminaires that count for it.
+bool inTaskAreaReach(const TaskAreaSpec& a, const Vec2& p) {
+  return insidePolygon(a.outline, p) || distanceToOutline(a.outline, p) <= kImmediateSurroundingWidthM + kBackgroundWidthM;
+}
+
+// The index of the grid report named `name` in data.grids, -1 when there is none (a band its
+// room leaves empty).
+int gridReportIndex(const ReportData& data, const std::string& name) {
+  const auto g = std::find_if(data.grids.begin(), data.grids.end(), [&](const GridReport& r) { return r.name == name; });
+  return g == data.grids.end() ? -1 : static_cast<int>(g - data.grids.begin());
+}
+
 // The task area's required Ra against the least Ra of the luminaires over it: those placed (in
 // plan) in the task area, its surrounding or its background, else every luminaire of the case.
 // Checked when every such luminaire's file states its colour rendering (EULUMDAT), else not
@@ -37,11 +50,9 @@ Verdict combine(const std::vector<Verdict>& verdicts) {
 void checkColourRendering(const CaseFile& c, const TaskAreaSpec& area, const ReportData& data, TaskAreaReport& r) {
   if (!data.installation || data.installation->luminaires.empty()) return;
   const std::vector<LuminaireTypeReport>& types = data.installation->luminaires;
-  const double reach = kImmediateSurroundingWidthM + kBackgroundWidthM;
   std::vector<bool> over(types.size(), false);
   for (const LuminairePlacement& p : c.luminaires) {
-    const Vec2 plan(p.positionM.x, p.positionM.y);
-    if (!insidePolygon(area.outline, plan) && distanceToOutline(area.outline, plan) > reach) continue;
+    if (!inTaskAreaReach(area, Vec2(p.positionM.x, p.positionM.y))) continue;
     const std::size_t e = static_cast<std::size_t>(p.entry);
     const std::string& entry = e < c.luminaireEntries.size() ? c.luminaireEntries[e].name : p.name;
     for (std::size_t t = 0; t < types.size(); ++t)
@@ -79,18 +90,18 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
   // none), labelled.
   for (const GridSpec& spec : c.grids) {
     if (spec.area == GridSpec::Area::kNone) continue;
-    const auto g = std::find_if(data.grids.begin(), data.grids.end(),
-                                [&](const GridReport& r) { return r.name == spec.name; });
-    if (g == data.grids.end()) continue;
-    g->taskArea = spec.taskArea;
-    g->area = areaName(spec.area);
+    const int i = gridReportIndex(data, spec.name);
+    if (i < 0) continue;
+    GridReport& g = data.grids[static_cast<std::size_t>(i)];
+    g.taskArea = spec.taskArea;
+    g.area = areaName(spec.area);
     TaskAreaReport& r = *std::find_if(areas.begin(), areas.end(),
                                       [&](const TaskAreaReport& a) { return a.name == spec.taskArea; });
     int& slot = spec.area == GridSpec::Area::kTask          ? r.task
                 : spec.area == GridSpec::Area::kSurrounding ? r.surrounding
                 : spec.area == GridSpec::Area::kBackground  ? r.background
                                                             : r.cylindrical;
-    slot = static_cast<int>(g - data.grids.begin());
+    slot = i;
   }
   for (std::size_t ai = 0; ai < c.taskAreas.size(); ++ai) {
     const TaskAreaSpec& a = c.taskAreas[ai];
@@ -102,10 +113,9 @@ void addTaskAreaReports(const CaseFile& c, ReportData& data) {
       if (const std::optional<ModellingResult>& m = data.grids[static_cast<std::size_t>(r.cylindrical)].modelling)
         verdicts.push_back(m->verdict);
     // The observers standing in the task area, its surrounding or its background.
-    const double reach = kImmediateSurroundingWidthM + kBackgroundWidthM;
     for (std::size_t k = 0; k < c.observers.size() && k < data.observers.size(); ++k) {
       const Vec2 p = c.observers[k].positionM;
-      if (!insidePolygon(a.outline, p) && distanceToOutline(a.outline, p) > reach) continue;
+      if (!inTaskAreaReach(a, p)) continue;
       const ObserverReport& o = data.observers[k];
       r.observers.push_back(o.name);
       if (o.ugr) r.ugr = std::max(r.ugr.value_or(o.ugr.value()), *o.ugr);
@@ -127,13 +137,13 @@ void addSurfaceGridReports(const CaseFile& c, ReportData& data) {
     std::vector<Verdict> verdicts;
     for (const GridSpec& spec : c.grids) {
       if (spec.surfaceGrid != s.name) continue;
-      const auto g = std::find_if(data.grids.begin(), data.grids.end(),
-                                  [&](const GridReport& gr) { return gr.name == spec.name; });
-      if (g == data.grids.end()) continue;
-      g->surfaceGrid = s.name;
-      g->roomSurface = roomSurfaceName(spec.roomSurface);
-      r.grids.push_back(static_cast<int>(g - data.grids.begin()));
-      verdicts.push_back(g->check.overall);
+      const int i = gridReportIndex(data, spec.name);
+      if (i < 0) continue;
+      GridReport& g = data.grids[static_cast<std::size_t>(i)];
+      g.surfaceGrid = s.name;
+      g.roomSurface = roomSurfaceName(spec.roomSurface);
+      r.grids.push_back(i);
+      verdicts.push_back(g.check.overall);
     }
     r.verdict = combine(verdicts);
     data.surfaceGrids.push_back(std::move(r));
