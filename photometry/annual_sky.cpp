@@ -297,4 +297,17 @@ AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOpt
   return out;
 }
 
+std::vector<float> patchMeanLuminance(const SkyModel& sky, int subdivision, double groundReflectance, int subSamples) {
+  const SkyPatches patches(subdivision);
+  const PatchRule rule = makePatchRule(patches, subSamples);
+  std::vector<float> lum(size_t(patches.count()), 0.0f);
+  for (int p = 1; p < patches.count(); ++p) {
+    double mean = 0.0;
+    for (int k = rule.start[p]; k < rule.start[p + 1]; ++k) mean += rule.weight[k] * sky.luminance(rule.dir[k]);
+    lum[p] = float(mean);
+  }
+  lum[0] = float(groundReflectance * sky.horizontalIlluminanceLux() / kPi);
+  return lum;
+}
+
 }  // namespace candela

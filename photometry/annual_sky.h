@@ -84,4 +84,11 @@ AnnualSky makeAnnualSky(const EpwFile& epw, const Site& site, const AnnualSkyOpt
 // agrees with it to ~1e-7 (tests/photometry/annual_sky_test.cpp).
 double perezRelativeHorizontal(const SkyModel& sky, const Vec3& sunDirTrue);
 
+// Mean luminance (cd/m2) of `sky` over each patch of SkyPatches(subdivision), by the quadrature
+// the hourly sky vectors use (`subSamples` Gauss-Legendre points per side); index 0, the ground,
+// is ρ_g E_h / π with E_h the sky's own horizontal illuminance (a daylight factor's overcast sky,
+// compliance studies). One value per patch.
+std::vector<float> patchMeanLuminance(const SkyModel& sky, int subdivision, double groundReflectance,
+                                      int subSamples = 4);
+
 }  // namespace candela
