@@ -6,10 +6,12 @@
 //   view out: horizontal sight angle ≥ 14° / 28° / 54°, outside distance of the view
 //   ≥ 6 m / 20 m / 50 m, layers seen: landscape / landscape + one of sky and ground / all three;
 //   sunlight: ≥ 1.5 h / 3 h / 4 h of possible sun on a day between 1 February and 21 March.
-// Checked against public summaries: DL-Light's EN 17037 horizontal-sight-angle page
-// (deluminaelab.com, "EN 17037 uses 3 thresholds for the sight angle: 14°, 28° and 54°") and the
-// Almond EN 17037 sunlight tool's description (glama.ai, almond-mcp en17037_sunlight: "Levels:
-// >= 1.5 h minimum, 3 h medium, 4 h high", a day between 1 February and 21 March).
+// The sight angles and the hours were checked against public summaries: DL-Light's EN 17037
+// horizontal-sight-angle page (deluminaelab.com, "EN 17037 uses 3 thresholds for the sight angle:
+// 14°, 28° and 54°") and the Almond EN 17037 sunlight tool's description (glama.ai, almond-mcp
+// en17037_sunlight: "Levels: >= 1.5 h minimum, 3 h medium, 4 h high", a day between 1 February
+// and 21 March). The outside distances and the layer rule are the issue's figures, not yet
+// checked against the standard's text (docs/en17037-view-sunlight.md).
 #pragma once
 
 #include "metrics/compliance_levels.h"
