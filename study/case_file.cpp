@@ -3,6 +3,7 @@
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/portals.h"
+#include "study/case_compliance.h"
 #include "study/case_grids.h"
 #include "study/case_toml.h"
 
@@ -454,12 +455,13 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
 
   static const std::set<std::string> kTopLevel = {"case",      "scene",        "luminaire", "portal",   "site",
                                                   "sky",       "grid",         "task_area", "surface_grid",
-                                                  "view",      "observer",     "settings",  "annual",   "output"};
+                                                  "view",      "observer",     "settings",  "annual",   "output",
+                                                  "compliance"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
                                                "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, "
-                                               "surface_grid, view, observer, settings, annual or output)");
+                                               "surface_grid, view, observer, settings, annual, output or compliance)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -504,6 +506,13 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
       throw InputError(out.annual.loc, "an [annual] table needs [sky] type = \"annual\"");
   }
   if (auto t = singleTable(c, root, "output")) readOutput(c, *t, out.output);
+  if (auto a = tableArray(c, root, "compliance")) {
+    std::set<std::string> names;
+    for (const toml::node& n : *a) readCompliance(c, *n.as_table(), names, out);
+    if (out.sky.type.kind != SkyKind::kAnnual)
+      throw InputError(out.compliance.front().loc,
+                       "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file)");
+  }
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "engine/luminaire_source.h"
 #include "photometry/sky_type.h"
 #include "metrics/targets.h"
+#include "study/compliance_spec.h"
 #include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
 
@@ -239,6 +240,9 @@ struct CaseFile {
   // [[surface_grid]]: their grids need the scene, and are added to `grids` when it is read
   // (withSurfaceGrids, study/surface_grids.h).
   std::vector<SurfaceGridSpec> surfaceGrids;
+  // [[compliance]]: the standards the case is checked against (study/compliance_spec.h); annual
+  // cases only.
+  std::vector<ComplianceSpec> compliance;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

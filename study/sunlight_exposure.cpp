@@ -113,8 +113,7 @@ void checkSunlightDate(const CivilDate& d, const FileLoc& loc) {
   const std::string text = std::to_string(d.year) + "-" + std::to_string(d.month) + "-" + std::to_string(d.day);
   if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > daysInMonth(d.year, d.month))
     throw InputError(loc, "sunlight date " + text + " is not a date");
-  const bool inRange = d.month == 2 || (d.month == 3 && d.day <= 21);
-  if (!inRange)
+  if (!inSunlightDateRange(d))
     throw InputError(loc, "sunlight date " + text +
                               " must lie between 1 February and 21 March (EN 17037 5.3: the reference day)");
 }

@@ -13,16 +13,11 @@
 #include "engine/tracer.h"
 #include "metrics/en17037_view_sunlight.h"
 #include "photometry/site.h"
+#include "study/compliance_spec.h"
 
 #include <vector>
 
 namespace candela {
-
-struct CivilDate {
-  int year = 2026;
-  int month = 3;  // 1..12
-  int day = 21;   // 1..31
-};
 
 // Throws InputError at loc unless date is a real date between 1 February and 21 March
 // (inclusive), EN 17037's range for the reference day.
