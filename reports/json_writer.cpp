@@ -204,6 +204,11 @@ std::string summaryJson(const ReportData& data) {
   j["verdict"] = verdictName(overallVerdict(data, &checked, &failed));
   j["verdict_lines"] = {{"checked", checked}, {"failed", failed}};
   if (data.installation) addInstallation(j, *data.installation);
+  if (!data.compliance.empty()) {
+    json compliance = json::object();
+    for (const ComplianceReport& r : data.compliance) compliance[r.name] = complianceJson(r);
+    j["compliance"] = compliance;
+  }
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();
   for (const Warning& w : data.warnings)

@@ -48,6 +48,8 @@ Verdict overallVerdict(const ReportData& data, int* checked, int* failed) {
   for (const TaskAreaReport& a : data.taskAreas) add(a.raVerdict);
   for (const ObserverReport& o : data.observers)
     if (const std::optional<bool> pass = o.pass()) add(*pass ? Verdict::kPass : Verdict::kFail);
+  // A [[compliance]] entry is one line: its standard's verdict.
+  for (const ComplianceReport& r : data.compliance) add(r.verdict == "pass" ? Verdict::kPass : Verdict::kFail);
   if (checked) *checked = n;
   if (failed) *failed = bad;
   return bad > 0 ? Verdict::kFail : n > 0 ? Verdict::kPass : Verdict::kNotChecked;

@@ -16,6 +16,7 @@
 #include "metrics/grid_stats.h"
 #include "metrics/modelling.h"
 #include "metrics/targets.h"
+#include "reports/compliance_report.h"
 #include "reports/polar_plot_svg.h"
 
 namespace candela {
@@ -271,13 +272,14 @@ struct ReportData {
   std::vector<PlanMarker> planMarkers;  // luminaires and observers, drawn on horizontal grids' plans
   std::vector<PlanSection> planSections;  // one per distinct cut height (GridReport::planSection)
   std::optional<InstallationReport> installation;  // point-in-time runs
+  std::vector<ComplianceReport> compliance;        // [[compliance]] entries (annual runs)
   double northDeg = 0.0;             // true north, degrees clockwise from plan +Y (north arrow)
   std::vector<Warning> warnings;     // what the run found suspicious (docs/warnings.md), in order
 };
 
 // The run's verdict as a whole (summary.json's "verdict", the report's summary): fail when any
 // checked line fails (a grid's targets, a wall's or ceiling's and a task area's grids included, a
-// modelling ratio, a task area's Ra, an observer's UGR), pass when at least one is checked and all pass, else not checked. `checked`
+// modelling ratio, a task area's Ra, an observer's UGR, a [[compliance]] entry), pass when at least one is checked and all pass, else not checked. `checked`
 // and `failed`, when given, count the lines.
 Verdict overallVerdict(const ReportData& data, int* checked = nullptr, int* failed = nullptr);
 

@@ -1,0 +1,75 @@
+// The [[compliance]] entries of an annual case (docs/compliance.md): what they need of the
+// hourly results is gathered while the annual study streams its blocks of sensors
+// (ComplianceTallies), the geometric parts (sunlight, view out) are traced after it, and each
+// entry becomes a ComplianceReport for summary.json and the report.
+#pragma once
+
+#include "engine/tracer.h"
+#include "metrics/en17037.h"
+#include "photometry/annual_sky.h"
+#include "photometry/site.h"
+#include "reports/report_data.h"
+#include "study/case_file.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+// A grid of the study: its sensors first .. first + count - 1 in the study's list, and the floor
+// area each sensor stands for (m²; spacing² for plane grids, LEED's area weighting).
+struct ComplianceGrid {
+  std::string name;
+  std::size_t first = 0, count = 0;
+  double sensorAreaM2 = 1.0;
+};
+
+class ComplianceTallies {
+ public:
+  ComplianceTallies(const CaseFile& c, std::vector<ComplianceGrid> grids, const AnnualSky& sky);
+
+  // Whether any entry needs the hourly illuminance (EN 17037 part 1): then every block goes to
+  // addBlock, with each sensor's illuminance under the overcast sky of overcastPatches().
+  bool needsHours() const { return !tallies_.empty(); }
+  // CIE overcast sky of 1 lx horizontal (and its ground, ρ_g of the case) per patch: the sky
+  // coefficients times it give each sensor's daylight factor / 100.
+  const std::vector<float>& overcastPatches() const { return overcast_; }
+  // Sensors first .. first + count - 1: total[s * hours + h] lux (blinds open: EN 17037 judges
+  // the daylight provision without movable shading), overcastLux[s] per lux outdoors.
+  void addBlock(std::size_t first, std::size_t count, int hours, const float* total, const float* overcastLux);
+
+  const std::vector<ComplianceGrid>& grids() const { return grids_; }
+  int gridIndex(const std::string& name) const;  // -1: none
+  const ProvisionTally& tally(int grid) const { return tallies_[static_cast<std::size_t>(grid)]; }
+  const std::vector<double>& daylightFactorPct(int grid) const { return df_[static_cast<std::size_t>(grid)]; }
+  int daylightHours() const { return daylightCount_; }
+  double medianDiffuseLux() const { return medianDiffuseLux_; }
+
+ private:
+  std::vector<ComplianceGrid> grids_;
+  std::vector<ProvisionTally> tallies_;  // one per grid (empty without EN 17037 entries)
+  std::vector<std::vector<double>> df_;
+  std::vector<float> overcast_;
+  int daylightCount_ = 0;
+  double medianDiffuseLux_ = 0.0;
+};
+
+struct ComplianceInputs {
+  const CaseFile* caseFile = nullptr;
+  const Scene* scene = nullptr;       // blinds open
+  Site site;
+  int weatherYear = 2026;             // the weather file's first year: the default dates' year
+  const ComplianceTallies* tallies = nullptr;
+  const std::vector<GridReport>* annualGrids = nullptr;  // the study's grid reports, in grid order
+  int threads = 0;
+};
+
+// Every entry of the case, in case order. Throws InputError (at the entry's keys) for inputs only
+// the scene can judge.
+std::vector<ComplianceReport> evaluateCompliance(const ComplianceInputs& in);
+
+// The grid indices an entry judges (its `spaces`, else every grid).
+std::vector<int> complianceSpaces(const ComplianceSpec& s, const ComplianceTallies& t);
+
+}  // namespace candela
