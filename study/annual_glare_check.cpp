@@ -64,6 +64,10 @@ RenderedGlare renderedGlare(const Tracer& tracer, const GlareView& view, const T
     pixels.push_back({img.luminance[i], omega, positionIndex(dir)});
   }
   out.dgpPerPixel = daylightGlareProbability(out.image.verticalIlluminanceLux, pixels, det.lowLightCorrection);
+  const IrradianceEstimate e = tracer.irradiance(view.eyeM, frame.forward, options.evStream, settings);
+  out.sensorEvLux = e.illuminanceLux();
+  out.sensorEvStandardErrorLux = e.standardErrorLux();
+  out.dgpSensorEv = daylightGlareProbability(out.sensorEvLux, out.image.sources, det.lowLightCorrection);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
@@ -85,6 +89,8 @@ std::vector<GlareHourCheck> checkChosenHours(const HourSceneInput& in, const Gla
     c.renderedDgp = imagelessOptions.lowLightCorrection ? r.image.dgp : r.image.dgpUncorrected;
     c.renderedDgpPerPixel = r.dgpPerPixel;
     c.renderedEvLux = r.image.verticalIlluminanceLux;
+    c.renderedSensorEvLux = r.sensorEvLux;
+    c.renderedDgpSensorEv = r.dgpSensorEv;
     c.renderedSources = static_cast<int>(r.image.sources.size());
     c.renderS = r.seconds;
     out.push_back(c);

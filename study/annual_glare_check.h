@@ -40,11 +40,18 @@ struct RenderedGlareOptions {
     r.irradianceSamples = 64;
     return r;
   }();
+  // Random stream of the sensor estimate of Ev at the eye (apart from the pixels' and the grids').
+  uint64_t evStream = kAnnualGlareStreamBase - 1;
 };
 
 struct RenderedGlare {
   ImageGlare image;           // evaluateImageGlare: pixels above the threshold grouped (evalglare)
   double dgpPerPixel = 0.0;   // every pixel above the threshold its own source (as the imageless tally)
+  // Ev at the eye from the sensor estimator (the sun and sky sampled explicitly, Tracer::irradiance),
+  // and the image's DGP with it in place of the image's Ev (evalglare's -i): a sun smaller than a
+  // pixel makes the image's own Ev noisy (docs/annual-glare.md).
+  double sensorEvLux = 0.0, sensorEvStandardErrorLux = 0.0;
+  double dgpSensorEv = 0.0;
   double seconds = 0.0;
 };
 // The view rendered through `tracer` (any scene state) and rated with `threshold` (a fixed
@@ -56,6 +63,7 @@ struct GlareHourCheck {
   int hour = 0;  // index into the sky's hours
   double imagelessDgp = 0.0, imagelessEvLux = 0.0;
   double renderedDgp = 0.0, renderedDgpPerPixel = 0.0, renderedEvLux = 0.0;
+  double renderedSensorEvLux = 0.0, renderedDgpSensorEv = 0.0;  // RenderedGlare's sensorEvLux, dgpSensorEv
   int renderedSources = 0;
   double renderS = 0.0;
   double dgpDifference() const { return renderedDgp - imagelessDgp; }

@@ -14,6 +14,7 @@
 
 #include "engine/daylight.h"
 #include "engine/rad_reader.h"
+#include "photometry/epw.h"
 #include "photometry/make_sky.h"
 #include "photometry/site.h"
 
@@ -255,6 +256,7 @@ TEST(ImagelessAnnualGlare, AgreesWithTheRenderedMethodUnderASkyWithoutSun) {
               g.verticalLux[0], r.image.verticalIlluminanceLux, ev, g.dgp[0], r.dgpPerPixel, r.image.dgp,
               r.image.sources.size(), r.seconds);
   EXPECT_NEAR(r.image.verticalIlluminanceLux, ev, evBound);
+  EXPECT_NEAR(r.sensorEvLux, ev, 4.0 * r.sensorEvStandardErrorLux + 1e-6 * ev);
   EXPECT_NEAR(r.image.verticalIlluminanceLux, g.verticalLux[0], evBound + dEvImageless);
   const double s = L * L * hole.inversePSquared;
   EXPECT_NEAR(r.dgpPerPixel, g.dgp[0],
@@ -265,6 +267,37 @@ TEST(ImagelessAnnualGlare, AgreesWithTheRenderedMethodUnderASkyWithoutSun) {
   const double grouped = L * L * hole.solidAngle;
   EXPECT_NEAR(r.image.dgp, handDgp(ev, grouped),
               dgpTolerance(ev, grouped, evBound, sBound + grouped * (1.0 - 1.0 / (pMean * pMean))));
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(AnnualGlareCheck, HourSceneIsThePointInTimeSkyOfTheSkyVectorsHour) {
+  // The rendered check's sky must be the hour the imageless method used: the same sun position,
+  // the same Perez diffuse illuminance and the ground of ρ_g E_gh / π (annual_sky.h's definitions).
+  const EpwFile epw = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
+  const Site site = makeSite(epw.location.latitudeDeg, epw.location.longitudeDeg, epw.location.elevationM,
+                             epw.location.timezoneHours, 0.0);
+  const AnnualSky sky = makeAnnualSky(epw, site, AnnualSkyOptions{});
+  const Scene geometry = blackRoom(1.0);
+  const HourSceneInput in{&geometry, &epw, &sky, 20.0, 0.2};
+  int checked = 0;
+  for (int h : {sunHours(sky)[100], sunHours(sky)[2000], sunHours(sky)[3500]}) {
+    const AnnualHour& a = sky.hours[h];
+    const Scene s = hourScene(in, h);
+    ASSERT_TRUE(s.sky.has_value());
+    EXPECT_NEAR(glm::length(s.sky->sunDirModel - trueToModel(a.sunDirTrue, 20.0)), 0.0, 1e-9);
+    EXPECT_NEAR(s.sky->horizontalSkyLux, a.diffuseHorizontalLux, 1e-3 * a.diffuseHorizontalLux);
+    EXPECT_NEAR(s.sky->groundLuminanceCdM2, sky.at(h, 0), 1e-3 * sky.at(h, 0));
+    EXPECT_EQ(s.distant.size(), geometry.distant.size() + 1);  // the sun
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  const int night = 0;  // 1 January, 01:00
+  EXPECT_THROW(hourScene(in, night), InputError);
 }
 
 }  // namespace
