@@ -194,6 +194,9 @@ ViewAnnualGlare imagelessAnnualGlare(const Tracer& tracer, const GlareView& view
   // Ev: one sensor at the eye facing the line of sight, through the annual machinery.
   TraceSettings settings = job.settings;
   settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
+  const int factor = std::max(1, options.evSampleFactor);
+  settings.hemisphereSamples *= factor;
+  settings.lightSamples *= factor;
   const Vec3 eye = view.eyeM, normal = glm::normalize(view.direction);
   const SensorBlock block{std::span<const Vec3>(&eye, 1), std::span<const Vec3>(&normal, 1), stream};
   const SkyPatches patches(sky.subdivision);

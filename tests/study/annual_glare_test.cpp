@@ -163,6 +163,13 @@ std::pair<double, double> evPerLuminanceSpread(const Tracer& tracer, int streams
   return {mean, std::sqrt(var / (v.size() - 1))};
 }
 
+// The coefficients at the test's own settings (evPerLuminanceSpread's), not multiplied.
+ImagelessGlareOptions plainOptions() {
+  ImagelessGlareOptions o;
+  o.evSampleFactor = 1;
+  return o;
+}
+
 struct Year {
   AnnualSky sky = handSky();
   SunSet sunSet = indirectSunSet(sky);
@@ -181,7 +188,7 @@ TEST(ImagelessAnnualGlare, HourlyDgpMatchesAHandCalculation) {
   const Scene scene = blackRoom(1.0);
   const Tracer tracer(scene);
   const Year y;
-  const ViewAnnualGlare g = imagelessAnnualGlare(tracer, kView, kAnnualGlareStreamBase, y.job(0));
+  const ViewAnnualGlare g = imagelessAnnualGlare(tracer, kView, kAnnualGlareStreamBase, y.job(0), plainOptions());
   const Hole hole = handHole();
   const auto [evPerL, sdPerL] = evPerLuminanceSpread(tracer, 8);
   const double cellRad = degToRad(90.0 / g.sky.rowsPer90Deg);
@@ -236,7 +243,7 @@ TEST(ImagelessAnnualGlare, AgreesWithTheRenderedMethodUnderASkyWithoutSun) {
   const Year y;
   const Scene dcScene = blackRoom(1.0);
   const Tracer dcTracer(dcScene);
-  const ViewAnnualGlare g = imagelessAnnualGlare(dcTracer, kView, kAnnualGlareStreamBase, y.job(0));
+  const ViewAnnualGlare g = imagelessAnnualGlare(dcTracer, kView, kAnnualGlareStreamBase, y.job(0), plainOptions());
   const Scene skyScene = blackRoom(kHourLuminance[0]);
   const Tracer tracer(skyScene);
   RenderedGlareOptions o;
