@@ -10,6 +10,7 @@
 #include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
+#include "study/annual_glare.h"
 #include "study/blinds.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"
@@ -53,9 +54,7 @@ class YearTracer {
         patches_(job.sky->subdivision), suns_(sunDirectionsModel(*job.sky, job.northDeg)) {
     for (const Vec3& d : job.sunSet->dirsTrue) setModel_.push_back(trueToModel(d, job.northDeg));
     // The interreflected sun needs fewer paths than the sky (each carries every sun of the set).
-    sunSettings_ = job.settings;
-    sunSettings_.hemisphereSamples = std::max(64, job.settings.hemisphereSamples / 8);
-    sunSettings_.firstBounceSplit = std::max(1, job.settings.firstBounceSplit / 4);
+    sunSettings_ = interreflectedSunSettings(job.settings);
     coefficientsS_ = secondsSince(start_);
   }
 
