@@ -7,6 +7,7 @@
 #include "base/atomic_file.h"
 #include "reports/annual_charts.h"
 #include "reports/falsecolor.h"
+#include "reports/compliance_html.h"
 #include "reports/installation_html.h"
 #include "reports/plan_section_svg.h"
 #include "reports/plan_svg.h"
@@ -614,6 +615,7 @@ std::string htmlReport(const ReportData& data) {
   summarySection(h, data);
   taskAreasSection(h, data);
   surfaceGridsSection(h, data);
+  h << complianceHtml(data.compliance);
   if (data.installation)
     h << luminaireScheduleHtml(*data.installation) << energyHtml(*data.installation) << surfacesHtml(*data.installation);
   // One section per grid: plan and metrics.

@@ -55,13 +55,21 @@ class ComplianceTallies {
   double medianDiffuseLux_ = 0.0;
 };
 
+struct AnnualGlareJob;
+
 struct ComplianceInputs {
   const CaseFile* caseFile = nullptr;
   const Scene* scene = nullptr;       // blinds open
   Site site;
+  const EpwFile* epw = nullptr;
+  const AnnualSky* sky = nullptr;
+  const AnnualGlareJob* glareJob = nullptr;  // the year's suns and the case's trace settings
+  const std::vector<char>* occupied = nullptr;  // per hour of the year
   int weatherYear = 2026;             // the weather file's first year: the default dates' year
   const ComplianceTallies* tallies = nullptr;
   const std::vector<GridReport>* annualGrids = nullptr;  // the study's grid reports, in grid order
+  const std::vector<Vec3>* positions = nullptr;  // the study's sensors (grids in case order)
+  const std::vector<Vec3>* normals = nullptr;
   int threads = 0;
 };
 

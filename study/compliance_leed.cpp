@@ -1,0 +1,136 @@
+#include "study/compliance_leed.h"
+
+#include "engine/sensors.h"
+#include "metrics/leed.h"
+#include "study/annual_glare.h"
+#include "study/case_scene.h"
+
+#include <cstdio>
+
+namespace candela {
+
+namespace {
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+double spaceArea(const ComplianceGrid& g) { return gridFloorAreaM2(static_cast<int>(g.count), g.sensorAreaM2); }
+
+}  // namespace
+
+ComplianceReport leedOption1(const ComplianceInputs& in, const ComplianceSpec& s) {
+  const ComplianceTallies& t = *in.tallies;
+  std::vector<LeedSpace> spaces;
+  for (int g : complianceSpaces(s, t)) {
+    const AnnualGridReport& a = *(*in.annualGrids)[static_cast<std::size_t>(g)].annual;
+    spaces.push_back({t.grids()[static_cast<std::size_t>(g)].name, spaceArea(t.grids()[static_cast<std::size_t>(g)]),
+                      a.summary.sDA300_50, a.summary.ASE1000_250});
+  }
+  const LeedOption1Result r = leedV41Option1(spaces);
+  ComplianceReport out;
+  LeedReport l;
+  for (const LeedSpaceResult& sp : r.spaces) {
+    LeedSpaceReport q;
+    q.space = sp.name, q.areaM2 = sp.floorAreaM2, q.sdaPct = sp.sdaPercent, q.asePct = sp.asePercent;
+    q.aseAbove10 = sp.aseAbove10;
+    l.aseExceeds10Percent = l.aseExceeds10Percent || sp.aseAbove10;
+    l.spaces.push_back(q);
+  }
+  l.averagePct = r.averageSdaPercent;
+  l.points = r.points;
+  l.eachSpaceAbove55 = r.eachSpaceAtLeast55;
+  out.verdict = r.points > 0 ? "pass" : "fail";
+  out.verdictLines.push_back(r.verdict);
+  out.leed = std::move(l);
+  return out;
+}
+
+int leedOption2Points(double averageInRangePct) {
+  return averageInRangePct >= 90.0 ? 3 : averageInRangePct >= 75.0 ? 2 : averageInRangePct >= 55.0 ? 1 : 0;
+}
+
+namespace {
+
+// The case under the CIE clear sky with the site's sun at `time`, its geometry alone (LEED's
+// daylight; no luminaires), at the site the annual study used.
+CaseFile clearSkyCase(const ComplianceInputs& in, const std::string& time) {
+  CaseFile c = *in.caseFile;
+  c.luminaires.clear();
+  c.luminaireEntries.clear();
+  c.compliance.clear();
+  c.sky = SkySpec{};
+  c.sky.present = true;
+  c.sky.type.kind = SkyKind::kCieClear;
+  c.sky.time = time;
+  c.sky.groundReflectance = in.caseFile->sky.groundReflectance;
+  c.sky.loc = in.caseFile->sky.loc;
+  c.sky.timeLoc = in.caseFile->sky.loc;
+  c.site = SiteSpec{};
+  c.site.present = true;
+  c.site.latitudeDeg = in.site.latitudeDeg;
+  c.site.longitudeDeg = in.site.longitudeDeg;
+  c.site.elevationM = in.site.elevationM;
+  c.site.timezoneHours = in.site.timezoneHours;
+  c.site.northDeg = in.site.trueNorthDeg();
+  c.site.loc = in.caseFile->sky.loc;
+  return c;
+}
+
+}  // namespace
+
+ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s) {
+  const ComplianceTallies& t = *in.tallies;
+  const std::vector<int> grids = complianceSpaces(s, t);
+  std::vector<CivilDate> dates = s.leedDates;
+  if (dates.empty()) dates = {{in.weatherYear, 3, 21}, {in.weatherYear, 9, 21}};
+  LeedReport l;
+  for (int g : grids) {
+    LeedSpaceReport q;
+    q.space = t.grids()[static_cast<std::size_t>(g)].name;
+    q.areaM2 = spaceArea(t.grids()[static_cast<std::size_t>(g)]);
+    l.spaces.push_back(q);
+  }
+  for (const CivilDate& d : dates)
+    for (double hour : s.leedHours) {
+      char time[32];
+      const int minutes = static_cast<int>(std::lround(hour * 60.0));
+      std::snprintf(time, sizeof time, "%04d-%02d-%02dT%02d:%02d", d.year, d.month, d.day, minutes / 60, minutes % 60);
+      l.times.push_back(time);
+      const std::unique_ptr<Scene> scene = loadCaseScene(clearSkyCase(in, time));
+      const Tracer tracer(*scene);
+      for (std::size_t k = 0; k < grids.size(); ++k) {
+        const ComplianceGrid& cg = t.grids()[static_cast<std::size_t>(grids[k])];
+        std::vector<SensorPoint> points;
+        for (std::size_t i = cg.first; i < cg.first + cg.count; ++i)
+          points.push_back({(*in.positions)[i], (*in.normals)[i]});
+        int inRange = 0;
+        for (const IrradianceEstimate& e : computeIrradiance(tracer, points, in.glareJob->settings, in.threads))
+          inRange += e.illuminanceLux() >= 300.0 && e.illuminanceLux() <= 3000.0;
+        l.spaces[k].inRangeByTimePct.push_back(points.empty() ? 0.0 : 100.0 * inRange / double(points.size()));
+      }
+    }
+  double area = 0.0, weighted = 0.0;
+  l.eachSpaceAbove55 = true;
+  for (LeedSpaceReport& q : l.spaces) {
+    double sum = 0.0;
+    for (double v : q.inRangeByTimePct) sum += v;
+    q.inRangePct = q.inRangeByTimePct.empty() ? 0.0 : sum / double(q.inRangeByTimePct.size());
+    area += q.areaM2;
+    weighted += q.areaM2 * q.inRangePct;
+    l.eachSpaceAbove55 = l.eachSpaceAbove55 && q.inRangePct >= 55.0;
+  }
+  l.averagePct = area > 0.0 ? weighted / area : 0.0;
+  l.points = leedOption2Points(l.averagePct);
+  ComplianceReport out;
+  out.verdict = l.points > 0 ? "pass" : "fail";
+  out.verdictLines.push_back("LEED v4.1 option 2: " + std::to_string(l.points) + " points (" + fixed(l.averagePct, 1) +
+                             " % of the floor area between 300 and 3000 lx, mean of " +
+                             std::to_string(l.times.size()) + " clear-sky times)");
+  out.leed = std::move(l);
+  return out;
+}
+
+}  // namespace candela
