@@ -178,6 +178,18 @@ struct ObserverSpec {
   Vec3 eyeM() const { return {positionM.x, positionM.y, eyeHeightM}; }
 };
 
+// A [[window_group]] of an annual study (docs/annual.md "Window groups"): the glazing surfaces
+// (identifiers or globs, * and ?) whose LM-83 blinds open and close together. Checked against the
+// scene when it is read (study/window_groups.h).
+struct WindowGroupSpec {
+  std::string name;
+  std::vector<std::string> patterns;
+  // The closed blinds' diffuse transmittance, a factor on the glass's normal transmittance
+  // (0, 1]; unset: LM-83-12 2.2.7's 20 % (study/blinds.h kBlindsTransmittance).
+  std::optional<double> blindsTransmittance;
+  FileLoc loc, patternsLoc;
+};
+
 // Unset optionals take the quality preset's value (chosen by the engine).
 struct Settings {
   Quality quality = Quality::kNormal;
@@ -239,6 +251,8 @@ struct CaseFile {
   // [[surface_grid]]: their grids need the scene, and are added to `grids` when it is read
   // (withSurfaceGrids, study/surface_grids.h).
   std::vector<SurfaceGridSpec> surfaceGrids;
+  // [[window_group]]: none, one group of all the glazing per grid (as before the key existed).
+  std::vector<WindowGroupSpec> windowGroups;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;
