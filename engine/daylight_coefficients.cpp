@@ -162,21 +162,32 @@ std::vector<float> directSunCoefficients(const Tracer& tracer, const std::vector
                                distribution);
 }
 
-std::vector<float> directSunCoefficients(const Tracer& tracer, const SensorBlock& block,
-                                         const std::vector<Vec3>& sunDirsModel, int samples, uint64_t seed,
-                                         int threads, const Distribution& distribution) {
+namespace {
+
+// Rows of (1 + labels) × suns floats per sensor of the block: the total S(s, j), then its part
+// through each label (labels null: the total alone). One code path for both, so the total is the
+// same float with or without labels.
+// 8 parameters: directSunCoefficientsByLabel's.
+std::vector<float> directSunRows(const Tracer& tracer, const SensorBlock& block, const std::vector<Vec3>& sunDirsModel,
+                                 int samples, uint64_t seed, int threads, const SurfaceLabels* labels,
+                                 const Distribution& distribution) {
   checkBlock(block);
   const std::span<const Vec3> positions = block.positions, normals = block.normals;
   const size_t ns = sunDirsModel.size();
-  std::vector<float> out(positions.size() * ns, 0.0f);
+  const size_t nl = labels ? static_cast<size_t>(labels->count) : 0, row = (1 + nl) * ns;
+  if (labels && labels->ofSurface.size() != tracer.scene().surfaceCount())
+    throw std::invalid_argument("surface labels: one per surface of the scene expected");
+  std::vector<float> out(positions.size() * row, 0.0f);
   const double cosMax = std::cos(0.5 * degToRad(kSunDiameterDeg));
   const Strata2D strata(std::max(1, samples));
   // Its own streams, apart from the points' (which the sky coefficients use).
   constexpr uint64_t kSunStream = 0x2000000000000000ULL;
-  distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
+  distributedRows(distribution, out, row, ItemUse::kResult, threads, [&](size_t i) {
     Rng rng(seed, kSunStream + block.firstIndex + i);
     const Vec3& p = positions[i];
     const Vec3& n = normals[i];
+    float* r = out.data() + i * row;
+    uint64_t rays = 0;
     for (size_t j = 0; j < ns; ++j) {
       const Vec3& sun = sunDirsModel[j];
       // Wholly behind the receiver (the disc's half-angle is 0.27°): nothing to trace.
@@ -188,11 +199,40 @@ std::vector<float> directSunCoefficients(const Tracer& tracer, const SensorBlock
         const Vec3 d = frame.toWorld(sampleUniformCone(u.x, u.y, cosMax));
         const double c = glm::dot(n, d);
         if (c <= 0.0) continue;
-        sum += c * photopic(tracer.transmittance(p, d, std::numeric_limits<double>::infinity(), kNoShape, kNoShape));
+        uint32_t glass = kNoShape;
+        const double v =
+            c * photopic(tracer.transmittance(p, d, std::numeric_limits<double>::infinity(), kNoShape, kNoShape, rays, glass));
+        sum += v;
+        if (labels && glass != kNoShape && v > 0.0) {
+          const int g = labels->ofSurface[glass];
+          if (g >= 0) r[(1 + static_cast<size_t>(g)) * ns + j] += static_cast<float>(v / strata.size());
+        }
       }
-      out[i * ns + j] = static_cast<float>(sum / strata.size());
+      r[j] = static_cast<float>(sum / strata.size());
     }
+    tracer.addRays(rays);
   });
+  return out;
+}
+
+}  // namespace
+
+std::vector<float> directSunCoefficients(const Tracer& tracer, const SensorBlock& block,
+                                         const std::vector<Vec3>& sunDirsModel, int samples, uint64_t seed,
+                                         int threads, const Distribution& distribution) {
+  return directSunRows(tracer, block, sunDirsModel, samples, seed, threads, nullptr, distribution);
+}
+
+std::vector<std::vector<float>> directSunCoefficientsByLabel(const Tracer& tracer, const SensorBlock& block,
+                                                             const std::vector<Vec3>& sunDirsModel, int samples,
+                                                             uint64_t seed, int threads, const SurfaceLabels& labels,
+                                                             const Distribution& distribution) {
+  const std::vector<float> rows = directSunRows(tracer, block, sunDirsModel, samples, seed, threads, &labels, distribution);
+  const size_t ns = sunDirsModel.size(), parts = 1 + static_cast<size_t>(labels.count), row = parts * ns;
+  std::vector<std::vector<float>> out(parts, std::vector<float>(block.positions.size() * ns));
+  for (size_t i = 0; i < block.positions.size(); ++i)
+    for (size_t q = 0; q < parts; ++q)
+      std::copy_n(rows.data() + i * row + q * ns, ns, out[q].data() + i * ns);
   return out;
 }
 
@@ -202,6 +242,21 @@ std::vector<int> sunHours(const AnnualSky& sky) {
     if (sky.hours[h].sunUp && sky.hours[h].directNormalLux > 0.0 && sky.hours[h].sunPatch > 0)
       hours.push_back(static_cast<int>(h));
   return hours;
+}
+
+std::vector<float> hourlyDirectSun(const std::vector<float>& sunCoefficients, int sensors, const AnnualSky& sky) {
+  const std::vector<int> sun = sunHours(sky);
+  const size_t nsun = sun.size(), nh = sky.hours.size();
+  if (sensors < 0 || sunCoefficients.size() != static_cast<size_t>(sensors) * nsun)
+    throw std::invalid_argument("direct sun coefficients: wrong size");
+  std::vector<float> out(static_cast<size_t>(sensors) * nh, 0.0f);
+  for (size_t s = 0; s < static_cast<size_t>(sensors); ++s)
+    for (size_t j = 0; j < nsun; ++j) {
+      const int h = sun[j];
+      const double direct = sunCoefficients[s * nsun + j] * sky.hours[h].directNormalLux;
+      out[s * nh + h] = static_cast<float>(direct);
+    }
+  return out;
 }
 
 std::vector<Vec3> sunDirectionsModel(const AnnualSky& sky, double northDeg) {

@@ -121,6 +121,25 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const SensorBlo
                                            int threads, const std::function<void(size_t)>& progress = {},
                                            const Distribution& distribution = localDistribution());
 
+// Labels of scene surfaces, e.g. the window group of each glazing surface (study/window_groups.h):
+// ofSurface[surface id] in [0, count), or -1 for none; one entry per Scene::surfaceCount().
+struct SurfaceLabels {
+  std::vector<int> ofSurface;
+  int count = 0;
+};
+
+// directSunCoefficients for a block, with each disc sample's light also attributed to the label
+// of the first `glass` surface its ray crosses leaving the sensor (Tracer::transmittance's
+// firstGlass; a ray through no labelled glass is attributed to none). Returns labels.count + 1
+// arrays, sensor-major [s * suns + j]: [0] the total, float for float directSunCoefficients',
+// [1 + g] the part through label g. The parts sum to the total but for the unlabelled part.
+// Throws std::invalid_argument when labels.ofSurface has not one entry per surface.
+// 8 parameters: directSunCoefficients' own and the labels.
+std::vector<std::vector<float>> directSunCoefficientsByLabel(const Tracer& tracer, const SensorBlock& block,
+                                                             const std::vector<Vec3>& sunDirsModel, int samples,
+                                                             uint64_t seed, int threads, const SurfaceLabels& labels,
+                                                             const Distribution& distribution = localDistribution());
+
 // annualIlluminance sums sensors in groups of this many (Eigen products of a fixed shape, so
 // that no value depends on the thread count); a block of sensors that starts at a multiple of it
 // gets the same floats as the whole study.
@@ -140,6 +159,11 @@ struct AnnualIlluminance {
 AnnualIlluminance annualIlluminance(const DaylightCoefficients& dc, const std::vector<float>& sunCoefficients,
                                     const std::vector<float>& sunIndirect, const SunSet& sunSet,
                                     const AnnualSky& sky, int threads);
+
+// The direct sun of every hour from coefficients S (sensor-major [s * suns + j], the suns of
+// sunHours(sky)), sensor-major [s * hours + h], lux: the floats annualIlluminance's directSun
+// holds for the same coefficients. Throws std::invalid_argument when sizes disagree.
+std::vector<float> hourlyDirectSun(const std::vector<float>& sunCoefficients, int sensors, const AnnualSky& sky);
 
 // The hours that have direct sun (sun up, direct normal illuminance > 0) and their directions
 // in the model frame (site north `northDeg`).

@@ -79,6 +79,13 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
                           uint64_t& rays) const {
+  uint32_t firstGlass = kNoShape;
+  return transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass);
+}
+
+Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
+                          uint64_t& rays, uint32_t& firstGlass) const {
+  firstGlass = kNoShape;
   ++rays;
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
@@ -95,15 +102,20 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
       Rgb tr, rf;
       thinGlass(m.color, m.refractiveIndex, glm::dot(dir, shapeNormal(s, x)), tr, rf);
       t *= tr;
+      if (firstGlass == kNoShape) firstGlass = h.shape;
     } else if (m.type == MaterialType::kTrans) {
       t *= m.specularTransmittance;
     } else if (!(m.type == MaterialType::kIllum && m.alternate < 0)) {
       // Opaque (an illum with no alternate is invisible to all but its own rays). A dielectric
       // is opaque here too: it bends light, so no straight shadow ray passes it (as Radiance's
       // source rays); paths find what lies behind it (pathRadiance).
+      firstGlass = kNoShape;
       return Rgb(0.0);
     }
-    if (photopic(t) <= 0.0) return Rgb(0.0);
+    if (photopic(t) <= 0.0) {
+      firstGlass = kNoShape;
+      return Rgb(0.0);
+    }
     tMin = h.t + originOffset(x);
   }
   return t;

@@ -104,6 +104,11 @@ class Tracer {
   // TraceContext::rays), not yet to the total.
   Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
                     uint64_t& rays) const;
+  // The same, and the surface id of the first `glass` surface the ray crosses from o (kNoShape:
+  // none, or the ray is blocked) in firstGlass: which window a beam came through (the annual
+  // study's window groups, docs/annual.md). The transmittance is the other overloads', bit for bit.
+  Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
+                    uint64_t& rays, uint32_t& firstGlass) const;
 
   // Radiance arriving at o from direction -dir, i.e. along a ray leaving o in direction dir.
   // Sampled sources are counted only when countSources is true (after specular reflection or for

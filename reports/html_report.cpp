@@ -207,6 +207,13 @@ void annualSummaryTable(std::ostringstream& h, const AnnualPage& page) {
                            : "sensors with more than 250 h of direct sun ≥ 1000 lx; within LEED v4.1's 10 %");
   row("Sun hours", formatFixed(s.sunHoursMean, 0) + " h", "hours of the year with direct sun on the sensor (mean over sensors)");
   row("Occupied hours", std::to_string(s.occupiedHours), "hours counted in the percentages");
+  if (!page.annual().windowGroups.empty()) {
+    std::string hours;
+    for (const AnnualGridReport::WindowGroupHours& w : page.annual().windowGroups)
+      hours += (hours.empty() ? "" : "; ") + xmlEscape(w.name) + " " + std::to_string(w.blindsClosedHours) + " h";
+    row("Window groups (LM-83 blinds)", std::to_string(page.annual().windowGroups.size()),
+        "occupied hours with the group's blinds closed: " + hours);
+  }
   if (run.coefficientsTimeS) row("Daylight-coefficient time", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
   if (run.productTimeS) row("Hourly product time", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
   h << "</tbody>\n</table>\n</div>\n</div>\n";

@@ -142,6 +142,12 @@ std::string summaryJson(const ReportData& data) {
       o["occupied_hours"] = a.occupiedHours;
       o["coefficients_time_s"] = optionalNumber(data.run.coefficientsTimeS);
       o["product_time_s"] = optionalNumber(data.run.productTimeS);
+      if (!g.annual->windowGroups.empty()) {
+        json groups = json::array();
+        for (const AnnualGridReport::WindowGroupHours& w : g.annual->windowGroups)
+          groups.push_back({{"name", w.name}, {"surfaces", w.surfaces}, {"blinds_closed_hours", w.blindsClosedHours}});
+        o["window_groups"] = groups;
+      }
     }
     grids.push_back(o);
   }

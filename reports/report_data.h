@@ -65,6 +65,14 @@ struct AnnualGridReport {
   int chosenSensor = -1;                     // < 0: no temporal map
   std::vector<double> chosenSensorLux;
   std::vector<HourStamp> hours;
+  // The case's [[window_group]]s (docs/annual.md "Window groups"), each with the occupied hours
+  // its LM-83 blinds were closed for this grid; empty without window groups.
+  struct WindowGroupHours {
+    std::string name;
+    std::vector<std::string> surfaces;
+    int blindsClosedHours = 0;
+  };
+  std::vector<WindowGroupHours> windowGroups;
 };
 
 // What a plan shows besides its grid (report.html): a luminaire's position or an observer's, in

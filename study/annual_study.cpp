@@ -18,6 +18,8 @@
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
 #include "study/warnings.h"
+#include "study/window_groups.h"
+#include "metrics/window_groups.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +44,7 @@ struct YearJob {
   int sunSamples = 4;  // rays over the sun's disc
   int threads = 0;
   const Distribution* distribution = nullptr;  // the processes the sensors are shared between
+  const SurfaceLabels* windows = nullptr;      // window groups: the direct sun split by group
 };
 
 // One state of the scene (blinds open or closed) traced a block of sensors at a time: the
@@ -59,9 +62,10 @@ class YearTracer {
   }
 
   // The year of sensors first .. first + count - 1. progress(done) counts 2 per sensor (its
-  // sky, then its sun coefficients) from `progressBase`.
-  AnnualIlluminance block(std::size_t first, std::size_t count, std::size_t progressBase,
-                          const ObservedStep& step) {
+  // sky, then its sun coefficients) from `progressBase`. With the job's window groups and a
+  // beam, groupDirect gets the hourly direct sun through each group's glass.
+  AnnualIlluminance block(std::size_t first, std::size_t count, std::size_t progressBase, const ObservedStep& step,
+                          std::vector<std::vector<float>>* groupDirect = nullptr) {
     const auto t0 = std::chrono::steady_clock::now();
     const int threads = job_.threads;
     const SensorBlock b{std::span(*job_.positions).subspan(first, count), std::span(*job_.normals).subspan(first, count),
@@ -70,8 +74,16 @@ class YearTracer {
     const DaylightCoefficients dc = computeDaylightCoefficients(
         tracer_, b, patches_, job_.settings, threads, [&](std::size_t d) { step(progressBase + d); }, processes);
     std::vector<float> direct(count * suns_.size(), 0.0f);
-    if (beamSun_)
+    if (beamSun_ && job_.windows && groupDirect) {
+      std::vector<std::vector<float>> parts = directSunCoefficientsByLabel(
+          tracer_, b, suns_, job_.sunSamples, job_.settings.seed, threads, *job_.windows, processes);
+      direct = std::move(parts[0]);
+      groupDirect->clear();
+      for (std::size_t g = 1; g < parts.size(); ++g)
+        groupDirect->push_back(hourlyDirectSun(parts[g], static_cast<int>(count), *job_.sky));
+    } else if (beamSun_) {
       direct = directSunCoefficients(tracer_, b, suns_, job_.sunSamples, job_.settings.seed, threads, processes);
+    }
     const std::vector<float> inter =
         indirectSunCoefficients(tracer_, b, setModel_, sunSettings_, threads,
                                 [&](std::size_t d) { step(progressBase + count + d); }, processes);
@@ -117,6 +129,7 @@ struct AnnualInputs {
   std::unique_ptr<Scene> scene;
   std::vector<PreparedGrid> grids;
   std::vector<Vec3> positions, normals;  // every grid's sensors, grids in case order
+  WindowGroups windows;                  // [[window_group]]s resolved (none: one group per grid)
 };
 
 AnnualInputs readAnnualInputs(const CaseFile& c) {
@@ -133,6 +146,9 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
     throw InputError(c.surfaceGrids.front().loc, "[[surface_grid]] applies to point-in-time runs, not an annual sky "
                                                  "(the walls' and ceiling's EN 12464-1 requirements are for electric lighting)");
   in.scene = loadAnnualScene(c, in.north);
+  in.windows = resolveWindowGroups(c, *in.scene);
+  if (!c.windowGroups.empty() && !c.annual.blinds)
+    throw InputError(c.windowGroups.front().loc, "[[window_group]] sets LM-83's operable blinds, but [annual] blinds = false");
   in.grids = prepareGrids(c, gridBounds(*in.scene));
   for (const GridSpec& g : c.grids) {
     if (g.daylightFactor)
@@ -222,6 +238,10 @@ void describeAnnualSettings(ReportData& data, const CaseFile& c, const AnnualInp
       {"occupancy", formatFixed(a.occupancyStartHour, 2) + "–" + formatFixed(a.occupancyEndHour, 2) + " h (" +
                         std::to_string(occupiedCount) + " h a year)"},
       {"blinds (LM-83)", !a.blinds ? "not modelled"
+                         : !in.windows.groups.empty()
+                             ? std::to_string(in.windows.groups.size()) +
+                                   " window groups closing in the fewest combination that leaves ≤ 2 % of a grid's "
+                                   "sensors with ≥ 1000 lx of direct sun"
                          : t.blindMaterials == 0 ? "no glass in the scene"
                                                  : "closed when > 2 % of a grid's sensors get ≥ 1000 lx of direct sun: "
                                                    "glass as a 20 % diffuse transmitter"},
@@ -273,6 +293,10 @@ struct GridYear {
   std::unique_ptr<AnnualResultsStream> total, directSun;
   std::vector<int> sunlit;           // per hour: sensors with direct sun >= the ASE threshold
   std::vector<char> blindsClosed;    // per hour, once every block has been counted
+  // Window groups: per hour and set of closed groups, the sensors left sunlit; then per hour the
+  // closed groups (metrics/window_groups.h).
+  std::vector<int> closureCounts;
+  std::vector<uint32_t> closure;
   std::vector<SensorAnnualMetrics> sensors;
   int chosenSensor = 0;
   std::vector<double> chosenSensorLux;
@@ -308,7 +332,8 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
   const ObservedStep step(observer, "coefficients", 2 * sensors);
   for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
     const std::size_t n = std::min(p.block, sensors - b0);
-    const AnnualIlluminance year = open.block(b0, n, 2 * b0, step);
+    std::vector<std::vector<float>> groupDirect;
+    const AnnualIlluminance year = open.block(b0, n, 2 * b0, step, &groupDirect);
     checkFinite(year.total, "the hourly illuminance", b0 * nh);
     for (GridYear& g : p.grids) {
       const auto [lo, k] = overlap(g, b0, n);
@@ -320,6 +345,11 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
         g.directSun->append(direct, static_cast<int>(k));
       });
       countSunlitSensors(direct, static_cast<int>(k), static_cast<int>(nh), p.th.aseLux, g.sunlit);
+      if (!groupDirect.empty()) {
+        std::vector<const float*> parts;
+        for (const std::vector<float>& d : groupDirect) parts.push_back(d.data() + (lo - b0) * nh);
+        countSunlitByClosure(direct, parts, static_cast<int>(k), static_cast<int>(nh), p.th.aseLux, g.closureCounts);
+      }
       const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
       if (chosen >= lo && chosen < lo + k)
         g.chosenSensorLux.assign(total + (chosen - lo) * nh, total + (chosen - lo + 1) * nh);
@@ -361,6 +391,52 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
   }
 }
 
+// A closed group's tracer and its index among the window groups.
+struct ClosedGroup {
+  int group = 0;
+  std::unique_ptr<YearTracer> tracer;
+};
+
+// Pass 2 with window groups: each block's open year read back, every traced group's closed year
+// folded in (foldClosedGroup), the metrics of the result.
+void groupsPass(const AnnualPass& p, std::vector<ClosedGroup>& closed, StudyObserver& observer) {
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = closed.size();
+  const ObservedStep step(observer, "blinds closed per window group: coefficients", 2 * sensors * nq);
+  struct Slice {
+    GridYear* g;
+    std::size_t lo, k;
+    std::vector<float> open, direct, combined;
+  };
+  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+    const std::size_t n = std::min(p.block, sensors - b0);
+    std::vector<Slice> slices;
+    for (GridYear& g : p.grids) {
+      const auto [lo, k] = overlap(g, b0, n);
+      if (k == 0) continue;
+      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}};
+      const int from = static_cast<int>(lo - g.first);
+      p.folder.guard([&] {
+        g.total->read(from, static_cast<int>(k), sl.open.data());
+        g.directSun->read(from, static_cast<int>(k), sl.direct.data());
+      });
+      sl.combined = sl.open;
+      slices.push_back(std::move(sl));
+    }
+    for (std::size_t q = 0; q < nq; ++q) {
+      const AnnualIlluminance year = closed[q].tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
+      checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
+      for (Slice& sl : slices)
+        foldClosedGroup(year.total.data() + (sl.lo - b0) * nh, sl.open.data(), sl.g->closure, closed[q].group, sl.k,
+                        sl.combined.data());
+    }
+    for (Slice& sl : slices) {
+      const auto m = sensorAnnualMetrics(sl.combined.data(), sl.direct.data(), static_cast<int>(sl.k),
+                                         static_cast<int>(nh), p.y.occupied, p.th);
+      sl.g->sensors.insert(sl.g->sensors.end(), m.begin(), m.end());
+    }
+  }
+}
+
 // The grids' files opened beside the run's folder (unnamed temporaries until the end), their
 // report sensors chosen.
 std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a, const YearHours& y,
@@ -372,6 +448,8 @@ std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a,
     gy.first = first;
     gy.count = g.grid.size();
     gy.sunlit.assign(y.stamps.size(), 0);
+    if (in.windows.labels.count > 0)
+      gy.closureCounts.assign(y.stamps.size() << in.windows.labels.count, 0);
     gy.chosenSensor = a.reportSensor ? *a.reportSensor : centralSensor(g.grid);
     gy.sensors.reserve(gy.count);
     const int n = static_cast<int>(gy.count);
@@ -387,14 +465,57 @@ std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a,
   return grids;
 }
 
+// With window groups: the open year with the direct sun split by group, each grid's closures,
+// then one closed scene per group closed in some hour (only that group's glass closed).
+void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
+                       AnnualTraces& t, StudyObserver& observer) {
+  {
+    YearTracer open(*in.scene, job, true);
+    openPass(p, open, false, observer);
+    t.coefficientsOpenS = open.coefficientsS();
+    t.productOpenS = open.productS();
+    t.raysOpen = open.rays();
+  }
+  const int groups = in.windows.labels.count;
+  uint32_t used = 0;
+  for (GridYear& g : p.grids) {
+    g.closure = blindsClosureFromCounts(g.closureCounts, groups, static_cast<int>(g.count), p.y.occupied);
+    std::vector<int>().swap(g.closureCounts);
+    for (uint32_t m : g.closure) used |= m;
+  }
+  std::vector<std::unique_ptr<Scene>> scenes;
+  std::vector<ClosedGroup> closed;
+  for (int q = 0; q < groups; ++q) {
+    if (!((used >> q) & 1u)) continue;  // never closed: its closed year is never used
+    scenes.push_back(loadAnnualScene(c, in.north));
+    scenes.back()->sky->model = in.scene->sky->model;
+    t.blindMaterials += closeWindowGroup(*scenes.back(), in.windows, q);
+    // With a beam: the sun through the other groups' open glass still shines in (the closed
+    // glass stops the beams through it, the same rays otherwise).
+    closed.push_back({q, std::make_unique<YearTracer>(*scenes.back(), job, true)});
+  }
+  t.closed = !closed.empty();
+  groupsPass(p, closed, observer);
+  for (const ClosedGroup& q : closed) {
+    t.coefficientsClosedS += q.tracer->coefficientsS();
+    t.productClosedS += q.tracer->productS();
+    t.raysClosed += q.tracer->rays();
+  }
+}
+
 // Both states of the year, block by block, into the grids' files and metrics.
 void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace& trace, const AnnualPass& p,
                  AnnualTraces& t, StudyObserver& observer) {
   const AnnualSpec& a = c.annual;
   TraceSettings settings = trace.settings;
   settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
-  const YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
-                    settings,       a.sunSamples, trace.threads, p.processes};
+  YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
+              settings,       a.sunSamples, trace.threads, p.processes};
+  if (in.windows.labels.count > 0) {
+    job.windows = &in.windows.labels;
+    traceWindowGroups(c, in, job, p, t, observer);
+    return;
+  }
   std::unique_ptr<Scene> shaded;
   if (a.blinds) {
     shaded = loadAnnualScene(c, in.north);
@@ -430,6 +551,9 @@ void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThr
     ar.chosenSensor = gy.chosenSensor;
     ar.chosenSensorLux = std::move(gy.chosenSensorLux);
     ar.hours = y.stamps;
+    for (std::size_t q = 0; q < in.windows.groups.size(); ++q)
+      ar.windowGroups.push_back({in.windows.groups[q].name, in.windows.groups[q].surfaces,
+                                 closedHoursOfGroup(gy.closure, static_cast<int>(q))});
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g) + "; temporal map of sensor " + std::to_string(ar.chosenSensor);

@@ -4,17 +4,21 @@
 
 namespace candela {
 
+void closeGlass(Material& m, double blindsTransmittance) {
+  Rgb t, reflected;
+  thinGlass(m.color, m.refractiveIndex, 1.0, t, reflected);  // the glass's normal transmittance
+  m.type = MaterialType::kTrans;
+  m.diffuseReflectance = Rgb(0.0);
+  m.specularReflectance = Rgb(0.0);
+  m.specularTransmittance = Rgb(0.0);
+  m.diffuseTransmittance = blindsTransmittance * t;
+}
+
 int closeBlinds(Scene& scene) {
   int changed = 0;
   for (Material& m : scene.materials) {
     if (m.type != MaterialType::kGlass) continue;
-    Rgb t, reflected;
-    thinGlass(m.color, m.refractiveIndex, 1.0, t, reflected);  // the glass's normal transmittance
-    m.type = MaterialType::kTrans;
-    m.diffuseReflectance = Rgb(0.0);
-    m.specularReflectance = Rgb(0.0);
-    m.specularTransmittance = Rgb(0.0);
-    m.diffuseTransmittance = kBlindsTransmittance * t;
+    closeGlass(m, kBlindsTransmittance);
     ++changed;
   }
   return changed;

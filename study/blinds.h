@@ -9,6 +9,10 @@ namespace candela {
 // of 20 % visible transmittance.
 inline constexpr double kBlindsTransmittance = 0.2;
 
+// A glass material closed: a Lambertian transmitter of blindsTransmittance times the glass's
+// normal transmittance, passing no beam, reflecting nothing.
+void closeGlass(Material& m, double blindsTransmittance);
+
 // Every glass pane becomes a Lambertian transmitter of kBlindsTransmittance times the glass's
 // own normal transmittance (no beam passes); its reflection is not modelled (docs/annual.md).
 // Returns the number of materials changed.

@@ -5,6 +5,7 @@
 #include "engine/portals.h"
 #include "study/case_compliance.h"
 #include "study/case_grids.h"
+#include "study/case_window_groups.h"
 #include "study/case_toml.h"
 
 #include <toml++/toml.h>
@@ -456,12 +457,13 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   static const std::set<std::string> kTopLevel = {"case",      "scene",        "luminaire", "portal",   "site",
                                                   "sky",       "grid",         "task_area", "surface_grid",
                                                   "view",      "observer",     "settings",  "annual",   "output",
-                                                  "compliance"};
+                                                  "compliance", "window_group"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
                                                "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, "
-                                               "surface_grid, view, observer, settings, annual, output or compliance)");
+                                               "surface_grid, view, observer, window_group, settings, annual, output or "
+                                               "compliance)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -497,6 +499,14 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
     std::set<std::string> names;
     int index = 0;
     for (const toml::node& n : *a) readObserver(c, *n.as_table(), index++, names, out);
+  }
+  if (auto a = tableArray(c, root, "window_group")) {
+    std::set<std::string> names;
+    int index = 0;
+    for (const toml::node& n : *a) readWindowGroup(c, *n.as_table(), index++, names, out);
+    if (out.sky.type.kind != SkyKind::kAnnual)
+      throw InputError(out.windowGroups.front().loc, "[[window_group]] needs [sky] type = \"annual\" (LM-83's "
+                                                     "operable blinds are part of the annual sDA)");
   }
   checkReferenceGrid(out);
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);

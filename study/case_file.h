@@ -179,6 +179,18 @@ struct ObserverSpec {
   Vec3 eyeM() const { return {positionM.x, positionM.y, eyeHeightM}; }
 };
 
+// A [[window_group]] of an annual study (docs/annual.md "Window groups"): the glazing surfaces
+// (identifiers or globs, * and ?) whose LM-83 blinds open and close together. Checked against the
+// scene when it is read (study/window_groups.h).
+struct WindowGroupSpec {
+  std::string name;
+  std::vector<std::string> patterns;
+  // The closed blinds' diffuse transmittance, a factor on the glass's normal transmittance
+  // (0, 1]; unset: LM-83-12 2.2.7's 20 % (study/blinds.h kBlindsTransmittance).
+  std::optional<double> blindsTransmittance;
+  FileLoc loc, patternsLoc;
+};
+
 // Unset optionals take the quality preset's value (chosen by the engine).
 struct Settings {
   Quality quality = Quality::kNormal;
@@ -243,6 +255,8 @@ struct CaseFile {
   // [[compliance]]: the standards the case is checked against (study/compliance_spec.h); annual
   // cases only.
   std::vector<ComplianceSpec> compliance;
+  // [[window_group]]: none, one group of all the glazing per grid (as before the key existed).
+  std::vector<WindowGroupSpec> windowGroups;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

@@ -368,7 +368,11 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   const SourceCounts n = countSources(scene);
   // The interreflected sun's set: at most one position per Reinhart MF:2 patch with sun.
   const uint64_t suns = std::min<uint64_t>(a.sunHours, static_cast<uint64_t>(SkyPatches(2).count()));
-  const int states = c.annual.blinds ? 2 : 1;  // blinds closed: traced again where there is glass
+  // Blinds closed: traced again where there is glass, once per window group (an implicit "other"
+  // at most more); with groups a block holds its open, direct-sun and combined years and one
+  // group's closed year (study/annual_study.cpp groupsPass).
+  const int closedStates = !c.annual.blinds ? 0 : c.windowGroups.empty() ? 1 : static_cast<int>(c.windowGroups.size()) + 1;
+  const int states = !c.annual.blinds ? 1 : c.windowGroups.empty() ? 2 : 3;
   uint64_t sensors = 0;
   for (std::size_t i = 0; i < a.gridSensors.size(); ++i) {
     const uint64_t k = a.gridSensors[i];
@@ -402,7 +406,9 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   const double direct = static_cast<double>(sensors) * a.sunHours * std::max(1, c.annual.sunSamples);
   // The study's steps (annual_study.cpp): both sets of coefficients, block by block, per state.
   e.work.push_back({"coefficients", sky + sunPaths + direct});
-  if (states > 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
+  if (closedStates == 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
+  if (closedStates > 1)
+    e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
   return e;
 }
 
