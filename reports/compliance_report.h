@@ -100,6 +100,7 @@ struct ComplianceReport {
   std::vector<std::string> verdictLines;  // what decided it, one line each
   std::optional<En17037Report> en17037;
   std::optional<LeedReport> leed;
+  std::vector<std::pair<std::string, double>> timesS;  // wall time of each part, s (summary.json time_s)
 };
 
 // The entry as summary.json carries it.

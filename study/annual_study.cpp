@@ -13,6 +13,8 @@
 #include "study/annual_glare.h"
 #include "study/blinds.h"
 #include "study/case_scene.h"
+#include "study/annual_glare.h"
+#include "study/compliance_study.h"
 #include "study/finite_results.h"
 #include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
@@ -45,6 +47,9 @@ struct YearJob {
   int threads = 0;
   const Distribution* distribution = nullptr;  // the processes the sensors are shared between
   const SurfaceLabels* windows = nullptr;      // window groups: the direct sun split by group
+  // [[compliance]]: patch luminances of the overcast sky (1 lx horizontal) whose product with
+  // each sensor's sky coefficients is its daylight factor / 100 (study/compliance_study.h).
+  const std::vector<float>* overcast = nullptr;
 };
 
 // One state of the scene (blinds open or closed) traced a block of sensors at a time: the
@@ -73,6 +78,9 @@ class YearTracer {
     const Distribution& processes = *job_.distribution;
     const DaylightCoefficients dc = computeDaylightCoefficients(
         tracer_, b, patches_, job_.settings, threads, [&](std::size_t d) { step(progressBase + d); }, processes);
+    overcast_.assign(job_.overcast ? count : 0, 0.0f);
+    for (std::size_t s = 0; s < overcast_.size(); ++s)
+      for (int p = 0; p < dc.patches; ++p) overcast_[s] += dc.total[s * dc.patches + p] * (*job_.overcast)[p];
     std::vector<float> direct(count * suns_.size(), 0.0f);
     if (beamSun_ && job_.windows && groupDirect) {
       std::vector<std::vector<float>> parts = directSunCoefficientsByLabel(
@@ -95,6 +103,8 @@ class YearTracer {
 
   double coefficientsS() const { return coefficientsS_; }
   double productS() const { return productS_; }
+  // The last block's illuminance per lux of overcast sky outdoors (YearJob::overcast), per sensor.
+  const std::vector<float>& overcast() const { return overcast_; }
   // Every process's rays (a collective call: every process asks at the same point).
   uint64_t rays() const { return job_.distribution->sum(tracer_.raysTraced()); }
 
@@ -106,6 +116,7 @@ class YearTracer {
   SkyPatches patches_;
   std::vector<Vec3> suns_, setModel_;
   TraceSettings sunSettings_;
+  std::vector<float> overcast_;
   double coefficientsS_ = 0.0, productS_ = 0.0;
 };
 
@@ -323,6 +334,7 @@ struct AnnualPass {
   std::size_t block = kAnnualSensorsPerBlock;
   std::vector<GridYear>& grids;
   const Distribution* processes = nullptr;  // the processes the sensors are shared between
+  ComplianceTallies* compliance = nullptr;  // [[compliance]]: what the entries need of the year
 };
 
 // Pass 1, blinds open: every block's year goes to the grids' files, counted for the blinds rule;
@@ -335,6 +347,8 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
     std::vector<std::vector<float>> groupDirect;
     const AnnualIlluminance year = open.block(b0, n, 2 * b0, step, &groupDirect);
     checkFinite(year.total, "the hourly illuminance", b0 * nh);
+    if (p.compliance)
+      p.compliance->addBlock(b0, n, static_cast<int>(nh), year.total.data(), open.overcast().data());
     for (GridYear& g : p.grids) {
       const auto [lo, k] = overlap(g, b0, n);
       if (k == 0) continue;
@@ -511,6 +525,7 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
   settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
   YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
               settings,       a.sunSamples, trace.threads, p.processes};
+  if (p.compliance && p.compliance->needsHours()) job.overcast = &p.compliance->overcastPatches();
   if (in.windows.labels.count > 0) {
     job.windows = &in.windows.labels;
     traceWindowGroups(c, in, job, p, t, observer);
@@ -580,6 +595,40 @@ void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& dat
   }
 }
 
+// The study's grids as the compliance entries see them: their sensors and cell areas.
+std::vector<ComplianceGrid> complianceGrids(const AnnualInputs& in) {
+  std::vector<ComplianceGrid> out;
+  std::size_t first = 0;
+  for (const PreparedGrid& g : in.grids) {
+    out.push_back({g.spec->name, first, g.grid.size(), g.grid.regular ? g.grid.cellAreaM2() : 1.0});
+    first += g.grid.size();
+  }
+  return out;
+}
+
+std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const AnnualInputs& in, const AnnualTraces& t,
+                                                   const ResolvedTrace& trace, const YearHours& y,
+                                                   const ComplianceTallies& tallies, const ReportData& data) {
+  TraceSettings settings = trace.settings;
+  settings.method = Method::kPath;
+  const AnnualGlareJob glareJob{&t.sky, &t.sunSet, in.north, settings, c.annual.sunSamples, trace.threads};
+  ComplianceInputs ci;
+  ci.caseFile = &c;
+  ci.scene = in.scene.get();
+  ci.site = in.site;
+  ci.epw = &in.epw;
+  ci.sky = &t.sky;
+  ci.glareJob = &glareJob;
+  ci.occupied = &y.occupied;
+  ci.weatherYear = in.epw.records.empty() ? 2026 : in.epw.records.front().year;
+  ci.tallies = &tallies;
+  ci.annualGrids = &data.grids;
+  ci.positions = &in.positions;
+  ci.normals = &in.normals;
+  ci.threads = trace.threads;
+  return evaluateCompliance(ci);
+}
+
 }  // namespace
 
 RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer,
@@ -604,7 +653,10 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   const Distribution& processes = run.request.processes();
   RunOutputFolder folder(run.outDir, processes.writesOutputs());
   std::vector<GridYear> grids = openGridYears(in, c.annual, y, folder);
-  traceAnnual(c, in, trace, AnnualPass{in, y, th, folder, blockSize(options), grids, &processes}, t, observer);
+  ComplianceTallies compliance(c, complianceGrids(in), t.sky);
+  AnnualPass pass{in, y, th, folder, blockSize(options), grids, &processes};
+  if (!c.compliance.empty()) pass.compliance = &compliance;
+  traceAnnual(c, in, trace, pass, t, observer);
   // 3. Metrics per grid.
   RunResult result;
   result.outDir = run.outDir;
@@ -620,6 +672,10 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   data.warnings = warnings;
   annualGridReports(data, in, th, y, grids);
+  // The [[compliance]] entries, by the process that writes the results (a shard's part has none:
+  // its merge evaluates them).
+  if (!c.compliance.empty() && processes.writesOutputs() && !processes.partial())
+    data.compliance = evaluateComplianceOf(c, in, t, trace, y, compliance, data);
   data.run.runTimeS = secondsSince(run.start);
   // 4. Write the rest; the folder is committed as a whole (a shard writes its part instead).
   if (processes.partial()) {

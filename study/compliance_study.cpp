@@ -11,6 +11,7 @@
 #include "study/view_out.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -23,7 +24,7 @@ ComplianceTallies::ComplianceTallies(const CaseFile& c, std::vector<ComplianceGr
   if (!en17037) return;
   std::vector<double> diffuse;
   for (const AnnualHour& h : sky.hours) diffuse.push_back(h.diffuseHorizontalLux);
-  const std::vector<char> daylight = daylightHours(diffuse);
+  const std::vector<char> daylight = candela::daylightHours(diffuse);
   daylightCount_ = static_cast<int>(std::count(daylight.begin(), daylight.end(), char{1}));
   medianDiffuseLux_ = medianDiffuseIlluminance(diffuse, daylight);
   for (std::size_t g = 0; g < grids_.size(); ++g) tallies_.emplace_back(daylight, provisionThresholds());
@@ -198,12 +199,17 @@ ComplianceReport en17037(const ComplianceInputs& in, const ComplianceSpec& s) {
   ComplianceReport out;
   out.verdict = "pass";
   En17037Report r;
-  if (in.tallies->needsHours()) provision(in, s, r, out);
+  const auto timed = [&](const char* part, auto&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    out.timesS.emplace_back(part, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  };
+  if (in.tallies->needsHours()) timed("daylight_provision", [&] { provision(in, s, r, out); });
   if (!s.sunlightPoints.empty() || !s.viewPoints.empty() || !s.glareViews.empty()) {
     const Tracer tracer(*in.scene);
-    if (!s.sunlightPoints.empty()) sunlight(in, tracer, s, r, out);
-    if (!s.viewPoints.empty()) viewOutPart(in, tracer, s, r, out);
-    if (!s.glareViews.empty()) glare(in, tracer, s, r, out);
+    if (!s.sunlightPoints.empty()) timed("sunlight_exposure", [&] { sunlight(in, tracer, s, r, out); });
+    if (!s.viewPoints.empty()) timed("view_out", [&] { viewOutPart(in, tracer, s, r, out); });
+    if (!s.glareViews.empty()) timed("protection_from_glare", [&] { glare(in, tracer, s, r, out); });
   }
   out.en17037 = std::move(r);
   return out;
@@ -215,11 +221,14 @@ std::vector<ComplianceReport> evaluateCompliance(const ComplianceInputs& in) {
   std::vector<ComplianceReport> reports;
   for (const ComplianceSpec& s : in.caseFile->compliance) {
     ComplianceReport r;
+    const auto t0 = std::chrono::steady_clock::now();
     switch (s.standard) {
       case ComplianceStandard::kEn17037: r = en17037(in, s); break;
       case ComplianceStandard::kLeedV41Option1: r = leedOption1(in, s); break;
       case ComplianceStandard::kLeedV41Option2: r = leedOption2(in, s); break;
     }
+    if (s.standard != ComplianceStandard::kEn17037)
+      r.timesS.emplace_back("total", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     r.name = s.name;
     r.standard = std::string(standardKey(s.standard));
     reports.push_back(std::move(r));
