@@ -7,6 +7,7 @@
 #include "photometry/epw.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
+#include "study/compliance_leed.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
@@ -181,6 +182,21 @@ TEST_F(ComplianceStudy, LeedOption1ScoresTheStudysSda) {
   EXPECT_EQ(e.leed->points, 3);
   EXPECT_FALSE(e.leed->aseExceeds10Percent);
   EXPECT_EQ(e.verdict, "pass");
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+TEST(LeedOption2Points, AtLeastEachShareOfTheArea) {
+  EXPECT_EQ(leedOption2Points(54.99), 0);
+  EXPECT_EQ(leedOption2Points(55.0), 1);
+  EXPECT_EQ(leedOption2Points(74.99), 1);
+  EXPECT_EQ(leedOption2Points(75.0), 2);
+  EXPECT_EQ(leedOption2Points(90.0), 3);
+  EXPECT_EQ(leedOption2Points(100.0), 3);
 }
 
 }  // namespace

@@ -1,0 +1,70 @@
+#include "reports/compliance_html.h"
+#include "reports/compliance_report.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <limits>
+
+namespace candela {
+namespace {
+
+ComplianceReport en17037Entry() {
+  ComplianceReport r;
+  r.name = "en17037";
+  r.standard = "en17037";
+  r.verdict = "pass";
+  r.verdictLines = {"view out: medium <1 position>"};
+  En17037Report e;
+  ProvisionSpaceReport s;
+  s.space = "work & plane";
+  s.illuminance.hourFirstLevel = En17037Level::kMedium;
+  e.spaces.push_back(s);
+  e.provisionLevel = En17037Level::kMedium;
+  e.provisionLevelOther = En17037Level::kMinimum;
+  e.sunlight.push_back({Vec3(1, 0, 1.2), 3.5, {{8.0, 11.5}}, En17037Level::kMedium});
+  ViewOutReportPoint v;
+  v.sightAngleDeg = 33.4;
+  v.outsideDistanceM = std::numeric_limits<double>::infinity();
+  e.viewOut.push_back(v);
+  r.en17037 = e;
+  return r;
+}
+
+TEST(ComplianceJson, CarriesTheIssuesKeys) {
+  const nlohmann::json j = complianceJson(en17037Entry());
+  EXPECT_EQ(j["sunlight_exposure"][0]["hours"], 3.5);
+  EXPECT_EQ(j["sunlight_exposure"][0]["intervals"][0][1], 11.5);
+  EXPECT_EQ(j["view_out"][0]["horizontal_sight_angle_deg"], 33.4);
+  EXPECT_TRUE(j["view_out"][0]["outside_distance_m"].is_null());  // infinite: nothing outside
+  EXPECT_TRUE(j["view_out"][0]["outside_unobstructed"].get<bool>());
+  EXPECT_EQ(j["daylight_provision"]["level"], "medium");
+  EXPECT_TRUE(j["daylight_provision"]["aggregations_disagree"].get<bool>());
+  EXPECT_FALSE(j.contains("points"));
+
+  ComplianceReport l;
+  l.standard = l.name = "leed-v4.1-option1";
+  LeedReport leed;
+  leed.points = 2;
+  leed.aseExceeds10Percent = true;
+  leed.spaces.push_back({"office", 40.0, 60.0, 12.0, 0.0, {}, true});
+  l.leed = leed;
+  const nlohmann::json k = complianceJson(l);
+  EXPECT_EQ(k["points"], 2);
+  EXPECT_TRUE(k["ase_exceeds_10_percent"].get<bool>());
+  EXPECT_EQ(k["spaces"][0]["sDA300_50"], 60.0);
+}
+
+TEST(ComplianceHtml, OneSectionPerEntryTextsEscaped) {
+  EXPECT_EQ(complianceHtml({}), "");
+  const std::string h = complianceHtml({en17037Entry()});
+  EXPECT_NE(h.find("EN 17037:2018+A1:2023"), std::string::npos);
+  EXPECT_NE(h.find("work &amp; plane"), std::string::npos);
+  EXPECT_NE(h.find("&lt;1 position&gt;"), std::string::npos);
+  EXPECT_NE(h.find("08:00–11:30"), std::string::npos);
+  EXPECT_NE(h.find("nothing modelled outside"), std::string::npos);
+  EXPECT_EQ(h.find("work & plane"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
