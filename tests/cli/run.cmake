@@ -80,3 +80,9 @@ candela_run_test(floor_area_bad 2 "bad_floor_area.toml:4: 'floor_area' must be g
 candela_run_test(power_unknown_warning 0 "power_unknown/case.toml:7: luminaire 'spot': its photometric file defined.ies gives no input power"
                  power_unknown/case.toml)
 candela_run_test(power_unknown_summary 0 "\"installed_power_is_lower_bound\": true" power_unknown/case.toml)
+# [[compliance]] (docs/compliance.md): refused in a point-in-time case and, for another standard's
+# key, at that key's line.
+candela_run_test(compliance_needs_annual 2 "point_in_time.toml:10: [[compliance]] needs an annual study"
+                 compliance/point_in_time.toml)
+candela_run_test(compliance_other_standard 2 "typo.toml:13: 'view_points' belongs to standard = \"en17037\""
+                 compliance/typo.toml)
