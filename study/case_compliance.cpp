@@ -108,6 +108,11 @@ void readEn17037(Table& tab, ComplianceSpec& s) {
       g.loc = c.at(v);
       g.positionM = asVec3(c, vt.require("position"), "position");
       g.direction = asDirection(c, vt.require("direction"), "direction");
+      if (const toml::node* h = vt.get("check_hours")) {
+        const toml::array& hours = asArray(c, *h, "check_hours", 0, "an array of times \"YYYY-MM-DDTHH:MM\"");
+        for (const toml::node& x : hours) g.checkHours.push_back(asString(c, x, "check_hours"));
+        g.checkLoc = c.at(*h);
+      }
       vt.finish();
       s.glareViews.push_back(g);
     }
@@ -115,12 +120,6 @@ void readEn17037(Table& tab, ComplianceSpec& s) {
   if (const toml::node* n = keyOf(tab, "glare_exceedance", s, en)) {
     s.glareExceedance = asNumber(c, *n, "glare_exceedance");
     if (!(s.glareExceedance > 0.0 && s.glareExceedance < 1.0)) c.fail(*n, "'glare_exceedance' must lie in (0, 1)");
-  }
-  if (const toml::node* n = keyOf(tab, "glare_check_hours", s, en)) {
-    const toml::array& a = asArray(c, *n, "glare_check_hours", 0, "an array of times \"YYYY-MM-DDTHH:MM\"");
-    for (const toml::node& h : a) s.glareCheckHours.push_back(asString(c, h, "glare_check_hours"));
-    s.glareCheckLoc = c.at(*n);
-    if (s.glareViews.empty()) c.fail(*n, "'glare_check_hours' needs 'glare_views'");
   }
 }
 

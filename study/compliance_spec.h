@@ -33,7 +33,10 @@ constexpr bool inSunlightDateRange(const CivilDate& d) { return d.month == 2 || 
 struct GlareViewSpec {
   Vec3 positionM{0.0};
   Vec3 direction{0.0, 1.0, 0.0};
-  FileLoc loc;
+  // `check_hours`: hours of the year rendered to check the imageless DGP (local standard time,
+  // "YYYY-MM-DDTHH:MM" as written: the hour that starts then).
+  std::vector<std::string> checkHours;
+  FileLoc loc, checkLoc;
 };
 
 // EN 17037 part 1, the order in which space and time are aggregated (docs/compliance.md):
@@ -59,13 +62,10 @@ struct ComplianceSpec {
   // EN 17037 part 2: eyes.
   std::vector<Vec3> viewPoints;
   FileLoc viewLoc;
-  // EN 17037 part 4 / annual glare: views, the share of occupied hours allowed above a level's
-  // DGP (5 %), and hours of the year rendered to check the imageless DGP (local standard time,
-  // "YYYY-MM-DDTHH:MM" as written).
+  // EN 17037 part 4 / annual glare: views and the share of occupied hours allowed above a
+  // level's DGP (5 %).
   std::vector<GlareViewSpec> glareViews;
   double glareExceedance = 0.05;
-  std::vector<std::string> glareCheckHours;
-  FileLoc glareCheckLoc;
   // LEED v4.1 option 2: the two clear-sky days (within 15 days of 21 March and 21 September)
   // and the hours (local standard time) the illuminance is computed at.
   std::vector<CivilDate> leedDates;       // unset: 21 March and 21 September

@@ -154,7 +154,7 @@ int hourIndex(const AnnualSky& sky, const std::string& text, const FileLoc& loc)
   for (std::size_t h = 0; h < sky.hours.size(); ++h)
     if (sky.hours[h].month == t.month && sky.hours[h].day == t.day && sky.hours[h].hour == ending)
       return static_cast<int>(h);
-  throw InputError(loc, "'glare_check_hours': " + text + " is not an hour of the weather file");
+  throw InputError(loc, "'check_hours': " + text + " is not an hour of the weather file");
 }
 
 void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpec& s, En17037Report& r,
@@ -162,13 +162,13 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
   r.glareExceedance = s.glareExceedance;
   AnnualGlareThresholds th;
   th.exceedanceShare = s.glareExceedance;
-  std::vector<int> checkHours;
-  for (const std::string& h : s.glareCheckHours) checkHours.push_back(hourIndex(*in.sky, h, s.glareCheckLoc));
   En17037Level lowest = En17037Level::kHigh;
   std::vector<ViewGlareMetrics> all;
   for (std::size_t i = 0; i < s.glareViews.size(); ++i) {
     const GlareViewSpec& v = s.glareViews[i];
     const GlareView view{"view" + std::to_string(i + 1), v.positionM, v.direction};
+    std::vector<int> checkHours;
+    for (const std::string& h : v.checkHours) checkHours.push_back(hourIndex(*in.sky, h, v.checkLoc));
     const ViewAnnualGlare year = imagelessAnnualGlare(tracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
     const ViewGlareMetrics m = viewGlareMetrics(year.dgp, *in.occupied, th);
     all.push_back(m);
@@ -183,7 +183,7 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
       const std::vector<GlareHourCheck> checks =
           checkChosenHours(hs, view, year, checkHours, in.glareJob->settings, in.threads, {});
       for (std::size_t k = 0; k < checks.size(); ++k)
-        g.checks.push_back({s.glareCheckHours[k], checks[k].imagelessDgp, checks[k].renderedDgp,
+        g.checks.push_back({v.checkHours[k], checks[k].imagelessDgp, checks[k].renderedDgp,
                             checks[k].imagelessEvLux, checks[k].renderedEvLux});
     }
     r.glare.push_back(std::move(g));

@@ -40,8 +40,9 @@ TEST(CaseCompliance, ReadsEveryKeyOfEachStandard) {
                                        "aggregation = \"sensor-first\"\nsunlight_date = \"2026-02-14\"\n"
                                        "sunlight_points = [[1, 0.1, 1.2], [1.5, 0.1, 1.2]]\nsunlight_min_altitude = 12\n"
                                        "view_points = [[1, 1, 1.2]]\n"
-                                       "glare_views = [{ position = [1, 1, 1.2], direction = [0, -2, 0] }]\n"
-                                       "glare_exceedance = 0.1\nglare_check_hours = [\"2026-01-15T12:00\"]\n"
+                                       "glare_views = [{ position = [1, 1, 1.2], direction = [0, -2, 0], "
+                                       "check_hours = [\"2026-01-15T12:00\"] }]\n"
+                                       "glare_exceedance = 0.1\n"
                                        "[[compliance]]\nstandard = \"leed-v4.1-option1\"\n"
                                        "[[compliance]]\nstandard = \"leed-v4.1-option2\"\nname = \"leed2\"\n"
                                        "dates = [2026-03-25, \"2026-09-10\"]\nhours = [9, 15.5]\n",
@@ -60,7 +61,7 @@ TEST(CaseCompliance, ReadsEveryKeyOfEachStandard) {
   ASSERT_EQ(en.glareViews.size(), 1u);
   EXPECT_DOUBLE_EQ(en.glareViews[0].direction.y, -1.0);  // made unit
   EXPECT_DOUBLE_EQ(en.glareExceedance, 0.1);
-  EXPECT_EQ(en.glareCheckHours, std::vector<std::string>{"2026-01-15T12:00"});
+  EXPECT_EQ(en.glareViews[0].checkHours, std::vector<std::string>{"2026-01-15T12:00"});
   EXPECT_EQ(c.compliance[1].name, "leed-v4.1-option1");
   EXPECT_TRUE(c.compliance[1].spaces.empty());  // every grid
   const ComplianceSpec& l2 = c.compliance[2];
@@ -94,8 +95,9 @@ TEST(CaseCompliance, BadEntriesAreErrorsAtTheirLine) {
                    "belongs to standard = \"en17037\""));
   EXPECT_TRUE(says(c + "standard = \"leed-v4.1-option2\"\ndates = [\"2026-06-21\"]\n", first + 2,
                    "within 15 days of 21 March or 21 September"));
-  EXPECT_TRUE(says(c + "standard = \"en17037\"\nglare_check_hours = [\"2026-01-15T12:00\"]\n", first + 2,
-                   "needs 'glare_views'"));
+  EXPECT_TRUE(says(c + "standard = \"en17037\"\nglare_views = [{ position = [1, 1, 1.2], direction = [0, 1, 0], "
+                       "hours = [] }]\n",
+                   first + 2, "unknown key 'hours' in a glare view"));
   EXPECT_TRUE(says(c + "standard = \"en17037\"\nglare_views = [{ position = [1, 1, 1.2] }]\n", first + 2,
                    "needs the key 'direction'"));
   EXPECT_TRUE(says(c + "standard = \"en17037\"\nsunlight = 1\n", first + 2, "unknown key 'sunlight'"));
