@@ -110,7 +110,10 @@ void readEn17037(Table& tab, ComplianceSpec& s) {
       g.direction = asDirection(c, vt.require("direction"), "direction");
       if (const toml::node* h = vt.get("check_hours")) {
         const toml::array& hours = asArray(c, *h, "check_hours", 0, "an array of times \"YYYY-MM-DDTHH:MM\"");
-        for (const toml::node& x : hours) g.checkHours.push_back(asString(c, x, "check_hours"));
+        for (const toml::node& x : hours) {
+          g.checkHours.push_back(asString(c, x, "check_hours"));
+          parseLocalTime(g.checkHours.back(), c.at(x));  // the form is checked now, the weather hour before tracing
+        }
         g.checkLoc = c.at(*h);
       }
       vt.finish();

@@ -86,3 +86,9 @@ candela_run_test(compliance_needs_annual 2 "point_in_time.toml:10: [[compliance]
                  compliance/point_in_time.toml)
 candela_run_test(compliance_other_standard 2 "typo.toml:13: 'view_points' belongs to standard = \"en17037\""
                  compliance/typo.toml)
+# A glare view's check hours: the form when the case is read, the weather year's hours before any
+# tracing.
+candela_run_test(compliance_check_hour_form 2 "bad_hour.toml:17:" compliance/bad_hour.toml)
+candela_run_test(compliance_check_hour_not_in_year 2
+                 "leap_day.toml:17: 'check_hours': 2028-02-29T12:00 is not an hour of the weather file"
+                 compliance/leap_day.toml)

@@ -81,6 +81,26 @@ TEST(CaseCompliance, DefaultsAreTheStandardsOwn) {
   EXPECT_EQ(s.leedHours, (std::vector<double>{9.0, 15.0}));
 }
 
+TEST(CaseCompliance, GlareViewsAsAnArrayOfTables) {
+  // The multi-line form, [[compliance.glare_views]], reads as the inline one; its errors name
+  // the line of the bad key.
+  const std::string entry = kHead + "[[compliance]]\nstandard = \"en17037\"\n[[compliance.glare_views]]\n"
+                                    "position = [1, 1, 1.2]\ndirection = [0, 3, 0]\n"
+                                    "check_hours = [\"2026-06-01T10:00\"]\n[[compliance.glare_views]]\n"
+                                    "position = [1.5, 1, 1.2]\ndirection = [1, 0, 0]\n";
+  const CaseFile c = parseCaseFile(entry, casePath());
+  const ComplianceSpec& en = c.compliance.at(0);
+  ASSERT_EQ(en.glareViews.size(), 2u);
+  EXPECT_DOUBLE_EQ(en.glareViews[0].direction.y, 1.0);
+  EXPECT_EQ(en.glareViews[0].checkHours, std::vector<std::string>{"2026-06-01T10:00"});
+  EXPECT_DOUBLE_EQ(en.glareViews[1].positionM.x, 1.5);
+  EXPECT_TRUE(en.glareViews[1].checkHours.empty());
+  const int first = 9;  // the line of [[compliance]] after kHead's eight lines
+  EXPECT_TRUE(says(kHead + "[[compliance]]\nstandard = \"en17037\"\n[[compliance.glare_views]]\n"
+                           "position = [1, 1, 1.2]\ndirection = [0, 1, 0]\ncheck_hours = [\"noon\"]\n",
+                   first + 5, "noon"));
+}
+
 TEST(CaseCompliance, BadEntriesAreErrorsAtTheirLine) {
   const int first = 9;  // the line of [[compliance]] after kHead
   const std::string c = kHead + "[[compliance]]\n";

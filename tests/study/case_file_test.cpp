@@ -1,5 +1,8 @@
 #include "study/case_file.h"
 
+#include "engine/scene.h"
+#include "study/case_scene.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -336,6 +339,23 @@ TEST(CaseFile, GridOutsideTheSceneNamesTheGridLine) {
   const CaseFile full = readCaseFile(casesDir() / "full" / "case.toml");
   for (const GridSpec& g : full.grids) EXPECT_NO_THROW(checkGridInside(g, room)) << g.name;
   EXPECT_NO_THROW(checkGridInside(c.grids[0], Box{}));  // no geometry: nothing to check
+}
+
+TEST(CaseFile, EveryDemoCaseReadsAndItsGridsFitItsScene) {
+  // The cases/ folder the README runs: each reads, its scene loads and its grids lie inside it
+  // (the demos are not all traced in CI, so a typo in one must fail here).
+  const fs::path demos = fs::path(CANDELA_TEST_DATA) / ".." / ".." / "cases";
+  int read = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(demos)) {
+    const fs::path file = e.path() / "case.toml";
+    if (!fs::exists(file)) continue;
+    SCOPED_TRACE(file.string());
+    const CaseFile c = readCaseFile(file);
+    const std::unique_ptr<Scene> scene = loadCaseScene(c, false);  // geometry (an annual sky is no scene sky)
+    for (const GridSpec& g : c.grids) EXPECT_NO_THROW(checkGridInside(g, scene->bounds())) << g.name;
+    ++read;
+  }
+  EXPECT_GE(read, 6);  // small-room, office and its daylight, annual, window-group and compliance variants
 }
 
 TEST(CaseFile, MissingCaseFile) {
