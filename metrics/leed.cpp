@@ -79,4 +79,28 @@ double gridFloorAreaM2(int sensors, double cellAreaM2) {
   return sensors * cellAreaM2;
 }
 
+InRangeShare inRangeShare(const std::vector<double>& lux, const std::vector<double>& sigmaLux, double loLux,
+                          double hiLux) {
+  if (lux.size() != sigmaLux.size()) throw std::invalid_argument("inRangeShare: one standard error per value");
+  if (!(loLux <= hiLux)) throw std::invalid_argument("inRangeShare: lo > hi");
+  InRangeShare r;
+  if (lux.empty()) return r;
+  const auto phi = [](double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); };
+  int count = 0;
+  double variance = 0.0;
+  for (std::size_t i = 0; i < lux.size(); ++i) {
+    const double e = lux[i], s = sigmaLux[i];
+    if (!(s >= 0.0)) throw std::invalid_argument("inRangeShare: negative standard error");
+    count += e >= loLux && e <= hiLux;
+    if (s > 0.0) {
+      const double p = phi((hiLux - e) / s) - phi((loLux - e) / s);
+      variance += p * (1.0 - p);
+    }
+  }
+  const double n = static_cast<double>(lux.size());
+  r.sharePct = 100.0 * count / n;
+  r.standardErrorPct = 100.0 * std::sqrt(variance) / n;
+  return r;
+}
+
 }  // namespace candela

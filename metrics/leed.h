@@ -64,4 +64,18 @@ LeedOption1Result leedV41Option1(const std::vector<LeedSpace>& spaces,
 // negative count or cell area.
 double gridFloorAreaM2(int sensors, double cellAreaM2);
 
+// Option 2's share of sensors in [loLux, hiLux] with its sampling uncertainty. Each sensor's
+// estimate E ± σ (its Monte Carlo standard error, normal) is in range with probability
+// p = Φ((hi − E)/σ) − Φ((lo − E)/σ) (the indicator when σ = 0); the count in range is then a sum of
+// independent Bernoulli variables, whose standard deviation is √Σ p(1 − p). `sharePct` is the
+// share of estimates in range as counted (what the points are read from), `standardErrorPct` that
+// deviation over the sensors, in percent. Throws std::invalid_argument when the sizes differ,
+// a σ is negative or lo > hi.
+struct InRangeShare {
+  double sharePct = 0.0;
+  double standardErrorPct = 0.0;
+};
+InRangeShare inRangeShare(const std::vector<double>& lux, const std::vector<double>& sigmaLux, double loLux,
+                          double hiLux);
+
 }  // namespace candela

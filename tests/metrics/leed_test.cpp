@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace candela {
@@ -80,6 +81,36 @@ TEST(LeedV41Option1, RejectsBadInput) {
 TEST(LeedV41Option1, GridFloorAreaIsSensorsTimesCell) {
   EXPECT_DOUBLE_EQ(gridFloorAreaM2(1058, 0.24 * 0.24), 1058 * 0.0576);
   EXPECT_THROW(gridFloorAreaM2(-1, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// Option 2's share in range and its standard error, against closed forms of the normal model.
+TEST(InRangeShare, ExactEstimatesHaveNoUncertainty) {
+  const InRangeShare r = inRangeShare({299.0, 300.0, 1500.0, 3000.0, 3001.0}, {0, 0, 0, 0, 0}, 300.0, 3000.0);
+  EXPECT_DOUBLE_EQ(r.sharePct, 60.0);  // the bounds are inclusive
+  EXPECT_DOUBLE_EQ(r.standardErrorPct, 0.0);
+}
+
+TEST(InRangeShare, AnEstimateOnABoundIsACoinToss) {
+  // E = 300 ± 20: p = Φ(135) − Φ(0) = 1/2, p(1 − p) = 1/4; three sensors far inside add nothing
+  // (p = 1 to double precision): SE = √(1/4) / 4 = 12.5 %.
+  const InRangeShare r = inRangeShare({300.0, 1000.0, 1200.0, 1400.0}, {20.0, 20.0, 20.0, 20.0}, 300.0, 3000.0);
+  EXPECT_DOUBLE_EQ(r.sharePct, 100.0);
+  EXPECT_NEAR(r.standardErrorPct, 12.5, 1e-12);
+  // One σ inside the lower bound: p = Φ(1) − Φ(−134) = 0.841344746..., p(1 − p) = 0.133498...
+  const double p = 0.8413447460685429;
+  EXPECT_NEAR(inRangeShare({320.0}, {20.0}, 300.0, 3000.0).standardErrorPct, 100.0 * std::sqrt(p * (1 - p)), 1e-9);
+}
+
+TEST(InRangeShare, RejectsBadInput) {
+  EXPECT_THROW(inRangeShare({1.0}, {}, 300.0, 3000.0), std::invalid_argument);
+  EXPECT_THROW(inRangeShare({1.0}, {-1.0}, 300.0, 3000.0), std::invalid_argument);
+  EXPECT_THROW(inRangeShare({1.0}, {1.0}, 3000.0, 300.0), std::invalid_argument);
 }
 
 }  // namespace
