@@ -93,14 +93,19 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
   En17037Level lowest = En17037Level::kHigh;
   for (const GlareViewReport& g : r.glare) lowest = std::min(lowest, g.level);
   h << "<h3>Protection from glare " << levelBadge(lowest) << "</h3>\n<p class=\"sub\">Imageless DGP every occupied "
-       "hour (docs/annual-glare.md), blinds open; a level allows its DGP (0.45 / 0.40 / 0.35) to be exceeded in "
+       "hour (docs/annual-glare.md) with the shading the case describes; a level allows its DGP (0.45 / 0.40 / 0.35) "
+       "to be exceeded in "
     << pct(r.glareExceedance) << " of the hours.</p>\n<table>\n<thead><tr><th>View (m)</th><th>Direction</th><th>"
-       "DGP &gt; 0.35</th><th>&gt; 0.40</th><th>&gt; 0.45</th><th>Glare autonomy</th><th>Level</th></tr></thead>\n"
-       "<tbody>\n";
-  for (const GlareViewReport& g : r.glare)
+       "DGP &gt; 0.35</th><th>&gt; 0.40</th><th>&gt; 0.45</th><th>Glare autonomy</th><th>Blinds</th><th>Level</th>"
+       "</tr></thead>\n<tbody>\n";
+  for (const GlareViewReport& g : r.glare) {
+    const std::string blinds = g.blinds == "lm83" ? "LM-83 of " + xmlEscape(g.blindsSpace) + ", closed " +
+                                                        std::to_string(g.blindsClosedHours) + " h"
+                                                  : std::string("open");
     h << "<tr><td>" << xyz(g.position) << "</td><td>" << xyz(g.direction) << "</td><td>" << pct(g.shareAbove035)
       << "</td><td>" << pct(g.shareAbove040) << "</td><td>" << pct(g.shareAbove045) << "</td><td>"
-      << pct(g.glareAutonomy) << "</td><td>" << lv(g.level) << "</td></tr>\n";
+      << pct(g.glareAutonomy) << "</td><td>" << blinds << "</td><td>" << lv(g.level) << "</td></tr>\n";
+  }
   h << "</tbody>\n</table>\n";
   bool checks = false;
   for (const GlareViewReport& g : r.glare) checks = checks || !g.checks.empty();
@@ -109,7 +114,8 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
        "<th>E<sub>v</sub> imageless / rendered</th></tr></thead>\n<tbody>\n";
   for (std::size_t i = 0; i < r.glare.size(); ++i)
     for (const GlareViewReport::Check& c : r.glare[i].checks)
-      h << "<tr><td>" << i + 1 << "</td><td>" << xmlEscape(c.time) << "</td><td>" << formatFixed(c.imagelessDgp, 3)
+      h << "<tr><td>" << i + 1 << "</td><td>" << xmlEscape(c.time) << (c.blindsClosed ? " (blinds closed)" : "")
+        << "</td><td>" << formatFixed(c.imagelessDgp, 3)
         << "</td><td>" << formatFixed(c.renderedDgp, 3) << "</td><td>" << formatFixed(c.imagelessDgp - c.renderedDgp, 3)
         << "</td><td>" << formatFixed(c.imagelessEvLux, 0) << " / " << formatFixed(c.renderedEvLux, 0) << " lx</td></tr>\n";
   h << "</tbody>\n</table>\n";
@@ -120,7 +126,8 @@ void leedHtml(std::ostringstream& h, const LeedReport& l) {
   h << "<p class=\"sub\">" << l.points << " points; "
     << (option2 ? "area between 300 and 3000 lx, mean over " + std::to_string(l.times.size()) + " clear-sky times: "
                 : std::string("area-weighted sDA300/50%: "))
-    << formatFixed(l.averagePct, 1) << " %" << (l.eachSpaceAbove55 ? "; every space reaches 55 %" : "")
+    << formatFixed(l.averagePct, 1) << (option2 ? " ± " + formatFixed(l.averageStandardErrorPct, 1) : std::string())
+    << " %" << (l.eachSpaceAbove55 ? "; every space reaches 55 %" : "")
     << (!option2 && l.aseExceeds10Percent ? "; ASE above 10 % in a space: document how its glare is addressed" : "")
     << ".</p>\n<table>\n<thead><tr><th>Space</th><th>Area</th>"
     << (option2 ? "<th>In range (mean)</th><th>Per time</th>" : "<th>sDA300/50%</th><th>ASE1000,250</th>")
@@ -130,8 +137,10 @@ void leedHtml(std::ostringstream& h, const LeedReport& l) {
     if (option2) {
       std::string per;
       for (std::size_t i = 0; i < s.inRangeByTimePct.size(); ++i)
-        per += (i ? ", " : "") + xmlEscape(l.times[i]) + ": " + formatFixed(s.inRangeByTimePct[i], 1) + " %";
-      h << "<td>" << formatFixed(s.inRangePct, 1) << " %</td><td>" << per << "</td>";
+        per += (i ? ", " : "") + xmlEscape(l.times[i]) + ": " + formatFixed(s.inRangeByTimePct[i], 1) + " ± " +
+               formatFixed(s.inRangeByTimeStandardErrorPct.at(i), 1) + " %";
+      h << "<td>" << formatFixed(s.inRangePct, 1) << " ± " << formatFixed(s.inRangeStandardErrorPct, 1) << " %</td><td>"
+        << per << "</td>";
     } else {
       h << "<td>" << formatFixed(s.sdaPct, 1) << " %</td><td>" << formatFixed(s.asePct, 1) << " %"
         << (s.aseAbove10 ? " (above 10 %)" : "") << "</td>";

@@ -99,6 +99,7 @@ void addEn17037(json& j, const En17037Report& r) {
       json checks = json::array();
       for (const GlareViewReport::Check& c : g.checks)
         checks.push_back({{"time", c.time},
+                          {"blinds_closed", c.blindsClosed},
                           {"dgp_imageless", c.imagelessDgp},
                           {"dgp_rendered", c.renderedDgp},
                           {"dgp_difference", c.imagelessDgp - c.renderedDgp},
@@ -111,6 +112,9 @@ void addEn17037(json& j, const En17037Report& r) {
                        {"share_above_dgp_0_45", g.shareAbove045},
                        {"glare_autonomy", g.glareAutonomy},
                        {"level", level(g.level)},
+                       {"blinds", g.blinds},
+                       {"blinds_space", g.blindsSpace.empty() ? json(nullptr) : json(g.blindsSpace)},
+                       {"blinds_closed_hours", g.blindsClosedHours},
                        {"checks", checks}});
     }
     j["protection_from_glare"] = {{"exceedance", r.glareExceedance}, {"views", views}};
@@ -128,6 +132,8 @@ void addLeed(json& j, const LeedReport& r) {
     } else {
       e["in_range_pct"] = s.inRangePct;
       e["in_range_pct_by_time"] = s.inRangeByTimePct;
+      e["in_range_pct_standard_error"] = s.inRangeStandardErrorPct;
+      e["in_range_pct_standard_error_by_time"] = s.inRangeByTimeStandardErrorPct;
     }
     spaces.push_back(e);
   }
@@ -139,6 +145,7 @@ void addLeed(json& j, const LeedReport& r) {
     j["ase_exceeds_10_percent"] = r.aseExceeds10Percent;
   } else {
     j["average_in_range_pct"] = r.averagePct;
+    j["average_in_range_pct_standard_error"] = r.averageStandardErrorPct;
     j["times"] = r.times;
   }
 }

@@ -37,9 +37,15 @@ struct GlareViewReport {
   double shareAbove035 = 0.0, shareAbove040 = 0.0, shareAbove045 = 0.0;  // of occupied hours
   double glareAutonomy = 0.0;  // share of occupied hours with DGP < 0.40
   En17037Level level = En17037Level::kNone;
+  // The shading the view saw: "open" (none modelled, or window groups: see docs/compliance.md) or
+  // "lm83" (the LM-83 blinds of `blindsSpace`, closed in blindsClosedHours occupied hours).
+  std::string blinds = "open";
+  std::string blindsSpace;
+  int blindsClosedHours = 0;
   // The rendered check of chosen hours: imageless and rendered DGP side by side.
   struct Check {
     std::string time;
+    bool blindsClosed = false;
     double imagelessDgp = 0.0, renderedDgp = 0.0;
     double imagelessEvLux = 0.0, renderedEvLux = 0.0;
   };
@@ -82,11 +88,16 @@ struct LeedSpaceReport {
   double inRangePct = 0.0;              // option 2: share of the area between 300 and 3000 lx, all times
   std::vector<double> inRangeByTimePct;  // option 2: per simulated time
   bool aseAbove10 = false;
+  // Option 2: the standard errors of those shares from each sensor's Monte Carlo error
+  // (metrics/leed.h inRangeShare); the space's over the times, independent: √Σ SE_t² / T.
+  double inRangeStandardErrorPct = 0.0;
+  std::vector<double> inRangeByTimeStandardErrorPct;
 };
 
 struct LeedReport {
   std::vector<LeedSpaceReport> spaces;
   double averagePct = 0.0;  // area-weighted sDA (option 1) or share in range (option 2)
+  double averageStandardErrorPct = 0.0;  // option 2: √Σ (A_k/A)² SE_k²
   int points = 0;
   bool eachSpaceAbove55 = false;
   bool aseExceeds10Percent = false;      // option 1: any space with ASE > 10 %

@@ -203,6 +203,7 @@ struct AnnualTraces {
   double coefficientsOpenS = 0.0, coefficientsClosedS = 0.0, productOpenS = 0.0, productClosedS = 0.0;
   uint64_t raysOpen = 0, raysClosed = 0;
   bool closed = false;     // a closed state was traced
+  std::unique_ptr<Scene> shaded;  // that state's scene (one group: all the glazing), kept for glare views
   int blindMaterials = 0;  // glass materials the closed state changed
   double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
   double productS() const { return productOpenS + productClosedS; }
@@ -531,7 +532,7 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
     traceWindowGroups(c, in, job, p, t, observer);
     return;
   }
-  std::unique_ptr<Scene> shaded;
+  std::unique_ptr<Scene>& shaded = t.shaded;
   if (a.blinds) {
     shaded = loadAnnualScene(c, in.north);
     shaded->sky->model = in.scene->sky->model;
@@ -607,8 +608,10 @@ std::vector<ComplianceGrid> complianceGrids(const AnnualInputs& in) {
 }
 
 std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const AnnualInputs& in, const AnnualTraces& t,
-                                                   const ResolvedTrace& trace, const YearHours& y,
-                                                   const ComplianceTallies& tallies, const ReportData& data) {
+                                                   const ResolvedTrace& trace, const TraceSettings& pointSettings,
+                                                   const YearHours& y,
+                                                   const ComplianceTallies& tallies, const ReportData& data,
+                                                   const std::vector<GridYear>& grids, StudyObserver& observer) {
   TraceSettings settings = trace.settings;
   settings.method = Method::kPath;
   const AnnualGlareJob glareJob{&t.sky, &t.sunSet, in.north, settings, c.annual.sunSamples, trace.threads};
@@ -619,6 +622,7 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
   ci.epw = &in.epw;
   ci.sky = &t.sky;
   ci.glareJob = &glareJob;
+  ci.pointSettings = pointSettings;
   ci.occupied = &y.occupied;
   ci.weatherYear = in.epw.records.empty() ? 2026 : in.epw.records.front().year;
   ci.tallies = &tallies;
@@ -626,6 +630,14 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
   ci.positions = &in.positions;
   ci.normals = &in.normals;
   ci.threads = trace.threads;
+  ci.observer = &observer;
+  // The glare views' blinds: the closed scene of one window group and each grid's closed hours.
+  std::vector<std::vector<char>> closedHours;
+  if (t.closed && t.shaded) {
+    for (const GridYear& g : grids) closedHours.push_back(g.blindsClosed);
+    ci.closedScene = t.shaded.get();
+    ci.blindsClosed = &closedHours;
+  }
   return evaluateCompliance(ci);
 }
 
@@ -674,8 +686,10 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   annualGridReports(data, in, th, y, grids);
   // The [[compliance]] entries, by the process that writes the results (a shard's part has none:
   // its merge evaluates them).
-  if (!c.compliance.empty() && processes.writesOutputs() && !processes.partial())
-    data.compliance = evaluateComplianceOf(c, in, t, trace, y, compliance, data);
+  if (!c.compliance.empty() && processes.writesOutputs() && !processes.partial()) {
+    const TraceSettings pointSettings = resolveTrace(&c.settings, run.request.trace, Method::kCache).settings;
+    data.compliance = evaluateComplianceOf(c, in, t, trace, pointSettings, y, compliance, data, grids, observer);
+  }
   data.run.runTimeS = secondsSince(run.start);
   // 4. Write the rest; the folder is committed as a whole (a shard writes its part instead).
   if (processes.partial()) {

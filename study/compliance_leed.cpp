@@ -5,6 +5,7 @@
 #include "study/annual_glare.h"
 #include "study/case_scene.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace candela {
@@ -106,28 +107,37 @@ ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s
         std::vector<SensorPoint> points;
         for (std::size_t i = cg.first; i < cg.first + cg.count; ++i)
           points.push_back({(*in.positions)[i], (*in.normals)[i]});
-        int inRange = 0;
-        for (const IrradianceEstimate& e : computeIrradiance(tracer, points, in.glareJob->settings, in.threads))
-          inRange += e.illuminanceLux() >= 300.0 && e.illuminanceLux() <= 3000.0;
-        l.spaces[k].inRangeByTimePct.push_back(points.empty() ? 0.0 : 100.0 * inRange / double(points.size()));
+        std::vector<double> lux, sigma;
+        for (const IrradianceEstimate& e : computeIrradiance(tracer, points, in.pointSettings, in.threads)) {
+          lux.push_back(e.illuminanceLux());
+          sigma.push_back(e.standardErrorLux());
+        }
+        const InRangeShare share = inRangeShare(lux, sigma, 300.0, 3000.0);
+        l.spaces[k].inRangeByTimePct.push_back(share.sharePct);
+        l.spaces[k].inRangeByTimeStandardErrorPct.push_back(share.standardErrorPct);
       }
     }
-  double area = 0.0, weighted = 0.0;
+  double area = 0.0, weighted = 0.0, weightedVariance = 0.0;
   l.eachSpaceAbove55 = true;
   for (LeedSpaceReport& q : l.spaces) {
-    double sum = 0.0;
+    double sum = 0.0, variance = 0.0;
     for (double v : q.inRangeByTimePct) sum += v;
-    q.inRangePct = q.inRangeByTimePct.empty() ? 0.0 : sum / double(q.inRangeByTimePct.size());
+    for (double se : q.inRangeByTimeStandardErrorPct) variance += se * se;
+    const double times = static_cast<double>(q.inRangeByTimePct.size());
+    q.inRangePct = times > 0.0 ? sum / times : 0.0;
+    q.inRangeStandardErrorPct = times > 0.0 ? std::sqrt(variance) / times : 0.0;
     area += q.areaM2;
     weighted += q.areaM2 * q.inRangePct;
+    weightedVariance += q.areaM2 * q.areaM2 * q.inRangeStandardErrorPct * q.inRangeStandardErrorPct;
     l.eachSpaceAbove55 = l.eachSpaceAbove55 && q.inRangePct >= 55.0;
   }
   l.averagePct = area > 0.0 ? weighted / area : 0.0;
+  l.averageStandardErrorPct = area > 0.0 ? std::sqrt(weightedVariance) / area : 0.0;
   l.points = leedOption2Points(l.averagePct);
   ComplianceReport out;
   out.verdict = l.points > 0 ? "pass" : "fail";
-  out.verdictLines.push_back("LEED v4.1 option 2: " + std::to_string(l.points) + " points (" + fixed(l.averagePct, 1) +
-                             " % of the floor area between 300 and 3000 lx, mean of " +
+  out.verdictLines.push_back("LEED v4.1 option 2: " + std::to_string(l.points) + " points (" + fixed(l.averagePct, 1) + " ± " +
+                             fixed(l.averageStandardErrorPct, 1) + " % of the floor area between 300 and 3000 lx, mean of " +
                              std::to_string(l.times.size()) + " clear-sky times)");
   out.leed = std::move(l);
   return out;

@@ -14,14 +14,35 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 
 namespace candela {
+
+namespace {
+
+// "YYYY-MM-DDTHH:MM" (local standard time, the start of the hour) → the index of the weather
+// hour that contains it (EPW records are hour-ending: 12:00 falls in hour 13).
+int hourIndex(const AnnualSky& sky, const std::string& text, const FileLoc& loc) {
+  const LocalTime t = parseLocalTime(text, loc);
+  const int ending = std::min(24, static_cast<int>(std::floor(t.hourOfDay())) + 1);
+  for (std::size_t h = 0; h < sky.hours.size(); ++h)
+    if (sky.hours[h].month == t.month && sky.hours[h].day == t.day && sky.hours[h].hour == ending)
+      return static_cast<int>(h);
+  throw InputError(loc, "'check_hours': " + text + " is not an hour of the weather file");
+}
+
+}  // namespace
 
 ComplianceTallies::ComplianceTallies(const CaseFile& c, std::vector<ComplianceGrid> grids, const AnnualSky& sky)
     : grids_(std::move(grids)) {
   const bool en17037 = std::any_of(c.compliance.begin(), c.compliance.end(),
                                    [](const ComplianceSpec& s) { return s.standard == ComplianceStandard::kEn17037; });
   if (!en17037) return;
+  // Each glare view's check hours must be hours of this weather file: refused before any tracing.
+  for (const ComplianceSpec& s : c.compliance)
+    for (const GlareViewSpec& v : s.glareViews)
+      for (const std::string& h : v.checkHours) hourIndex(sky, h, v.checkLoc);
   std::vector<double> diffuse;
   for (const AnnualHour& h : sky.hours) diffuse.push_back(h.diffuseHorizontalLux);
   const std::vector<char> daylight = candela::daylightHours(diffuse);
@@ -146,17 +167,6 @@ void viewOutPart(const ComplianceInputs& in, const Tracer& tracer, const Complia
   if (lowest == En17037Level::kNone) out.verdict = "fail";
 }
 
-// "YYYY-MM-DDTHH:MM" (local standard time, the start of the hour) → the index of the weather
-// hour that contains it (EPW records are hour-ending: 12:00 falls in hour 13).
-int hourIndex(const AnnualSky& sky, const std::string& text, const FileLoc& loc) {
-  const LocalTime t = parseLocalTime(text, loc);
-  const int ending = std::min(24, static_cast<int>(std::floor(t.hourOfDay())) + 1);
-  for (std::size_t h = 0; h < sky.hours.size(); ++h)
-    if (sky.hours[h].month == t.month && sky.hours[h].day == t.day && sky.hours[h].hour == ending)
-      return static_cast<int>(h);
-  throw InputError(loc, "'check_hours': " + text + " is not an hour of the weather file");
-}
-
 void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpec& s, En17037Report& r,
            ComplianceReport& out) {
   r.glareExceedance = s.glareExceedance;
@@ -164,13 +174,26 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
   th.exceedanceShare = s.glareExceedance;
   En17037Level lowest = En17037Level::kHigh;
   std::vector<ViewGlareMetrics> all;
+  // The views' blinds: LM-83's, operated as the entry's first space's (its hours of closed blinds).
+  const std::vector<int> spaces = complianceSpaces(s, *in.tallies);
+  const bool blinds = in.closedScene && in.blindsClosed && !spaces.empty();
+  const std::vector<char>* closedHours = blinds ? &(*in.blindsClosed)[static_cast<std::size_t>(spaces.front())] : nullptr;
+  std::unique_ptr<Tracer> closedTracer;
+  if (blinds) closedTracer = std::make_unique<Tracer>(*in.closedScene);
   for (std::size_t i = 0; i < s.glareViews.size(); ++i) {
     const GlareViewSpec& v = s.glareViews[i];
     const GlareView view{"view" + std::to_string(i + 1), v.positionM, v.direction};
     std::vector<int> checkHours;
     for (const std::string& h : v.checkHours) checkHours.push_back(hourIndex(*in.sky, h, v.checkLoc));
-    const ViewAnnualGlare year = imagelessAnnualGlare(tracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
-    const ViewGlareMetrics m = viewGlareMetrics(year.dgp, *in.occupied, th);
+    // Open and, with blinds, closed: the same stream, so both states see the same samples.
+    const ViewAnnualGlare open = imagelessAnnualGlare(tracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
+    std::optional<ViewAnnualGlare> closed;
+    std::vector<float> dgp = open.dgp;
+    if (blinds) {
+      closed = imagelessAnnualGlare(*closedTracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
+      dgp = combineByHour(open.dgp, closed->dgp, *closedHours);
+    }
+    const ViewGlareMetrics m = viewGlareMetrics(dgp, *in.occupied, th);
     all.push_back(m);
     GlareViewReport g;
     g.position = v.positionM;
@@ -178,13 +201,21 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
     g.shareAbove035 = m.aboveHigh, g.shareAbove040 = m.aboveMedium, g.shareAbove045 = m.aboveMinimum;
     g.glareAutonomy = m.glareAutonomy;
     g.level = m.level;
-    if (!checkHours.empty()) {
-      const HourSceneInput hs{in.scene, in.epw, in.sky, in.glareJob->northDeg, in.caseFile->sky.groundReflectance};
-      const std::vector<GlareHourCheck> checks =
-          checkChosenHours(hs, view, year, checkHours, in.glareJob->settings, in.threads, {});
-      for (std::size_t k = 0; k < checks.size(); ++k)
-        g.checks.push_back({v.checkHours[k], checks[k].imagelessDgp, checks[k].renderedDgp,
-                            checks[k].imagelessEvLux, checks[k].renderedEvLux});
+    if (blinds) {
+      g.blinds = "lm83";
+      g.blindsSpace = in.tallies->grids()[static_cast<std::size_t>(spaces.front())].name;
+      for (std::size_t h = 0; h < closedHours->size(); ++h)
+        g.blindsClosedHours += ((*closedHours)[h] && (*in.occupied)[h]) ? 1 : 0;
+    }
+    // Each check hour rendered in the state its blinds were in.
+    for (std::size_t k = 0; k < checkHours.size(); ++k) {
+      const bool shut = blinds && (*closedHours)[static_cast<std::size_t>(checkHours[k])];
+      const HourSceneInput hs{shut ? in.closedScene : in.scene, in.epw, in.sky, in.glareJob->northDeg,
+                              in.caseFile->sky.groundReflectance};
+      const GlareHourCheck c =
+          checkChosenHours(hs, view, shut ? *closed : open, {checkHours[k]}, in.glareJob->settings, in.threads, {})
+              .at(0);
+      g.checks.push_back({v.checkHours[k], shut, c.imagelessDgp, c.renderedDgp, c.imagelessEvLux, c.renderedEvLux});
     }
     r.glare.push_back(std::move(g));
     lowest = lowerLevel(lowest, m.level);
@@ -199,10 +230,14 @@ ComplianceReport en17037(const ComplianceInputs& in, const ComplianceSpec& s) {
   ComplianceReport out;
   out.verdict = "pass";
   En17037Report r;
+  const std::size_t parts = (in.tallies->needsHours() ? 1 : 0) + (s.sunlightPoints.empty() ? 0 : 1) +
+                            (s.viewPoints.empty() ? 0 : 1) + (s.glareViews.empty() ? 0 : 1);
+  const ObservedStep step(in.observer ? *in.observer : silentObserver(), "compliance " + s.name, parts);
   const auto timed = [&](const char* part, auto&& f) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
     out.timesS.emplace_back(part, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    (in.observer ? *in.observer : silentObserver()).progress(out.timesS.size());
   };
   if (in.tallies->needsHours()) timed("daylight_provision", [&] { provision(in, s, r, out); });
   if (!s.sunlightPoints.empty() || !s.viewPoints.empty() || !s.glareViews.empty()) {
@@ -222,10 +257,11 @@ std::vector<ComplianceReport> evaluateCompliance(const ComplianceInputs& in) {
   for (const ComplianceSpec& s : in.caseFile->compliance) {
     ComplianceReport r;
     const auto t0 = std::chrono::steady_clock::now();
-    switch (s.standard) {
-      case ComplianceStandard::kEn17037: r = en17037(in, s); break;
-      case ComplianceStandard::kLeedV41Option1: r = leedOption1(in, s); break;
-      case ComplianceStandard::kLeedV41Option2: r = leedOption2(in, s); break;
+    if (s.standard == ComplianceStandard::kEn17037) {
+      r = en17037(in, s);
+    } else {
+      const ObservedStep step(in.observer ? *in.observer : silentObserver(), "compliance " + s.name, 1);
+      r = s.standard == ComplianceStandard::kLeedV41Option1 ? leedOption1(in, s) : leedOption2(in, s);
     }
     if (s.standard != ComplianceStandard::kEn17037)
       r.timesS.emplace_back("total", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

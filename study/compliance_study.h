@@ -10,6 +10,7 @@
 #include "photometry/site.h"
 #include "reports/report_data.h"
 #include "study/case_file.h"
+#include "study/observer.h"
 
 #include <cstddef>
 #include <string>
@@ -64,13 +65,21 @@ struct ComplianceInputs {
   const EpwFile* epw = nullptr;
   const AnnualSky* sky = nullptr;
   const AnnualGlareJob* glareJob = nullptr;  // the year's suns and the case's trace settings
+  // Point-in-time tracing (LEED option 2): the case's settings with a grid's default method
+  // (Ward's irradiance cache unless the case or the command line says path).
+  TraceSettings pointSettings;
   const std::vector<char>* occupied = nullptr;  // per hour of the year
   int weatherYear = 2026;             // the weather file's first year: the default dates' year
   const ComplianceTallies* tallies = nullptr;
   const std::vector<GridReport>* annualGrids = nullptr;  // the study's grid reports, in grid order
   const std::vector<Vec3>* positions = nullptr;  // the study's sensors (grids in case order)
   const std::vector<Vec3>* normals = nullptr;
+  // LM-83 blinds for the glare views, when the study traced them for all its glazing at once (no
+  // [[window_group]]): the blinds-closed scene and each grid's hours of closed blinds (grid order).
+  const Scene* closedScene = nullptr;
+  const std::vector<std::vector<char>>* blindsClosed = nullptr;
   int threads = 0;
+  StudyObserver* observer = nullptr;  // one step per entry, its parts as the items
 };
 
 // Every entry of the case, in case order. Throws InputError (at the entry's keys) for inputs only

@@ -47,7 +47,7 @@ TEST(ComplianceJson, CarriesTheIssuesKeys) {
   LeedReport leed;
   leed.points = 2;
   leed.aseExceeds10Percent = true;
-  leed.spaces.push_back({"office", 40.0, 60.0, 12.0, 0.0, {}, true});
+  leed.spaces.push_back({"office", 40.0, 60.0, 12.0, 0.0, {}, true, 0.0, {}});
   l.leed = leed;
   const nlohmann::json k = complianceJson(l);
   EXPECT_EQ(k["points"], 2);

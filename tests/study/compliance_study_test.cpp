@@ -5,6 +5,8 @@
 
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"
+#include "metrics/annual.h"
+#include "reports/annual_results.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
 #include "study/compliance_leed.h"
@@ -182,6 +184,116 @@ TEST_F(ComplianceStudy, LeedOption1ScoresTheStudysSda) {
   EXPECT_EQ(e.leed->points, 3);
   EXPECT_FALSE(e.leed->aseExceeds10Percent);
   EXPECT_EQ(e.verdict, "pass");
+}
+
+
+// A 4 m × 4 m × 3 m grey room with a south window (glass, 3 m × 1.6 m) under the synthetic
+// Golden year, one glare view at the room's middle facing the window.
+const char* kWindowRoom = R"(void plastic grey
+0
+0
+5 0.5 0.5 0.5 0 0
+void glass pane
+0
+0
+3 0.88 0.88 0.88
+grey polygon floor
+0
+0
+12 0 0 0  0 4 0  4 4 0  4 0 0
+grey polygon ceiling
+0
+0
+12 0 0 3  4 0 3  4 4 3  0 4 3
+grey polygon north
+0
+0
+12 0 4 0  0 4 3  4 4 3  4 4 0
+grey polygon west
+0
+0
+12 0 0 0  0 0 3  0 4 3  0 4 0
+grey polygon east
+0
+0
+12 4 0 0  4 4 0  4 4 3  4 0 3
+grey polygon sill
+0
+0
+12 0 0 0  4 0 0  4 0 0.8  0 0 0.8
+grey polygon head
+0
+0
+12 0 0 2.4  4 0 2.4  4 0 3  0 0 3
+grey polygon jamb_west
+0
+0
+12 0 0 0.8  0.5 0 0.8  0.5 0 2.4  0 0 2.4
+grey polygon jamb_east
+0
+0
+12 3.5 0 0.8  4 0 0.8  4 0 2.4  3.5 0 2.4
+pane polygon window
+0
+0
+12 0.5 0 0.8  3.5 0 0.8  3.5 0 2.4  0.5 0 2.4
+)";
+
+RunResult runWindowRoom(const fs::path& dir, bool blinds) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "room.rad") << kWindowRoom;
+  std::ofstream(dir / "case.toml")
+      << "[[scene]]\nfile = \"room.rad\"\n[sky]\ntype = \"annual\"\nweather = \"" << CANDELA_TEST_DATA
+      << "/epw/synthetic_golden_2026.epw\"\n[annual]\nblinds = " << (blinds ? "true" : "false")
+      << "\n[[grid]]\nname = \"floor\"\ncorners = [[0.2, 0.2], [3.8, 3.8]]\nheight = 0.8\nspacing = 0.6\n"
+         "[[compliance]]\nstandard = \"en17037\"\n[[compliance.glare_views]]\nposition = [2.0, 2.5, 1.2]\n"
+         "direction = [0.0, -1.0, 0.0]\ncheck_hours = [\"2026-01-15T11:00\"]\n"
+         "[settings]\nquality = \"draft\"\n";
+  CaseFile c = readCaseFile(dir / "case.toml");
+  RunContext run;
+  run.request.outDir = dir / "out";
+  c.settings.scene = sceneReadOptions(&c.settings, run.request.trace);
+  run.outDir = dir / "out";
+  run.start = std::chrono::steady_clock::now();
+  run.startedAt = "2026-01-01 00:00";
+  return runAnnualStudy(c, run, silentObserver());
+}
+
+// The glare view follows the space's LM-83 blinds: closed in exactly the occupied hours the
+// space's direct sun closes them (recomputed here from the study's own direct-sun file), and the
+// rendered check hour is rendered in that hour's state.
+TEST(ComplianceGlare, ViewsFollowTheSpacesBlinds) {
+  const fs::path dir = scratchDir("compliance_glare", std::to_string(::getpid()));
+  const RunResult shaded = runWindowRoom(dir / "blinds", true);
+  const RunResult open = runWindowRoom(dir / "open", false);
+  const AnnualResults sun = readAnnualResults(dir / "blinds" / "out" / "floor_direct_sun_hourly.f32");
+  std::vector<char> occupied(sun.hours.size(), 0);
+  int checkHour = -1;
+  for (std::size_t h = 0; h < sun.hours.size(); ++h) {
+    occupied[h] = sun.hours[h].hourEnding >= 9 && sun.hours[h].hourEnding <= 18;  // middles in [08:00, 18:00)
+    if (sun.hours[h].month == 1 && sun.hours[h].day == 15 && sun.hours[h].hourEnding == 12) checkHour = static_cast<int>(h);
+  }
+  const std::vector<char> closed = blindsClosedHours(sun.lux.data(), sun.sensors, sun.hourCount(), occupied);
+  int closedOccupied = 0;
+  for (std::size_t h = 0; h < closed.size(); ++h) closedOccupied += closed[h] && occupied[h];
+  ASSERT_GT(closedOccupied, 100);  // a south window in Golden: the blinds close often
+  const GlareViewReport& withBlinds = shaded.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& without = open.data.compliance.at(0).en17037->glare.at(0);
+  EXPECT_EQ(withBlinds.blinds, "lm83");
+  EXPECT_EQ(withBlinds.blindsSpace, "floor");
+  EXPECT_EQ(withBlinds.blindsClosedHours, closedOccupied);
+  EXPECT_EQ(without.blinds, "open");
+  EXPECT_EQ(without.blindsClosedHours, 0);
+  ASSERT_GE(checkHour, 0);
+  ASSERT_EQ(withBlinds.checks.size(), 1u);
+  EXPECT_EQ(withBlinds.checks[0].blindsClosed, static_cast<bool>(closed[static_cast<std::size_t>(checkHour)]));
+  EXPECT_FALSE(without.checks.at(0).blindsClosed);
+  // Closed blinds pass no beam and show no sky: the view's glare can only drop, and it does, as
+  // the sun stands in front of this view in the hours that close them.
+  EXPECT_LE(withBlinds.shareAbove035, without.shareAbove035);
+  EXPECT_LT(withBlinds.shareAbove045, without.shareAbove045);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
 }
 
 }  // namespace
