@@ -67,6 +67,18 @@ fs::path writeWeather(const fs::path& dir) {
   return dir / "constructed.epw";
 }
 
+// The annual study of dir/case.toml, its results in dir/out.
+RunResult runCaseIn(const fs::path& dir) {
+  CaseFile c = readCaseFile(dir / "case.toml");
+  RunContext run;
+  run.request.outDir = dir / "out";
+  c.settings.scene = sceneReadOptions(&c.settings, run.request.trace);
+  run.outDir = dir / "out";
+  run.start = std::chrono::steady_clock::now();
+  run.startedAt = "2026-01-01 00:00";
+  return runAnnualStudy(c, run, silentObserver());
+}
+
 class ComplianceStudy : public testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -80,17 +92,10 @@ class ComplianceStudy : public testing::Test {
            "[[compliance]]\nstandard = \"en17037\"\n"
            "[[compliance]]\nstandard = \"leed-v4.1-option1\"\n"
            "[settings]\nquality = \"draft\"\n";
-    CaseFile c = readCaseFile(dir_ / "case.toml");
-    RunContext run;
-    run.request.outDir = dir_ / "out";
-    c.settings.scene = sceneReadOptions(&c.settings, run.request.trace);
-    run.outDir = dir_ / "out";
-    run.start = std::chrono::steady_clock::now();
-    run.startedAt = "2026-01-01 00:00";
-    result_ = new RunResult(runAnnualStudy(c, run, silentObserver()));
+    result_ = new RunResult(runCaseIn(dir_));
     // The year's diffuse illuminance as the study's sky has it (Perez efficacy of each hour).
     const EpwFile w = readEpw(epw.string());
-    sky_ = new AnnualSky(makeAnnualSky(w, caseSite(c, &w.location), AnnualSkyOptions{}));
+    sky_ = new AnnualSky(makeAnnualSky(w, caseSite(readCaseFile(dir_ / "case.toml"), &w.location), AnnualSkyOptions{}));
   }
   static void TearDownTestSuite() {
     delete result_;
@@ -249,14 +254,7 @@ RunResult runWindowRoom(const fs::path& dir, bool blinds) {
          "[[compliance]]\nstandard = \"en17037\"\n[[compliance.glare_views]]\nposition = [2.0, 2.5, 1.2]\n"
          "direction = [0.0, -1.0, 0.0]\ncheck_hours = [\"2026-01-15T11:00\"]\n"
          "[settings]\nquality = \"draft\"\n";
-  CaseFile c = readCaseFile(dir / "case.toml");
-  RunContext run;
-  run.request.outDir = dir / "out";
-  c.settings.scene = sceneReadOptions(&c.settings, run.request.trace);
-  run.outDir = dir / "out";
-  run.start = std::chrono::steady_clock::now();
-  run.startedAt = "2026-01-01 00:00";
-  return runAnnualStudy(c, run, silentObserver());
+  return runCaseIn(dir);
 }
 
 // The glare view follows the space's LM-83 blinds: closed in exactly the occupied hours the
