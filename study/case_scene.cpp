@@ -28,16 +28,20 @@ std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
-  std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
-  for (const LuminairePlacement& p : c.luminaires) {
-    auto& web = webs[p.file];
-    if (!web) web = std::make_shared<const PhotometricWeb>(readPhotometricFile(p.file));
-    scene->luminaires.push_back(placeLuminaire(web, p.mounting()));
-    if (p.openingReflectance)
-      addOpeningSurface(*scene, static_cast<uint32_t>(scene->luminaires.size() - 1), *p.openingReflectance);
-  }
+  placeLuminaires(*scene, c.luminaires);
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));
   return scene;
+}
+
+void placeLuminaires(Scene& scene, const std::vector<LuminairePlacement>& luminaires) {
+  std::map<std::filesystem::path, std::shared_ptr<const PhotometricWeb>> webs;
+  for (const LuminairePlacement& p : luminaires) {
+    auto& web = webs[p.file];
+    if (!web) web = std::make_shared<const PhotometricWeb>(readPhotometricFile(p.file));
+    scene.luminaires.push_back(placeLuminaire(web, p.mounting()));
+    if (p.openingReflectance)
+      addOpeningSurface(scene, static_cast<uint32_t>(scene.luminaires.size() - 1), *p.openingReflectance);
+  }
 }
 
 Site caseSite(const CaseFile& c, const EpwLocation* weather) {

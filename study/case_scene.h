@@ -17,6 +17,10 @@ namespace candela {
 // [site] and [sky]. Throws InputError naming the bad file and line.
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight = true);
 
+// Places luminaires in `scene` (files shared by several placements are read once), with their
+// opening surfaces where `openingReflectance` is set. Throws InputError naming a bad file.
+void placeLuminaires(Scene& scene, const std::vector<LuminairePlacement>& luminaires);
+
 // The daylight a case's [site] and [sky] describe (sky type "none" without a [sky]). With
 // `weather`, the direct normal and diffuse horizontal irradiance (and illuminance) of the EPW
 // hour containing `time` are used (hour-ending records: 12:30 is in hour 13).

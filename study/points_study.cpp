@@ -25,6 +25,7 @@ PointsScene loadPointsScene(const PointsJob& job) {
   readSceneFiles(job.scenes, *out.scene, sceneReadOptions(c ? &c->settings : nullptr, job.trace));
   for (const auto& f : job.portalFiles)
     for (Portal& p : readPortalFile(f)) out.scene->portals.push_back(std::move(p));
+  placeLuminaires(*out.scene, job.luminaires);
   if (job.sky) addDaylight(*out.scene, job.sky(daylight));
   // Points are path traced unless the case or the caller says otherwise.
   out.trace = resolveTrace(c ? &c->settings : nullptr, job.trace, Method::kPath);
@@ -32,11 +33,10 @@ PointsScene loadPointsScene(const PointsJob& job) {
   const FileLoc where{c ? c->path.string() : !job.scenes.empty() ? job.scenes.front().string() : "command line", 0, 0};
   checkSceneInput(*out.scene, out.warnings);
   checkLightSources(*out.scene, where, out.warnings);
-  if (c) {
-    out.luminaires = c->luminaires;
-    checkPhotometry(*out.scene, c->luminaires, out.warnings);
-    checkCaseSite(*c, out.warnings);  // the case's site and weather hour apply under --sky too
-  }
+  if (c) out.luminaires = c->luminaires;
+  out.luminaires.insert(out.luminaires.end(), job.luminaires.begin(), job.luminaires.end());
+  if (!out.luminaires.empty()) checkPhotometry(*out.scene, out.luminaires, out.warnings);
+  if (c) checkCaseSite(*c, out.warnings);  // the case's site and weather hour apply under --sky too
   out.limits = job.limits;
   out.pointsName = job.pointsName;
   out.distribution = job.distribution;

@@ -23,6 +23,8 @@ struct PointsJob {
   std::filesystem::path caseFile;             // empty: no case
   std::vector<std::filesystem::path> scenes;  // Radiance files read after the case's, in order
   std::vector<std::filesystem::path> portalFiles;  // openings added to the case's (study/portal_file.h)
+  // Luminaires placed after the case's and the scene files (the Python module's `luminaires`).
+  std::vector<LuminairePlacement> luminaires;
   // A sky asked for by the caller: called with the case's daylight (or the default without a
   // case) and returns the daylight to use instead of it. Unset: the case's daylight.
   std::function<DaylightSpec(DaylightSpec)> sky;

@@ -208,6 +208,18 @@ bool readBoundedLine(std::istream& in, std::string& line, const std::string& sou
 
 }  // namespace
 
+SensorPoint checkedSensorPoint(const double v[6], const FileLoc& loc) {
+  for (int k = 0; k < 6; ++k)
+    if (!std::isfinite(v[k])) throw InputError(loc, "a sensor point's numbers must be finite");
+  // Within 10 000 km of the origin (engine/rad_reader.cpp says why): a point at 1e30 m once
+  // aborted the process inside Embree.
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(v[k]) > kMaxCoordinateM) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");
+  const Vec3 dir(v[3], v[4], v[5]);
+  if (!(glm::length(dir) > 0.0)) throw InputError(loc, "sensor direction is zero");
+  return {Vec3(v[0], v[1], v[2]), glm::normalize(dir)};
+}
+
 std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName, std::vector<int>* lines) {
   std::vector<SensorPoint> points;
   std::string line;
@@ -238,13 +250,7 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
     const FileLoc loc{sourceName, lineNo, 0};
     if (bad || n != 6)
       throw InputError(loc, "a sensor point needs 6 numbers 'x y z dx dy dz', got '" + line + "'");
-    // Within 10 000 km of the origin (engine/rad_reader.cpp says why): a point at 1e30 m once
-    // aborted the process inside Embree.
-    for (int k = 0; k < 3; ++k)
-      if (std::abs(v[k]) > kMaxCoordinateM) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");
-    const Vec3 dir(v[3], v[4], v[5]);
-    if (!(glm::length(dir) > 0.0)) throw InputError(loc, "sensor direction is zero");
-    points.push_back({Vec3(v[0], v[1], v[2]), glm::normalize(dir)});
+    points.push_back(checkedSensorPoint(v, loc));
     if (lines) lines->push_back(lineNo);
   }
   return points;

@@ -101,6 +101,11 @@ std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceN
                                     std::vector<int>* lines = nullptr);
 SensorGrid readPointsFile(const std::filesystem::path& path);
 
+// A sensor point from "x y z dx dy dz" (m; the direction normalised), checked as readPoints
+// checks a line: finite, within 1e7 m of the origin, a non-zero direction. Throws InputError
+// at `loc` otherwise.
+SensorPoint checkedSensorPoint(const double v[6], const FileLoc& loc);
+
 // Even-odd point-in-polygon test (concave polygons included); points on an edge count as
 // inside or outside arbitrarily.
 bool insidePolygon(const std::vector<Vec2>& polygon, const Vec2& p);
