@@ -80,6 +80,7 @@ struct BuildContext {
   const Tracer& tracer;
   int threads;
   const Distribution& distribution;
+  const std::function<void()>& checkpoint;  // may be empty
 };
 
 // Phase A over a list of queries, gathered in parallel in batches and shared between the
@@ -92,6 +93,7 @@ void placeRecords(IrradianceCache& cache, const BuildContext& ctx, const QuerySo
   std::vector<std::vector<std::byte>> hits;
   uint64_t rays = 0;  // the coverage tests' visibility rays
   for (size_t b = 0; b < src.items; b += kBatch) {
+    if (ctx.checkpoint) ctx.checkpoint();
     const size_t e = std::min(src.items, b + kBatch);
     hits.assign(e - b, {});
     ctx.distribution.fillLists(hits, ItemUse::kShared, ctx.threads, [&](size_t i, std::vector<std::byte>& bytes) {
@@ -249,20 +251,23 @@ void computeRecord(const Tracer& tracer, IrradianceRecord& r, uint64_t stream, c
 
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads,
-                                     const Distribution& distribution) {
+                                     const Distribution& distribution, const std::function<void()>& checkpoint) {
   // Records [from, to) of a cache get their values, record i from its own stream, shared
   // between the processes (every later phase reads them).
   auto computeValues = [&](IrradianceCache& c, size_t from, size_t to,
                            const std::function<void(size_t, IrradianceRecord&)>& compute) {
     if (to > from)
       distributedFill(distribution, &c.record(from), to - from, ItemUse::kShared, threads,
-                      [&](size_t k, IrradianceRecord& r) { compute(from + k, r); });
+                      [&](size_t k, IrradianceRecord& r) {
+                        compute(from + k, r);
+                        if (checkpoint) checkpoint();
+                      });
   };
   auto visibility = [&tracer](const Vec3& p, const Vec3& n, uint32_t shape, const IrradianceRecord& r,
                               uint64_t& rays) { return cacheVisible(tracer, p, n, shape, r, rays); };
   IrradianceCache cache(tracer.scene().bounds(), settings.cache);
   cache.setVisibility(visibility);
-  const BuildContext ctx{tracer, threads, distribution};
+  const BuildContext ctx{tracer, threads, distribution, checkpoint};
   // Phase A: first diffuse hits of each point's initial hemisphere cells.
   const QuerySource pointQueries{points.size(), [&](size_t i, std::vector<CacheQuery>& out) {
                                     cacheQueries(tracer, points[i].position, points[i].response(), i, settings, out);

@@ -11,6 +11,7 @@
 #include "engine/response.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace candela {
@@ -28,9 +29,12 @@ class Tracer;
 // and B run again for the queries that left uncovered (twice at most). With a distribution,
 // phase A's first hits are gathered and phase B's values computed shared between the processes;
 // every process walks phase A's hits itself (the serial part, docs/distributed.md).
+// `checkpoint`, when set, is called (from any thread) after each batch of phase A and each
+// record's value: a caller that must be able to stop the build throws from it.
 IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                      const TraceSettings& settings, int threads,
-                                     const Distribution& distribution = localDistribution());
+                                     const Distribution& distribution = localDistribution(),
+                                     const std::function<void()>& checkpoint = {});
 
 // The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that
 // Tracer::irradiance(p, n, pointIndex, s, cache) will trace (same directions), appended to out.

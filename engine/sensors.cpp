@@ -124,9 +124,13 @@ void computeIrradianceInBlocks(const Tracer& tracer, const std::vector<SensorPoi
                                size_t blockPoints) {
   // Cache method: the cache is filled first in a fixed order and frozen (engine/irradiance_cache.h),
   // so that evaluating the points in parallel reads it only.
+  // While the cache is built no point is done: progress(0) lets an observer that stops runs
+  // (the Python module's Ctrl-C) throw there too.
   std::optional<IrradianceCache> cache;
   if (settings.method == Method::kCache && settings.maxBounces > 0)
-    cache.emplace(buildIrradianceCache(tracer, points, settings, threads, distribution));
+    cache.emplace(buildIrradianceCache(tracer, points, settings, threads, distribution, [&progress] {
+      if (progress) progress(0);
+    }));
   const IrradianceCache* c = cache ? &*cache : nullptr;
   blockPoints = std::max<size_t>(1, blockPoints);
   std::vector<IrradianceEstimate> out(std::min(blockPoints, points.size()));
