@@ -103,6 +103,7 @@ void ProgressBar::update(std::size_t done) {
 
 void ProgressBar::draw(std::size_t done) {
   const double t = elapsed();
+  lastDrawn_ = done;
   if (mode_ == ProgressMode::kBar) {
     // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
     std::fprintf(out_, "\r%s\033[K", format(label_, done, total_, t, 30, expectedS_).c_str());
@@ -118,7 +119,7 @@ void ProgressBar::finish() {
   if (finished_) return;
   finished_ = true;
   if (mode_ == ProgressMode::kLines) {
-    if (elapsed() >= lineIntervalS_) draw(total_);
+    if (elapsed() >= lineIntervalS_ && lastDrawn_ != total_) draw(total_);
     return;
   }
   draw(total_);

@@ -49,7 +49,7 @@ class ProgressBar {
   void update(std::size_t done);
 
   // Draws the final state and ends the line (idempotent). kLines: a last line only when the
-  // work lasted at least lineIntervalS.
+  // work lasted at least lineIntervalS and the last line printed did not already say it.
   void finish();
 
   // The mode for stderr: kOff when quiet, kBar on a terminal, else kLines.
@@ -81,6 +81,7 @@ class ProgressBar {
   std::atomic<int64_t> nextDrawNs_{0};  // time (ns since start_) of the next redraw or line
   std::mutex drawMutex_;
   bool finished_ = false;
+  std::size_t lastDrawn_ = static_cast<std::size_t>(-1);  // `done` of the last line or bar drawn
 };
 
 // "estimate: about 1:23:45 (3.2e11 rays on 2 threads at 2.0 M rays/s each), memory about 1.2 GiB

@@ -107,6 +107,7 @@ void addEn17037(json& j, const En17037Report& r) {
                           {"ev_rendered_lux", c.renderedEvLux}});
       views.push_back({{"position", point(g.position)},
                        {"direction", point(g.direction)},
+                       {"azimuth_deg", g.azimuthDeg},
                        {"share_above_dgp_0_35", g.shareAbove035},
                        {"share_above_dgp_0_40", g.shareAbove040},
                        {"share_above_dgp_0_45", g.shareAbove045},

@@ -34,6 +34,7 @@ struct ViewOutReportPoint {
 // Annual glare at one view (imageless DGP over the occupied hours).
 struct GlareViewReport {
   Vec3 position{0.0}, direction{0.0, 1.0, 0.0};
+  double azimuthDeg = 0.0;  // the direction's true azimuth, clockwise from true north
   double shareAbove035 = 0.0, shareAbove040 = 0.0, shareAbove045 = 0.0;  // of occupied hours
   double glareAutonomy = 0.0;  // share of occupied hours with DGP < 0.40
   En17037Level level = En17037Level::kNone;

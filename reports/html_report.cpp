@@ -65,6 +65,12 @@ td code { font-size:12px; }
 .schedule td .f, .surfaces td .f { display:block; color:var(--muted); font-size:11px; }
 .schedule td.num, .schedule th.num { white-space:nowrap; }
 .schedule td.lum { overflow-wrap:anywhere; }
+table.compliance td.num { white-space:nowrap; }
+table.compliance td.lvl { color:var(--muted); font-size:12px; padding-left:0; }
+table.compliance td .f { display:block; color:var(--muted); font-size:11px; }
+table.compliance .ok { color:var(--pass); font-weight:700; } table.compliance .no { color:var(--fail); font-weight:700; }
+p.note { margin-top:10px; }
+h4 { font-size:13px; margin:16px 0 4px; font-weight:600; }
 .schedule td.polar { width:216px; padding:4px 8px 4px 0; }
 .schedule td.polar svg { display:block; }
 table.kv.energy { max-width:none; }
@@ -129,6 +135,14 @@ void modellingTable(std::ostringstream& h, const ModellingResult& m) {
 
 // Percent in tables: one decimal.
 std::string pctText(double v) { return formatFixed(v, 1) + " %"; }
+
+// "a, b and c".
+std::string joinedList(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + xmlEscape(items[i]);
+  return out;
+}
 
 // A plan of one per-sensor annual metric (0–100 %) with the grid's layout.
 std::string metricPlan(const GridReport& g, const std::string& quantity, const std::vector<double>& values,
@@ -366,7 +380,7 @@ void summarySection(std::ostringstream& h, const ReportData& data) {
     h << "<p class=\"overall\">Overall result " << badge(overall) << ": "
       << (failed ? std::to_string(failed) + " of " + std::to_string(checked) + " checked lines fail"
                  : "all " + std::to_string(checked) + " checked lines pass")
-      << " (grids, walls and ceiling, modelling, colour rendering, observers' UGR).</p>\n";
+      << " (" << joinedList(checkedCategories(data)) << ").</p>\n";
   for (std::size_t i = 0; i < data.grids.size(); ++i)
     if (const std::optional<ModellingResult>& m = data.grids[i].modelling)
       h << "<p>Modelling on <a href=\"#grid-" << i + 1 << "\">" << xmlEscape(data.grids[i].name)

@@ -55,4 +55,26 @@ Verdict overallVerdict(const ReportData& data, int* checked, int* failed) {
   return bad > 0 ? Verdict::kFail : n > 0 ? Verdict::kPass : Verdict::kNotChecked;
 }
 
+std::vector<std::string> checkedCategories(const ReportData& data) {
+  bool grids = false, surfaces = false, modelling = false, ra = false, ugr = false;
+  for (const GridReport& g : data.grids) {
+    if (g.check.overall != Verdict::kNotChecked) (g.surfaceGrid.empty() ? grids : surfaces) = true;
+    modelling = modelling || (g.modelling && g.modelling->verdict != Verdict::kNotChecked);
+  }
+  for (const TaskAreaReport& a : data.taskAreas) ra = ra || a.raVerdict != Verdict::kNotChecked;
+  for (const ObserverReport& o : data.observers) ugr = ugr || o.pass().has_value();
+  std::vector<std::string> out;
+  if (grids) out.push_back("grids");
+  if (surfaces) out.push_back("walls and ceiling");
+  if (modelling) out.push_back("modelling");
+  if (ra) out.push_back("colour rendering");
+  if (ugr) out.push_back("observers' UGR");
+  if (!data.compliance.empty()) out.push_back("daylight compliance");
+  return out;
+}
+
+std::string countOf(long long n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
 }  // namespace candela

@@ -291,6 +291,14 @@ struct ReportData {
 // and `failed`, when given, count the lines.
 Verdict overallVerdict(const ReportData& data, int* checked = nullptr, int* failed = nullptr);
 
+// What the checked lines of overallVerdict are, in the report's words and order, only those the
+// run has: "grids", "walls and ceiling", "modelling", "colour rendering", "observers' UGR",
+// "daylight compliance".
+std::vector<std::string> checkedCategories(const ReportData& data);
+
+// "1 point", "3 points": a count with its noun in the right number.
+std::string countOf(long long n, const std::string& singular, const std::string& plural);
+
 // Shortest text that reads back to `v` within `significant` digits ("%.*g"); "nan"/"inf" kept.
 std::string formatNumber(double v, int significant = 8);
 

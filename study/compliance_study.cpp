@@ -4,6 +4,7 @@
 #include "metrics/annual_glare.h"
 #include "metrics/en17037_view_sunlight.h"
 #include "photometry/sky_cie.h"
+#include "reports/report_data.h"
 #include "study/annual_glare.h"
 #include "study/annual_glare_check.h"
 #include "study/compliance_leed.h"
@@ -82,13 +83,8 @@ std::vector<int> complianceSpaces(const ComplianceSpec& s, const ComplianceTalli
 
 namespace {
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string levelText(En17037Level l) { return std::string(levelName(l)); }
+// A level in a verdict line: the JSON's "none" reads "below minimum".
+std::string levelText(En17037Level l) { return l == En17037Level::kNone ? "below minimum" : std::string(levelName(l)); }
 
 void provision(const ComplianceInputs& in, const ComplianceSpec& s, En17037Report& r, ComplianceReport& out) {
   const ComplianceTallies& t = *in.tallies;
@@ -145,11 +141,11 @@ void sunlight(const ComplianceInputs& in, const Tracer& tracer, const Compliance
     r.sunlight.push_back(q);
     lowest = lowerLevel(lowest, p.level);
   }
-  out.verdictLines.push_back("exposure to sunlight on " + r.sunlightDate + ": " + levelText(lowest) + " (least " +
-                             fixed(std::min_element(e.points.begin(), e.points.end(), [](auto& a, auto& b) {
-                                     return a.hours < b.hours;
-                                   })->hours, 1) +
-                             " h of " + std::to_string(e.points.size()) + " points)");
+  const double leastHours =
+      std::min_element(e.points.begin(), e.points.end(), [](auto& a, auto& b) { return a.hours < b.hours; })->hours;
+  out.verdictLines.push_back("exposure to sunlight on " + r.sunlightDate + ": " + levelText(lowest) + " (" +
+                             countOf(static_cast<long long>(e.points.size()), "reference point", "reference points") +
+                             ", the least sunlit " + formatFixed(leastHours, 1) + " h)");
   if (lowest == En17037Level::kNone) out.verdict = "fail";
 }
 
@@ -163,7 +159,8 @@ void viewOutPart(const ComplianceInputs& in, const Tracer& tracer, const Complia
                          viewLayersName(v.layers), v.sightLevel, v.distanceLevel, v.layersLevel, v.level});
     lowest = lowerLevel(lowest, v.level);
   }
-  out.verdictLines.push_back("view out: " + levelText(lowest) + " (" + std::to_string(r.viewOut.size()) + " positions)");
+  out.verdictLines.push_back("view out: " + levelText(lowest) + " (the lowest of " +
+                             countOf(static_cast<long long>(r.viewOut.size()), "eye position", "eye positions") + ")");
   if (lowest == En17037Level::kNone) out.verdict = "fail";
 }
 
@@ -198,6 +195,7 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
     GlareViewReport g;
     g.position = v.positionM;
     g.direction = v.direction;
+    g.azimuthDeg = azAltFromDirection(v.direction, in.site.trueNorthDeg()).azimuthDeg;
     g.shareAbove035 = m.aboveHigh, g.shareAbove040 = m.aboveMedium, g.shareAbove045 = m.aboveMinimum;
     g.glareAutonomy = m.glareAutonomy;
     g.level = m.level;
@@ -220,9 +218,10 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
     r.glare.push_back(std::move(g));
     lowest = lowerLevel(lowest, m.level);
   }
-  out.verdictLines.push_back("protection from glare: " + levelText(lowest) + " (" + std::to_string(all.size()) +
-                             " views, imageless DGP; spatial disturbing glare " +
-                             fixed(100.0 * spatialDisturbingGlare(all), 0) + " %)");
+  out.verdictLines.push_back("protection from glare: " + levelText(lowest) + " (the lowest of " +
+                             countOf(static_cast<long long>(all.size()), "view", "views") +
+                             ", imageless DGP every occupied hour; spatial disturbing glare " +
+                             formatFixed(100.0 * spatialDisturbingGlare(all), 0) + " % of the views)");
   if (lowest == En17037Level::kNone) out.verdict = "fail";
 }
 
@@ -259,9 +258,12 @@ std::vector<ComplianceReport> evaluateCompliance(const ComplianceInputs& in) {
     const auto t0 = std::chrono::steady_clock::now();
     if (s.standard == ComplianceStandard::kEn17037) {
       r = en17037(in, s);
-    } else {
+    } else if (s.standard == ComplianceStandard::kLeedV41Option1) {
       const ObservedStep step(in.observer ? *in.observer : silentObserver(), "compliance " + s.name, 1);
-      r = s.standard == ComplianceStandard::kLeedV41Option1 ? leedOption1(in, s) : leedOption2(in, s);
+      r = leedOption1(in, s);
+      step(1);
+    } else {
+      r = leedOption2(in, s);  // its own step: the points at every time
     }
     if (s.standard != ComplianceStandard::kEn17037)
       r.timesS.emplace_back("total", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());

@@ -100,6 +100,25 @@ TEST(ProgressLines, InjectedInterval) {
   std::fclose(f);
 }
 
+// A step whose last update already printed its end (a compliance part: 4/4 after 12 s) gets no
+// second, identical final line.
+TEST(ProgressLines, NoRepeatedFinalLine) {
+  std::FILE* f = std::tmpfile();
+  FakeClock clock;
+  {
+    ProgressBar bar("compliance en17037", 4, ProgressMode::kLines, clock.options(f));
+    for (int i = 1; i <= 4; ++i) {
+      clock.now += 12.0;
+      bar.update(i);
+    }
+    bar.finish();
+  }
+  const std::vector<std::string> lines = linesOf(f);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines.back(), "compliance en17037: 4/4 (100%), 0:48 elapsed");
+  std::fclose(f);
+}
+
 TEST(ProgressLines, OffPrintsNothing) {
   std::FILE* f = std::tmpfile();
   FakeClock clock;

@@ -22,6 +22,7 @@ ComplianceReport en17037Entry() {
   e.spaces.push_back(s);
   e.provisionLevel = En17037Level::kMedium;
   e.provisionLevelOther = En17037Level::kMinimum;
+  e.sunlightDate = "2026-03-21";
   e.sunlight.push_back({Vec3(1, 0, 1.2), 3.5, {{8.0, 11.5}}, En17037Level::kMedium});
   ViewOutReportPoint v;
   v.sightAngleDeg = 33.4;
@@ -64,6 +65,50 @@ TEST(ComplianceHtml, OneSectionPerEntryTextsEscaped) {
   EXPECT_NE(h.find("08:00–11:30"), std::string::npos);
   EXPECT_NE(h.find("nothing modelled outside"), std::string::npos);
   EXPECT_EQ(h.find("work & plane"), std::string::npos);
+  EXPECT_NE(h.find("21 March 2026"), std::string::npos);  // dates in words, not ISO
+}
+
+// The glare part: the view's direction as a compass point from its true azimuth, check hours in
+// words, the difference signed with a real minus, and a level below minimum said so.
+TEST(ComplianceHtml, GlareViewsAndChecksReadAsWords) {
+  ComplianceReport r = en17037Entry();
+  GlareViewReport g;
+  g.azimuthDeg = 180.0;
+  g.blinds = "lm83";
+  g.blindsSpace = "workplane";
+  g.blindsClosedHours = 1;
+  g.checks.push_back({"2026-11-12T15:00", false, 0.262, 0.305, 1000.0, 1050.0});
+  r.en17037->glare.push_back(g);
+  r.en17037->sunlight[0].level = En17037Level::kNone;
+  const std::string h = complianceHtml({r});
+  EXPECT_NE(h.find("south (180°)"), std::string::npos);
+  EXPECT_NE(h.find("12 November 2026, 15:00"), std::string::npos);
+  EXPECT_NE(h.find("−0.043"), std::string::npos);
+  EXPECT_NE(h.find("closed 1 occupied hour<"), std::string::npos);
+  EXPECT_NE(h.find("below minimum"), std::string::npos);
+  EXPECT_EQ(h.find("2026-11-12T15:00"), std::string::npos);
+}
+
+// LEED option 2: one column per clear-sky time, the points' count in the right number, the
+// standard error named.
+TEST(ComplianceHtml, LeedOption2TimesAsColumns) {
+  ComplianceReport l;
+  l.standard = l.name = "leed-v4.1-option2";
+  LeedReport leed;
+  leed.points = 1;
+  leed.times = {"2026-03-21T09:00", "2026-09-21T15:00"};
+  LeedSpaceReport s;
+  s.space = "office";
+  s.inRangeByTimePct = {70.0, 69.0};
+  s.inRangeByTimeStandardErrorPct = {0.2, 0.1};
+  leed.spaces.push_back(s);
+  l.leed = leed;
+  const std::string h = complianceHtml({l});
+  EXPECT_NE(h.find("<th class=\"num\">21 March 2026, 09:00</th>"), std::string::npos);
+  EXPECT_NE(h.find("<th class=\"num\">21 September 2026, 15:00</th>"), std::string::npos);
+  EXPECT_NE(h.find("1 point (provisional"), std::string::npos);
+  EXPECT_EQ(h.find("1 points"), std::string::npos);
+  EXPECT_NE(h.find("standard error"), std::string::npos);
 }
 
 }  // namespace

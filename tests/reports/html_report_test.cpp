@@ -186,6 +186,28 @@ TEST(OverallVerdict, CountsEveryCheckedLine) {
   EXPECT_EQ(overallVerdict(d, &checked, &failed), Verdict::kFail);
   EXPECT_EQ(failed, 1);
   EXPECT_NE(htmlReport(d).find("1 of 4 checked lines fail"), std::string::npos);
+  // The summary names the kinds of line the run has, and only those.
+  EXPECT_EQ(checkedCategories(d), (std::vector<std::string>{"grids", "modelling", "colour rendering", "observers' UGR"}));
+  EXPECT_NE(htmlReport(d).find("(grids, modelling, colour rendering and observers&#39; UGR)"), std::string::npos);
+}
+
+// A daylight run checked only against its [[compliance]] entries says so, not "walls and ceiling".
+TEST(OverallVerdict, NamesOnlyTheCategoriesChecked) {
+  ReportData d;
+  d.grids.emplace_back();  // an annual grid: no targets
+  ComplianceReport c;
+  c.verdict = "pass";
+  d.compliance = {c, c};
+  EXPECT_EQ(checkedCategories(d), std::vector<std::string>{"daylight compliance"});
+  const std::string h = htmlReport(d);
+  EXPECT_NE(h.find("all 2 checked lines pass (daylight compliance)"), std::string::npos);
+  GridReport wall;
+  wall.surfaceGrid = "walls";
+  wall.check.overall = Verdict::kFail;
+  d.grids.push_back(wall);
+  EXPECT_EQ(checkedCategories(d), (std::vector<std::string>{"walls and ceiling", "daylight compliance"}));
+  EXPECT_EQ(countOf(1, "point", "points"), "1 point");
+  EXPECT_EQ(countOf(0, "point", "points"), "0 points");
 }
 
 }  // namespace
