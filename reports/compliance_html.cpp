@@ -41,20 +41,6 @@ std::string signedFixed(double v, int decimals) {
   return (v < 0.0 ? "−" : "+") + s;
 }
 
-constexpr std::array<const char*, 12> kMonths{"January", "February", "March",     "April",   "May",      "June",
-                                              "July",    "August",   "September", "October", "November", "December"};
-
-// "2026-03-21" → "21 March 2026"; "2026-03-21T09:00" → "21 March 2026, 09:00". Other text as it is.
-std::string dateText(const std::string& iso) {
-  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
-  char sep = 0;
-  const int n = std::sscanf(iso.c_str(), "%4d-%2d-%2d%c%2d:%2d", &y, &mo, &d, &sep, &h, &mi);
-  if (n < 3 || mo < 1 || mo > 12) return xmlEscape(iso);
-  std::string out = std::to_string(d) + " " + kMonths[static_cast<std::size_t>(mo - 1)] + " " + std::to_string(y);
-  if (n == 6 && sep == 'T') out += ", " + clock(h + mi / 60.0);
-  return out;
-}
-
 // Eight compass points for a true azimuth (degrees clockwise from north).
 std::string compass(double azimuthDeg) {
   static constexpr std::array<const char*, 8> kPoints{"north",  "north-east", "east",  "south-east",
@@ -113,7 +99,7 @@ void provisionHtml(std::ostringstream& h, const En17037Report& r) {
 void sunlightHtml(std::ostringstream& h, const En17037Report& r) {
   En17037Level lowest = En17037Level::kHigh;
   for (const SunlightReportPoint& p : r.sunlight) lowest = std::min(lowest, p.level);
-  h << "<h3>Exposure to sunlight " << levelBadge(lowest) << "</h3>\n<p class=\"sub\">" << dateText(r.sunlightDate)
+  h << "<h3>Exposure to sunlight " << levelBadge(lowest) << "</h3>\n<p class=\"sub\">" << xmlEscape(dateInWords(r.sunlightDate))
     << ": the sun is above " << formatFixed(r.sunlightMinAltitudeDeg, 1) << "°"
     << (r.sunlightMinAltitudeDefault ? " (candela's default; EN 17037 Annex D gives each country's value, set it with "
                                        "<code>sunlight_min_altitude</code>)"
@@ -125,7 +111,7 @@ void sunlightHtml(std::ostringstream& h, const En17037Report& r) {
   for (const SunlightReportPoint& p : r.sunlight) {
     std::string when;
     for (const auto& [a, b] : p.intervals) when += (when.empty() ? "" : ", ") + clock(a) + "–" + clock(b);
-    h << "<tr><td class=\"num\">" << xyz(p.position) << "</td><td class=\"num\">" << formatFixed(p.hours, 2)
+    h << "<tr><td class=\"pos\">" << xyz(p.position) << "</td><td class=\"num\">" << formatFixed(p.hours, 2)
       << " h</td><td>" << (when.empty() ? "never" : when) << "</td><td>" << lv(p.level) << "</td></tr>\n";
   }
   h << "</tbody>\n</table>\n";
@@ -141,7 +127,7 @@ void viewHtml(std::ostringstream& h, const En17037Report& r) {
        "angle</th><th></th><th class=\"num\">Outside distance</th><th></th><th>Layers seen</th><th></th>"
        "<th>Level</th></tr></thead>\n<tbody>\n";
   for (const ViewOutReportPoint& v : r.viewOut)
-    h << "<tr><td class=\"num\">" << xyz(v.eye) << "</td><td class=\"num\">" << formatFixed(v.sightAngleDeg, 1)
+    h << "<tr><td class=\"pos\">" << xyz(v.eye) << "</td><td class=\"num\">" << formatFixed(v.sightAngleDeg, 1)
       << "°<span class=\"f\">all windows " << formatFixed(v.totalSightAngleDeg, 1) << "°</span></td>"
       << levelCell(v.sightLevel) << "<td class=\"num\">"
       << (std::isinf(v.outsideDistanceM) ? std::string("nothing modelled outside")
@@ -166,7 +152,7 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
     const std::string blinds = g.blinds == "lm83" ? "LM-83 blinds of " + xmlEscape(g.blindsSpace) + ", closed " +
                                                         countOf(g.blindsClosedHours, "occupied hour", "occupied hours")
                                                   : std::string("none");
-    h << "<tr><td class=\"num\">" << xyz(g.position) << "</td><td>" << compass(g.azimuthDeg) << "</td><td class=\"num\">"
+    h << "<tr><td class=\"pos\">" << xyz(g.position) << "</td><td class=\"pos\">" << compass(g.azimuthDeg) << "</td><td class=\"num\">"
       << pct(g.shareAbove035) << "</td><td class=\"num\">" << pct(g.shareAbove040) << "</td><td class=\"num\">"
       << pct(g.shareAbove045) << "</td><td class=\"num\">" << pct(g.glareAutonomy) << "</td><td>" << blinds
       << "</td><td>" << lv(g.level) << "</td></tr>\n";
@@ -182,7 +168,7 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
        "class=\"num\">Difference</th><th class=\"num\">E<sub>v</sub> imageless / rendered</th></tr></thead>\n<tbody>\n";
   for (const GlareViewReport& g : r.glare)
     for (const GlareViewReport::Check& c : g.checks)
-      h << "<tr><td class=\"num\">" << xyz(g.position) << "</td><td>" << dateText(c.time) << "</td><td>"
+      h << "<tr><td class=\"pos\">" << xyz(g.position) << "</td><td>" << xmlEscape(dateInWords(c.time)) << "</td><td>"
         << (c.blindsClosed ? "closed" : g.blinds == "lm83" ? "open" : "none") << "</td><td class=\"num\">"
         << formatFixed(c.imagelessDgp, 3) << "</td><td class=\"num\">" << formatFixed(c.renderedDgp, 3)
         << "</td><td class=\"num\">" << signedFixed(c.imagelessDgp - c.renderedDgp, 3) << "</td><td class=\"num\">"
@@ -207,7 +193,7 @@ void leedHtml(std::ostringstream& h, const LeedReport& l) {
     << ".</p>\n<table class=\"compliance\">\n<thead><tr><th>Space</th><th class=\"num\">Floor area</th>";
   if (option2) {
     h << "<th class=\"num\">Between 300 and 3000 lx, mean<br>(± standard error)</th>";
-    for (const std::string& t : l.times) h << "<th class=\"num\">" << dateText(t) << "</th>";
+    for (const std::string& t : l.times) h << "<th class=\"num\">" << xmlEscape(dateInWords(t)) << "</th>";
   } else {
     h << "<th class=\"num\">sDA300/50%</th><th class=\"num\">ASE1000,250</th>";
   }

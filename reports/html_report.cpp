@@ -65,7 +65,7 @@ td code { font-size:12px; }
 .schedule td .f, .surfaces td .f { display:block; color:var(--muted); font-size:11px; }
 .schedule td.num, .schedule th.num { white-space:nowrap; }
 .schedule td.lum { overflow-wrap:anywhere; }
-table.compliance td.num { white-space:nowrap; }
+table.compliance td.num, table.compliance td.pos { white-space:nowrap; }
 table.compliance td.lvl { color:var(--muted); font-size:12px; padding-left:0; }
 table.compliance td .f { display:block; color:var(--muted); font-size:11px; }
 table.compliance .ok { color:var(--pass); font-weight:700; } table.compliance .no { color:var(--fail); font-weight:700; }

@@ -73,6 +73,22 @@ std::vector<std::string> checkedCategories(const ReportData& data) {
   return out;
 }
 
+std::string dateInWords(const std::string& iso) {
+  static constexpr const char* kMonths[12] = {"January", "February", "March",     "April",   "May",      "June",
+                                              "July",    "August",   "September", "October", "November", "December"};
+  int y = 0, mo = 0, d = 0, h = 0, mi = 0;
+  char sep = 0;
+  const int n = std::sscanf(iso.c_str(), "%4d-%2d-%2d%c%2d:%2d", &y, &mo, &d, &sep, &h, &mi);
+  if (n < 3 || mo < 1 || mo > 12 || d < 1 || d > 31) return iso;
+  std::string out = std::to_string(d) + " " + kMonths[mo - 1] + " " + std::to_string(y);
+  if (n == 6 && sep == 'T') {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, ", %02d:%02d", h, mi);
+    out += buf;
+  }
+  return out;
+}
+
 std::string countOf(long long n, const std::string& singular, const std::string& plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }

@@ -296,6 +296,10 @@ Verdict overallVerdict(const ReportData& data, int* checked = nullptr, int* fail
 // "daylight compliance".
 std::vector<std::string> checkedCategories(const ReportData& data);
 
+// "2026-03-21" → "21 March 2026"; "2026-03-21T09:00" → "21 March 2026, 09:00" (the time as
+// written: the reports' times are local standard time). Other text is returned as it is.
+std::string dateInWords(const std::string& isoDate);
+
 // "1 point", "3 points": a count with its noun in the right number.
 std::string countOf(long long n, const std::string& singular, const std::string& plural);
 

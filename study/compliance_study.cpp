@@ -143,7 +143,7 @@ void sunlight(const ComplianceInputs& in, const Tracer& tracer, const Compliance
   }
   const double leastHours =
       std::min_element(e.points.begin(), e.points.end(), [](auto& a, auto& b) { return a.hours < b.hours; })->hours;
-  out.verdictLines.push_back("exposure to sunlight on " + r.sunlightDate + ": " + levelText(lowest) + " (" +
+  out.verdictLines.push_back("exposure to sunlight on " + dateInWords(r.sunlightDate) + ": " + levelText(lowest) + " (" +
                              countOf(static_cast<long long>(e.points.size()), "reference point", "reference points") +
                              ", the least sunlit " + formatFixed(leastHours, 1) + " h)");
   if (lowest == En17037Level::kNone) out.verdict = "fail";

@@ -208,6 +208,9 @@ TEST(OverallVerdict, NamesOnlyTheCategoriesChecked) {
   EXPECT_EQ(checkedCategories(d), (std::vector<std::string>{"walls and ceiling", "daylight compliance"}));
   EXPECT_EQ(countOf(1, "point", "points"), "1 point");
   EXPECT_EQ(countOf(0, "point", "points"), "0 points");
+  EXPECT_EQ(dateInWords("2026-09-21"), "21 September 2026");
+  EXPECT_EQ(dateInWords("2026-01-05T09:30"), "5 January 2026, 09:30");
+  EXPECT_EQ(dateInWords("2026-13-01"), "2026-13-01");  // not a date: as written
 }
 
 }  // namespace
