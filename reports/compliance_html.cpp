@@ -190,10 +190,21 @@ void leedHtml(std::ostringstream& h, const LeedReport& l) {
     << (option2 ? " (standard error " + formatFixed(l.averageStandardErrorPct, 1) + " %)" : std::string())
     << (l.eachSpaceAbove55 ? "; every space reaches 55 %" : "")
     << (!option2 && l.aseExceeds10Percent ? "; ASE above 10 % in a space: document how its glare is addressed" : "")
-    << ".</p>\n<table class=\"compliance\">\n<thead><tr><th>Space</th><th class=\"num\">Floor area</th>";
+    << ".</p>\n";
+  if (option2)
+    h << "<p class=\"sub\">Each time under the CIE clear sky with the sun at the site, the model without luminaires "
+         "or blinds. The sky's diffuse horizontal and the sun's direct normal illuminance are the weather year's "
+         "means at that hour over the days within 15 days of the equinox (USGBC's guidance for the credit).</p>\n";
+  h << "<table class=\"compliance\">\n<thead><tr><th>Space</th><th class=\"num\">Floor area</th>";
   if (option2) {
     h << "<th class=\"num\">Between 300 and 3000 lx, mean<br>(± standard error)</th>";
-    for (const std::string& t : l.times) h << "<th class=\"num\">" << xmlEscape(dateInWords(t)) << "</th>";
+    for (std::size_t t = 0; t < l.times.size(); ++t) {
+      h << "<th class=\"num\">" << xmlEscape(dateInWords(l.times[t]));
+      if (t < l.skyByTime.size())
+        h << "<span class=\"f\">sky " << formatFixed(l.skyByTime[t].diffuseHorizontalLux, 0) << " lx, sun "
+          << formatFixed(l.skyByTime[t].directNormalLux, 0) << " lx normal</span>";
+      h << "</th>";
+    }
   } else {
     h << "<th class=\"num\">sDA300/50%</th><th class=\"num\">ASE1000,250</th>";
   }
@@ -205,7 +216,10 @@ void leedHtml(std::ostringstream& h, const LeedReport& l) {
         << " %</td>";
       for (std::size_t i = 0; i < s.inRangeByTimePct.size(); ++i)
         h << "<td class=\"num\">" << formatFixed(s.inRangeByTimePct[i], 1) << " ± "
-          << formatFixed(s.inRangeByTimeStandardErrorPct.at(i), 1) << " %</td>";
+          << formatFixed(s.inRangeByTimeStandardErrorPct.at(i), 1) << " %"
+          << (i < s.meanLuxByTime.size() ? "<span class=\"f\">mean " + formatFixed(s.meanLuxByTime[i], 0) + " lx</span>"
+                                         : std::string())
+          << "</td>";
     } else {
       h << "<td class=\"num\">" << formatFixed(s.sdaPct, 1) << " %</td><td class=\"num\">" << formatFixed(s.asePct, 1)
         << " %" << (s.aseAbove10 ? " (above 10 %)" : "") << "</td>";

@@ -135,6 +135,8 @@ void addLeed(json& j, const LeedReport& r) {
       e["in_range_pct_by_time"] = s.inRangeByTimePct;
       e["in_range_pct_standard_error"] = s.inRangeStandardErrorPct;
       e["in_range_pct_standard_error_by_time"] = s.inRangeByTimeStandardErrorPct;
+      e["mean_illuminance_lux_by_time"] = s.meanLuxByTime;
+      e["mean_illuminance_lux_standard_error_by_time"] = s.meanLuxByTimeStandardError;
     }
     spaces.push_back(e);
   }
@@ -148,6 +150,13 @@ void addLeed(json& j, const LeedReport& r) {
     j["average_in_range_pct"] = r.averagePct;
     j["average_in_range_pct_standard_error"] = r.averageStandardErrorPct;
     j["times"] = r.times;
+    json skies = json::array();
+    for (std::size_t t = 0; t < r.skyByTime.size(); ++t)
+      skies.push_back({{"time", r.times.at(t)},
+                       {"diffuse_horizontal_illuminance_lux", r.skyByTime[t].diffuseHorizontalLux},
+                       {"direct_normal_illuminance_lux", r.skyByTime[t].directNormalLux},
+                       {"days_averaged", r.skyByTime[t].days}});
+    j["sky_by_time"] = skies;
   }
 }
 

@@ -93,6 +93,8 @@ struct LeedSpaceReport {
   // (metrics/leed.h inRangeShare); the space's over the times, independent: √Σ SE_t² / T.
   double inRangeStandardErrorPct = 0.0;
   std::vector<double> inRangeByTimeStandardErrorPct;
+  // Option 2: the space's mean illuminance per time, lx, and its standard error √Σσ² / n.
+  std::vector<double> meanLuxByTime, meanLuxByTimeStandardError;
 };
 
 struct LeedReport {
@@ -103,6 +105,12 @@ struct LeedReport {
   bool eachSpaceAbove55 = false;
   bool aseExceeds10Percent = false;      // option 1: any space with ASE > 10 %
   std::vector<std::string> times;        // option 2: the simulated times
+  // Option 2: each time's sky (study/compliance_leed.h equinoxWindowLight).
+  struct Sky {
+    double diffuseHorizontalLux = 0.0, directNormalLux = 0.0;
+    int days = 0;
+  };
+  std::vector<Sky> skyByTime;
 };
 
 struct ComplianceReport {

@@ -67,7 +67,7 @@ td code { font-size:12px; }
 .schedule td.lum { overflow-wrap:anywhere; }
 table.compliance td.num, table.compliance td.pos { white-space:nowrap; }
 table.compliance td.lvl { color:var(--muted); font-size:12px; padding-left:0; }
-table.compliance td .f { display:block; color:var(--muted); font-size:11px; }
+table.compliance td .f, table.compliance th .f { display:block; color:var(--muted); font-size:11px; font-weight:400; }
 table.compliance .ok { color:var(--pass); font-weight:700; } table.compliance .no { color:var(--fail); font-weight:700; }
 p.note { margin-top:10px; }
 h4 { font-size:13px; margin:16px 0 4px; font-weight:600; }

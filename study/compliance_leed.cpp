@@ -6,7 +6,9 @@
 #include "study/annual_glare.h"
 #include "study/case_scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <cstdio>
 
 namespace candela {
@@ -50,9 +52,9 @@ int leedOption2Points(double averageInRangePct) {
 
 namespace {
 
-// The case under the CIE clear sky with the site's sun at `time`, its geometry alone (LEED's
-// daylight; no luminaires), at the site the annual study used.
-CaseFile clearSkyCase(const ComplianceInputs& in, const std::string& time) {
+// The case under the CIE clear sky with the site's sun at `time`, their intensities `light`, its
+// geometry alone (LEED's daylight; no luminaires), at the site the annual study used.
+CaseFile clearSkyCase(const ComplianceInputs& in, const std::string& time, const EquinoxLight& light) {
   CaseFile c = *in.caseFile;
   c.luminaires.clear();
   c.luminaireEntries.clear();
@@ -62,6 +64,8 @@ CaseFile clearSkyCase(const ComplianceInputs& in, const std::string& time) {
   c.sky.type.kind = SkyKind::kCieClear;
   c.sky.time = time;
   c.sky.groundReflectance = in.caseFile->sky.groundReflectance;
+  c.sky.diffuseHorizontalIlluminanceLux = light.diffuseHorizontalLux;
+  c.sky.directNormalIlluminanceLux = light.directNormalLux;
   c.sky.loc = in.caseFile->sky.loc;
   c.sky.timeLoc = in.caseFile->sky.loc;
   c.site = SiteSpec{};
@@ -76,6 +80,32 @@ CaseFile clearSkyCase(const ComplianceInputs& in, const std::string& time) {
 }
 
 }  // namespace
+
+EquinoxLight equinoxWindowLight(const AnnualSky& sky, const CivilDate& date, double hourOfDay) {
+  const int equinoxMonth = date.month <= 6 ? 3 : 9;
+  int equinoxDay = -1;
+  for (const AnnualHour& h : sky.hours)
+    if (h.month == equinoxMonth && h.day == 21) equinoxDay = h.dayOfYear;
+  if (equinoxDay < 0) throw std::invalid_argument("the weather year has no 21 March or 21 September");
+  // The instant between the middles of the records ending i + 1 and i + 2 (middles at i + 0.5, i + 1.5).
+  const double u = hourOfDay - 0.5;
+  const int i = static_cast<int>(std::floor(u));
+  const double w = u - i;
+  const int first = std::clamp(i + 1, 1, 24), second = std::clamp(i + 2, 1, 24);
+  EquinoxLight out;
+  for (const AnnualHour& h : sky.hours) {
+    if (std::abs(h.dayOfYear - equinoxDay) > 15) continue;
+    const double weight = (h.hour == first ? 1.0 - w : 0.0) + (h.hour == second ? w : 0.0);
+    out.diffuseHorizontalLux += weight * h.diffuseHorizontalLux;
+    out.directNormalLux += weight * h.directNormalLux;
+    out.days += h.hour == first ? 1 : 0;
+  }
+  if (out.days > 0) {
+    out.diffuseHorizontalLux /= out.days;
+    out.directNormalLux /= out.days;
+  }
+  return out;
+}
 
 ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s) {
   const ComplianceTallies& t = *in.tallies;
@@ -106,7 +136,9 @@ ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s
       const int minutes = static_cast<int>(std::lround(hour * 60.0));
       std::snprintf(time, sizeof time, "%04d-%02d-%02dT%02d:%02d", d.year, d.month, d.day, minutes / 60, minutes % 60);
       l.times.push_back(time);
-      const std::unique_ptr<Scene> scene = loadCaseScene(clearSkyCase(in, time));
+      const EquinoxLight light = equinoxWindowLight(*in.sky, d, hour);
+      l.skyByTime.push_back({light.diffuseHorizontalLux, light.directNormalLux, light.days});
+      const std::unique_ptr<Scene> scene = loadCaseScene(clearSkyCase(in, time, light));
       const Tracer tracer(*scene);
       for (std::size_t k = 0; k < grids.size(); ++k) {
         const ComplianceGrid& cg = t.grids()[static_cast<std::size_t>(grids[k])];
@@ -115,10 +147,16 @@ ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s
           points.push_back({(*in.positions)[i], (*in.normals)[i]});
         std::vector<double> lux, sigma;
         const auto progress = [&step, done](std::size_t n) { step(done + n); };
+        double sum = 0.0, variance = 0.0;
         for (const IrradianceEstimate& e : computeIrradiance(tracer, points, settings, in.threads, progress)) {
           lux.push_back(e.illuminanceLux());
           sigma.push_back(e.standardErrorLux());
+          sum += lux.back();
+          variance += sigma.back() * sigma.back();
         }
+        const double n = static_cast<double>(std::max<std::size_t>(1, lux.size()));
+        l.spaces[k].meanLuxByTime.push_back(sum / n);
+        l.spaces[k].meanLuxByTimeStandardError.push_back(std::sqrt(variance) / n);
         const InRangeShare share = inRangeShare(lux, sigma, 300.0, 3000.0);
         l.spaces[k].inRangeByTimePct.push_back(share.sharePct);
         l.spaces[k].inRangeByTimeStandardErrorPct.push_back(share.standardErrorPct);

@@ -1,10 +1,12 @@
 // [[compliance]] through the whole annual study: EN 17037's daylight provision on a synthetic
 // weather year whose hours are constructed to land at known fractions of the daylight hours, its
-// daylight factor against the open sky's 100 %, and LEED option 1's points from the study's sDA.
+// daylight factor against the open sky's 100 %, LEED option 1's points from the study's sDA, and
+// option 2's sky (the equinox window's means) and shares on spaces of known illuminance.
 #include "study/annual_study.h"
 
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"
+#include "photometry/sun_spa.h"
 #include "metrics/annual.h"
 #include "reports/annual_results.h"
 #include "study/case_file.h"
@@ -19,6 +21,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -299,6 +302,115 @@ TEST(ComplianceGlare, ViewsFollowTheSpacesBlinds) {
 
 namespace candela {
 namespace {
+
+// LEED option 2's sky: the weather year's mean at the instant over the days within 15 days of the
+// equinox, recomputed here by calendar dates (6 March to 5 April, 6 September to 6 October) and
+// the records' middles.
+TEST(LeedOption2Sky, MeansOverTheEquinoxWindow) {
+  const EpwFile w = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
+  CaseFile c;
+  const AnnualSky sky = makeAnnualSky(w, caseSite(c, &w.location), AnnualSkyOptions{});
+  const auto inWindow = [](const AnnualHour& h, int month) {
+    if (month == 3) return (h.month == 3 && h.day >= 6) || (h.month == 4 && h.day <= 5);
+    return (h.month == 9 && h.day >= 6) || (h.month == 10 && h.day <= 6);
+  };
+  for (const auto& [month, hour] : {std::pair{3, 9.0}, std::pair{9, 15.5}}) {
+    double diffuse = 0.0, direct = 0.0;
+    int days = 0;
+    for (const AnnualHour& h : sky.hours) {
+      if (!inWindow(h, month)) continue;
+      // 9:00 lies halfway between the middles of the hours ending 9:00 and 10:00; 15:30 is the
+      // middle of the hour ending 16:00.
+      const double weight = hour == 9.0 ? (h.hour == 9 || h.hour == 10 ? 0.5 : 0.0) : (h.hour == 16 ? 1.0 : 0.0);
+      diffuse += weight * h.diffuseHorizontalLux;
+      direct += weight * h.directNormalLux;
+      days += h.hour == (hour == 9.0 ? 10 : 16);
+    }
+    const EquinoxLight l = equinoxWindowLight(sky, {2026, month, month == 3 ? 30 : 12}, hour);
+    EXPECT_EQ(l.days, 31);
+    EXPECT_EQ(days, 31);
+    EXPECT_NEAR(l.diffuseHorizontalLux, diffuse / days, 1e-9 * diffuse);
+    EXPECT_NEAR(l.directNormalLux, direct / days, 1e-9 * direct);
+    EXPECT_GT(l.directNormalLux, 1000.0);  // a sunny climate: the sun is in it
+  }
+}
+
+// Option 2 through the whole study. Three spaces far apart: an open plane, a plane under a
+// tinted lid and one under an opaque lid, each inside black walls that end 5 cm above it. The
+// open plane's mean illuminance is the sky's diffuse plus the sun's direct illuminance on the
+// plane, from the sun's altitude by the NREL SPA at the site and time (within 4 standard errors);
+// it is far above 3000 lx, the tinted plane between 300 and 3000 lx, the dark one at 0: shares
+// 0, 100 and 0 % of areas 9, 9 and 18 m², so 25 % of the area, no point.
+TEST(LeedOption2, OpenTintedAndDarkSpaces) {
+  const fs::path dir = scratchDir("leed_option2", std::to_string(::getpid()));
+  std::ostringstream rad;
+  rad << "void plastic black\n0\n0\n5 0 0 0 0 0\nvoid glass tinted\n0\n0\n3 0.03 0.03 0.03\n";
+  const auto box = [&rad](const std::string& name, double x0, double x1, const std::string& lid) {
+    const double y0 = 0.0, y1 = 3.0, h = 0.85;
+    const auto poly = [&rad](const std::string& m, const std::string& n, std::vector<Vec3> p) {
+      rad << m << " polygon " << n << "\n0\n0\n" << 3 * p.size();
+      for (const Vec3& v : p) rad << "  " << v.x << " " << v.y << " " << v.z;
+      rad << "\n";
+    };
+    poly("black", name + "_s", {{x0, y0, 0}, {x1, y0, 0}, {x1, y0, h}, {x0, y0, h}});
+    poly("black", name + "_n", {{x0, y1, 0}, {x0, y1, h}, {x1, y1, h}, {x1, y1, 0}});
+    poly("black", name + "_w", {{x0, y0, 0}, {x0, y0, h}, {x0, y1, h}, {x0, y1, 0}});
+    poly("black", name + "_e", {{x1, y0, 0}, {x1, y1, 0}, {x1, y1, h}, {x1, y0, h}});
+    poly(lid, name + "_lid", {{x0, y0, h}, {x1, y0, h}, {x1, y1, h}, {x0, y1, h}});
+  };
+  box("a", 0, 3, "tinted");
+  box("b", 4, 10, "black");
+  // A speck on the ground far east so that the open plane lies within the scene's bounds.
+  rad << "black polygon speck\n0\n0\n12 43 3 0  43.1 3 0  43.1 3.1 0  43 3.1 0\n";
+  std::ofstream(dir / "boxes.rad") << rad.str();
+  std::ofstream(dir / "case.toml")
+      << "[[scene]]\nfile = \"boxes.rad\"\n[sky]\ntype = \"annual\"\nweather = \"" << CANDELA_TEST_DATA
+      << "/epw/synthetic_golden_2026.epw\"\n[annual]\nblinds = false\n"
+         "[[grid]]\nname = \"tinted\"\ncorners = [[0, 0], [3, 3]]\nheight = 0.8\nspacing = 1\n"
+         "[[grid]]\nname = \"dark\"\ncorners = [[4, 0], [10, 3]]\nheight = 0.8\nspacing = 1\n"
+         "[[grid]]\nname = \"open\"\ncorners = [[40, 0], [43, 3]]\nheight = 0.8\nspacing = 1\n"
+         "[[compliance]]\nstandard = \"leed-v4.1-option2\"\n[settings]\nquality = \"draft\"\n";
+  const RunResult r = runCaseIn(dir);
+  const LeedReport& l = *r.data.compliance.at(0).leed;
+  ASSERT_EQ(l.times.size(), 4u);
+  ASSERT_EQ(l.skyByTime.size(), 4u);
+  ASSERT_EQ(l.spaces.size(), 3u);
+  const EpwFile w = readEpw(std::string(CANDELA_TEST_DATA) + "/epw/synthetic_golden_2026.epw");
+  for (std::size_t t = 0; t < 4; ++t) {
+    SpaInput in;
+    in.year = 2026;
+    in.month = t < 2 ? 3 : 9;
+    in.day = 21;
+    in.hourOfDay = t % 2 == 0 ? 9.0 : 15.0;
+    in.timezoneHours = w.location.timezoneHours;
+    in.latitudeDeg = w.location.latitudeDeg;
+    in.longitudeDeg = w.location.longitudeDeg;
+    in.elevationM = w.location.elevationM;
+    in.deltaTSec = estimateDeltaTSec(2026.5);
+    const double altitude = computeSunPosition(in).altitudeDeg * kPi / 180.0;
+    // The sun disc's horizontal illuminance (engine/daylight.cpp's cap formula, 1 − 1.1e-5 of E_n sin a).
+    const double expected = l.skyByTime[t].diffuseHorizontalLux +
+                            l.skyByTime[t].directNormalLux * std::sin(altitude) * (1.0 + std::cos(0.267 * kPi / 180.0)) / 2.0;
+    const LeedSpaceReport& open = l.spaces[2];
+    EXPECT_NEAR(open.meanLuxByTime.at(t), expected, 4.0 * open.meanLuxByTimeStandardError.at(t) + 1e-6 * expected)
+        << l.times[t];
+    EXPECT_GT(expected, 3000.0 * 1.5);
+    EXPECT_DOUBLE_EQ(open.inRangeByTimePct.at(t), 0.0);
+    const LeedSpaceReport& tinted = l.spaces[0];
+    EXPECT_GT(tinted.meanLuxByTime.at(t), 300.0 * 1.5) << l.times[t];
+    EXPECT_LT(tinted.meanLuxByTime.at(t), 3000.0 / 1.5) << l.times[t];
+    EXPECT_DOUBLE_EQ(tinted.inRangeByTimePct.at(t), 100.0);
+    EXPECT_DOUBLE_EQ(l.spaces[1].meanLuxByTime.at(t), 0.0);
+    EXPECT_DOUBLE_EQ(l.spaces[1].inRangeByTimePct.at(t), 0.0);
+  }
+  EXPECT_DOUBLE_EQ(l.spaces[0].areaM2, 9.0);
+  EXPECT_DOUBLE_EQ(l.spaces[1].areaM2, 18.0);
+  EXPECT_NEAR(l.averagePct, 25.0, 1e-9);
+  EXPECT_EQ(l.points, 0);
+  EXPECT_FALSE(l.eachSpaceAbove55);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
 
 TEST(LeedOption2Points, AtLeastEachShareOfTheArea) {
   EXPECT_EQ(leedOption2Points(54.99), 0);
