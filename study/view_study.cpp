@@ -228,6 +228,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
   checkSceneInput(*scene, r.warnings);
   checkLightSources(*scene, atCase, r.warnings);
   checkCaseSite(c, r.warnings);
+  checkSkySun(c, *scene, r.warnings);
   checkLuminaires(tracer, c.luminaires, {}, r.warnings);
   checkPhotometry(*scene, c.luminaires, r.warnings);
   throwIfStrict(r.warnings, request.strict);

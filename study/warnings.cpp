@@ -302,6 +302,22 @@ void checkCaseSite(const CaseFile& c, Warnings& out) {
   checkSiteAgainstWeather(c, readEpw(c.sky.weather.string()).location, out);
 }
 
+void checkSkySun(const CaseFile& c, const Scene& scene, Warnings& out) {
+  const SkyType& type = c.sky.type;
+  if (!c.sky.present || !c.sky.sun || !type.hasSun() || type.kind == SkyKind::kPerez) return;
+  if (c.sky.directNormalIlluminanceLux || !c.sky.weather.empty()) return;  // a sun of 0 lx said so
+  if (!scene.sky || scene.sky->horizontalSunLux > 0.0 || !(scene.sky->sunAltitudeDeg > 0.0)) return;
+  out.push_back({"sky_without_sun",
+                 "[sky] type '" + skyTypeName(type) + "' has its sun " + num(scene.sky->sunAltitudeDeg) +
+                     "° above the horizon but no direct normal illuminance (`direct_normal_illuminance`, or a "
+                     "`weather` file's hour): the sun disc carries no light" +
+                     (c.sky.diffuseHorizontalIlluminanceLux ? std::string()
+                                                            : ", and the sky's diffuse horizontal illuminance is the "
+                                                              "default 10 000 lx") +
+                     "; `sun = false` says that no sun is meant",
+                 c.sky.loc});
+}
+
 void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lux, const double* errorLux,
                     Warnings& out) {
   const Scene& scene = tracer.scene();
@@ -406,6 +422,7 @@ Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std:
   checkSceneInput(tracer.scene(), w);
   checkLightSources(tracer.scene(), FileLoc{c.path.string(), 0, 0}, w);
   checkCaseSite(c, w);
+  checkSkySun(c, tracer.scene(), w);
   const std::vector<SensorSet> sets = sensorSets(grids);
   checkLuminaires(tracer, c.luminaires, sets, w);
   checkPhotometry(tracer.scene(), c.luminaires, w);

@@ -66,6 +66,11 @@ void checkSiteAgainstWeather(const CaseFile& c, const EpwLocation& weather, Warn
 // without a weather file or a [site].
 void checkCaseSite(const CaseFile& c, Warnings& out);
 
+// sky_without_sun: a case's point-in-time sky whose type has a sun (cie-clear, cie:7 … cie:15),
+// with `sun = true` and the sun above the horizon, but no direct normal illuminance to give it
+// (no `direct_normal_illuminance`, no `weather` file): `scene`'s sun disc carries no light.
+void checkSkySun(const CaseFile& c, const Scene& scene, Warnings& out);
+
 // untrusted_error_bar: points that read exactly 0 with a standard error of 0 while a glow
 // surface (one not sampled directly from them: engine/lights.h, glowSampledFrom) lies in front of them with
 // nothing in between: no sample found it, so the zero error bar claims a certainty it does not

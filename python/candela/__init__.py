@@ -126,7 +126,9 @@ class Sky:
         """One of the 15 CIE general skies (ISO 15469), `sky_type` 1..15, or "clear" for the CIE clear sky.
 
         The sun's position comes from `site` and `time`, or from sun_altitude and sun_azimuth
-        (degrees; azimuth clockwise from north).
+        (degrees; azimuth clockwise from north). The sun disc of skies 7..15 and "clear" carries
+        direct_normal_illuminance (lux); without it, it carries no light. The sky is scaled to
+        diffuse_horizontal_illuminance (lux; default 10 000).
         """
         name = "cie-clear" if sky_type == "clear" else f"cie:{int(sky_type)}"
         return cls(name, sun=sun, diffuse_horizontal_illuminance=diffuse_horizontal_illuminance,
@@ -135,7 +137,7 @@ class Sky:
 
     @classmethod
     def cie_clear(cls, site=None, time=None, **kwargs):
-        """The CIE clear sky with its sun; see cie()."""
+        """The CIE clear sky with its sun (give direct_normal_illuminance: without it the sun carries no light); see cie()."""
         return cls.cie("clear", site, time, **kwargs)
 
     @classmethod

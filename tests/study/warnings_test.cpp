@@ -214,6 +214,30 @@ TEST(Warnings, SiteThatContradictsTheWeatherFile) {
   EXPECT_EQ(codes(aw), std::vector<std::string>{"site_contradicts_weather"});
 }
 
+// A clear sky given a site and a time but no direct normal illuminance has a sun of 0 lx: warned
+// at [sky] (line 7), with the default diffuse illuminance named. Not when the sun's illuminance is
+// given, when a weather file gives it, when `sun = false` says no sun is meant, or at night.
+TEST(Warnings, ClearSkyWhoseSunCarriesNoLight) {
+  const std::string site = "[site]\nlatitude = 39.74\nlongitude = -105.18\ntimezone = -7\n";
+  const auto clear = [&](const std::string& time, const std::string& extra) {
+    return inputWarnings(caseOf(kRoom + site + "[sky]\ntype = \"cie-clear\"\ntime = \"" + time + "\"\n" + extra + kGrid));
+  };
+  const Warnings w = clear("2026-06-21T12:00", "");
+  ASSERT_EQ(codes(w), std::vector<std::string>{"sky_without_sun"}) << dump(w);
+  EXPECT_EQ(w[0].loc.line, 7);  // after [[scene]] (2 lines) and [site] (4)
+  EXPECT_NE(w[0].message.find("default 10 000 lx"), std::string::npos) << w[0].message;
+  EXPECT_TRUE(clear("2026-06-21T12:00", "direct_normal_illuminance = 60000\n").empty());
+  EXPECT_TRUE(clear("2026-06-21T12:00", "sun = false\n").empty());
+  EXPECT_TRUE(clear("2026-06-21T23:00", "").empty());  // the sun is down
+  const Warnings given = clear("2026-06-21T12:00", "diffuse_horizontal_illuminance = 20000\n");
+  ASSERT_EQ(codes(given), std::vector<std::string>{"sky_without_sun"}) << dump(given);
+  EXPECT_EQ(given[0].message.find("default"), std::string::npos);
+  // A weather file's hour gives the sun its light.
+  EXPECT_TRUE(inputWarnings(caseOf(kRoom + "[sky]\ntype = \"cie-clear\"\nweather = \"" + kEpw +
+                                   "\"\ntime = \"2026-06-21T12:00\"\n" + kGrid))
+                  .empty());
+}
+
 TEST(Warnings, PointInTimeSkyFromWeatherTakesItsLocationWithoutSite) {
   // No [site]: the sun was placed at 0°, 0°, UTC+0 before; now at the weather file's LOCATION.
   const DaylightSpec d = daylightFromCase(caseOf(siteCase("")));
