@@ -651,8 +651,10 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
   checkWeatherGaps(in.epw, c.sky.weather.string(), warnings);
   throwIfStrict(warnings, run.request.strict);
-  const ResourceEstimate needs =
-      estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads, blockSize(options));
+  // The point-in-time settings of the [[compliance]] entries (LEED option 2's clear-sky traces).
+  const TraceSettings pointSettings = resolveTrace(&c.settings, run.request.trace, Method::kCache).settings;
+  const ResourceEstimate needs = estimateAnnualStudy(c, *in.scene, annualCounts(in), trace.settings, trace.threads,
+                                                     blockSize(options), &pointSettings);
   checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
   observer.estimated(needs);
   // 2. Sky vectors of the year, then coefficients and hours block by block: the hourly files
@@ -687,7 +689,6 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   // The [[compliance]] entries, by the process that writes the results (a shard's part has none:
   // its merge evaluates them).
   if (!c.compliance.empty() && processes.writesOutputs() && !processes.partial()) {
-    const TraceSettings pointSettings = resolveTrace(&c.settings, run.request.trace, Method::kCache).settings;
     data.compliance = evaluateComplianceOf(c, in, t, trace, pointSettings, y, compliance, data, grids, observer);
   }
   data.run.runTimeS = secondsSince(run.start);

@@ -358,7 +358,8 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
 }
 
 ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
-                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock) {
+                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock,
+                                     const TraceSettings* pointSettings) {
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   // The scene and the year's sky vectors (hours × patches, float).
@@ -409,6 +410,22 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   if (closedStates == 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
   if (closedStates > 1)
     e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
+  // LEED option 2 (study/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
+  // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's).
+  if (pointSettings)
+    for (const ComplianceSpec& spec : c.compliance) {
+      if (spec.standard != ComplianceStandard::kLeedV41Option2) continue;
+      uint64_t k = 0;
+      for (std::size_t i = 0; i < c.grids.size() && i < a.gridSensors.size(); ++i)
+        if (spec.spaces.empty() || std::count(spec.spaces.begin(), spec.spaces.end(), c.grids[i].name) > 0)
+          k += a.gridSensors[i];
+      TraceSettings once = *pointSettings;
+      once.targetRelativeError = 0.0;
+      const double times = static_cast<double>(spec.leedDates.empty() ? 2 : spec.leedDates.size()) *
+                           static_cast<double>(spec.leedHours.size());
+      e.work.push_back({"compliance " + spec.name,
+                        static_cast<double>(k) * times * raysPerSensor(once, n.sampled + 2, 0)});
+    }
   return e;
 }
 

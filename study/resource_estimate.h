@@ -130,8 +130,11 @@ struct AnnualCounts {
   std::vector<uint64_t> gridSensors;
   uint64_t hours = 0, sunHours = 0;
 };
-// `sensorsPerBlock`: the study's block (runAnnualStudy's AnnualStudyOptions, rounded).
+// `sensorsPerBlock`: the study's block (runAnnualStudy's AnnualStudyOptions, rounded). With
+// `pointSettings` (the point-in-time settings of the case's [[compliance]] entries), the tracing
+// of LEED option 2 is a step of its own ("compliance <name>").
 ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, const AnnualCounts& a,
-                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock);
+                                     const TraceSettings& s, int threads, uint64_t sensorsPerBlock,
+                                     const TraceSettings* pointSettings = nullptr);
 
 }  // namespace candela

@@ -66,6 +66,36 @@ TEST(ResourceEstimate, AnnualStudyIsBoundedByTheBlock) {
   EXPECT_EQ(estimate(100, 1024).memory[1].bytes, annualBlockBytes(100, hours, patches, sun, suns, 2));
 }
 
+// LEED option 2's clear-sky traces are a step of the annual study's estimate: its spaces' sensors
+// (here grid "b" only) at every time (two dates × three hours), one batch each whatever the
+// settings' target error, with the sky and its sun as two sampled sources.
+TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
+  CaseFile c;
+  c.grids.resize(2);
+  c.grids[0].name = "a";
+  c.grids[1].name = "b";
+  ComplianceSpec leed;
+  leed.standard = ComplianceStandard::kLeedV41Option2;
+  leed.name = "leed2";
+  leed.spaces = {"b"};
+  leed.leedHours = {9.0, 12.0, 15.0};
+  c.compliance = {leed};
+  const Scene scene;
+  AnnualCounts a;
+  a.gridSensors = {100, 40};
+  a.hours = 8760;
+  TraceSettings point;
+  point.method = Method::kCache;
+  point.targetRelativeError = 0.0025;
+  const ResourceEstimate without = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024);
+  const ResourceEstimate with = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024, &point);
+  ASSERT_EQ(with.work.size(), without.work.size() + 1);
+  EXPECT_EQ(with.work.back().label, "compliance leed2");
+  point.targetRelativeError = 0.0;
+  EXPECT_DOUBLE_EQ(with.work.back().rays, 40.0 * 6.0 * raysPerSensor(point, 2, 0));
+  EXPECT_GT(with.seconds("compliance leed2"), 0.0);
+}
+
 TEST(ResourceEstimate, PixelBytesFromTheImage) {
   // Kept per pixel: Image's radiance, luminance and standard error (float32), inside, traced and
   // interpolation level (a byte each), as the type holds them.
