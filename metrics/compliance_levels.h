@@ -20,6 +20,11 @@ constexpr std::string_view levelName(En17037Level level) {
   return "none";
 }
 
+// A level as the report and the verdict lines word it: levelName, with "below minimum" for none.
+constexpr std::string_view levelWords(En17037Level level) {
+  return level == En17037Level::kNone ? "below minimum" : levelName(level);
+}
+
 // The level reached by a figure graded by three thresholds, lowest level first: `higherIsBetter`
 // for hours, angles and distances (value ≥ threshold reaches it), else for DGP-like figures
 // (value ≤ threshold reaches it).

@@ -14,8 +14,7 @@ namespace candela {
 namespace {
 
 std::string pct(double fraction) { return formatFixed(100.0 * fraction, 1) + " %"; }
-// A level as the report words it: the JSON's "none" is "below minimum" here.
-std::string lv(En17037Level l) { return l == En17037Level::kNone ? "below minimum" : std::string(levelName(l)); }
+std::string lv(En17037Level l) { return std::string(levelWords(l)); }
 std::string levelBadge(En17037Level l) {
   return std::string("<span class=\"badge ") + (l == En17037Level::kNone ? "fail" : "pass") + "\">" + lv(l) + "</span>";
 }

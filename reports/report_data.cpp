@@ -32,44 +32,51 @@ std::string safeFileName(const std::string& name) {
   return s.empty() ? "grid" : s;
 }
 
-Verdict overallVerdict(const ReportData& data, int* checked, int* failed) {
-  int n = 0, bad = 0;
-  auto add = [&](Verdict v) {
-    if (v == Verdict::kNotChecked) return;
-    ++n;
-    bad += v == Verdict::kFail;
-  };
+namespace {
+
+// The kinds of checked line, in the report's order (checkedCategories' words).
+enum class LineKind { kGrid, kSurface, kModelling, kColourRendering, kObserverUgr, kCompliance, kCount };
+constexpr const char* kLineKindWords[] = {"grids",           "walls and ceiling", "modelling",
+                                          "colour rendering", "observers' UGR",    "daylight compliance"};
+
+// Calls line(verdict, kind) for every line the run's verdict counts, checked or not.
+template <class F>
+void forEachLine(const ReportData& data, F line) {
   for (const GridReport& g : data.grids) {
-    add(g.check.overall);
-    if (g.modelling) add(g.modelling->verdict);
+    line(g.check.overall, g.surfaceGrid.empty() ? LineKind::kGrid : LineKind::kSurface);
+    if (g.modelling) line(g.modelling->verdict, LineKind::kModelling);
   }
   // A task area's and a surface grid's verdicts combine their grids' and observers', counted
   // here each once: a task area's own further line is its Ra.
-  for (const TaskAreaReport& a : data.taskAreas) add(a.raVerdict);
+  for (const TaskAreaReport& a : data.taskAreas) line(a.raVerdict, LineKind::kColourRendering);
   for (const ObserverReport& o : data.observers)
-    if (const std::optional<bool> pass = o.pass()) add(*pass ? Verdict::kPass : Verdict::kFail);
+    if (const std::optional<bool> pass = o.pass())
+      line(*pass ? Verdict::kPass : Verdict::kFail, LineKind::kObserverUgr);
   // A [[compliance]] entry is one line: its standard's verdict.
-  for (const ComplianceReport& r : data.compliance) add(r.verdict == "pass" ? Verdict::kPass : Verdict::kFail);
+  for (const ComplianceReport& r : data.compliance)
+    line(r.verdict == "pass" ? Verdict::kPass : Verdict::kFail, LineKind::kCompliance);
+}
+
+}  // namespace
+
+Verdict overallVerdict(const ReportData& data, int* checked, int* failed) {
+  int n = 0, bad = 0;
+  forEachLine(data, [&](Verdict v, LineKind) {
+    if (v == Verdict::kNotChecked) return;
+    ++n;
+    bad += v == Verdict::kFail;
+  });
   if (checked) *checked = n;
   if (failed) *failed = bad;
   return bad > 0 ? Verdict::kFail : n > 0 ? Verdict::kPass : Verdict::kNotChecked;
 }
 
 std::vector<std::string> checkedCategories(const ReportData& data) {
-  bool grids = false, surfaces = false, modelling = false, ra = false, ugr = false;
-  for (const GridReport& g : data.grids) {
-    if (g.check.overall != Verdict::kNotChecked) (g.surfaceGrid.empty() ? grids : surfaces) = true;
-    modelling = modelling || (g.modelling && g.modelling->verdict != Verdict::kNotChecked);
-  }
-  for (const TaskAreaReport& a : data.taskAreas) ra = ra || a.raVerdict != Verdict::kNotChecked;
-  for (const ObserverReport& o : data.observers) ugr = ugr || o.pass().has_value();
+  bool seen[static_cast<int>(LineKind::kCount)] = {};
+  forEachLine(data, [&](Verdict v, LineKind k) { seen[static_cast<int>(k)] |= v != Verdict::kNotChecked; });
   std::vector<std::string> out;
-  if (grids) out.push_back("grids");
-  if (surfaces) out.push_back("walls and ceiling");
-  if (modelling) out.push_back("modelling");
-  if (ra) out.push_back("colour rendering");
-  if (ugr) out.push_back("observers' UGR");
-  if (!data.compliance.empty()) out.push_back("daylight compliance");
+  for (int k = 0; k < static_cast<int>(LineKind::kCount); ++k)
+    if (seen[k]) out.push_back(kLineKindWords[k]);
   return out;
 }
 

@@ -11,6 +11,11 @@ namespace candela {
 
 using namespace case_toml;
 
+std::vector<CivilDate> leedOption2Dates(const ComplianceSpec& s, int weatherYear) {
+  if (!s.leedDates.empty()) return s.leedDates;
+  return {{weatherYear, 3, 21}, {weatherYear, 9, 21}};
+}
+
 std::string_view standardKey(ComplianceStandard s) {
   switch (s) {
     case ComplianceStandard::kLeedV41Option1: return "leed-v4.1-option1";

@@ -110,8 +110,7 @@ EquinoxLight equinoxWindowLight(const AnnualSky& sky, const CivilDate& date, dou
 ComplianceReport leedOption2(const ComplianceInputs& in, const ComplianceSpec& s) {
   const ComplianceTallies& t = *in.tallies;
   const std::vector<int> grids = complianceSpaces(s, t);
-  std::vector<CivilDate> dates = s.leedDates;
-  if (dates.empty()) dates = {{in.weatherYear, 3, 21}, {in.weatherYear, 9, 21}};
+  const std::vector<CivilDate> dates = leedOption2Dates(s, in.weatherYear);
   LeedReport l;
   // One batch of samples per point: the share in range carries each point's standard error
   // (inRangeShare), so the preset's target error, which sends the points that sun patches make

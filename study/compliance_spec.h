@@ -74,4 +74,8 @@ struct ComplianceSpec {
   FileLoc loc;
 };
 
+// LEED option 2's clear-sky days: the entry's `dates`, else 21 March and 21 September of
+// `weatherYear`.
+std::vector<CivilDate> leedOption2Dates(const ComplianceSpec& s, int weatherYear);
+
 }  // namespace candela

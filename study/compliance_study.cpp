@@ -83,8 +83,7 @@ std::vector<int> complianceSpaces(const ComplianceSpec& s, const ComplianceTalli
 
 namespace {
 
-// A level in a verdict line: the JSON's "none" reads "below minimum".
-std::string levelText(En17037Level l) { return l == En17037Level::kNone ? "below minimum" : std::string(levelName(l)); }
+std::string levelText(En17037Level l) { return std::string(levelWords(l)); }
 
 void provision(const ComplianceInputs& in, const ComplianceSpec& s, En17037Report& r, ComplianceReport& out) {
   const ComplianceTallies& t = *in.tallies;

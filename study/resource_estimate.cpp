@@ -421,7 +421,7 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
           k += a.gridSensors[i];
       TraceSettings once = *pointSettings;
       once.targetRelativeError = 0.0;
-      const double times = static_cast<double>(spec.leedDates.empty() ? 2 : spec.leedDates.size()) *
+      const double times = static_cast<double>(leedOption2Dates(spec, 0).size()) *  // the year changes no count
                            static_cast<double>(spec.leedHours.size());
       e.work.push_back({"compliance " + spec.name,
                         static_cast<double>(k) * times * raysPerSensor(once, n.sampled + 2, 0)});

@@ -79,7 +79,7 @@ int openDirections(const RayAccelerator& accel, const SensorPoint& s) {
 FileLoc pointLoc(const SensorSet& set, std::size_t i) { return i < set.pointLocs.size() ? set.pointLocs[i] : set.loc; }
 
 // "2 of 24 sensor points lie" / "the sensor point lies".
-std::string countOf(std::size_t n, std::size_t total, const std::string& verbOne, const std::string& verbMany) {
+std::string pointsThat(std::size_t n, std::size_t total, const std::string& verbOne, const std::string& verbMany) {
   if (total == 1) return "the sensor point " + verbOne;
   return std::to_string(n) + " of " + std::to_string(total) + " sensor points " + (n == 1 ? verbOne : verbMany);
 }
@@ -256,7 +256,7 @@ void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out) {
   }
   if (near > 0)
     out.push_back({"sensor_near_surface",
-                   set.name + ": " + countOf(near, pts.size(), "lies", "lie") + " on or within 5 mm of a surface that cuts " +
+                   set.name + ": " + pointsThat(near, pts.size(), "lies", "lie") + " on or within 5 mm of a surface that cuts " +
                        (near == 1 ? "its" : "their") + " hemisphere" + firstPoint(set, firstNear) +
                        "; such a sensor sees both sides of the surface",
                    pointLoc(set, firstNear)});
@@ -271,7 +271,7 @@ void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out) {
   }
   if (outside > 0)
     out.push_back({"sensor_outside_room",
-                   set.name + ": " + countOf(outside, pts.size(), "lies", "lie") + " outside the room" +
+                   set.name + ": " + pointsThat(outside, pts.size(), "lies", "lie") + " outside the room" +
                        firstPoint(set, firstOutside) +
                        (mostEnclosed ? " (open to the outside where the others are enclosed)" : " (beyond the scene)"),
                    pointLoc(set, firstOutside)});
@@ -348,7 +348,7 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lu
   if (count == 0) return;
   const std::string glowName = scene.shapeNames.size() > firstGlow ? scene.shapeNames[firstGlow] : "";
   out.push_back({"untrusted_error_bar",
-                 set.name + ": " + countOf(count, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
+                 set.name + ": " + pointsThat(count, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
                      " although the glow surface '" + glowName + "' faces " + (count == 1 ? "it" : "them") +
                      " unobstructed: no hemisphere sample found it (a glow is sampled directly only within its radius "
                      "or where its bounding sphere is smaller than a hemisphere stratum), so the value and its zero "
@@ -367,7 +367,7 @@ void checkDarkSensors(const SensorSet& set, const double* lux, const double* err
   }
   if (dark == 0 || !lit) return;
   out.push_back({"sensor_reads_nothing",
-                 set.name + ": " + countOf(dark, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
+                 set.name + ": " + pointsThat(dark, pts.size(), "reads", "read") + " 0 ± 0 lx" + firstPoint(set, first) +
                      " while the others are lit: no ray from " + (dark == 1 ? "it" : "them") +
                      " reached any light, as from inside furniture or a closed volume; the grid's Emin, U0 and "
                      "average count " + (dark == 1 ? "it" : "them") + " (leave such points out: a border, a task "
