@@ -113,8 +113,9 @@ if [ "$stage" != fuzz ]; then
   echo "== fuzz replay under the sanitizers: $((SECONDS - t0)) s" >&2
 fi
 
-# Seeds for each reader: the project's fixtures and demo cases, and /work/shared/reference when
-# it exists, copied at run time into build-fuzz (never into the repository), plus the
+# Seeds for each reader: the project's fixtures (with the third-party files of tests/data/reference)
+# and demo cases, and the peer suite when CANDELA_PEER_SUITE names it, copied at run time into
+# build-fuzz (never into the repository), plus the
 # inputs kept in tests/fuzz/<reader>/.
 seed_pattern() {
   case "$1" in
@@ -131,7 +132,7 @@ fuzz_one() {  # reader -> 0 when the pass found nothing
     # Seeds are cut at 64 KB (libFuzzer's -max_len below): an EPW year is 1.5 MB.
     head -c 65536 "$f" >"$dir/seeds/$n.seed"
     n=$((n + 1))
-  done < <(find tests/data cases /work/shared/reference -type f -name "$(seed_pattern "$r")" -print0 2>/dev/null)
+  done < <(find tests/data cases ${CANDELA_PEER_SUITE:+"$CANDELA_PEER_SUITE"} -type f -name "$(seed_pattern "$r")" -print0 2>/dev/null)
   # Kept inputs of this reader, except the known open findings (tests/fuzz/known_findings.txt).
   local kept=() known=0
   for f in tests/fuzz/"$r"/*; do

@@ -20,9 +20,9 @@ candela_cli_test(luminaire.svg_device 2 "/dev/null: the output is a device; only
 # Control characters of a hostile first line are escaped in the one error line.
 candela_cli_test(luminaire.escaped_message 2 "unknown IES edition 'IESNA:LM-63-2002\\x1b]0;pwned"
                  luminaire ies/escape_sequences.ies --no-svg)
-# --ugr-table: the CIE 190 UGR table of manufacturers' files (shared/reference, read only); a
+# --ugr-table: the CIE 190 UGR table of manufacturers' files (tests/data/reference, read only); a
 # file without a luminous area is refused at the line of its opening.
-set(UGR_REF ${PROJECT_SOURCE_DIR}/../shared/reference/photometry/eulumdat-rs)
+set(UGR_REF ${PROJECT_SOURCE_DIR}/tests/data/reference/photometry/eulumdat-rs)
 set(UGR_OUT --ugr-csv ${CMAKE_CURRENT_BINARY_DIR}/luminaire_ugr.csv --ugr-svg ${CMAKE_CURRENT_BINARY_DIR}/luminaire_ugr.svg)
 candela_cli_test(luminaire.ugr_table_ldt 0 "Viewed crosswise" luminaire ${UGR_REF}/fluorescent_luminaire.ldt
                  --no-svg --ugr-table ${UGR_OUT})

@@ -11,6 +11,7 @@
 #include "engine/rad_reader.h"
 #include "engine/tracer.h"
 #include "tests/engine/test_materials.h"
+#include "tests/support/peer_suite.h"
 #include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -28,7 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path objDir() { return fs::path(CANDELA_TEST_DATA) / "obj"; }
-fs::path referenceDir() { return fs::path(CANDELA_REFERENCE) / "radiance-test-renders"; }
 
 uint32_t materialIndex(const Scene& sc, const std::string& name) {
   for (uint32_t i = 0; i < sc.materials.size(); ++i)
@@ -236,14 +236,18 @@ TEST(ObjReader, XformOfAMeshAppliesAfterTheMeshsOwnTransform) {
 TEST(ObjReader, CompiledMeshesAndInstancesAreRefused) {
   expectError([&] { readFiles({objDir() / "mesh_rtm.rad"}); }, objDir() / "mesh_rtm.rad", 6,
               "mesh 'compiled' names a Radiance compiled mesh (thing.RTM); pass its source OBJ file instead");
-  // Radiance's own test scenes (radiance-test-renders).
-  expectError([&] { readFiles({referenceDir() / "woman.rad"}); }, referenceDir() / "woman.rad", 6,
+}
+
+// Radiance's own test scenes with compiled meshes and octree instances (tests/support/peer_suite.h).
+TEST(ObjReaderPeerSuite, RadianceScenesWithCompiledMeshesAndInstancesAreRefused) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  expectError([&] { readFiles({suite / "woman.rad"}); }, suite / "woman.rad", 6,
               "mesh 'woman' names a Radiance compiled mesh (woman.rtm); pass its source OBJ file instead");
   SceneReadOptions base;  // vase.rad's colorpict comes first
   base.patterns = PatternPolicy::kBase;
-  expectError([&] { readFiles({referenceDir() / "vase.rad"}, base); }, referenceDir() / "vase.rad", 23,
+  expectError([&] { readFiles({suite / "vase.rad"}, base); }, suite / "vase.rad", 23,
               "mesh 'vase' names a Radiance compiled mesh (vase.rtm)");
-  expectError([&] { readFiles({referenceDir() / "porsches.rad"}); }, referenceDir() / "porsches.rad", 6,
+  expectError([&] { readFiles({suite / "porsches.rad"}); }, suite / "porsches.rad", 6,
               "instance 'porsche #1' places a Radiance octree (porsche.octf), which candela does not read; pass the "
               "scene files the octree was made from");
 }
@@ -277,7 +281,8 @@ TEST(ObjReader, MaterialsListedAfterTheObjFileApply) {
   EXPECT_EQ(sc.surfaceMaterial(0), materialIndex(sc, "floor"));
 }
 
-TEST(ObjReader, RadianceCabLoads) {
+TEST(ObjReaderPeerSuite, RadianceCabLoads) {
+  CANDELA_PEER_SUITE_DIR(suite);
   // cab.obj (Radiance's test scene, no usemtl): the first group names the modifier, a bare `g`
   // falls back to "white".
   const fs::path dir = test_support::scratchDir("obj_reader", "cab");
@@ -286,18 +291,18 @@ TEST(ObjReader, RadianceCabLoads) {
                                     "void plastic CAB-CEILING 0 0 5 .7 .7 .7 0 0\n"
                                     "void plastic CAB-WALL-TOP 0 0 5 .6 .6 .6 0 0\n"
                                     "void plastic cab_floor 0 0 5 .2 .2 .2 0 0\n";
-  const Scene sc = readFiles({dir / "cab.rad", referenceDir() / "cab.obj"});
+  const Scene sc = readFiles({dir / "cab.rad", suite / "cab.obj"});
   EXPECT_GE(sc.mesh.triangles.size(), 124u);  // 124 faces, quads and polygons split
   // With a mapping of one rule, one material for everything.
   std::ofstream(dir / "one.map") << "white ;\n";
   SceneReadOptions opt;
   opt.objMapping = dir / "one.map";
-  const Scene one = readFiles({dir / "cab.rad", referenceDir() / "cab.obj"}, opt);
+  const Scene one = readFiles({dir / "cab.rad", suite / "cab.obj"}, opt);
   EXPECT_EQ(one.mesh.triangles.size(), sc.mesh.triangles.size());
   ASSERT_EQ(one.mesh.runs.size() > 0, true);
   for (const auto& r : one.mesh.runs) EXPECT_EQ(r.material, materialIndex(one, "white"));
   // Without any material defined: the first face names its line and modifier.
-  expectError([&] { readFiles({referenceDir() / "cab.obj"}); }, referenceDir() / "cab.obj", 247,
+  expectError([&] { readFiles({suite / "cab.obj"}); }, suite / "cab.obj", 247,
               "modifier 'default' (the group name (no usemtl))");
 }
 

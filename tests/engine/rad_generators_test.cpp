@@ -5,6 +5,7 @@
 #include "engine/rad_gen.h"
 #include "engine/rad_generators.h"
 #include "engine/rad_reader.h"
+#include "tests/support/peer_suite.h"
 
 #include <gtest/gtest.h>
 
@@ -286,8 +287,9 @@ TEST(Xform, ArraysStepTheirTransformAndNumberTheNames) {
 
 // Radiance's own test scene mesh_inline1.rad: 9 copies of woman.rad (here a stand-in) rotated
 // 40° apart about the origin, each named plainclothes.k.
-TEST(Xform, RadianceTestSceneMeshInline1) {
-  const fs::path ref = fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "mesh_inline1.rad";
+TEST(XformPeerSuite, RadianceTestSceneMeshInline1) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const fs::path ref = suite / "mesh_inline1.rad";
   std::vector<RadCommand> cmds;
   parseRadiance(readInputFile(ref, "scene file"), ref.string(), [](RadPrimitive&&) {},
                 [&](RadCommand&& c) { cmds.push_back(std::move(c)); });
@@ -308,8 +310,9 @@ TEST(Xform, RadianceTestSceneMeshInline1) {
 }
 
 // ball_in_cube.rad: genbox piped into xform, as Radiance scenes write it.
-TEST(Xform, ReadsAGeneratorThroughAPipe) {
-  const fs::path ref = fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "ball_in_cube.rad";
+TEST(XformPeerSuite, ReadsAGeneratorThroughAPipe) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const fs::path ref = suite / "ball_in_cube.rad";
   std::vector<RadCommand> cmds;
   parseRadiance(readInputFile(ref, "scene file"), ref.string(), [](RadPrimitive&&) {},
                 [&](RadCommand&& c) { cmds.push_back(std::move(c)); });
@@ -613,8 +616,9 @@ TEST(Genprism, RoundedCornersAreSpheresAndCylindersAboutTheInnerPrism) {
 
 // Radiance's rect_opening.rad: a wall with a rectangular hole (the outline, a seam, the hole; -c
 // leaves the seam's second side out), through xform -ry -90 -t -8 0 0.
-TEST(Genprism, RadianceTestSceneRectOpening) {
-  const auto ps = expandFile(fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "rect_opening.rad");
+TEST(GenprismPeerSuite, RadianceTestSceneRectOpening) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const auto ps = expandFile(suite / "rect_opening.rad");
   ASSERT_EQ(ps.size(), 2u + 9u);
   // The bottom end: 3.2 × 5.2 less the 1 × 3 hole, facing −z; -ry −90 sends (x, y, z) to
   // (−z, y, x), so it faces +x, and sits at x = −8.
@@ -626,8 +630,9 @@ TEST(Genprism, RadianceTestSceneRectOpening) {
 
 // Radiance's sawtooth profile (203 vertices) rounded with -r .1: a sphere at each convex corner,
 // centred a radius away from both edges that meet there.
-TEST(Genprism, RoundedSawtoothCornersAreARadiusFromBothEdges) {
-  const fs::path pts = fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "sawtooth.pts";
+TEST(GenprismPeerSuite, RoundedSawtoothCornersAreARadiusFromBothEdges) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const fs::path pts = suite / "sawtooth.pts";
   std::vector<glm::dvec2> v;
   {
     std::istringstream in(readInputFile(pts, "points"));

@@ -10,6 +10,7 @@
 #include "engine/tracer.h"
 #include "tests/engine/ies2rad_tables.h"
 #include "tests/support/direct_only.h"
+#include "tests/support/peer_suite.h"
 
 #include <gtest/gtest.h>
 
@@ -435,8 +436,9 @@ TEST(SourceDistribution, LightSelectionAtPathVerticesIsUnbiased) {
 // argument (multiplier 1), light 20, transform -s 0.0254 -rz 90 -t -4 2.5 2.999. Its illuminance
 // at points below is 179 · 20 · ∫ data(φ4, θ) cos i / r² dA, the data looked up in the frame turned
 // by −90° about z.
-TEST(SourceDistribution, RadianceRectFixtureMatchesTheAreaIntegral) {
-  const fs::path ref = fs::path(CANDELA_REFERENCE) / "radiance-test-renders" / "rect_fixture.rad";
+TEST(SourceDistributionPeerSuite, RadianceRectFixtureMatchesTheAreaIntegral) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const fs::path ref = suite / "rect_fixture.rad";
   const Scene sc = readScene(ref);
   const Tracer tracer(sc);
   const RadDataArray data = readRadDataFile(ref.parent_path() / "rect_fixture.dat", FileLoc{});

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace candela {
 namespace {
@@ -95,7 +97,8 @@ TEST(Epw, RecordsRunThroughTheYearInOrder) {
 }
 
 TEST(Epw, EveryReferenceWeatherFileIsAYearInOrder) {
-  // Files nobody here wrote (../shared/reference/weather): several sources, leap and non-leap.
+  // Files nobody here wrote (tests/data/reference/weather, SOURCES.md): several sources and formats
+  // (all four are 365-day years; a leap year made from one of them is the next test).
   const std::filesystem::path dir = std::filesystem::path(CANDELA_REFERENCE) / "weather";
   ASSERT_TRUE(std::filesystem::is_directory(dir)) << dir;
   int files = 0;
@@ -105,7 +108,33 @@ TEST(Epw, EveryReferenceWeatherFileIsAYearInOrder) {
     const EpwFile f = readEpw(e.path().string());
     EXPECT_TRUE(f.isFullYear()) << e.path() << ": " << f.records.size() << " records";
   }
-  EXPECT_GE(files, 6);
+  EXPECT_GE(files, 4);
+}
+
+// A leap year from a real file: chicago.epw (8760 records) with 29 February inserted, its 24
+// records those of 28 February with the day changed, is 8784 records in order and a full year.
+TEST(Epw, LeapYearOfARealFileIsAYearInOrder) {
+  std::ifstream in(std::filesystem::path(CANDELA_REFERENCE) / "weather" / "chicago.epw");
+  std::ostringstream leap;
+  std::vector<std::string> february28;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string year, month, day;
+    std::getline(fields, year, ',');
+    std::getline(fields, month, ',');
+    std::getline(fields, day, ',');
+    const bool feb28 = month == "2" && day == "28";
+    if (!feb28 && !february28.empty()) {  // the first record after 28 February
+      for (const std::string& r : february28) leap << year << ",2,29," << r << "\n";
+      february28.clear();
+    }
+    if (feb28) february28.push_back(line.substr(year.size() + month.size() + day.size() + 3));
+    leap << line << "\n";
+  }
+  std::istringstream text(leap.str());
+  const EpwFile f = parseEpw(text, "chicago_leap.epw");
+  EXPECT_EQ(f.records.size(), 8784u);
+  EXPECT_TRUE(f.isFullYear());
 }
 
 TEST(Epw, ByteOrderMarkBeforeLocation) {

@@ -82,7 +82,7 @@ TEST_P(LdtErrors, NamesFileAndLine) {
 }
 
 TEST(Eulumdat, LampSetsInTheBlockLayoutOfRealFiles) {
-  // A manufacturer's file (../shared/reference): each set's lines 26a-f together. It was once
+  // A manufacturer's file (tests/data/reference): each set's lines 26a-f together. It was once
   // refused with "bad number 'LED110-CLO/730' for number of lamps".
   const PhotometricWeb web =
       readEulumdat(std::string(CANDELA_REFERENCE) + "/photometry/eulumdat-rs/demo_two_lamp_sets.ldt");

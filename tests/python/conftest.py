@@ -6,7 +6,7 @@ import pathlib
 import pytest
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
-REFERENCE = SOURCE.parent / "shared" / "reference"
+REFERENCE = SOURCE / "tests" / "data" / "reference"  # third-party measured files (SOURCES.md)
 CANDELA_EXE = os.environ.get("CANDELA_EXE", str(SOURCE / "build" / "cli" / "candela"))
 
 

@@ -1,4 +1,4 @@
-// The public peer suite: Radiance's own test scenes (../shared/reference/radiance-test-renders, the
+// The public peer suite: Radiance's own test scenes (the folder CANDELA_PEER_SUITE names, tests/support/peer_suite.h; the
 // scene sets of its .rif files in scenes.txt) loaded as a user would pass them to `candela points`,
 // and, where expected.json holds Radiance 6.1a `rtrace -I` illuminances at converged settings, the
 // illuminance at the set's sensor points compared within the suite's tolerance (5 %, README.md).
@@ -6,6 +6,7 @@
 // that starts (or stops) loading fails the test until the table and docs/engine.md say so.
 #include "study/points_study.h"
 #include "study/sensor_grid.h"
+#include "tests/support/peer_suite.h"
 
 #include <nlohmann/json.hpp>
 
@@ -22,7 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSuite = fs::path(CANDELA_REFERENCE) / "radiance-test-renders";
 constexpr double kTolerance = 0.05;  // the suite's (README.md)
 
 // What candela does with each set: the outcome with the default options, and for a set refused
@@ -56,8 +56,8 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
 }
 
 // scenes.txt: "SET: FILE ..." per line, '#' comments.
-std::map<std::string, std::vector<std::string>> sceneSets() {
-  std::ifstream in(kSuite / "scenes.txt");
+std::map<std::string, std::vector<std::string>> sceneSets(const fs::path& suite) {
+  std::ifstream in(suite / "scenes.txt");
   std::map<std::string, std::vector<std::string>> sets;
   std::string line;
   while (std::getline(in, line)) {
@@ -73,17 +73,17 @@ std::map<std::string, std::vector<std::string>> sceneSets() {
 }
 
 // "agrees", "disagrees: ...", "loads; no reference" or the refusal's message.
-std::string outcomeOf(const std::string& name, const std::vector<std::string>& files, const nlohmann::json& set,
+std::string outcomeOf(const fs::path& suite, const std::string& name, const std::vector<std::string>& files, const nlohmann::json& set,
                       PatternPolicy patterns) {
   PointsJob job;
-  for (const std::string& f : files) job.scenes.push_back(kSuite / f);
+  for (const std::string& f : files) job.scenes.push_back(suite / f);
   job.trace.seed = 1;
   job.trace.quality = Quality::kHigh;  // the references are converged: candela's error bar must be small
   job.trace.patterns = patterns;
   try {
     const PointsScene scene = loadPointsScene(job);
     if (!set.contains("lux")) return "loads; no reference";
-    const std::vector<SensorPoint> points = readPointsFile(kSuite / "points" / (name + ".pts")).points;
+    const std::vector<SensorPoint> points = readPointsFile(suite / "points" / (name + ".pts")).points;
     const std::vector<double> ref = set["lux"].get<std::vector<double>>();
     if (points.size() != ref.size()) return "points and references differ in number";
     const PointsResult r = computePoints(scene, job.accelerator, points);
@@ -104,27 +104,28 @@ std::string outcomeOf(const std::string& name, const std::vector<std::string>& f
   } catch (const InputError& e) {
     // The file's path without the suite's folder.
     std::string msg = e.what();
-    const std::string prefix = kSuite.string() + "/";
+    const std::string prefix = suite.string() + "/";
     if (msg.rfind(prefix, 0) == 0) msg.erase(0, prefix.size());
     return msg;
   }
 }
 
 TEST(PeerSuite, EverySetLoadsAndAgreesOrIsRefusedForItsStatedReason) {
-  ASSERT_TRUE(fs::exists(kSuite / "scenes.txt")) << kSuite;
-  const auto sets = sceneSets();
+  CANDELA_PEER_SUITE_DIR(suite);
+  ASSERT_TRUE(fs::exists(suite / "scenes.txt")) << suite;
+  const auto sets = sceneSets(suite);
   ASSERT_EQ(sets.size(), expectedOutcomes().size());
-  std::ifstream js(kSuite / "expected.json");
+  std::ifstream js(suite / "expected.json");
   const nlohmann::json expected = nlohmann::json::parse(js);
   int agreeing = 0;
   for (const auto& [name, files] : sets) {
     SCOPED_TRACE(name);
     const auto want = expectedOutcomes().find(name);
     ASSERT_NE(want, expectedOutcomes().end());
-    const std::string outcome = outcomeOf(name, files, expected["sets"][name], PatternPolicy::kRefuse);
+    const std::string outcome = outcomeOf(suite, name, files, expected["sets"][name], PatternPolicy::kRefuse);
     // A set refused for its patterns is also run with them replaced (--patterns base).
     const std::string withBase = outcome.find("--patterns base") != std::string::npos
-                                     ? outcomeOf(name, files, expected["sets"][name], PatternPolicy::kBase)
+                                     ? outcomeOf(suite, name, files, expected["sets"][name], PatternPolicy::kBase)
                                      : "";
     std::cout << name << ": " << outcome << (withBase.empty() ? "" : "; with --patterns base: " + withBase) << "\n";
     if (outcome == "agrees") ++agreeing;
@@ -143,16 +144,17 @@ TEST(PeerSuite, EverySetLoadsAndAgreesOrIsRefusedForItsStatedReason) {
 // (tests/data/peer/patterns_identity_rtrace.json says how it was computed), candela agrees within
 // the suite's tolerance at every point.
 TEST(PeerSuite, PatternsSetWithBaseAgreesWithRadianceWithTheSamePatternsReplaced) {
+  CANDELA_PEER_SUITE_DIR(suite);
   std::ifstream js(fs::path(CANDELA_TEST_DATA) / "peer" / "patterns_identity_rtrace.json");
   const std::vector<double> ref = nlohmann::json::parse(js)["lux"].get<std::vector<double>>();
   PointsJob job;
-  const auto sets = sceneSets();
-  for (const std::string& f : sets.at("patterns")) job.scenes.push_back(kSuite / f);
+  const auto sets = sceneSets(suite);
+  for (const std::string& f : sets.at("patterns")) job.scenes.push_back(suite / f);
   job.trace.seed = 1;
   job.trace.quality = Quality::kHigh;
   job.trace.patterns = PatternPolicy::kBase;
   const PointsScene scene = loadPointsScene(job);
-  const std::vector<SensorPoint> points = readPointsFile(kSuite / "points" / "patterns.pts").points;
+  const std::vector<SensorPoint> points = readPointsFile(suite / "points" / "patterns.pts").points;
   ASSERT_EQ(points.size(), ref.size());
   const PointsResult r = computePoints(scene, job.accelerator, points);
   for (size_t i = 0; i < points.size(); ++i) {
