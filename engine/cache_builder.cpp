@@ -3,7 +3,7 @@
 #include "base/rng.h"
 #include "engine/integrator_path.h"
 #include "engine/irradiance_estimator.h"
-#include "engine/materials.h"
+#include "engine/materials/family.h"
 #include "engine/sampling.h"
 #include "engine/sensors.h"
 #include "engine/trace_context.h"
@@ -56,12 +56,8 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Direction
     ++rays;
     if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
     const Shape shape = scene.surface(h.shape);  // a shape or a mesh triangle
-    const Material* m = &scene.materials[shape.material];
-    if (m->type == MaterialType::kIllum) {
-      if (m->alternate < 0) continue;
-      m = &scene.materials[m->alternate];
-    }
-    if (!isCacheable(*m)) continue;
+    const Material* m = seenMaterial(scene.materials, scene.materials[shape.material]);
+    if (!m || !familyOf(*m).cacheable(*m)) continue;
     const Vec3 x = o + h.t * dir;
     const Vec3 ng = shapeNormal(shape, x);
     out.push_back({x, glm::dot(dir, ng) < 0.0 ? ng : -ng, isFlat(shape) ? h.shape : kNoShape, h.shape});

@@ -318,7 +318,7 @@ Rgb distantRadiance(const Tracer& tracer, const Vec3& dir, bool countSources, co
     if (glm::dot(dir, d.direction) >= d.cosHalfAngle && (!seen || d.solidAngleSr < seen->solidAngleSr)) seen = &d;
   if (seen) {
     const Material& m = scene.materials[seen->material];
-    if (m.type == MaterialType::kGlow) return m.color;
+    if (!m.isSampledSource()) return m.color;  // a glow: seen whether sources count or not
     return countSources ? m.color : Rgb(0.0);
   }
   if (!scene.sky) return Rgb(0.0);

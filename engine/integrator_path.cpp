@@ -1,7 +1,8 @@
 #include "engine/integrator_path.h"
 
 #include "engine/integrator_direct.h"
-#include "engine/materials.h"
+#include "engine/materials/family.h"
+#include "engine/materials/normal.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
 #include "engine/source_distribution.h"
@@ -49,15 +50,18 @@ Rgb escapeRadiance(TraceContext& ctx, const Vec3& d, const PathState& st, const 
   return distantRadiance(ctx.tracer, d, st.countSources, mis);
 }
 
-// Follows a mirror, thin glass or dielectric at v: the ray and the path's state after it; false
-// when the path ends (glass that neither transmits nor reflects).
+// Follows a specular surface (mirror, thin glass, dielectric: its family samples the event) at v:
+// the ray and the path's state after it; false when the path ends (glass that neither transmits
+// nor reflects).
 bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray, PathState& st) {
-  switch (m.type) {
-    case MaterialType::kMirror:
+  const SpecularSample e = familyOf(m).sampleSpecular(m, {ray.d, v.ng, v.nf, v.front, v.t}, ctx.rng, ray.beta);
+  switch (e.kind) {
+    case SpecularSample::Kind::kAbsorbed:
+      return false;
+    case SpecularSample::Kind::kMirror:
       st.misCosPdf = 0.0;  // the sky seen in a mirror is not sampled directly
       ray.reflected = true;
-      ray.beta *= m.color;
-      ray.d = mirrorDirection(ray.d, v.ng);
+      ray.d = e.dir;
       ray.o = v.x + v.off * v.nf;
       st.skip = v.flatSkip;
       // A path that does not count sources (they are sampled at its last diffuse vertex) and
@@ -70,35 +74,30 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
         st.countSources = true;
       ++st.mirrorsMet;
       return true;
-    case MaterialType::kGlass: {
-      const GlassEvent e = sampleThinGlass(m, ray.d, v.ng, ctx.rng, ray.beta);
-      if (e == GlassEvent::kAbsorbed) return false;
-      if (e == GlassEvent::kTransmitted) {
-        ray.o = v.x - v.off * v.nf;
-        // Thin glass keeps the direction: whether sources count is the incoming ray's state
-        // (shadow rays through the same glass already carried them from a diffuse vertex).
-      } else {
-        ray.reflected = true;
-        ray.d = mirrorDirection(ray.d, v.ng);
-        ray.o = v.x + v.off * v.nf;
-        st.misCosPdf = 0.0;
-        st.countSources = true;
-      }
+    case SpecularSample::Kind::kStraight:
+      // Straight on: whether sources count is the incoming ray's state (shadow rays through the
+      // same glass already carried them from a diffuse vertex).
+      ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
       return true;
-    }
-    default: {  // MaterialType::kDielectric
-      if (!v.front) absorbInDielectric(m, v.t, ray.beta);
-      const DielectricEvent e = sampleDielectric(m, ray.d, v.nf, v.front, ctx.rng);
+    case SpecularSample::Kind::kReflected:
+      ray.reflected = true;
       ray.d = e.dir;
-      ray.o = e.reflected ? v.x + v.off * v.nf : v.x - v.off * v.nf;
+      ray.o = v.x + v.off * v.nf;
+      st.misCosPdf = 0.0;
+      st.countSources = true;
+      st.skip = v.flatSkip;
+      return true;
+    case SpecularSample::Kind::kBent:
+      ray.d = e.dir;
+      ray.o = e.transmitted ? v.x - v.off * v.nf : v.x + v.off * v.nf;
       st.skip = v.flatSkip;
       st.misCosPdf = 0.0;
       st.countSources = true;
       ray.reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
       return true;
-    }
   }
+  return false;
 }
 
 // One sample of the glossy (Ward) lobe of m leaving v: its reflected radiance estimate. As
@@ -180,7 +179,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
   // with probability 1 − albedo).
   const double pRho = photopic(rho), pTd = photopic(tauD), pTs = photopic(tauS);
-  const double pSp = m.type == MaterialType::kMirror ? 0.0 : photopic(m.specularReflectance);
+  const double pSp = photopic(m.specularReflectance);
   const double norm = std::max(1.0, pRho + pTd + pTs + pSp);
   if (pRho + pTd + pTs + pSp <= 0.0) return out;
   const Strata2D strata(k, 1.0 / kPi);
@@ -271,33 +270,29 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
-    if (m->type == MaterialType::kIllum) {
-      if (m->alternate < 0) {  // invisible to non-shadow rays: pass straight through
-        ray.o = v.x - v.off * v.nf;
-        st.skip = v.flatSkip;
-        continue;
-      }
-      m = &scene.materials[m->alternate];
+    m = seenMaterial(scene.materials, *m);
+    if (!m) {  // an illum with no alternate, invisible to non-shadow rays: pass straight through
+      ray.o = v.x - v.off * v.nf;
+      st.skip = v.flatSkip;
+      continue;
     }
-    switch (m->type) {
-      case MaterialType::kLight:
-      case MaterialType::kIllum:
-        return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
-      case MaterialType::kGlow:
+    const MaterialFamily& family = familyOf(*m);
+    switch (family.role()) {
+      case HitRole::kEmit:
+        if (family.sampledSource())
+          return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
         return v.front && countsGlow(ctx, *m, h.shape, st) ? result + ray.beta * emitted(scene, *m, v) : result;
-      case MaterialType::kVoid:
+      case HitRole::kAbsorb:
         return result;
-      case MaterialType::kMirror:
-      case MaterialType::kGlass:
-      case MaterialType::kDielectric:
+      case HitRole::kSpecular:
         if (!followSpecular(ctx, *m, v, ray, st)) return result;
         continue;
-      default:
+      case HitRole::kScatter:
         break;
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
-    if (cache && cache->cache && st.diffuse == cache->depth && isCacheable(*m)) {
+    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m)) {
       if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
       PathState miss = st;
       miss.split = 1;

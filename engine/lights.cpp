@@ -1,5 +1,6 @@
 #include "engine/lights.h"
 
+#include "engine/materials/family.h"
 #include "engine/sampling.h"
 
 #include <algorithm>
@@ -137,8 +138,8 @@ std::vector<Light> collectLights(const Scene& scene) {
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& s = scene.shapes[i];
     const Material& m = scene.materials[s.material];
-    const bool glow = m.type == MaterialType::kGlow;
-    if (!(m.isSampledSource() || glow) || photopic(m.color) <= 0.0) continue;
+    const bool glow = m.isEmitter() && !m.isSampledSource();
+    if (!m.isEmitter() || photopic(m.color) <= 0.0) continue;
     // A glow of negative radius lights nothing (pathRadiance); an inward sphere (bubble) has no
     // outside to sample from: hemisphere rays find it.
     if (glow && (m.glowRadiusM < 0.0 || (s.type == ShapeType::kSphere && s.inward))) continue;
@@ -479,7 +480,7 @@ SampledSources collectSampledSources(const Scene& scene) {
   out.lights = collectLights(scene);
   for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
     const Shape& sh = scene.shapes[i];
-    if (isFlat(sh) && scene.materials[sh.material].type == MaterialType::kMirror) out.mirrors.push_back(i);
+    if (isFlat(sh) && familyOf(scene.materials[sh.material]).mirrorsSources()) out.mirrors.push_back(i);
   }
   out.isMirrorImage.assign(scene.shapes.size(), 0);
   for (uint32_t i : out.mirrors) out.isMirrorImage[i] = 1;

@@ -2,6 +2,7 @@
 
 #include "base/input_file.h"
 #include "base/units.h"
+#include "engine/materials/family.h"
 #include "engine/polygon_split.h"
 #include "engine/rad_reader.h"
 
@@ -338,7 +339,7 @@ class ObjReader {
                      "it in the modelling tool");
     }
     const Material& m = scene_.materials[static_cast<size_t>(mat)];
-    if (m.isEmitter() || m.type == MaterialType::kMirror) return addShapes(mat, planar);
+    if (m.isEmitter() || familyOf(m).mirrorsSources()) return addShapes(mat, planar);
     for (const auto& t : tris_) addTriangle(idx_[t[0]], idx_[t[1]], idx_[t[2]], static_cast<uint32_t>(mat), line);
   }
 

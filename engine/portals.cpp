@@ -1,6 +1,7 @@
 #include "engine/portals.h"
 
 #include "engine/lights.h"
+#include "engine/materials/family.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,10 +81,7 @@ PortalSet::PortalSet(const Scene& scene) {
   std::vector<std::pair<double, std::vector<Vec3>>> found;
   for (uint32_t id = 0; id < scene.surfaceCount(); ++id) {
     const Material& m = scene.materials[scene.surfaceMaterial(id)];
-    const bool passes = m.type == MaterialType::kGlass ||
-                        (m.type == MaterialType::kTrans && photopic(m.specularTransmittance) > 0.0) ||
-                        (m.type == MaterialType::kIllum && m.alternate < 0);
-    if (!passes) continue;
+    if (!familyOf(m).seeThrough(m)) continue;
     const Shape s = scene.surface(id);
     std::vector<Vec3> outline = polygonOutline(s, scene.vertices);
     if (outline.empty()) continue;

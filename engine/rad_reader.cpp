@@ -3,6 +3,7 @@
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/obj_reader.h"
+#include "engine/materials/family.h"
 #include "engine/polygon_split.h"
 #include "engine/rad_generators.h"
 #include "engine/rad_sky.h"
@@ -18,7 +19,6 @@
 namespace candela {
 
 namespace {
-constexpr double kMaxRadiance = 1e30;
 // Files included by generators (xform) nest at most this deep: a file that includes itself is
 // refused at this depth instead of recursing without end.
 constexpr int kMaxIncludeDepth = 32;
@@ -289,132 +289,23 @@ class SceneReader::Builder {
     patterns_.erase(p.name);
   }
 
-  void addMaterial(const Primitive& p, MaterialType type) {
+  void addMaterial(const Primitive& p, const MaterialFamily& family) {
     Material m;
     m.pattern = patternOf(p);
-    m.type = type;
-    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source &&
-        type != MaterialType::kLight && type != MaterialType::kIllum && type != MaterialType::kGlow)
+    m.type = family.type();
+    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source && !family.emits())
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
                   scene_.patterns[static_cast<size_t>(m.pattern)].name +
                   "', which candela applies to light, illum and glow only");
     m.name = p.name;
     m.loc = p.loc;
-    switch (type) {
-      case MaterialType::kPlastic:
-      case MaterialType::kMetal:
-        expectStrings(p, 0);
-        expectReals(p, 5);
-        m.color = vec(p, 0);
-        m.specularity = p.reals[3];
-        m.roughness = p.reals[4];
-        break;
-      case MaterialType::kTrans:
-        expectStrings(p, 0);
-        expectReals(p, 7);
-        m.color = vec(p, 0);
-        m.specularity = p.reals[3];
-        m.roughness = p.reals[4];
-        m.transmissivity = p.reals[5];
-        m.transmittedSpecular = p.reals[6];
-        break;
-      case MaterialType::kMirror:
-      case MaterialType::kIllum:
-      case MaterialType::kLight:
-        expectStrings(p, type == MaterialType::kLight ? 0 : 1);
-        if (p.type == "spotlight") {
-          // `mod spotlight id 0 0 7 red green blue angle xdir ydir zdir` (Radiance reference manual)
-          expectReals(p, 7);
-          if (!(p.reals[3] > 0.0 && p.reals[3] <= 360.0))
-            fail(p, "spotlight '" + p.name + "' needs a cone angle in (0, 360] degrees");
-          const Vec3 aim = vec(p, 4);
-          const double focal = glm::length(aim);
-          if (!(focal > 0.0)) fail(p, "spotlight '" + p.name + "' has a zero direction");
-          m.spot = true;
-          m.spotCosHalf = std::cos(p.reals[3] * kPi / 360.0);
-          m.spotAim = aim / focal;
-          m.spotFocalM = focal;
-        } else {
-          expectReals(p, 3);
-        }
-        m.color = vec(p, 0);
-        if (!p.strings.empty() && p.strings[0] != "void") {
-          const auto it = materials_.find(p.strings[0]);
-          if (it == materials_.end())
-            fail(p, "alternate material '" + p.strings[0] + "' of " + p.type + " '" + p.name +
-                             "' is not defined before use");
-          m.alternate = it->second;
-        }
-        break;
-      case MaterialType::kGlass:
-        expectStrings(p, 0);
-        if (p.reals.size() != 3 && p.reals.size() != 4)
-          fail(p, "glass '" + p.name + "' needs 3 or 4 real arguments, got " + std::to_string(p.reals.size()));
-        m.color = vec(p, 0);
-        if (p.reals.size() == 4) m.refractiveIndex = p.reals[3];
-        break;
-      case MaterialType::kDielectric:
-        // Radiance reference manual: "mod dielectric id 0 0 5 rtn gtn btn n hc", transmission
-        // per unit length (scene units: metres), refractive index, Hartmann constant.
-        expectStrings(p, 0);
-        expectReals(p, 5);
-        m.color = vec(p, 0);
-        m.refractiveIndex = p.reals[3];
-        m.hartmannConstant = p.reals[4];
-        for (int c = 0; c < 3; ++c)
-          if (!(m.color[c] > 0.0 && m.color[c] <= 1.0))
-            fail(p, "dielectric '" + p.name + "' needs a transmission per metre in (0, 1] for each channel");
-        if (!(m.refractiveIndex > 0.0))
-          fail(p, "dielectric '" + p.name + "' needs a refractive index > 0");
-        break;
-      case MaterialType::kGlow:
-        expectStrings(p, 0);
-        expectReals(p, 4);
-        m.color = vec(p, 0);
-        m.glowRadiusM = p.reals[3];
-        break;
-      case MaterialType::kVoid:
-        break;
-    }
-    for (int c = 0; c < 3; ++c)
-      if (m.color[c] < 0.0) fail(p, p.type + " '" + p.name + "' has a negative colour component");
-    checkPhysical(p, m);
+    const MaterialReadContext ctx{p, [this](const std::string& name) {
+                                    const auto it = materials_.find(name);
+                                    return it == materials_.end() ? -1 : it->second;
+                                  }};
+    family.read(ctx, m);
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     patterns_.erase(p.name);
-  }
-
-  // Materials that cannot exist are refused: they would create light or give nonsense, and an
-  // overflowing emitter gives NaN lux. A surface reflects and transmits at most what it receives
-  // (Radiance reference manual: plastic reflects colour·(1 − spec) diffusely and spec specularly;
-  // trans transmits a fraction trans of what is not reflected specularly).
-  void checkPhysical(const Primitive& p, const Material& m) {
-    const std::string what = p.type + " '" + p.name + "'";
-    const double cmax = std::max({m.color.x, m.color.y, m.color.z});
-    switch (m.type) {
-      case MaterialType::kPlastic:
-      case MaterialType::kMetal:
-      case MaterialType::kTrans:
-        if (cmax > 1.0) fail(p, what + " reflects more than it receives: a colour component above 1");
-        if (!(m.specularity >= 0.0 && m.specularity <= 1.0)) fail(p, what + " needs a specularity in [0, 1]");
-        if (m.roughness < 0.0) fail(p, what + " has a negative roughness");
-        if (m.type == MaterialType::kTrans &&
-            !(m.transmissivity >= 0.0 && m.transmissivity <= 1.0 && m.transmittedSpecular >= 0.0 &&
-              m.transmittedSpecular <= 1.0))
-          fail(p, what + " needs its transmission and transmitted specularity in [0, 1]");
-        break;
-      case MaterialType::kMirror:
-      case MaterialType::kGlass:
-        if (cmax > 1.0) fail(p, what + " transmits or reflects more than it receives: a component above 1");
-        break;
-      case MaterialType::kLight:
-      case MaterialType::kIllum:
-      case MaterialType::kGlow:
-        // 1e30 W/sr/m² is far above the sun's 2e7; beyond it the light would overflow in products.
-        if (cmax > kMaxRadiance) fail(p, what + " has a radiance above 1e30 W/sr/m2");
-        break;
-      default:
-        break;
-    }
   }
 
   // Geometry within 10 000 km of the origin: beyond, ray offsets and the accelerators' single
@@ -506,15 +397,7 @@ class SceneReader::Builder {
     const std::string& t = p.type;
     if (!p.integers.empty())
       fail(p, t + " '" + p.name + "' takes no integer arguments, got " + std::to_string(p.integers.size()));
-    if (t == "plastic") return addMaterial(p, MaterialType::kPlastic);
-    if (t == "metal") return addMaterial(p, MaterialType::kMetal);
-    if (t == "trans") return addMaterial(p, MaterialType::kTrans);
-    if (t == "mirror") return addMaterial(p, MaterialType::kMirror);
-    if (t == "glass") return addMaterial(p, MaterialType::kGlass);
-    if (t == "dielectric") return addMaterial(p, MaterialType::kDielectric);
-    if (t == "light" || t == "spotlight") return addMaterial(p, MaterialType::kLight);
-    if (t == "illum") return addMaterial(p, MaterialType::kIllum);
-    if (t == "glow") return addMaterial(p, MaterialType::kGlow);
+    if (const MaterialFamily* family = familyNamed(t)) return addMaterial(p, *family);
     if (t == "alias") return addAlias(p);
     if (isPatternType(t)) return addPattern(p);
     if (t == "mesh") return addMesh(p);
@@ -535,7 +418,7 @@ class SceneReader::Builder {
         fail(p, "source '" + p.name + "' needs an angle in (0, 360] degrees");
       if (mod < 0) return;  // void: invisible, as in Radiance
       const MaterialType mt = scene_.materials[mod].type;
-      if (mt != MaterialType::kLight && mt != MaterialType::kGlow && mt != MaterialType::kIllum)
+      if (!familyOf(mt).emits())
         fail(p, "source '" + p.name + "' needs a light, illum or glow modifier, not " + materialTypeName(mt));
       if (scene_.materials[mod].spot)
         fail(p, "source '" + p.name + "': a spotlight as a distant source is not supported (use light)");

@@ -5,7 +5,8 @@
 #include "engine/fresnel.h"
 #include "engine/integrator_direct.h"
 #include "engine/integrator_path.h"
-#include "engine/materials.h"
+#include "engine/materials/family.h"
+#include "engine/materials/normal.h"
 #include "engine/source_distribution.h"
 #include "engine/trace_context.h"
 
@@ -26,8 +27,8 @@ constexpr uint64_t kIrradianceStreamBase = 1ULL << 56;
 // Opaque and purely diffuse: all its reflected light is ρ E / π (no specular lobe, nothing
 // transmitted), so the irradiance estimate may stand in for a path.
 bool isMatteOpaque(const Material& m) {
-  return (m.type == MaterialType::kPlastic || m.type == MaterialType::kMetal) && photopic(m.specularReflectance) <= 0.0 &&
-         photopic(m.diffuseTransmittance) <= 0.0 && photopic(m.specularTransmittance) <= 0.0;
+  return familyOf(m).matteOpaque(m) && photopic(m.diffuseTransmittance) <= 0.0 &&
+         photopic(m.specularTransmittance) <= 0.0;
 }
 
 struct PixelValue {
@@ -180,40 +181,30 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   const Vec3 nf = front ? ng : -ng;
   const double off = Tracer::originOffset(x);
   const uint32_t flatSkip = isFlat(shape) ? h.shape : kNoShape;
-  if (m->type == MaterialType::kIllum) {
-    if (m->alternate < 0) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // invisible
-    m = &scene.materials[m->alternate];
-  }
-  switch (m->type) {
-    case MaterialType::kLight:
-    case MaterialType::kIllum:
-    case MaterialType::kGlow:
+  m = seenMaterial(scene.materials, *m);
+  if (!m) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // an illum, invisible
+  const MaterialFamily& family = familyOf(*m);
+  switch (family.role()) {
+    case HitRole::kEmit:
       if (!front) return Rgb(0.0);
       return m->pattern < 0 ? m->color : emittedRadiance(scene, *m, d, -glm::dot(d, nf));
-    case MaterialType::kVoid:
+    case HitRole::kAbsorb:
       return Rgb(0.0);
-    case MaterialType::kMirror:
-      return m->color * cameraRadiance(cr, x + off * nf, mirrorDirection(d, ng), flatSkip,
-                                       share * photopic(m->color), events + 1);
-    case MaterialType::kGlass: {
-      Rgb tr(0.0), rf(0.0);
-      thinGlass(m->color, m->refractiveIndex, glm::dot(d, ng), tr, rf);
-      return specularSplit(cr, tr, x - off * nf, d, rf, x + off * nf, mirrorDirection(d, ng), flatSkip, share, events);
+    case HitRole::kSpecular: {
+      // Every specular part followed (or one chosen: specularSplit), scaled by what the surface
+      // absorbs on the way.
+      const SpecularSplit sp = family.splitSpecular(*m, {d, ng, nf, front, h.t});
+      const double seen = sp.scaled ? share * photopic(sp.factor) : share;
+      auto origin = [&](const SpecularSplit::Part& part) { return part.transmitted ? x - off * nf : x + off * nf; };
+      Rgb value(0.0);
+      if (sp.count == 1)
+        value = cameraRadiance(cr, origin(sp.parts[0]), sp.parts[0].dir, flatSkip, seen, events + 1);
+      else if (sp.count == 2)
+        value = specularSplit(cr, sp.parts[0].weight, origin(sp.parts[0]), sp.parts[0].dir, sp.parts[1].weight,
+                              origin(sp.parts[1]), sp.parts[1].dir, flatSkip, seen, events);
+      return sp.scaled ? sp.factor * value : value;
     }
-    case MaterialType::kDielectric: {
-      Rgb absorbed(1.0);
-      if (!front) absorbInDielectric(*m, h.t, absorbed);
-      const double eta = front ? m->refractiveIndex : 1.0 / m->refractiveIndex;
-      const Fresnel f = fresnel(-glm::dot(d, nf), eta);
-      const double r = f.unpolarised();
-      const Vec3 refl = mirrorDirection(d, nf);
-      if (f.tir || r >= 1.0)
-        return absorbed * cameraRadiance(cr, x + off * nf, refl, flatSkip, share * photopic(absorbed), events + 1);
-      return absorbed * specularSplit(cr, Rgb(r), x + off * nf, refl, Rgb(1.0 - r), x - off * nf,
-                                      refractDirection(d, nf, eta, f.cosT), flatSkip,
-                                      share * photopic(absorbed), events);
-    }
-    default:
+    case HitRole::kScatter:
       break;
   }
   // plastic, metal, trans.

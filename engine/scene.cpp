@@ -5,53 +5,6 @@
 
 namespace candela {
 
-const char* materialTypeName(MaterialType t) {
-  switch (t) {
-    case MaterialType::kVoid: return "void";
-    case MaterialType::kPlastic: return "plastic";
-    case MaterialType::kMetal: return "metal";
-    case MaterialType::kTrans: return "trans";
-    case MaterialType::kMirror: return "mirror";
-    case MaterialType::kGlass: return "glass";
-    case MaterialType::kDielectric: return "dielectric";
-    case MaterialType::kLight: return "light";
-    case MaterialType::kIllum: return "illum";
-    case MaterialType::kGlow: return "glow";
-  }
-  return "?";
-}
-
-void deriveMaterial(Material& m) {
-  // Radiance reference manual ("Materials"): plastic's diffuse part is colour·(1 − spec) and its
-  // specular part uncoloured spec; metal's specular part takes the colour; trans splits the
-  // non-specular light into reflected (1 − trans), diffusely transmitted trans·(1 − tspec) and
-  // specularly transmitted trans·tspec.
-  const double s = m.specularity;
-  switch (m.type) {
-    case MaterialType::kPlastic:
-      m.diffuseReflectance = m.color * (1.0 - s);
-      m.specularReflectance = Rgb(s);
-      break;
-    case MaterialType::kMetal:
-      m.diffuseReflectance = m.color * (1.0 - s);
-      m.specularReflectance = m.color * s;
-      break;
-    case MaterialType::kTrans: {
-      const Rgb nonSpec = m.color * (1.0 - s);
-      m.diffuseReflectance = nonSpec * (1.0 - m.transmissivity);
-      m.diffuseTransmittance = nonSpec * m.transmissivity * (1.0 - m.transmittedSpecular);
-      m.specularTransmittance = nonSpec * m.transmissivity * m.transmittedSpecular;
-      m.specularReflectance = Rgb(s);
-      break;
-    }
-    case MaterialType::kMirror:
-      m.specularReflectance = m.color;
-      break;
-    default:
-      break;
-  }
-}
-
 Vec3 newellNormal(const std::vector<Vec3>& pts) {
   Vec3 n(0.0);
   for (size_t i = 0; i < pts.size(); ++i) n += glm::cross(pts[i], pts[(i + 1) % pts.size()]);

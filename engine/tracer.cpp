@@ -4,7 +4,7 @@
 #include "engine/fresnel.h"
 #include "engine/integrator_path.h"
 #include "engine/irradiance_estimator.h"
-#include "engine/materials.h"
+#include "engine/materials/family.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
 #include "engine/trace_context.h"
@@ -65,9 +65,7 @@ Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
     : scene_(scene), accel_(std::move(accelerator)), sources_(collectSampledSources(scene)) {
   if (scene.sky) portals_ = PortalSet(scene);
   for (const Material& m : scene.materials)
-    if (m.type == MaterialType::kGlass || m.type == MaterialType::kIllum ||
-        (m.type == MaterialType::kTrans && photopic(m.specularTransmittance) > 0.0))
-      hasTransmitters_ = true;
+    if (familyOf(m).mayPassShadowRays(m)) hasTransmitters_ = true;
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
@@ -98,20 +96,17 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     const Shape s = scene_.surface(h.shape);  // a shape or a mesh triangle
     const Material& m = scene_.materials[s.material];
     const Vec3 x = o + h.t * dir;
-    if (m.type == MaterialType::kGlass) {
-      Rgb tr, rf;
-      thinGlass(m.color, m.refractiveIndex, glm::dot(dir, shapeNormal(s, x)), tr, rf);
-      t *= tr;
-      if (firstGlass == kNoShape) firstGlass = h.shape;
-    } else if (m.type == MaterialType::kTrans) {
-      t *= m.specularTransmittance;
-    } else if (!(m.type == MaterialType::kIllum && m.alternate < 0)) {
-      // Opaque (an illum with no alternate is invisible to all but its own rays). A dielectric
-      // is opaque here too: it bends light, so no straight shadow ray passes it (as Radiance's
-      // source rays); paths find what lies behind it (pathRadiance).
+    const MaterialFamily& family = familyOf(m);
+    // Glass and trans let their straight part through; an illum with no alternate is invisible
+    // to all but its own rays; all else is opaque (a dielectric too: it bends light, so no
+    // straight shadow ray passes it, as Radiance's source rays; paths find what lies behind it).
+    const std::optional<Rgb> through = family.straightTransmittance(m, dir, shapeNormal(s, x));
+    if (!through) {
       firstGlass = kNoShape;
       return Rgb(0.0);
     }
+    t *= *through;
+    if (family.isGlazing() && firstGlass == kNoShape) firstGlass = h.shape;
     if (photopic(t) <= 0.0) {
       firstGlass = kNoShape;
       return Rgb(0.0);
@@ -198,6 +193,6 @@ void Tracer::sunCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, 
   estimateIrradiance(*this, p, n, pointIndex, coefficientSettings(s), in);
 }
 
-bool Tracer::cacheable(const Material& m) { return isCacheable(m); }
+bool Tracer::cacheable(const Material& m) { return familyOf(m).cacheable(m); }
 
 }  // namespace candela

@@ -1,5 +1,6 @@
 #include "study/blinds.h"
 
+#include "engine/materials/family.h"
 #include "engine/fresnel.h"
 
 namespace candela {
@@ -17,7 +18,7 @@ void closeGlass(Material& m, double blindsTransmittance) {
 int closeBlinds(Scene& scene) {
   int changed = 0;
   for (Material& m : scene.materials) {
-    if (m.type != MaterialType::kGlass) continue;
+    if (!familyOf(m).isGlazing()) continue;
     closeGlass(m, kBlindsTransmittance);
     ++changed;
   }

@@ -1,7 +1,7 @@
 #include "study/luminaire_schedule.h"
 
 #include "base/units.h"
-#include "engine/fresnel.h"
+#include "engine/materials/family.h"
 #include "metrics/power_density.h"
 #include "photometry/luminaire_summary.h"
 
@@ -172,10 +172,9 @@ std::vector<SurfaceMaterialReport> surfaceMaterials(const Scene& scene) {
   auto use = [&](uint32_t material, std::size_t n) {
     if (material >= scene.materials.size()) return;
     const Material& m = scene.materials[material];
-    if (m.type == MaterialType::kIllum) {
-      if (m.alternate < 0) return;
-      material = static_cast<uint32_t>(m.alternate);
-    }
+    const Material* seen = seenMaterial(scene.materials, m);
+    if (!seen) return;
+    material = static_cast<uint32_t>(seen - scene.materials.data());
     surfaces[material] += n;
   };
   for (uint32_t i = 0; i < scene.shapes.size(); ++i)
@@ -189,30 +188,16 @@ std::vector<SurfaceMaterialReport> surfaceMaterials(const Scene& scene) {
   std::vector<SurfaceMaterialReport> out;
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
-    if (surfaces[i] == 0 || m.isEmitter() || m.type == MaterialType::kVoid) continue;
+    const MaterialFamily& family = familyOf(m);
+    if (surfaces[i] == 0 || family.emits() || family.role() == HitRole::kAbsorb) continue;
     SurfaceMaterialReport r;
     r.material = m.name;
-    r.type = materialTypeName(m.type);
+    r.type = family.name();
     r.surfaces = surfaces[i];
-    switch (m.type) {
-      case MaterialType::kGlass: {
-        // Thin glass at normal incidence, its multiple reflections included (engine/fresnel.h).
-        Rgb trans(0.0), refl(0.0);
-        thinGlass(m.color, m.refractiveIndex, 1.0, trans, refl);
-        r.reflectance = r.specularReflectance = photopic(refl);
-        r.transmittance = photopic(trans);
-        break;
-      }
-      case MaterialType::kDielectric:
-        // One boundary at normal incidence; what passes depends on the path inside.
-        r.reflectance = r.specularReflectance = fresnelReflectance(1.0, m.refractiveIndex);
-        break;
-      default:
-        r.reflectance = photopic(m.diffuseReflectance + m.specularReflectance);
-        r.specularReflectance = photopic(m.specularReflectance);
-        if (m.type == MaterialType::kTrans) r.transmittance = photopic(m.diffuseTransmittance + m.specularTransmittance);
-        break;
-    }
+    const NormalIncidence n = family.normalIncidence(m);
+    r.reflectance = n.reflectance;
+    r.specularReflectance = n.specularReflectance;
+    r.transmittance = n.transmittance;
     out.push_back(std::move(r));
   }
   return out;

@@ -9,6 +9,7 @@
 #include <span>
 #include <tuple>
 
+#include "engine/materials/family.h"
 #include "reports/plan_svg.h"
 
 namespace candela {
@@ -19,19 +20,11 @@ namespace {
 enum class Role { kNone, kOpaque, kGlazing };
 
 Role roleOf(const Material& m) {
-  switch (m.type) {
-    case MaterialType::kVoid:   // invisible
-    case MaterialType::kLight:  // a luminaire's or a source's own geometry
-    case MaterialType::kGlow:
-      return Role::kNone;
-    case MaterialType::kGlass:
-    case MaterialType::kDielectric:
-    case MaterialType::kTrans:
-    case MaterialType::kIllum:  // mkillum's windows
-      return Role::kGlazing;
-    default:
-      return Role::kOpaque;
-  }
+  const MaterialFamily& family = familyOf(m);
+  if (family.transmitting()) return Role::kGlazing;  // illum too: mkillum's windows
+  // void is invisible; light and glow surfaces are a luminaire's or a source's own geometry.
+  if (family.role() == HitRole::kAbsorb || family.emits()) return Role::kNone;
+  return Role::kOpaque;
 }
 
 // A flat surface of the scene: its vertices (m) in order, unit normal and role.

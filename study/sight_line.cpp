@@ -1,28 +1,21 @@
 #include "study/sight_line.h"
 
 #include "base/units.h"
+#include "engine/materials/family.h"
 #include "engine/shapes.h"
 
 namespace candela {
 
 bool seenThrough(const Scene& scene, const Material& m) {
-  switch (m.type) {
-    case MaterialType::kGlass:
-      return photopic(m.color) >= kSeeThroughMinTransmittance;
-    case MaterialType::kTrans:
-      return photopic(m.specularTransmittance) >= kSeeThroughMinTransmittance;
-    case MaterialType::kDielectric:
-      return true;
-    case MaterialType::kIllum:
-      if (m.alternate < 0) return true;
-      // An illum's alternate is never another illum's (the reader resolves it to a material
-      // defined before), so this recursion ends.
-      return m.alternate < static_cast<int>(scene.materials.size()) &&
-             scene.materials[m.alternate].type != MaterialType::kIllum &&
-             seenThrough(scene, scene.materials[m.alternate]);
-    default:
-      return false;
+  // An illum is seen as its alternate, or not at all. An illum's alternate is never another
+  // illum's (the reader resolves it to a material defined before), so this recursion ends.
+  if (const std::optional<int> other = familyOf(m).seenInstead(m)) {
+    if (*other < 0) return true;
+    if (*other >= static_cast<int>(scene.materials.size())) return false;
+    const Material& alt = scene.materials[static_cast<size_t>(*other)];
+    return !familyOf(alt).seenInstead(alt) && seenThrough(scene, alt);
   }
+  return familyOf(m).viewTransmittance(m) >= kSeeThroughMinTransmittance;
 }
 
 SightLine traceSightLine(const Tracer& tracer, const Vec3& o, const Vec3& dir, double tMax, uint64_t& rays) {

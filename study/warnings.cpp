@@ -324,7 +324,7 @@ void checkErrorBars(const Tracer& tracer, const SensorSet& set, const double* lu
   std::vector<uint32_t> glows;
   for (uint32_t i = 0; i < scene.shapes.size() && glows.size() < kGlowShapesChecked; ++i) {
     const Material& m = scene.materials[scene.shapes[i].material];
-    if (m.type == MaterialType::kGlow && photopic(m.color) > 0.0) glows.push_back(i);
+    if (m.isEmitter() && !m.isSampledSource() && photopic(m.color) > 0.0) glows.push_back(i);  // glows
   }
   if (glows.empty()) return;
   const std::vector<SensorPoint>& pts = *set.points;

@@ -1,6 +1,7 @@
 #include "study/window_groups.h"
 
 #include "base/error.h"
+#include "engine/materials/family.h"
 #include "metrics/window_groups.h"
 #include "study/blinds.h"
 #include "study/surface_grids.h"
@@ -12,7 +13,7 @@ namespace candela {
 namespace {
 
 bool isGlazing(const Scene& scene, uint32_t id) {
-  return scene.materials[scene.surfaceMaterial(id)].type == MaterialType::kGlass;
+  return familyOf(scene.materials[scene.surfaceMaterial(id)]).isGlazing();
 }
 
 // Adds surface `id`'s name to the group's list unless it is the last one added (mesh runs share

@@ -1,0 +1,175 @@
+// The material seam: one family of Radiance materials (the types that behave alike where a ray
+// meets them) behind one interface, as Radiance's own type table (ofun[]) does. A family says how
+// its primitive is read, what reflectance and transmittance parts it derives, and what a surface
+// of it does at a hit: absorb, emit, pass a straight (shadow) ray, send a path on specularly, or
+// scatter at a diffuse vertex. The integrators and the study ask the family; none tests a type.
+// Families are listed in one table (engine/materials/registry.cpp), one family a file beside this.
+#pragma once
+
+#include "base/rng.h"
+#include "engine/materials/material.h"
+#include "engine/rad_parse.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace candela {
+
+// What a ray that is not a shadow ray finds at a surface of the family.
+enum class HitRole {
+  kAbsorb,    // void: nothing is seen, the path ends
+  kEmit,      // light, spotlight, illum, glow: the radiance it sends back
+  kSpecular,  // mirror, glass, dielectric: the path goes on, with no diffuse vertex
+  kScatter,   // plastic, metal, trans: a diffuse vertex (diffuse, glossy and transmitted parts)
+};
+
+// A surface met along unit d: geometric normal ng, nf = ng turned to face the ray, front when
+// the ray meets ng's side, t the distance travelled to it (m).
+struct SurfaceHit {
+  Vec3 d{0.0}, ng{0.0}, nf{0.0};
+  bool front = true;
+  double t = 0.0;
+};
+
+// One sampled specular event of a path (its weight is multiplied into the path's throughput).
+struct SpecularSample {
+  enum class Kind {
+    kAbsorbed,  // the path ends
+    kMirror,    // a mirror's reflection (its virtual sources were sampled: engine/lights.h)
+    kStraight,  // straight on through the surface (thin glass): the ray's state is kept
+    kReflected, // reflected (glass)
+    kBent,      // a dielectric's reflection or refraction
+  };
+  Kind kind = Kind::kAbsorbed;
+  Vec3 dir{0.0};
+  bool transmitted = false;  // leaves on the far side of the surface
+};
+
+// Every specular part at once, for the camera (engine/render.cpp), which follows each of them:
+// factor × Σ weight_i L(dir_i); `scaled` false when the factor is exactly 1.
+struct SpecularSplit {
+  struct Part {
+    Rgb weight{0.0};
+    Vec3 dir{0.0};
+    bool transmitted = false;
+  };
+  Rgb factor{1.0};
+  bool scaled = false;
+  int count = 0;
+  Part parts[2];
+};
+
+// Mirror direction of d about unit normal n.
+inline Vec3 mirrorDirection(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
+
+// Photopic fractions of the light arriving along the normal.
+struct NormalIncidence {
+  double reflectance = 0.0, specularReflectance = 0.0;
+  std::optional<double> transmittance;  // families that let light through as they report it
+};
+
+// What a family's reader gets: the primitive and the materials defined before it.
+struct MaterialReadContext {
+  const RadPrimitive& primitive;
+  // The index of the material named so far (-1: not defined): illum's alternate.
+  std::function<int(const std::string&)> findMaterial;
+
+  [[noreturn]] void fail(const std::string& message) const;
+  // "TYPE 'NAME'", the start of every message about the primitive.
+  std::string what() const;
+  void expectReals(size_t n) const;
+  void expectStrings(size_t maxN) const;
+  Vec3 vec(size_t i) const;
+  // Refuses a negative colour component.
+  void expectNonNegative(const Rgb& color) const;
+  // Refuses an emitter's radiance with a negative component or above 1e30 W/sr/m² (far above the
+  // sun's 2e7; beyond it the light would overflow in products).
+  void expectRadiance(const Rgb& radiance) const;
+  // The alternate material the first string argument names (-1: none or void).
+  int alternate() const;
+};
+
+class MaterialFamily {
+ public:
+  virtual ~MaterialFamily() = default;
+
+  virtual MaterialType type() const = 0;
+  // Radiance's name of the type.
+  virtual const char* name() const = 0;
+  virtual HitRole role() const = 0;
+
+  // Reads the primitive's arguments into m (its type, name, location and pattern are set) and
+  // refuses what cannot exist (more light out than in, a radiance that would overflow).
+  virtual void read(const MaterialReadContext& ctx, Material& m) const = 0;
+  // The reflectance and transmittance parts the integrators use, from the arguments (Radiance's
+  // definitions); nothing for families that have none.
+  virtual void derive(Material& /*m*/) const {}
+
+  // Emits light; and among emitters, is sampled explicitly as a light source (glow is not: it is
+  // found by the hemisphere's rays).
+  virtual bool emits() const { return false; }
+  virtual bool sampledSource() const { return false; }
+  // The material non-shadow rays see instead (illum: its alternate, -1 meaning none, so the ray
+  // passes straight on); nullopt: the material itself.
+  virtual std::optional<int> seenInstead(const Material& /*m*/) const { return std::nullopt; }
+
+  // Shadow rays (Tracer::transmittance): whether surfaces of m may let a straight ray through
+  // (the tracer then walks its shadow rays hit by hit), and the fraction they let through along
+  // unit dir (geometric normal ng): nullopt when opaque.
+  virtual bool mayPassShadowRays(const Material& /*m*/) const { return false; }
+  virtual std::optional<Rgb> straightTransmittance(const Material& /*m*/, const Vec3& /*dir*/,
+                                                   const Vec3& /*ng*/) const {
+    return std::nullopt;
+  }
+  // Whether the sky is seen straight through surfaces of m (guides sky sampling as a portal:
+  // engine/portals.h), and whether they are window glazing (the annual study's window groups and
+  // blinds name the glass a beam came through).
+  virtual bool seeThrough(const Material& /*m*/) const { return false; }
+  virtual bool isGlazing() const { return false; }
+  // Flat surfaces of the family reflect the light sources as virtual sources, which the direct
+  // integrator samples (engine/lights.h); such surfaces are kept as shapes, never mesh triangles.
+  virtual bool mirrorsSources() const { return false; }
+  // Surfaces of the family let light through (drawn as glazing on plans): glass, dielectric,
+  // trans, illum (mkillum's windows).
+  virtual bool transmitting() const { return false; }
+  // The photopic fraction of a view seen straight through a surface of m (sight lines: what an
+  // observer sees past it); 0 for opaque families. illum: see seenMaterial.
+  virtual double viewTransmittance(const Material& /*m*/) const { return 0.0; }
+  // Reflectance and transmittance at normal incidence (photopic), for the report's material
+  // table: by default the derived reflectance ρ_d + ρ_s and no transmittance.
+  virtual NormalIncidence normalIncidence(const Material& m) const;
+
+  // kScatter: whether the irradiance cache may serve its diffuse reflection (opaque, diffusely
+  // reflecting), and whether all it reflects is ρE/π (no lobe, nothing transmitted), so that an
+  // irradiance estimate may stand in for a path.
+  virtual bool cacheable(const Material& /*m*/) const { return false; }
+  virtual bool matteOpaque(const Material& /*m*/) const { return false; }
+
+  // kSpecular: one sampled event (paths), or every part at once (the camera).
+  virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,
+                                        Rgb& /*beta*/) const {
+    return {};
+  }
+  virtual SpecularSplit splitSpecular(const Material& /*m*/, const SurfaceHit& /*h*/) const { return {}; }
+};
+
+// The family of a material type, and the family a Radiance type name reads (nullptr: no family;
+// "spotlight" reads as light).
+const MaterialFamily& familyOf(MaterialType type);
+inline const MaterialFamily& familyOf(const Material& m) { return familyOf(m.type); }
+const MaterialFamily* familyNamed(std::string_view radianceType);
+// The Radiance types the families read, comma-separated (for messages).
+std::string materialTypeNames();
+
+// What non-shadow rays see of `m` among `materials`: m itself, illum's alternate, or nullptr
+// (an illum with no alternate: rays pass straight on).
+inline const Material* seenMaterial(const std::vector<Material>& materials, const Material& m) {
+  const std::optional<int> other = familyOf(m).seenInstead(m);
+  if (!other) return &m;
+  return *other < 0 ? nullptr : &materials[static_cast<size_t>(*other)];
+}
+
+}  // namespace candela

@@ -1,0 +1,74 @@
+// A material as read from a scene: its Radiance type, its arguments and the reflectance and
+// transmittance parts its family derives from them (engine/materials/family.h). What a surface of
+// the material does where a ray meets it is its family's to say, never the integrators'.
+#pragma once
+
+#include "base/error.h"
+#include "base/math.h"
+#include "base/units.h"
+
+#include <string>
+
+namespace candela {
+
+// The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
+enum class MaterialType { kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow };
+inline constexpr int kMaterialTypeCount = 10;
+
+// Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
+const char* materialTypeName(MaterialType t);
+
+// A material as read from the scene, with the derived reflectances the integrators use.
+// Colours are Radiance RGB; emission is a radiance in W/sr/m² (179 lm/W).
+struct Material {
+  MaterialType type = MaterialType::kVoid;
+  std::string name;
+  FileLoc loc;
+  Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
+                         // dielectric transmission per metre of path inside (fraction, per channel)
+  double specularity = 0.0;   // plastic, metal, trans (fraction)
+  double roughness = 0.0;     // plastic, metal, trans (rms slope)
+  double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
+  double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
+  double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)
+  double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
+  double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
+  int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
+  // spotlight (a `light` with a cone, Radiance reference manual "Spotlight"): light leaves only
+  // within spotCosHalf of spotAim (unit); the aim's length as given is the focal distance behind
+  // the source, which scales the direct light at distance d by d²/(d + focal)² (Radiance
+  // src/rt/source.c). spot false: an ordinary light.
+  bool spot = false;
+  double spotCosHalf = -1.0;
+  Vec3 spotAim{0.0, 0.0, -1.0};
+  double spotFocalM = 0.0;
+  int pattern = -1;                  // the pattern modifying it that candela implements
+                                     // (index into Scene::patterns; -1: none)
+  // Derived (Radiance's definitions of plastic, metal and trans):
+  Rgb diffuseReflectance{0.0};
+  Rgb diffuseTransmittance{0.0};
+  Rgb specularTransmittance{0.0};
+  Rgb specularReflectance{0.0};
+
+  // The spotlight's factor for light leaving towards unit direction `out` to a receiver at
+  // distance d (1 for other materials): 0 outside the cone, d²/(d + focal)² inside.
+  double spotFactor(const Vec3& out, double d) const {
+    if (!spot) return 1.0;
+    if (glm::dot(spotAim, out) < spotCosHalf) return 0.0;
+    const double r = d / (d + spotFocalM);
+    return r * r;
+  }
+  // Whether light leaves towards `out` at all (rays that meet the source see its radiance inside
+  // the cone, black outside, as Radiance's srcvalue).
+  bool emitsTowards(const Vec3& out) const { return !spot || glm::dot(spotAim, out) >= spotCosHalf; }
+
+  // Emits light (light, spotlight, illum, glow): its family's word.
+  bool isEmitter() const;
+  // Light sources sampled explicitly (light, illum); glow is found by hemisphere sampling.
+  bool isSampledSource() const;
+};
+
+// Fills a material's derived reflectances from its type and parameters (its family's derive).
+void deriveMaterial(Material& m);
+
+}  // namespace candela

@@ -1,0 +1,65 @@
+#include "engine/materials/normal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace candela {
+
+bool NormalFamily::cacheable(const Material& m) const {
+  return photopic(m.diffuseReflectance) > 0.0 && photopic(m.diffuseTransmittance) <= 0.0 &&
+         photopic(m.specularTransmittance) <= 0.0;
+}
+
+void NormalFamily::readCommon(const MaterialReadContext& ctx, Material& m, size_t reals) {
+  // Radiance reference manual: "mod plastic id 0 0 5 red green blue spec rough" (metal alike),
+  // "mod trans id 0 0 7 red green blue spec rough trans tspec".
+  ctx.expectStrings(0);
+  ctx.expectReals(reals);
+  const RadPrimitive& p = ctx.primitive;
+  m.color = ctx.vec(0);
+  m.specularity = p.reals[3];
+  m.roughness = p.reals[4];
+  if (reals == 7) {
+    m.transmissivity = p.reals[5];
+    m.transmittedSpecular = p.reals[6];
+  }
+  // A surface reflects and transmits at most what it receives.
+  ctx.expectNonNegative(m.color);
+  const std::string what = ctx.what();
+  if (std::max({m.color.x, m.color.y, m.color.z}) > 1.0)
+    ctx.fail(what + " reflects more than it receives: a colour component above 1");
+  if (!(m.specularity >= 0.0 && m.specularity <= 1.0)) ctx.fail(what + " needs a specularity in [0, 1]");
+  if (m.roughness < 0.0) ctx.fail(what + " has a negative roughness");
+  if (reals == 7 && !(m.transmissivity >= 0.0 && m.transmissivity <= 1.0 && m.transmittedSpecular >= 0.0 &&
+                      m.transmittedSpecular <= 1.0))
+    ctx.fail(what + " needs its transmission and transmitted specularity in [0, 1]");
+}
+
+bool sampleWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) {
+  // Radiance's isotropic Ward lobe, exp(−tan² δ/α²)/(4π α² √(cos θ_i cos θ_o)) for roughness α,
+  // sampled by its half vector h (tan² δ = −α² ln u, φ uniform: Ward 1992; Walter 2005, "Notes
+  // on the Ward BRDF"). As Radiance's sampled specular rays do, a direction below the surface is
+  // drawn again (up to 8 times, then the sample is lost). Roughness 0 is the mirror direction.
+  const Vec3 wi = -inDir;
+  if (glm::dot(wi, nf) <= 0.0) return false;
+  out = Vec3(0.0);
+  const double alpha = m.roughness;
+  if (alpha <= 0.0) {
+    out = inDir - 2.0 * glm::dot(inDir, nf) * nf;
+    return true;
+  }
+  const Frame frame = Frame::fromNormal(nf);
+  bool ok = false;
+  for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
+    const double u1 = rng.uniform(), u2 = rng.uniform();
+    const double tan2 = -alpha * alpha * std::log(std::max(1e-300, 1.0 - u1));
+    const double cosD = 1.0 / std::sqrt(1.0 + tan2), sinD = std::sqrt(std::max(0.0, 1.0 - cosD * cosD));
+    const double phi = kTwoPi * u2;
+    const Vec3 h = frame.toWorld(Vec3(sinD * std::cos(phi), sinD * std::sin(phi), cosD));
+    out = 2.0 * glm::dot(wi, h) * h - wi;
+    ok = glm::dot(out, nf) > 0.0;
+  }
+  return ok;
+}
+
+}  // namespace candela

@@ -1,0 +1,19 @@
+// The families the registry lists (engine/materials/registry.cpp), one a file in this folder.
+#pragma once
+
+#include "engine/materials/family.h"
+
+namespace candela {
+
+const MaterialFamily& voidFamily();
+const MaterialFamily& plasticFamily();
+const MaterialFamily& metalFamily();
+const MaterialFamily& transFamily();
+const MaterialFamily& mirrorFamily();
+const MaterialFamily& glassFamily();
+const MaterialFamily& dielectricFamily();
+const MaterialFamily& lightFamily();
+const MaterialFamily& illumFamily();
+const MaterialFamily& glowFamily();
+
+}  // namespace candela
