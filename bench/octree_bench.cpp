@@ -36,7 +36,11 @@ Fixture& fixture(int count, int setSize) {
   if (f) return *f;
   f = std::make_unique<Fixture>();
   Rng rng(42, static_cast<uint64_t>(count));
-  const uint32_t mat = f->scene.addMaterial(Material{MaterialType::kPlastic, "grey", {}, Rgb(0.5)});
+  Material grey;
+  grey.type = MaterialType::kPlastic;
+  grey.name = "grey";
+  grey.color = Rgb(0.5);
+  const uint32_t mat = f->scene.addMaterial(grey);
   for (int i = 0; i < count; ++i) {
     const Vec3 c(rng.uniform() * kCubeM, rng.uniform() * kCubeM, rng.uniform() * kCubeM);
     std::vector<Vec3> v;

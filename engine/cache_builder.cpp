@@ -8,6 +8,7 @@
 #include "engine/sensors.h"
 #include "engine/trace_context.h"
 #include "engine/tracer.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
 #include <cstring>
@@ -23,15 +24,15 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Random streams of phase A (record radii) and phase B (record values), apart from the points'.
-constexpr uint64_t kRadiusStream = 0x5000000000000000ULL;
-constexpr uint64_t kRecordStream = 0x6000000000000000ULL;
+constexpr uint64_t kRadiusStream = streams::kRecordRadii.first;
+constexpr uint64_t kRecordStream = streams::kRecords.first;
 // The second level's (two-level cache).
-constexpr uint64_t kRadiusStream2 = 0x5800000000000000ULL;
-constexpr uint64_t kRecordStream2 = 0x7000000000000000ULL;
+constexpr uint64_t kRadiusStream2 = streams::kRecordRadii2.first;
+constexpr uint64_t kRecordStream2 = streams::kRecords2.first;
 
 // A record's hemisphere directions come from a stream of their own (its value stream + this),
 // so that the second level's phase A (recordQueries) traces exactly the directions phase B will.
-constexpr uint64_t kRecordDirectionOffset = 1ULL << 56;
+constexpr uint64_t kRecordDirectionOffset = streams::kRecordDirectionOffset;
 
 int recordThetaStrata(const TraceSettings& s) {
   return std::max(1, static_cast<int>(std::lround(std::sqrt(s.cache.recordSamples / kPi))));

@@ -4,6 +4,7 @@
 #include "base/parallel.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
+#include "engine/random_streams.h"
 
 #include <Eigen/Dense>
 
@@ -181,7 +182,7 @@ std::vector<float> directSunRows(const Tracer& tracer, const SensorBlock& block,
   const double cosMax = std::cos(0.5 * degToRad(kSunDiameterDeg));
   const Strata2D strata(std::max(1, samples));
   // Its own streams, apart from the points' (which the sky coefficients use).
-  constexpr uint64_t kSunStream = 0x2000000000000000ULL;
+  constexpr uint64_t kSunStream = streams::kSuns.first;
   distributedRows(distribution, out, row, ItemUse::kResult, threads, [&](size_t i) {
     Rng rng(seed, kSunStream + block.firstIndex + i);
     const Vec3& p = positions[i];

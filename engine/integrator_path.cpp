@@ -3,6 +3,7 @@
 #include "engine/integrator_direct.h"
 #include "engine/materials/family.h"
 #include "engine/materials/normal.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
 #include "engine/source_distribution.h"
@@ -270,12 +271,16 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
-    m = seenMaterial(scene.materials, *m);
-    if (!m) {  // an illum with no alternate, invisible to non-shadow rays: pass straight through
+    m = scene.functions ? resolved(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patterns(), ctx.rng)
+                        : seenMaterial(scene.materials, *m);
+    if (!m) {  // an illum with no alternate or a void in a mixture: pass straight through
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
       continue;
     }
+    std::optional<Material> patternedHere;  // the hook's copy when patterns modify m (no string copied)
+    if (hasFunctionPattern(scene, *m))
+      m = &patterned(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patterns(), patternedHere.emplace());
     const MaterialFamily& family = familyOf(*m);
     switch (family.role()) {
       case HitRole::kEmit:
@@ -283,6 +288,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
           return (st.countSources && v.front) ? result + ray.beta * emitted(scene, *m, v) : result;
         return v.front && countsGlow(ctx, *m, h.shape, st) ? result + ray.beta * emitted(scene, *m, v) : result;
       case HitRole::kAbsorb:
+      case HitRole::kMix:  // resolved above
         return result;
       case HitRole::kSpecular:
         if (!followSpecular(ctx, *m, v, ray, st)) return result;

@@ -7,6 +7,7 @@
 #include "engine/irradiance_cache.h"
 #include "engine/response.h"
 #include "engine/tracer.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ struct SkyTally;
 
 // The stream of a point's hemisphere directions under the cache method, apart from its other
 // samples, so that phase A (cacheQueries) traces exactly the directions evaluation will.
-inline constexpr uint64_t kDirectionStream = 0x4000000000000000ULL;
+inline constexpr uint64_t kDirectionStream = streams::kDirections.first;
 
 // The hemisphere's M × N strata for s.hemisphereSamples rays (N ≈ πM).
 inline int hemisphereThetaStrata(const TraceSettings& s) {

@@ -5,6 +5,7 @@
 #include "engine/obj_reader.h"
 #include "engine/materials/family.h"
 #include "engine/polygon_split.h"
+#include "engine/radiance/function_patterns.h"
 #include "engine/rad_generators.h"
 #include "engine/rad_sky.h"
 #include "engine/source_distribution.h"
@@ -23,9 +24,11 @@ namespace {
 // refused at this depth instead of recursing without end.
 constexpr int kMaxIncludeDepth = 32;
 
-constexpr const char* kSupported =
-    "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source, mesh (of an OBJ file); "
-    "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow; alias; patterns: see docs/engine.md";
+// The types read, for the message that refuses another: the materials are the registry's.
+std::string supportedTypes() {
+  return "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source, mesh (of an OBJ file); " +
+         materialTypeNames() + ", mixfunc; alias; patterns: see docs/engine.md";
+}
 
 using Primitive = RadPrimitive;
 }  // namespace
@@ -225,7 +228,38 @@ class SceneReader::Builder {
     return p.strings[it->second];
   }
 
+  // The first pattern candela implements along a modifier's chain (-1: none).
+  int patternAlong(std::string name) {
+    for (;;) {
+      if (name == "void") return -1;
+      const auto pt = patterns_.find(name);
+      if (pt == patterns_.end()) return -1;  // a material: the caller's own rule refuses it
+      if (pt->second.pattern >= 0) return pt->second.pattern;
+      name = pt->second.base;
+    }
+  }
+
   void addPattern(const Primitive& p) {
+    std::string unreadable;  // why a function pattern could not be read (--patterns base)
+    if (!implementedPattern(p) && isFunctionPattern(p)) {
+      if (p.modifier != "void" && !patterns_.count(p.modifier))
+        fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not a pattern defined before use");
+      try {
+        const int index = static_cast<int>(scene_.patterns.size());
+        if (p.type == "mixfunc") return addMixture(p, index);
+        scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, patternAlong(p.modifier)));
+        scene_.functions = functionFiles_.program();
+        patterns_[p.name] = PatternEntry{index, p.modifier};
+        materials_.erase(p.name);
+        return;
+      } catch (const InputError& e) {
+        if (options_.patterns == PatternPolicy::kRefuse)
+          throw InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
+                                        (p.type == "mixfunc" ? "s it mixes" : " it modifies") +
+                                        " unmodified, with a warning");
+        unreadable = " (" + e.message() + ")";
+      }
+    }
     if (const auto kind = implementedPattern(p)) {
       ScenePattern sp;
       sp.kind = *kind;
@@ -259,11 +293,41 @@ class SceneReader::Builder {
     const std::string base = mixture ? p.strings[0] : p.modifier;
     scene_.inputWarnings.push_back(
         Warning{"pattern_replaced",
-                what + (mixture ? " is not implemented: its foreground material '" + base + "' is used in its place"
-                                : " is not implemented: the materials it modifies are used unmodified"),
+                what + (mixture ? (unreadable.empty() ? " is not implemented" : " cannot be read" + unreadable) +
+                                      ": its foreground material '" + base + "' is used in its place"
+                                : (unreadable.empty() ? " is not implemented" : " cannot be read" + unreadable) +
+                                      ": the materials it modifies are used unmodified"),
                 p.loc});
     patterns_[p.name] = PatternEntry{-1, base};
     materials_.erase(p.name);
+  }
+
+  // A mixfunc: a material of its own (surfaces name it), mixing two materials defined before (or
+  // void) by its coefficient.
+  void addMixture(const Primitive& p, int index) {
+    const std::string what = p.type + " '" + p.name + "'";
+    if (p.modifier != "void")
+      fail(p, what + " is modified by '" + p.modifier + "': candela evaluates no pattern on a mixture (apply it to "
+                     "the mixed materials)");
+    auto materialNamed = [&](const std::string& name, const char* role) {
+      if (name == "void") return -1;
+      const auto it = materials_.find(name);
+      if (it == materials_.end())
+        fail(p, what + ": its " + role + " '" + name + "' is not a material defined before use");
+      return it->second;
+    };
+    const int fore = materialNamed(p.strings[0], "foreground"), back = materialNamed(p.strings[1], "background");
+    scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
+    scene_.functions = functionFiles_.program();
+    Material m;
+    m.type = MaterialType::kMixture;
+    m.name = p.name;
+    m.loc = p.loc;
+    m.pattern = index;
+    m.foreground = fore;
+    m.background = back;
+    materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+    patterns_.erase(p.name);
   }
 
   // `mod alias new old`: `new` is `old`, modified by `mod` instead of old's own modifier when
@@ -297,6 +361,19 @@ class SceneReader::Builder {
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
                   scene_.patterns[static_cast<size_t>(m.pattern)].name +
                   "', which candela applies to light, illum and glow only");
+    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction &&
+        family.emits()) {
+      const ScenePattern& sp = scene_.patterns[static_cast<size_t>(m.pattern)];
+      const std::string what = sp.type + " '" + sp.name + "'";
+      if (options_.patterns == PatternPolicy::kRefuse)
+        fail(p, p.type + " '" + p.name + "' is modified by " + what +
+                    ": candela evaluates function patterns on reflecting and transmitting materials, not yet on "
+                    "light sources; run with --patterns base to use the source unmodified, with a warning");
+      scene_.inputWarnings.push_back(Warning{
+          "pattern_replaced", what + " on the light source " + p.type + " '" + p.name + "' is not implemented: "
+                                 "the source is used unmodified", sp.loc});
+      m.pattern = -1;
+    }
     m.name = p.name;
     m.loc = p.loc;
     const MaterialReadContext ctx{p, [this](const std::string& name) {
@@ -407,7 +484,7 @@ class SceneReader::Builder {
                   "(through !xform with the instance's transform)");
     const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
                            t == "cup" || t == "cylinder" || t == "tube" || t == "source";
-    if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + kSupported + ")");
+    if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + supportedTypes() + ")");
     const int mod = modifierOf(p);
     if (t == "source") {
       expectStrings(p, 0);
@@ -479,6 +556,7 @@ class SceneReader::Builder {
 
   Scene& scene_;
   SceneReadOptions options_;
+  FunctionFiles functionFiles_;
   std::unordered_map<std::string, int> materials_;
   // Patterns by name: one candela implements (pattern ≥ 0, into Scene::patterns) or one replaced
   // by the modifier it has (pattern −1, base followed).

@@ -7,10 +7,13 @@
 #include "engine/integrator_path.h"
 #include "engine/materials/family.h"
 #include "engine/materials/normal.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/source_distribution.h"
 #include "engine/trace_context.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
+#include <optional>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -21,8 +24,8 @@ namespace {
 
 // Camera rays use streams far above any sensor point index, so that a view and a grid in the same
 // run never share random numbers.
-constexpr uint64_t kCameraStreamBase = 1ULL << 48;
-constexpr uint64_t kIrradianceStreamBase = 1ULL << 56;
+constexpr uint64_t kCameraStreamBase = streams::kCameraPixels.first;
+constexpr uint64_t kIrradianceStreamBase = streams::kCameraIrradiance.first;
 
 // Opaque and purely diffuse: all its reflected light is ρ E / π (no specular lobe, nothing
 // transmitted), so the irradiance estimate may stand in for a path.
@@ -181,14 +184,18 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   const Vec3 nf = front ? ng : -ng;
   const double off = Tracer::originOffset(x);
   const uint32_t flatSkip = isFlat(shape) ? h.shape : kNoShape;
-  m = seenMaterial(scene.materials, *m);
-  if (!m) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // an illum, invisible
+  m = scene.functions ? resolved(scene, *m, {x, d, ng, h.t}, cr.ctx.patterns(), cr.ctx.rng)
+                      : seenMaterial(scene.materials, *m);
+  if (!m) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // invisible here
+  std::optional<Material> patternedHere;  // the hook's copy when patterns modify m (no string copied)
+  if (hasFunctionPattern(scene, *m)) m = &patterned(scene, *m, {x, d, ng, h.t}, cr.ctx.patterns(), patternedHere.emplace());
   const MaterialFamily& family = familyOf(*m);
   switch (family.role()) {
     case HitRole::kEmit:
       if (!front) return Rgb(0.0);
       return m->pattern < 0 ? m->color : emittedRadiance(scene, *m, d, -glm::dot(d, nf));
     case HitRole::kAbsorb:
+    case HitRole::kMix:  // resolved above
       return Rgb(0.0);
     case HitRole::kSpecular: {
       // Every specular part followed (or one chosen: specularSplit), scaled by what the surface

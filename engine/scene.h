@@ -6,6 +6,8 @@
 #include "base/warning.h"
 #include "engine/luminaire_source.h"
 #include "engine/materials/material.h"
+#include "engine/rad_transform.h"
+#include "engine/radiance/cal/cal.h"
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
 
@@ -19,9 +21,11 @@ namespace candela {
 
 class SourceDistribution;
 
-// The pattern primitives candela implements natively, recognised by their function file:
-// gensky's skybright.cal, gendaylit's perezlum.cal, and ies2rad's source.cal distributions.
-enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution };
+// The pattern primitives candela implements: natively, recognised by their function file
+// (gensky's skybright.cal, gendaylit's perezlum.cal, ies2rad's source.cal distributions), or
+// through the function language (brightfunc and colorfunc of any other function file:
+// engine/materials/pattern_hook.h).
+enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution, kFunction };
 
 // One such pattern as read (its arguments as written, transform arguments included).
 struct ScenePattern {
@@ -33,6 +37,15 @@ struct ScenePattern {
   // kSourceDistribution: the distribution as evaluated (engine/source_distribution.h), read with
   // its data file when the pattern is read.
   std::shared_ptr<const SourceDistribution> source;
+  // kFunction: its expressions in Scene::functions (brightfunc: one, colorfunc: red, green,
+  // blue), its real arguments (A1...), the transform from world to the function's coordinates
+  // and the function's scale (S), and the pattern it is itself modified by (-1: none).
+  int channels = 0;
+  std::array<int32_t, 3> functions{-1, -1, -1};
+  std::vector<double> args;
+  RadTransform toFunction;
+  double functionScale = 1.0;
+  int next = -1;
 };
 
 // A source at infinity: Radiance's `source` primitive (a cone of directions).
@@ -102,6 +115,8 @@ struct TriangleMesh {
 struct Scene {
   std::vector<Material> materials;
   std::vector<ScenePattern> patterns;
+  // The function files and inline expressions the patterns use (none: no function pattern).
+  std::shared_ptr<const cal::Program> functions;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   TriangleMesh mesh;

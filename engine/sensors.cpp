@@ -1,6 +1,7 @@
 #include "engine/sensors.h"
 
 #include "engine/cache_builder.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
 #include <atomic>
@@ -14,8 +15,8 @@ namespace {
 
 // Batch b > 0 of point i draws from stream i + b·2^40 (far from every point's own stream); the
 // path-method batches of a cache-method point (below) from i + 2^39 + b·2^40.
-constexpr uint64_t kBatchStride = 1ULL << 40;
-constexpr uint64_t kWithoutCacheStream = 1ULL << 39;
+constexpr uint64_t kBatchStride = streams::kBatchStride;
+constexpr uint64_t kWithoutCacheStream = streams::kWithoutCacheOffset;
 
 // Batches of one point until the standard error of their mean is at most target × the mean, or
 // maxBatches are spent. After each round the batches still needed are predicted from the

@@ -6,6 +6,7 @@
 
 #include "base/math.h"
 #include "base/rng.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/tracer.h"
 
 #include <array>
@@ -45,9 +46,16 @@ struct TraceContext {
     ++rays;
     return tracer.accelerator().intersect(o, d, tMin, tMax, h, skip);
   }
-  // Tracer::transmittance, its rays counted here.
+  // Tracer::transmittance, its rays counted here (patterned glass and trans evaluated by this
+  // call's evaluator).
   Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) {
-    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays);
+    uint32_t firstGlass = kNoShape;
+    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass, tracer.hasPatterns() ? &patterns() : nullptr);
+  }
+  // The function patterns' evaluator of this call, made on first use.
+  PatternEvaluator& patterns() {
+    if (!patternEval) patternEval = std::make_unique<PatternEvaluator>(tracer.scene());
+    return *patternEval;
   }
 
   const Tracer& tracer;
@@ -58,6 +66,7 @@ struct TraceContext {
   // The small-emitter bound of this call's settings (lights.h: glowSampledFrom), computed once.
   const double smallSin2;
   LightScratch light;
+  std::unique_ptr<PatternEvaluator> patternEval;
 };
 
 }  // namespace candela

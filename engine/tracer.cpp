@@ -5,12 +5,15 @@
 #include "engine/integrator_path.h"
 #include "engine/irradiance_estimator.h"
 #include "engine/materials/family.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
 #include "engine/trace_context.h"
 #include "photometry/site.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -21,7 +24,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The stream of a point's patch-by-patch direct sky samples (skyCoefficients).
-constexpr uint64_t kPatchStream = 0x1000000000000000ULL;
+constexpr uint64_t kPatchStream = streams::kSkyPatches.first;
 
 // The settings of the coefficient estimates: path traced, and no adaptive supersampling (a
 // refined stratum's first sample would change weight in the tallies) nor target error.
@@ -82,25 +85,33 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
-                          uint64_t& rays, uint32_t& firstGlass) const {
+                          uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns) const {
   firstGlass = kNoShape;
   ++rays;
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
   Rgb t(1.0);
   double tMin = 0.0;
+  std::optional<PatternEvaluator> own;  // made when a patterned surface is met without the caller's
   for (int i = 0; i < 64; ++i) {
     RayHit h;
     if (i > 0) ++rays;
     if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
     const Shape s = scene_.surface(h.shape);  // a shape or a mesh triangle
-    const Material& m = scene_.materials[s.material];
     const Vec3 x = o + h.t * dir;
+    const Material& m = scene_.materials[s.material];
     const MaterialFamily& family = familyOf(m);
     // Glass and trans let their straight part through; an illum with no alternate is invisible
     // to all but its own rays; all else is opaque (a dielectric too: it bends light, so no
     // straight shadow ray passes it, as Radiance's source rays; paths find what lies behind it).
-    const std::optional<Rgb> through = family.straightTransmittance(m, dir, shapeNormal(s, x));
+    // Function patterns and mixtures are evaluated where the ray crosses (pattern_hook.h).
+    std::optional<Rgb> through;
+    if (hasPatterns()) {
+      if (!patterns) patterns = &own.emplace(scene_);
+      through = straightThrough(scene_, m, {x, dir, shapeNormal(s, x), h.t}, *patterns);
+    } else {
+      through = family.straightTransmittance(m, dir, shapeNormal(s, x));
+    }
     if (!through) {
       firstGlass = kNoShape;
       return Rgb(0.0);

@@ -45,6 +45,8 @@ enum class AcceleratorKind { kEmbree, kOctree };
 AcceleratorKind parseAccelerator(const std::string& s);
 std::unique_ptr<RayAccelerator> makeAccelerator(const Scene& scene, AcceleratorKind kind);
 
+class PatternEvaluator;
+
 class Tracer {
  public:
   // Traces with the default accelerator, or the one named.
@@ -107,8 +109,12 @@ class Tracer {
   // The same, and the surface id of the first `glass` surface the ray crosses from o (kNoShape:
   // none, or the ray is blocked) in firstGlass: which window a beam came through (the annual
   // study's window groups, docs/annual.md). The transmittance is the other overloads', bit for bit.
+  // Glass and trans modified by function patterns are evaluated by `patterns` (the caller's
+  // evaluator; nullptr: one of the call's own, made when needed).
   Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
-                    uint64_t& rays, uint32_t& firstGlass) const;
+                    uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns = nullptr) const;
+  // The scene has function patterns (engine/materials/pattern_hook.h).
+  bool hasPatterns() const { return scene_.functions != nullptr; }
 
   // Radiance arriving at o from direction -dir, i.e. along a ray leaving o in direction dir.
   // Sampled sources are counted only when countSources is true (after specular reflection or for

@@ -21,6 +21,7 @@
 #include "metrics/glare.h"
 #include "photometry/annual_sky.h"
 #include "photometry/sky_patches.h"
+#include "engine/random_streams.h"
 
 #include <cstdint>
 #include <span>
@@ -129,7 +130,7 @@ TraceSettings interreflectedSunSettings(const TraceSettings& settings);
 
 // Ev at the eye (random stream `stream` for its coefficients; pick one per view, apart from the
 // grids' sensor indices, e.g. kAnnualGlareStreamBase + view index), the tallies, then every hour.
-inline constexpr uint64_t kAnnualGlareStreamBase = uint64_t{3} << 52;
+inline constexpr uint64_t kAnnualGlareStreamBase = streams::kAnnualGlare.first + 1;
 ViewAnnualGlare imagelessAnnualGlare(const Tracer& tracer, const GlareView& view, uint64_t stream,
                                      const AnnualGlareJob& job, const ImagelessGlareOptions& options = {});
 

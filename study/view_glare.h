@@ -7,6 +7,7 @@
 #include "engine/render.h"
 #include "engine/tracer.h"
 #include "metrics/glare.h"
+#include "engine/random_streams.h"
 
 #include <optional>
 
@@ -40,7 +41,7 @@ struct ViewGlare : LuminaireGlare {
 
 // Observers' vertical illuminances take random streams from here (sensor points use their
 // index, camera rays 2^48 and up).
-inline constexpr uint64_t kObserverStreamBase = uint64_t{1} << 52;
+inline constexpr uint64_t kObserverStreamBase = streams::kObservers.first;
 
 // An [[observer]]'s eye as a view: at its eye height, looking along its horizontal direction.
 View observerView(const ObserverSpec& o);

@@ -24,6 +24,7 @@ enum class HitRole {
   kEmit,      // light, spotlight, illum, glow: the radiance it sends back
   kSpecular,  // mirror, glass, dielectric: the path goes on, with no diffuse vertex
   kScatter,   // plastic, metal, trans: a diffuse vertex (diffuse, glossy and transmitted parts)
+  kMix,       // mixfunc: one of two materials, chosen at the hit (engine/materials/pattern_hook.h)
 };
 
 // A surface met along unit d: geometric normal ng, nf = ng turned to face the ray, front when
@@ -106,7 +107,7 @@ class MaterialFamily {
   virtual void read(const MaterialReadContext& ctx, Material& m) const = 0;
   // The reflectance and transmittance parts the integrators use, from the arguments (Radiance's
   // definitions); nothing for families that have none.
-  virtual void derive(Material& /*m*/) const {}
+  virtual void derive(MaterialParameters& /*m*/) const {}
 
   // Emits light; and among emitters, is sampled explicitly as a light source (glow is not: it is
   // found by the hemisphere's rays).

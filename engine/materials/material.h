@@ -12,18 +12,20 @@
 namespace candela {
 
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
-enum class MaterialType { kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow };
-inline constexpr int kMaterialTypeCount = 10;
+enum class MaterialType {
+  kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface
+};
+inline constexpr int kMaterialTypeCount = 12;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
 
-// A material as read from the scene, with the derived reflectances the integrators use.
-// Colours are Radiance RGB; emission is a radiance in W/sr/m² (179 lm/W).
-struct Material {
+// A material's parameters as read from the scene, with the derived reflectances the integrators
+// use: all of a material but its name and where it was read, so that a patterned copy at a hit
+// (engine/materials/pattern_hook.h) copies no string. Colours are Radiance RGB; emission is a
+// radiance in W/sr/m² (179 lm/W).
+struct MaterialParameters {
   MaterialType type = MaterialType::kVoid;
-  std::string name;
-  FileLoc loc;
   Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
                          // dielectric transmission per metre of path inside (fraction, per channel)
   double specularity = 0.0;   // plastic, metal, trans (fraction)
@@ -32,6 +34,10 @@ struct Material {
   double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
   double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)
   double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
+  // interface: the medium on the front side (the outside), its transmission per metre and index;
+  // color and refractiveIndex are the inside's. A dielectric's outside is a vacuum (1, 1).
+  Rgb outsideTransmission{1.0};
+  double outsideIndex = 1.0;
   double glowRadiusM = 0.0;          // glow: Radiance's maximum radius for source testing
   int alternate = -1;                // illum: material seen by non-shadow rays (-1: none/void)
   // spotlight (a `light` with a cone, Radiance reference manual "Spotlight"): light leaves only
@@ -42,6 +48,8 @@ struct Material {
   double spotCosHalf = -1.0;
   Vec3 spotAim{0.0, 0.0, -1.0};
   double spotFocalM = 0.0;
+  // mixfunc: the two materials mixed (-1: void), the coefficient being pattern's function.
+  int foreground = -1, background = -1;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):
@@ -68,7 +76,12 @@ struct Material {
   bool isSampledSource() const;
 };
 
+struct Material : MaterialParameters {
+  std::string name;
+  FileLoc loc;
+};
+
 // Fills a material's derived reflectances from its type and parameters (its family's derive).
-void deriveMaterial(Material& m);
+void deriveMaterial(MaterialParameters& m);
 
 }  // namespace candela

@@ -21,7 +21,7 @@ class Mirror : public MaterialFamily {
     if (std::max({m.color.x, m.color.y, m.color.z}) > 1.0)
       ctx.fail(ctx.what() + " transmits or reflects more than it receives: a component above 1");
   }
-  void derive(Material& m) const override { m.specularReflectance = m.color; }
+  void derive(MaterialParameters& m) const override { m.specularReflectance = m.color; }
   bool mirrorsSources() const override { return true; }
   SpecularSample sampleSpecular(const Material& m, const SurfaceHit& h, Rng&, Rgb& beta) const override {
     beta *= m.color;

@@ -11,7 +11,7 @@ class Plastic : public NormalFamily {
   MaterialType type() const override { return MaterialType::kPlastic; }
   const char* name() const override { return "plastic"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 5); }
-  void derive(Material& m) const override {
+  void derive(MaterialParameters& m) const override {
     m.diffuseReflectance = m.color * (1.0 - m.specularity);
     m.specularReflectance = Rgb(m.specularity);
   }
@@ -23,7 +23,7 @@ class Metal : public NormalFamily {
   MaterialType type() const override { return MaterialType::kMetal; }
   const char* name() const override { return "metal"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 5); }
-  void derive(Material& m) const override {
+  void derive(MaterialParameters& m) const override {
     m.diffuseReflectance = m.color * (1.0 - m.specularity);
     m.specularReflectance = m.color * m.specularity;
   }

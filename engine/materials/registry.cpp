@@ -23,6 +23,8 @@ constexpr Entry kFamilies[] = {
     {lightFamily, {"light", "spotlight"}},
     {illumFamily, {"illum", nullptr}},
     {glowFamily, {"glow", nullptr}},
+    {mixtureFamily, {nullptr, nullptr}},  // read with the patterns (engine/radiance/function_patterns.h)
+    {interfaceFamily, {"interface", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 
@@ -51,10 +53,10 @@ NormalIncidence MaterialFamily::normalIncidence(const Material& m) const {
   return {photopic(m.diffuseReflectance + m.specularReflectance), photopic(m.specularReflectance), std::nullopt};
 }
 
-bool Material::isEmitter() const { return familyOf(type).emits(); }
-bool Material::isSampledSource() const { return familyOf(type).sampledSource(); }
+bool MaterialParameters::isEmitter() const { return familyOf(type).emits(); }
+bool MaterialParameters::isSampledSource() const { return familyOf(type).sampledSource(); }
 
-void deriveMaterial(Material& m) { familyOf(m).derive(m); }
+void deriveMaterial(MaterialParameters& m) { familyOf(m.type).derive(m); }
 
 void MaterialReadContext::fail(const std::string& message) const { throw InputError(primitive.loc, message); }
 

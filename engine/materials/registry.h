@@ -15,5 +15,7 @@ const MaterialFamily& dielectricFamily();
 const MaterialFamily& lightFamily();
 const MaterialFamily& illumFamily();
 const MaterialFamily& glowFamily();
+const MaterialFamily& mixtureFamily();
+const MaterialFamily& interfaceFamily();
 
 }  // namespace candela

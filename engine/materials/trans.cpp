@@ -11,7 +11,7 @@ class Trans : public NormalFamily {
   MaterialType type() const override { return MaterialType::kTrans; }
   const char* name() const override { return "trans"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 7); }
-  void derive(Material& m) const override {
+  void derive(MaterialParameters& m) const override {
     // The non-specular light splits into reflected (1 − trans), diffusely transmitted
     // trans·(1 − tspec) and specularly transmitted trans·tspec.
     const Rgb nonSpec = m.color * (1.0 - m.specularity);

@@ -41,7 +41,7 @@ candela_run_test(annual_report_sensor 2 "annual_bad_sensor/case.toml:9: report_s
 
 # Patterns: refused at their line by default; [settings] patterns = "base" (or --patterns base)
 # runs with the material unmodified and the replacement in summary.json and the report.
-candela_run_test(pattern_refused 2 "pattern_base/room.rad:8: brightfunc 'dimmer' (dim.cal) is a pattern, texture or mixture candela does not implement"
+candela_run_test(pattern_refused 2 "pattern_base/room.rad:8: colorpict 'dimmer' (dim.hdr) is a pattern, texture or mixture candela does not implement"
                  pattern_base/refused.toml)
 candela_run_test(pattern_base_summary 0 "\"code\": \"pattern_replaced\"" pattern_base/case.toml --quality draft)
 candela_run_test(pattern_base_option 0 "\"code\": \"pattern_replaced\"" pattern_base/refused.toml --quality draft --patterns base)

@@ -376,7 +376,7 @@ TEST(EmbreeAccelerator, ConcurrentQueriesAgree) {
 // accelerator, within 4 standard errors of the difference of two independent estimates.
 TEST(EmbreeAccelerator, TracerAgreesWithOctreeInARoom) {
   Scene sc;
-  Material grey{MaterialType::kPlastic, "grey", {}, Rgb(0.5)}, lamp{MaterialType::kLight, "lamp", {}, Rgb(100.0)};
+  Material grey{{MaterialType::kPlastic, Rgb(0.5)}, "grey", {}}, lamp{{MaterialType::kLight, Rgb(100.0)}, "lamp", {}};
   const uint32_t wall = sc.addMaterial(grey), light = sc.addMaterial(lamp);
   const double W = 4.0, D = 5.0, H = 3.0;
   // Floor as 2·20·25 triangles (Embree triangles), walls and ceiling as quads (user geometry),

@@ -213,26 +213,21 @@ TEST(RadReader, ByteOrderMarkIsNotAModifier) {
 }
 
 TEST(RadReader, QuotedStringsAreOneArgument) {
-  // Radiance's own torus.rad: a quoted expression with blanks and commas is one string argument,
-  // so the diagnosis is the unsupported type, not "'PI/20,' is not a valid count".
+  // Radiance's own torus.rad: a quoted expression with blanks and commas is one string argument
+  // (the mixture's coefficient), not "'PI/20,' is not a valid count".
   Scene scene;
-  try {
-    readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\n"
-                     "void mixfunc striped\n4 m m \"if(mod(atan2(Py-A2,Px-A1),PI/10) - PI/20, 1, 0)\" .\n0\n3 -4 2.5 1.5\n",
-                     "torus.rad", scene);
-    FAIL() << "mixfunc is not supported";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.loc().line, 2) << e.what();
-    EXPECT_NE(std::string(e.what()).find("mixfunc"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("valid count"), std::string::npos) << e.what();
-  }
+  readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\n"
+                   "void mixfunc striped\n4 m m \"if(mod(atan2(Py-A2,Px-A1),PI/10) - PI/20, 1, 0)\" .\n0\n3 -4 2.5 1.5\n",
+                   "torus.rad", scene);
+  ASSERT_EQ(scene.patterns.size(), 1u);
+  ASSERT_EQ(scene.patterns[0].strings.size(), 4u);
+  EXPECT_EQ(scene.patterns[0].strings[2], "if(mod(atan2(Py-A2,Px-A1),PI/10) - PI/20, 1, 0)");
+  EXPECT_EQ(scene.patterns[0].args, (std::vector<double>{-4, 2.5, 1.5}));
   // Single quotes too (Radiance's patterns.mat).
-  try {
-    readRadianceText("void brightfunc noisepat\n2 '1 - .35*(1+fnoise3(3*Px,3*Py,3*Pz))' .\n0\n0\n", "patterns.mat", scene);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("brightfunc"), std::string::npos) << e.what();
-  }
+  Scene single;
+  readRadianceText("void brightfunc noisepat\n2 '1 - .35*(1+fnoise3(3*Px,3*Py,3*Pz))' .\n0\n0\n", "patterns.mat", single);
+  ASSERT_EQ(single.patterns.size(), 1u);
+  EXPECT_EQ(single.patterns[0].strings[0], "1 - .35*(1+fnoise3(3*Px,3*Py,3*Pz))");
   // A quoted alternate material name of an illum reads as the name.
   Scene ok;
   readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\nvoid illum win\n1 \"m\"\n0\n3 1 1 1\n", "q.rad", ok);
@@ -290,7 +285,7 @@ TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
 // A pattern is refused by default with a message that says how to proceed; with the base policy
 // the material is used unmodified and the replacement is a warning naming the pattern's line.
 TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
-  expectError("pattern.rad", 2, "brightfunc 'dimmer' (dim.cal) is a pattern, texture or mixture candela does not implement");
+  expectError("pattern.rad", 2, "colorpict 'dimmer' (dim.hdr) is a pattern, texture or mixture candela does not implement");
   expectError("pattern.rad", 2, "--patterns base");
   Scene sc;
   SceneReadOptions options;
@@ -299,27 +294,39 @@ TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
   ASSERT_EQ(sc.inputWarnings.size(), 1u);
   EXPECT_EQ(sc.inputWarnings[0].code, "pattern_replaced");
   EXPECT_EQ(sc.inputWarnings[0].loc.line, 2);
-  EXPECT_NE(sc.inputWarnings[0].message.find("brightfunc 'dimmer'"), std::string::npos);
+  EXPECT_NE(sc.inputWarnings[0].message.find("colorpict 'dimmer'"), std::string::npos);
   ASSERT_EQ(sc.shapes.size(), 1u);
   const Material& grey = material(sc, "grey");
   EXPECT_EQ(grey.pattern, -1);
   expectRgb(grey.diffuseReflectance, Rgb(0.5));
 }
 
-// Under the base policy a mixture stands for its foreground material (it is itself a surface's
-// modifier, so its own modifier would make the surface void).
-TEST(RadReader, MixtureReplacedByItsForegroundMaterial) {
+// A mixture is a material of its own; one that cannot be read stands, under the base policy, for
+// its foreground material (it is itself a surface's modifier, so its own modifier would make the
+// surface void).
+TEST(RadReader, MixtureReadOrReplacedByItsForegroundMaterial) {
+  const char* materials = "void plastic red 0 0 5 .8 .1 .1 0 0\nvoid plastic blue 0 0 5 .1 .1 .8 0 0\n";
+  Scene read;
+  readRadianceText(std::string(materials) +
+                       "void mixfunc mix 4 red blue if(Pz,1,0) .\n0\n0\nmix polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
+                   "mix.rad", read);
+  ASSERT_EQ(read.shapes.size(), 1u);
+  const Material& mix = read.materials[read.shapes[0].material];
+  EXPECT_EQ(mix.type, MaterialType::kMixture);
+  EXPECT_EQ(read.materials[static_cast<size_t>(mix.foreground)].name, "red");
+  EXPECT_EQ(read.materials[static_cast<size_t>(mix.background)].name, "blue");
   Scene sc;
   SceneReadOptions options;
   options.patterns = PatternPolicy::kBase;
   SceneReader(sc, options)
-      .readText("void plastic red 0 0 5 .8 .1 .1 0 0\nvoid plastic blue 0 0 5 .1 .1 .8 0 0\n"
-                "void mixfunc mix 4 red blue if(Pz,1,0) .\n0\n0\nmix polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
+      .readText(std::string(materials) +
+                    "void mixfunc mix 4 red blue v nofile.cal\n0\n0\nmix polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n",
                 "mix.rad");
   ASSERT_EQ(sc.shapes.size(), 1u);
   EXPECT_EQ(sc.materials[sc.shapes[0].material].name, "red");
   ASSERT_EQ(sc.inputWarnings.size(), 1u);
   EXPECT_NE(sc.inputWarnings[0].message.find("foreground material 'red'"), std::string::npos);
+  EXPECT_NE(sc.inputWarnings[0].message.find("function file 'nofile.cal'"), std::string::npos);
 }
 
 // `mod alias new old` stands for old; `inherit` keeps old's modifier.

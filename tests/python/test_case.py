@@ -149,13 +149,12 @@ def test_ctrl_c_stops_the_run_and_keeps_the_previous_result(source, tmp_path):
                             stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     assert proc.stdout.readline().strip() == "tracing"
     time.sleep(0.5)
-    start = time.monotonic()
     proc.send_signal(signal.SIGINT)
+    # It stopped, not finished (the whole run takes minutes; a run that ignored the signal would
+    # print "finished" or outlast the timeout). No bound on how fast: a loaded machine is slower.
     stdout, stderr = proc.communicate(timeout=120)
-    stopped_after = time.monotonic() - start
     assert proc.returncode != 0
     assert "KeyboardInterrupt" in stderr and "finished" not in stdout
-    assert stopped_after < 30.0  # it stopped, not finished: the whole run takes minutes
     # The folder holds the previous result, byte for byte, and nothing was left beside it.
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["interrupted.py", "out", "slow.toml"]

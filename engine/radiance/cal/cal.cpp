@@ -26,11 +26,14 @@ Symbol Program::find(std::string_view name) const {
   return it == impl_->byName.end() ? -1 : it->second;
 }
 
-void Program::check(std::string_view name, int calls, const FileLoc& loc) const {
+void Program::check(std::string_view symbolName, int calls, const FileLoc& loc, std::string_view label) const {
   const Impl& p = *impl_;
-  const Symbol s = find(name);
+  const Symbol s = find(symbolName);
+  const std::string_view name = label.empty() ? symbolName : label;
   auto refuse = [&](const std::string& why) { throw InputError(loc, why); };
-  if (s < 0) refuse("'" + std::string(name) + "' is not defined in the function files");
+  if (s < 0 || (p.symbols[static_cast<size_t>(s)].def.body < 0 && p.symbols[static_cast<size_t>(s)].rayVar < 0 &&
+                p.symbols[static_cast<size_t>(s)].native == Native::kNone))
+    refuse("'" + std::string(name) + "' is not defined in the function files");
   // Every name the definition reaches, each checked once: defined, a ray variable or native, and
   // used as it is defined (a variable as a variable, a function with the arguments it takes).
   std::set<std::pair<Symbol, int>> seen;

@@ -63,8 +63,8 @@ class Program {
   Symbol find(std::string_view name) const;
   // Refuses (InputError at `loc`) a name that is not defined, or whose definition reaches a name
   // that is neither defined nor a ray variable or library function; `calls` arguments when it is
-  // called as a function, -1 when used as a variable.
-  void check(std::string_view name, int calls, const FileLoc& loc) const;
+  // called as a function, -1 when used as a variable. Messages call it `label` (default: name).
+  void check(std::string_view name, int calls, const FileLoc& loc, std::string_view label = {}) const;
 
   struct Impl;
   const Impl& impl() const { return *impl_; }

@@ -24,7 +24,8 @@ TEST(MaterialRegistry, OneFamilyForEveryTypeInItsOrder) {
 }
 
 TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
-  for (const char* name : {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow"}) {
+  for (const char* name :
+       {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -35,15 +36,20 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("void"), nullptr);
   EXPECT_EQ(familyNamed("plastic2"), nullptr);
   EXPECT_EQ(familyNamed("Plastic"), nullptr);
-  EXPECT_EQ(materialTypeNames(), "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow");
+  // A mixture (mixfunc) is read with the patterns, not by its family.
+  EXPECT_EQ(familyNamed("mixfunc"), nullptr);
+  EXPECT_EQ(materialTypeNames(),
+            "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {
   EXPECT_EQ(familyOf(MaterialType::kVoid).role(), HitRole::kAbsorb);
   for (MaterialType t : {MaterialType::kPlastic, MaterialType::kMetal, MaterialType::kTrans})
     EXPECT_EQ(familyOf(t).role(), HitRole::kScatter);
-  for (MaterialType t : {MaterialType::kMirror, MaterialType::kGlass, MaterialType::kDielectric})
+  for (MaterialType t : {MaterialType::kMirror, MaterialType::kGlass, MaterialType::kDielectric,
+                         MaterialType::kInterface})
     EXPECT_EQ(familyOf(t).role(), HitRole::kSpecular);
+  EXPECT_EQ(familyOf(MaterialType::kMixture).role(), HitRole::kMix);
   for (MaterialType t : {MaterialType::kLight, MaterialType::kIllum, MaterialType::kGlow}) {
     EXPECT_EQ(familyOf(t).role(), HitRole::kEmit);
     EXPECT_TRUE(familyOf(t).emits());
@@ -153,6 +159,41 @@ TEST(MaterialFamilies, SampledSpecularEventsAverageToTheSplit) {
     EXPECT_NEAR(reflected[k] / n, wr, 4.0 * seR);
   }
   EXPECT_NEAR(split.parts[1].dir.z, std::cos(1.047), 1e-12);  // mirrored about the normal
+}
+
+// interface: the boundary between an inside of index 1.5 and an outside of index 1.33 (glass in
+// water) reflects ((n1 − n2)/(n1 + n2))² at normal incidence, from either side; an interface with
+// a vacuum outside is the dielectric, event for event.
+TEST(MaterialFamilies, InterfaceBetweenTwoMedia) {
+  Material m;
+  m.type = MaterialType::kInterface;
+  m.color = Rgb(1.0);
+  m.refractiveIndex = 1.5;
+  m.outsideIndex = 1.33;
+  const Vec3 ng(0, 0, 1);
+  const double want = std::pow((1.5 - 1.33) / (1.5 + 1.33), 2);
+  for (bool front : {true, false}) {
+    const Vec3 d = front ? Vec3(0, 0, -1) : Vec3(0, 0, 1);
+    const SpecularSplit s = familyOf(m).splitSpecular(m, {d, ng, front ? ng : -ng, front, 0.5});
+    ASSERT_EQ(s.count, 2);
+    EXPECT_NEAR(s.parts[0].weight.x, want, 1e-12) << front;
+    EXPECT_NEAR(s.parts[1].weight.x, 1.0 - want, 1e-12) << front;
+  }
+  Material d = m;
+  d.type = MaterialType::kDielectric;
+  d.outsideIndex = 1.0;
+  Material i = d;
+  i.type = MaterialType::kInterface;
+  const Vec3 dir = glm::normalize(Vec3(0.3, 0.1, -1.0));
+  for (bool front : {true, false}) {
+    const SurfaceHit h{front ? dir : -dir, ng, front ? ng : -ng, front, 0.7};
+    Rng a(3, 1), b(3, 1);
+    Rgb ba(1.0), bb(1.0);
+    const SpecularSample sa = familyOf(d).sampleSpecular(d, h, a, ba);
+    const SpecularSample sb = familyOf(i).sampleSpecular(i, h, b, bb);
+    EXPECT_EQ(sa.dir, sb.dir);
+    EXPECT_EQ(ba, bb);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,120 @@
+#include "engine/materials/pattern_hook.h"
+
+#include <algorithm>
+
+namespace candela {
+
+void PatternEvaluator::begin(const ScenePattern& sp, const PatternPoint& p) {
+  if (!eval_) eval_ = std::make_unique<cal::Evaluator>(*scene_.functions);
+  // The ray's variables in the function's coordinates (Radiance's func.c: the point, direction
+  // and normal through the inverse of the pattern's transform; T in its units).
+  cal::Environment env;
+  const RadTransform& f = sp.toFunction;
+  const Vec3 x = f.point(p.x), d = glm::normalize(f.direction(p.d)), n = glm::normalize(f.direction(p.ng));
+  const Vec3 o = f.point(Vec3(0.0)), ix = f.direction(Vec3(1, 0, 0)), jy = f.direction(Vec3(0, 1, 0)),
+             kz = f.direction(Vec3(0, 0, 1));
+  const double values[] = {d.x, d.y, d.z, n.x, n.y, n.z, x.x, x.y, x.z};
+  for (int k = 0; k < 9; ++k) env.ray[k] = values[k];
+  env.ray[cal::kT] = env.ray[cal::kTs] = p.t / sp.functionScale;
+  env.ray[cal::kRdot] = env.ray[cal::kRdotP] = -glm::dot(p.d, p.ng);
+  env.ray[cal::kS] = sp.functionScale;
+  env.ray[cal::kTx] = o.x, env.ray[cal::kTy] = o.y, env.ray[cal::kTz] = o.z;
+  env.ray[cal::kIx] = ix.x, env.ray[cal::kIy] = ix.y, env.ray[cal::kIz] = ix.z;
+  env.ray[cal::kJx] = jy.x, env.ray[cal::kJy] = jy.y, env.ray[cal::kJz] = jy.z;
+  env.ray[cal::kKx] = kz.x, env.ray[cal::kKy] = kz.y, env.ray[cal::kKz] = kz.z;
+  env.ray[cal::kNxP] = n.x, env.ray[cal::kNyP] = n.y, env.ray[cal::kNzP] = n.z;
+  env.args = sp.args;
+  eval_->begin(env);
+}
+
+Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
+  Rgb c(1.0);
+  for (int i = index; i >= 0;) {
+    const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
+    if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
+    begin(sp, p);
+    try {
+      if (sp.channels == 1) {
+        c *= eval_->value(sp.functions[0]);
+      } else {
+        for (int k = 0; k < 3; ++k) c[k] *= eval_->value(sp.functions[static_cast<size_t>(k)]);
+      }
+    } catch (const cal::EvalError& e) {
+      throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+    }
+    i = sp.next;
+  }
+  return c;
+}
+
+double PatternEvaluator::value(int index, const PatternPoint& p) {
+  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  begin(sp, p);
+  try {
+    return eval_->value(sp.functions[0]);
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
+}
+
+const Material& patterned(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
+                          Material& out) {
+  if (!hasFunctionPattern(scene, m)) return m;
+  static_cast<MaterialParameters&>(out) = m;
+  // A negative brightness is no light: 0 (Radiance would carry it on as negative light).
+  out.color = m.color * glm::max(eval.colour(m.pattern, p), Rgb(0.0));
+  deriveMaterial(out);
+  return out;
+}
+
+
+namespace {
+constexpr int kMaxNesting = 16;  // mixtures of mixtures, illums' alternates
+
+const Material* component(const Scene& scene, int index) {
+  return index < 0 ? nullptr : &scene.materials[static_cast<size_t>(index)];
+}
+}  // namespace
+
+const Material* resolved(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
+                         Rng& rng) {
+  const Material* at = &m;
+  for (int k = 0; k < kMaxNesting && at; ++k) {
+    const MaterialFamily& family = familyOf(*at);
+    if (const std::optional<int> other = family.seenInstead(*at)) {
+      at = component(scene, *other);
+    } else if (family.role() == HitRole::kMix) {
+      const double c = std::clamp(eval.value(at->pattern, p), 0.0, 1.0);
+      at = component(scene, rng.uniform() < c ? at->foreground : at->background);
+    } else {
+      return at;
+    }
+  }
+  return at;
+}
+
+namespace {
+std::optional<Rgb> throughAt(const Scene& scene, const Material* m, const PatternPoint& p, PatternEvaluator& eval,
+                             int depth) {
+  if (!m) return Rgb(1.0);  // void: nothing there
+  const MaterialFamily& family = familyOf(*m);
+  if (family.role() == HitRole::kMix && depth < kMaxNesting) {
+    const double c = std::clamp(eval.value(m->pattern, p), 0.0, 1.0);
+    const std::optional<Rgb> f = throughAt(scene, component(scene, m->foreground), p, eval, depth + 1);
+    const std::optional<Rgb> b = throughAt(scene, component(scene, m->background), p, eval, depth + 1);
+    if (!f && !b) return std::nullopt;
+    return c * f.value_or(Rgb(0.0)) + (1.0 - c) * b.value_or(Rgb(0.0));
+  }
+  if (!hasFunctionPattern(scene, *m)) return family.straightTransmittance(*m, p.d, p.ng);
+  Material copy;
+  const Material& pm = patterned(scene, *m, p, eval, copy);
+  return family.straightTransmittance(pm, p.d, p.ng);
+}
+}  // namespace
+
+std::optional<Rgb> straightThrough(const Scene& scene, const Material& m, const PatternPoint& p,
+                                   PatternEvaluator& eval) {
+  return throughAt(scene, &m, p, eval, 0);
+}
+
+}  // namespace candela

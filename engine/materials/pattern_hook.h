@@ -1,0 +1,62 @@
+// The one hook where patterns meet materials, as Radiance's raytexture: before a material is
+// evaluated at a hit, the patterns that modify it (brightfunc, colorfunc) are evaluated there and
+// multiply its colour; the material's family then derives its parts from the patterned colour.
+// Every user of a hit's material (paths, the camera, shadow rays) goes through it.
+#pragma once
+
+#include "engine/materials/family.h"
+#include "engine/radiance/cal/cal.h"
+#include "engine/scene.h"
+
+#include <memory>
+
+namespace candela {
+
+// Where a pattern is evaluated: the hit point, the ray's unit direction, the surface's geometric
+// normal (unit, as stored: not turned to the ray) and the distance travelled (m).
+struct PatternPoint {
+  Vec3 x{0.0}, d{0.0}, ng{0.0};
+  double t = 0.0;
+};
+
+// The function language's evaluator of one top-level trace (made on first use: one per thread).
+class PatternEvaluator {
+ public:
+  explicit PatternEvaluator(const Scene& scene) : scene_(scene) {}
+  // The product of the colours of pattern `index` and the patterns modifying it, at p.
+  Rgb colour(int index, const PatternPoint& p);
+  // The value of pattern `index`'s (first) function at p: a mixture's coefficient.
+  double value(int index, const PatternPoint& p);
+
+ private:
+  // Starts an evaluation of pattern sp at p (the ray's variables in its coordinates).
+  void begin(const ScenePattern& sp, const PatternPoint& p);
+
+  const Scene& scene_;
+  std::unique_ptr<cal::Evaluator> eval_;
+};
+
+// Whether m's colour is modified by a function pattern (the hook has work to do).
+inline bool hasFunctionPattern(const Scene& scene, const MaterialParameters& m) {
+  return m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction &&
+         familyOf(m.type).role() != HitRole::kMix;  // a mixture's pattern is its coefficient
+}
+
+// The material as seen at p: m itself, or `out` holding m's parameters with its colour times its
+// patterns' and its parts derived again.
+const Material& patterned(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
+                          Material& out);
+
+// The material a ray that is not a shadow ray meets at p for a surface of m: illum's alternate,
+// and a mixture's foreground with the probability of its coefficient (clipped to [0, 1]; rng drawn
+// only at a mixture), else its background; nullptr when that is void or an illum has no
+// alternate (the ray passes straight on). Patterns are not applied here (patterned, after).
+const Material* resolved(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
+                         Rng& rng);
+
+// What a straight (shadow) ray gets through a surface of m at p, patterns and mixtures evaluated
+// (a mixture: its materials' transmittances weighted by its coefficient); nullopt when opaque.
+std::optional<Rgb> straightThrough(const Scene& scene, const Material& m, const PatternPoint& p,
+                                   PatternEvaluator& eval);
+
+}  // namespace candela

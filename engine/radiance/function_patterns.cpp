@@ -1,0 +1,103 @@
+#include "engine/radiance/function_patterns.h"
+
+#include "base/input_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <system_error>
+
+namespace candela {
+
+FunctionFiles::FunctionFiles() : program_(std::make_shared<cal::Program>()) {}
+
+std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
+  if (name == ".") return {};
+  const std::string what = p.type + " '" + p.name + "'";
+  const std::filesystem::path rel(name);
+  bool up = false;
+  for (const auto& part : rel) up |= part == "..";
+  if (rel.is_absolute() || up || name.empty())
+    throw InputError(p.loc, what + ": function file '" + name +
+                                "' must be a name relative to the working directory, RAYPATH or the scene's "
+                                "folder (no absolute path, no '..')");
+  std::vector<std::filesystem::path> places = {std::filesystem::current_path()};
+  if (const char* raypath = std::getenv("RAYPATH")) {
+    std::string list(raypath);
+    for (size_t start = 0; start <= list.size();) {
+      const size_t end = std::min(list.find(':', start), list.size());
+      if (end > start) places.emplace_back(list.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+  places.push_back(folder);
+  for (const std::filesystem::path& place : places) {
+    const std::filesystem::path path = place / rel;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) continue;
+    const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+    if (!loaded_.count(key)) {
+      loaded_[key] = true;
+      files_.push_back(path.string());
+      program_->addText(readInputFile(path, "function file"), path.string());
+    }
+    return path.string();
+  }
+  throw InputError(p.loc, what + ": function file '" + name + "' is not in the working directory, in RAYPATH or in " +
+                              folder.string());
+}
+
+bool isFunctionPattern(const RadPrimitive& p) {
+  return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
+         (p.type == "mixfunc" && p.strings.size() >= 4);
+}
+
+ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                                 int index, int next) {
+  const std::string what = p.type + " '" + p.name + "'";
+  ScenePattern sp;
+  sp.kind = PatternKind::kFunction;
+  sp.type = p.type;
+  sp.name = p.name;
+  sp.loc = p.loc;
+  sp.strings = p.strings;
+  sp.reals = p.reals;
+  sp.args = p.reals;
+  sp.next = next;
+  // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname file.
+  const bool mixture = p.type == "mixfunc";
+  sp.channels = p.type == "colorfunc" ? 3 : 1;
+  const size_t firstFunction = mixture ? 2 : 0;
+  const size_t fileAt = firstFunction + static_cast<size_t>(sp.channels);
+  files.load(p.strings[fileAt], p, folder);
+  RadTransform toWorld;
+  const size_t end = parseRadTransform(p.strings, fileAt + 1, toWorld, p.loc, what);
+  if (end != p.strings.size())
+    throw InputError(p.loc, what + ": '" + p.strings[end] +
+                                "' is not a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
+  sp.toFunction = toWorld.inverse();
+  sp.functionScale = std::abs(toWorld.scale);
+  // Each function is an expression (a name, or written inline), a definition of its own.
+  static const char* const kChannel[] = {"red", "green", "blue"};
+  for (int k = 0; k < sp.channels; ++k) {
+    const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
+    const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
+    try {
+      sp.functions[static_cast<size_t>(k)] = files.program()->addExpression(expression, label, p.loc);
+    } catch (const InputError& e) {
+      throw InputError(p.loc, what + ": " + (sp.channels == 1 ? "its function" : std::string(kChannel[k]) + " function") +
+                                  " '" + expression + "' is not an expression: " + e.message());
+    }
+    // A plain name is checked as itself (its messages name it); an expression as a whole.
+    const bool plainName = !expression.empty() && (std::isalpha(static_cast<unsigned char>(expression[0])) ||
+                                                   expression[0] == '`') &&
+                           std::all_of(expression.begin(), expression.end(), [](char c) {
+                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '`';
+                           });
+    if (plainName) files.program()->check(expression, -1, p.loc);
+    files.program()->check(label, -1, p.loc, expression);
+  }
+  return sp;
+}
+
+}  // namespace candela

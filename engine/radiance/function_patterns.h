@@ -1,0 +1,53 @@
+// brightfunc and colorfunc patterns and mixfunc mixtures of the function language (Radiance
+// reference manual, "Brightfunc", "Colorfunc", "Mixfunc"): `mod brightfunc id 2+ refl funcfile
+// transform 0 n A1..An`, `mod colorfunc id 4+ red green blue funcfile transform 0 n A1..An` and
+// `mod mixfunc id 4+ foreground background vname funcfile transform 0 n A1..An`, each function an
+// expression over the function file's names, evaluated at a hit by
+// engine/materials/pattern_hook.h.
+//
+// Function files are found as Radiance finds them: a name relative to the working directory,
+// then to each folder of RAYPATH (':'-separated), then to the folder of the file that names it;
+// an absolute name or one with a '..' is refused (nothing outside those places is opened). Each
+// file is read once; a later definition of a name replaces an earlier one (as in Radiance).
+// rayinit.cal's definitions are built in (engine/radiance/cal/cal_library.cpp).
+#pragma once
+
+#include "engine/rad_parse.h"
+#include "engine/radiance/cal/cal.h"
+#include "engine/scene.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace candela {
+
+class FunctionFiles {
+ public:
+  FunctionFiles();
+  // The program every pattern's expressions are added to, shared with the scene.
+  const std::shared_ptr<cal::Program>& program() const { return program_; }
+  // Reads function file `name` (named by p; "." is none) into the program unless read before;
+  // returns the path used ("" for ".").
+  std::string load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder);
+  // The files read, in order (for summary.json).
+  const std::vector<std::string>& files() const { return files_; }
+
+ private:
+  std::shared_ptr<cal::Program> program_;
+  std::map<std::string, bool> loaded_;
+  std::vector<std::string> files_;
+};
+
+// Whether p is a brightfunc, colorfunc or mixfunc candela evaluates with the function language.
+bool isFunctionPattern(const RadPrimitive& p);
+
+// The pattern p describes, its expressions added to files.program() and checked (every name they
+// reach defined, each used as it is defined): an InputError at p's line otherwise. `index` is the
+// pattern's index in Scene::patterns, `next` the pattern modifying it (-1: none).
+ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                                 int index, int next);
+
+}  // namespace candela

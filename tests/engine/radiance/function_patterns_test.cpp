@@ -1,0 +1,196 @@
+// brightfunc and colorfunc through the function language: the reader (files found as Radiance
+// finds them, refusals at their line) and the hook (engine/materials/pattern_hook.h) against
+// closed forms. Under a uniform sky of E = 10 000 lux an infinite diffuse floor of reflectance ρ
+// has luminance ρ E/π, so a sensor facing it sees ρ E; a pattern multiplying the floor's colour
+// by k makes that k ρ E, and stripes that reflect on half the floor ρ E/2.
+#include "engine/daylight.h"
+#include "engine/fresnel.h"
+#include "engine/rad_reader.h"
+#include "engine/tracer.h"
+#include "photometry/sky_type.h"
+#include "tests/support/temp_files.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kFloor = "f polygon floor 0 0 12 -1e4 -1e4 0  1e4 -1e4 0  1e4 1e4 0  -1e4 1e4 0\n";
+
+Scene readIn(const fs::path& dir, const std::string& text, PatternPolicy patterns = PatternPolicy::kRefuse) {
+  std::ofstream(dir / "scene.rad") << text;
+  Scene sc;
+  SceneReadOptions opt;
+  opt.patterns = patterns;
+  SceneReader(sc, opt).readFile(dir / "scene.rad");
+  return sc;
+}
+
+void addSky(Scene& sc) {
+  DaylightSpec d;
+  d.skyType = parseSkyType("uniform").value();
+  d.diffuseHorizontalLux = 10000.0;
+  d.groundReflectance = 0.0;
+  addDaylight(sc, d);
+}
+
+// The floor's light on a sensor 2 m above it, facing down, within 4 standard errors of `want`.
+void expectDownward(const Scene& sc, double want, const char* what, int samples = 1024) {
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.seed = 1;
+  s.hemisphereSamples = samples;
+  s.maxBounces = 1;
+  const IrradianceEstimate e = tracer.irradiance(Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux()) << what;
+  EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;  // the test can tell a wrong factor apart
+}
+
+TEST(FunctionPatterns, ConstantBrightnessScalesTheFloor) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "constant");
+  std::ofstream(dir / "k.cal") << "{ a constant factor from the primitive's argument } k = A1;\n";
+  Scene sc = readIn(dir, std::string("void brightfunc dim 2 k k.cal 0 1 0.4\n"
+                                     "dim plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 0.4 * 0.5 * 10000.0, "brightfunc 0.4 on a 0.5 floor");
+}
+
+TEST(FunctionPatterns, StripesThroughATransformReflectOnHalfTheFloor) {
+  // Stripes 1 unit wide in the function's coordinates, scaled to 5 cm: far finer than the 2 m
+  // height, so the floor reads as half as bright.
+  const fs::path dir = test_support::scratchDir("function_patterns", "stripes");
+  std::ofstream(dir / "stripes.cal") << "on = if(sin(PI * Px), 1, 0);\n";
+  Scene sc = readIn(dir, std::string("void brightfunc stripes 4 on stripes.cal -s .05 0 0\n"
+                                     "stripes plastic f 0 0 5 .6 .6 .6 0 0\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 0.5 * 0.6 * 10000.0, "stripes", 16384);  // a two-valued floor: more samples
+}
+
+TEST(FunctionPatterns, ColourFunctionsByChannelWithInlineExpressions) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "colour");
+  Scene sc = readIn(dir, std::string("void colorfunc tint 4 1 A1 0*Px . 0 1 .5\n"
+                                     "tint plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(sc);
+  // Red 1, green 0.5, blue 0: the photopic factor 0.265 + 0.670 · 0.5.
+  expectDownward(sc, (kWeightR * 1.0 + kWeightG * 0.5) * 0.5 * 10000.0, "colorfunc");
+}
+
+TEST(FunctionPatterns, ChainedPatternsMultiply) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "chain");
+  Scene sc = readIn(dir, std::string("void brightfunc a 2 .5 . 0 0\n"
+                                     "a brightfunc b 2 .8 . 0 0\n"
+                                     "b plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 0.4 * 0.5 * 10000.0, "two patterns");
+}
+
+TEST(FunctionPatterns, PatternedGlassTransmitsShadowRaysByItsPattern) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "glass");
+  const Scene plain = readIn(dir, "void glass g 0 0 3 .9 .9 .9\ng polygon pane 0 0 12 -1 -1 1 1 -1 1 1 1 1 -1 1 1\n");
+  const Scene half = readIn(dir, "void brightfunc half 2 .5 . 0 0\nhalf glass g 0 0 3 .9 .9 .9\n"
+                                 "g polygon pane 0 0 12 -1 -1 1 1 -1 1 1 1 1 -1 1 1\n");
+  const Tracer a(plain), b(half);
+  const Rgb ta = a.transmittance(Vec3(0.1, 0.2, 0.0), Vec3(0, 0, 1), 10.0, kNoShape, kNoShape);
+  const Rgb tb = b.transmittance(Vec3(0.1, 0.2, 0.0), Vec3(0, 0, 1), 10.0, kNoShape, kNoShape);
+  ASSERT_GT(photopic(ta), 0.5);
+  Rgb tr, rf;
+  thinGlass(Rgb(0.45), 1.52, -1.0, tr, rf);  // the glass's transmissivity halved
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(tb[c], tr[c], 1e-12);
+}
+
+// mixfunc: the foreground where the coefficient is 1, the background where 0. A floor that is a
+// quarter white plastic, three quarters void (holes onto the black ground) reflects a quarter.
+TEST(FunctionPatterns, MixtureOfAMaterialAndVoid) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "mixture");
+  Scene sc = readIn(dir, std::string("void plastic white 0 0 5 .8 .8 .8 0 0\n"
+                                     "void mixfunc f 4 white void .25 . 0 0\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 0.25 * 0.8 * 10000.0, "mixfunc 0.25 of white and void", 16384);
+}
+
+TEST(FunctionPatterns, MixtureByPositionOfTwoMaterials) {
+  // Stripes (coefficient 1 on half the floor, 0 on the other) of plastics 0.8 and 0.2: 0.5 on average.
+  const fs::path dir = test_support::scratchDir("function_patterns", "mixture_stripes");
+  std::ofstream(dir / "mix.cal") << "side = if(sin(PI * Px / A1), 1, 0);\n";
+  Scene sc = readIn(dir, std::string("void plastic light 0 0 5 .8 .8 .8 0 0\n"
+                                     "void plastic dark 0 0 5 .2 .2 .2 0 0\n"
+                                     "void mixfunc f 4 light dark side mix.cal 0 1 .05\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 0.5 * 10000.0, "striped mixture", 16384);
+}
+
+// Shadow rays through a mixture of glass and void blend what each lets through.
+TEST(FunctionPatterns, ShadowRaysThroughAMixtureBlendItsMaterials) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "mixture_glass");
+  const Scene sc = readIn(dir, "void glass g 0 0 3 .9 .9 .9\nvoid mixfunc m 4 g void .3 . 0 0\n"
+                               "m polygon pane 0 0 12 -1 -1 1 1 -1 1 1 1 1 -1 1 1\n");
+  const Tracer tracer(sc);
+  const Rgb t = tracer.transmittance(Vec3(0.1, 0.2, 0.0), Vec3(0, 0, 1), 10.0, kNoShape, kNoShape);
+  Rgb tr, rf;
+  thinGlass(Rgb(0.9), 1.52, -1.0, tr, rf);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], 0.3 * tr[c] + 0.7, 1e-12);
+}
+
+std::string errorOf(const fs::path& dir, const std::string& text, PatternPolicy patterns = PatternPolicy::kRefuse) {
+  try {
+    readIn(dir, text, patterns);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(FunctionPatterns, FilesAreFoundAsRadianceFindsThemAndNowhereElse) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "files");
+  const fs::path lib = test_support::scratchDir("function_patterns", "raypath");
+  std::ofstream(lib / "libpat.cal") << "v = .5;\n";
+  const std::string uses = "void brightfunc p 2 v libpat.cal 0 0\np plastic f 0 0 5 .5 .5 .5 0 0\n";
+  EXPECT_NE(errorOf(dir, uses).find("scene.rad:1: brightfunc 'p': function file 'libpat.cal' is not in the working "
+                                    "directory, in RAYPATH or in"),
+            std::string::npos);
+  ::setenv("RAYPATH", ("/nonexistent:" + lib.string()).c_str(), 1);
+  EXPECT_EQ(errorOf(dir, uses), "no error");
+  ::unsetenv("RAYPATH");
+  EXPECT_NE(errorOf(dir, "void brightfunc p 2 v /etc/passwd 0 0\n").find("must be a name relative to"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightfunc p 2 v ../x.cal 0 0\n").find("no absolute path, no '..'"), std::string::npos);
+}
+
+TEST(FunctionPatterns, RefusalsNameTheirLine) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "refusals");
+  std::ofstream(dir / "bad.cal") << "ok = 1;\n\nbroken = (2 + ;\n";
+  EXPECT_NE(errorOf(dir, "void brightfunc p 2 ok bad.cal 0 0\n").find("bad.cal:3: unexpected ';'"), std::string::npos);
+  std::ofstream(dir / "good.cal") << "uses = 1 + nowhere;\n";
+  EXPECT_NE(errorOf(dir, "\nvoid brightfunc p 2 uses good.cal 0 0\n").find("good.cal:1: 'uses' uses 'nowhere', which is not defined"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightfunc p 2 missing good.cal 0 0\n").find("scene.rad:1: 'missing' is not defined"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightfunc p 2 (1+ . 0 0\n").find("its function '(1+' is not an expression"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightfunc p 3 1 . -q 0 0\n").find("'-q' is not a transform option"), std::string::npos);
+  EXPECT_NE(errorOf(dir, "void mixfunc m 4 nothere void .5 . 0 0\n").find("its foreground 'nothere' is not a material"),
+            std::string::npos);
+  // On a light source: refused, or the source unmodified with a warning under --patterns base.
+  const std::string lamp = "void brightfunc p 2 .5 . 0 0\np light lamp 0 0 3 10 10 10\n";
+  EXPECT_NE(errorOf(dir, lamp).find("scene.rad:2: light 'lamp' is modified by brightfunc 'p'"), std::string::npos);
+  const Scene sc = readIn(dir, lamp, PatternPolicy::kBase);
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_EQ(sc.inputWarnings[0].code, "pattern_replaced");
+  EXPECT_EQ(sc.materials.back().pattern, -1);
+  // A missing file under --patterns base: the material unmodified, with the reason.
+  const Scene base = readIn(dir, "void brightfunc p 2 v nofile.cal 0 0\np plastic f 0 0 5 .5 .5 .5 0 0\n",
+                            PatternPolicy::kBase);
+  ASSERT_EQ(base.inputWarnings.size(), 1u);
+  EXPECT_NE(base.inputWarnings[0].message.find("cannot be read (brightfunc 'p': function file 'nofile.cal'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace candela
