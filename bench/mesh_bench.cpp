@@ -6,7 +6,7 @@
 // Run: build/bench/mesh_bench [--benchmark_filter=...]
 #include "engine/embree_accelerator.h"
 #include "engine/octree.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 
 #include <benchmark/benchmark.h>
 

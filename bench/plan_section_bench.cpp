@@ -4,7 +4,7 @@
 // heightfield crossing the plane everywhere (the raw cap and the merge at work). Results in
 // docs/reports.md ("Plans").
 // Run: build/bench/plan_section_bench
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "study/plan_section.h"
 
 #include <benchmark/benchmark.h>

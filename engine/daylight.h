@@ -39,7 +39,7 @@ struct DaylightSpec {
 // Builds the sky, adds the sun as a distant `light` source and sets scene.sky. Throws
 // InputError at spec.skyLoc/timeLoc for impossible combinations (a sun position with no way to
 // get it, Perez without irradiances, ...). Does nothing for SkyKind::kNone.
-// A scene whose files define their own sky (gensky, gendaylit: engine/rad_sky.h) first loses it
+// A scene whose files define their own sky (gensky, gendaylit: engine/radiance/sky.h) first loses it
 // and its sun, with the warning `scene_sky_replaced` at `by` (replaceSceneSky).
 void addDaylight(Scene& scene, const DaylightSpec& spec);
 

@@ -4,7 +4,7 @@
 #include "base/units.h"
 #include "engine/materials/family.h"
 #include "engine/polygon_split.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 
 #include <algorithm>
 #include <charconv>

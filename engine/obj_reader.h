@@ -9,7 +9,7 @@
 
 #include "base/error.h"
 #include "base/math.h"
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 #include "engine/scene.h"
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // Splitting a polygon outline into triangles, by vertex index: OBJ faces (engine/obj_reader.h)
-// and non-planar Radiance polygons under --nonplanar triangulate (engine/rad_reader.h).
+// and non-planar Radiance polygons under --nonplanar triangulate (engine/radiance/reader.h).
 #pragma once
 
 #include "base/math.h"

@@ -6,7 +6,7 @@
 #include "base/warning.h"
 #include "engine/luminaire_source.h"
 #include "engine/materials/material.h"
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 #include "engine/radiance/cal/cal.h"
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
@@ -68,7 +68,7 @@ struct SkyDome {
   double horizontalSunLux = 0.0;          // sun only, open horizontal plane
   Vec3 sunDirModel{0.0, 0.0, 1.0};
   double sunAltitudeDeg = 90.0, sunAzimuthDeg = 0.0;
-  // A sky read from the scene's own sky functions (engine/rad_sky.h): where it is defined, and
+  // A sky read from the scene's own sky functions (engine/radiance/sky.h): where it is defined, and
   // which of Scene::distant is its sun (-1: none), so that a case's sky can replace both
   // (replaceSceneSky, engine/daylight.h).
   bool fromScene = false;
@@ -125,7 +125,7 @@ struct Scene {
   std::optional<SkyDome> sky;               // daylight (engine/daylight.h); none indoors
   std::vector<Portal> portals;              // declared openings (sky sampling only)
   VertexStore vertices;
-  // What reading the scene files replaced or repaired (engine/rad_reader.h), for the study's
+  // What reading the scene files replaced or repaired (engine/radiance/reader.h), for the study's
   // warnings.
   std::vector<Warning> inputWarnings;
 

@@ -1,6 +1,6 @@
 #include "engine/source_distribution.h"
 
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 #include "engine/scene.h"
 
 #include <algorithm>

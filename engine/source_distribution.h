@@ -25,7 +25,7 @@
 #include "base/error.h"
 #include "base/math.h"
 #include "base/units.h"
-#include "engine/rad_data_file.h"
+#include "engine/radiance/data_file.h"
 
 #include <string>
 #include <vector>

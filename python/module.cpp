@@ -7,7 +7,7 @@
 #include "base/error.h"
 #include "base/warning.h"
 #include "engine/daylight.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/scene.h"
 #include "engine/trace_settings.h"
 #include "photometry/luminaire_summary.h"

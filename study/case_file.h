@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "base/error.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/trace_settings.h"
 #include "base/math.h"
 #include "engine/camera.h"

@@ -2,7 +2,7 @@
 
 #include "engine/daylight.h"
 #include "engine/luminaire_opening.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "photometry/epw.h"
 #include "photometry/site.h"
 #include "photometry/photometric_file.h"

@@ -2,7 +2,7 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
-#include "engine/rad_sky.h"
+#include "engine/radiance/sky.h"
 #include "engine/sensors.h"
 #include "metrics/grid_stats.h"
 #include "metrics/modelling.h"

@@ -1,7 +1,7 @@
 #include "study/points_study.h"
 #include "study/portal_file.h"
 
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
 #include "study/finite_results.h"

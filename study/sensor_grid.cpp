@@ -211,7 +211,7 @@ bool readBoundedLine(std::istream& in, std::string& line, const std::string& sou
 SensorPoint checkedSensorPoint(const double v[6], const FileLoc& loc) {
   for (int k = 0; k < 6; ++k)
     if (!std::isfinite(v[k])) throw InputError(loc, "a sensor point's numbers must be finite");
-  // Within 10 000 km of the origin (engine/rad_reader.cpp says why): a point at 1e30 m once
+  // Within 10 000 km of the origin (engine/radiance/reader.cpp says why): a point at 1e30 m once
   // aborted the process inside Embree.
   for (int k = 0; k < 3; ++k)
     if (std::abs(v[k]) > kMaxCoordinateM) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");

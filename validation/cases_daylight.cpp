@@ -3,7 +3,7 @@
 // sky (quadrature of the Moon–Spencer luminance over the window).
 #include "engine/daylight.h"
 #include "photometry/sun_spa.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 #include "validation/case_registry.h"

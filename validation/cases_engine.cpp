@@ -1,7 +1,7 @@
 // Engine-core validation cases: area and distant sources against closed forms, the paper's
 // sphere on a plane by quadrature, and integrating spheres (closed environments). Every scene is
 // plain Radiance text, so each case can be re-run in Radiance (`rtrace -I -h` with -ab ≥ 1).
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 #include "validation/case_registry.h"

@@ -1,7 +1,7 @@
 // Indirect-illumination validation cases (docs/accuracy.md): the irradiance cache on the closed
 // forms (integrating spheres, the paper's sphere on a plane) and both methods on scenes where
 // interreflection dominates against a converged path-traced reference.
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 #include "validation/case_registry.h"

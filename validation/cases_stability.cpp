@@ -3,7 +3,7 @@
 // settings. Near contact is covered by the sphere-on-plane cases (0.25 m from the contact point,
 // sensors 1 cm up) and by tests/engine/stability_test.cpp (5 mm from the sphere).
 #include "engine/daylight.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 #include "validation/case_registry.h"

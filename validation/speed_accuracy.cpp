@@ -1,6 +1,6 @@
 #include "validation/speed_accuracy.h"
 
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 

@@ -8,7 +8,7 @@
 
 #include "base/rng.h"
 #include "engine/materials/material.h"
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 
 #include <functional>
 #include <optional>

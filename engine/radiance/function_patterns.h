@@ -12,7 +12,7 @@
 // rayinit.cal's definitions are built in (engine/radiance/cal/cal_library.cpp).
 #pragma once
 
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 #include "engine/radiance/cal/cal.h"
 #include "engine/scene.h"
 

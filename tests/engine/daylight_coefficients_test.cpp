@@ -8,7 +8,7 @@
 //    within 3 %.
 #include "engine/daylight.h"
 #include "engine/daylight_coefficients.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"

@@ -3,7 +3,7 @@
 // (written here independently of the engine: the trigonometric form of Fresnel's equations,
 // Simpson's rule), and the Radiance reader's handling of the primitive and its errors.
 #include "engine/fresnel.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "photometry/sky_model.h"
 #include "photometry/make_sky.h"

@@ -11,7 +11,7 @@
 // (61–75 %): a bar 20 % too wide covers 77 %, 20 % too narrow 59 %. Measured shares are printed
 // and listed in docs/accuracy.md.
 #include "engine/daylight.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"

@@ -1,5 +1,5 @@
 // The candela tables of the ies2rad fixtures (tests/data/rad/ies2rad/*.ies) and the plain linear
-// interpolation the tests evaluate them with, independently of engine/rad_data_file.
+// interpolation the tests evaluate them with, independently of engine/radiance/data_file.
 #pragma once
 
 #include <vector>

@@ -8,7 +8,7 @@
 #include "engine/embree_accelerator.h"
 #include "engine/octree.h"
 #include "engine/polygon_split.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "tests/engine/test_materials.h"
 #include "tests/support/peer_suite.h"

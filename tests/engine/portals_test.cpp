@@ -4,7 +4,7 @@
 #include "engine/daylight.h"
 #include "engine/lights.h"
 #include "engine/portals.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sampling.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"

@@ -4,7 +4,7 @@
 // an exact area integration of the same distribution. Fixtures: tests/data/rad/ies2rad/
 // (README.md there: how each corresponds to an ies2rad run).
 #include "engine/light_selection.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/render.h"
 #include "engine/source_distribution.h"
 #include "engine/tracer.h"

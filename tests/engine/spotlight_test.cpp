@@ -5,7 +5,7 @@
 // aim (0, 0, −2), lights a point at distance d, at angle θ off the aim, facing the disk:
 //   E = 179 · L · π r² · cos²θ / d² · (d / (d + 2))²   inside the cone, 0 outside,
 // within 4 standard errors plus the point-source error (r/d)² of the disk.
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/source_distribution.h"
 #include "engine/tracer.h"
 #include "tests/support/direct_only.h"

@@ -1,5 +1,5 @@
-// Fuzz target: Radiance scene text (engine/rad_reader.h, readRadianceText).
-#include "engine/rad_reader.h"
+// Fuzz target: Radiance scene text (engine/radiance/reader.h, readRadianceText).
+#include "engine/radiance/reader.h"
 #include "base/error.h"
 #include "tests/fuzz/fuzz_target.h"
 

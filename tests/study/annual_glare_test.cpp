@@ -13,7 +13,7 @@
 #include "study/annual_glare_check.h"
 
 #include "engine/daylight.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "photometry/epw.h"
 #include "photometry/make_sky.h"
 #include "photometry/site.h"

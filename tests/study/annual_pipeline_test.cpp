@@ -7,7 +7,7 @@
 //  - Hours and occupancy: 8760 records, 3650 occupied hours (08–18).
 //  - A sensor facing down over a black ground sees nothing at all, every hour.
 #include "engine/daylight_coefficients.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "metrics/annual.h"
 #include "photometry/annual_sky.h"
 #include "photometry/epw.h"

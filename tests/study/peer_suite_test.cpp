@@ -6,7 +6,7 @@
 // that starts (or stops) loading fails the test until the table and docs/engine.md say so.
 #include "study/points_study.h"
 #include "study/sensor_grid.h"
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 #include "tests/support/peer_suite.h"
 #include "tests/support/temp_files.h"
 

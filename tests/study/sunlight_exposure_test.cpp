@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "base/error.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 
 namespace candela {

@@ -3,7 +3,7 @@
 // type's targets; and a black room's walls against the direct light's closed form I·cos θ / d².
 #include "study/surface_grids.h"
 
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "study/case_scene.h"
 #include "study/prepared_grid.h"
 #include "study/run_case.h"

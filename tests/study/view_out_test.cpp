@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 
 namespace candela {

@@ -5,7 +5,7 @@
 #include "photometry/photometric_file.h"
 
 #include "base/units.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "photometry/epw.h"
 #include "photometry/ies_lm63.h"
 #include "study/case_file.h"

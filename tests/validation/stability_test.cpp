@@ -1,7 +1,7 @@
 // Stability where interreflection methods are known to fail, each with a stated bound, for the
 // path tracer and the irradiance cache: near contact, a light leak through a thin wall,
 // splotches, a ρ = 0.9 closed box, and a 1 cm lamp seen through a mirror.
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "validation/analytic.h"

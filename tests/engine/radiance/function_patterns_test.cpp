@@ -5,7 +5,7 @@
 // by k makes that k ρ E, and stripes that reflect on half the floor ρ E/2.
 #include "engine/daylight.h"
 #include "engine/fresnel.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
 #include "tests/support/temp_files.h"

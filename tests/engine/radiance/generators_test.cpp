@@ -2,9 +2,9 @@
 // coordinates computed here by hand or from closed forms, names as the programs write them,
 // orientation, file resolution, and the refusals with their file and line.
 #include "base/input_file.h"
-#include "engine/rad_gen.h"
-#include "engine/rad_generators.h"
-#include "engine/rad_reader.h"
+#include "engine/radiance/gen.h"
+#include "engine/radiance/generators.h"
+#include "engine/radiance/reader.h"
 #include "tests/support/peer_suite.h"
 
 #include <gtest/gtest.h>

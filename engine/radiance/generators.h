@@ -3,7 +3,7 @@
 // never run. Any other command is refused; nothing in a scene file ever reaches a shell.
 #pragma once
 
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 
 #include <filesystem>
 #include <functional>

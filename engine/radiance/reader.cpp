@@ -1,4 +1,4 @@
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 
 #include "base/input_file.h"
 #include "base/units.h"
@@ -6,8 +6,8 @@
 #include "engine/materials/family.h"
 #include "engine/polygon_split.h"
 #include "engine/radiance/function_patterns.h"
-#include "engine/rad_generators.h"
-#include "engine/rad_sky.h"
+#include "engine/radiance/generators.h"
+#include "engine/radiance/sky.h"
 #include "engine/source_distribution.h"
 
 #include <algorithm>

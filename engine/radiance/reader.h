@@ -1,11 +1,11 @@
 // Reader for Radiance's scene description language (Radiance reference manual, "Scene
 // Description"): primitives `modifier type identifier`, then string, integer and real arguments,
 // each preceded by its count; `#` comments; several files in order, modifiers defined before use.
-// Inline commands of Radiance's generators are expanded (engine/rad_generators.h), never run.
+// Inline commands of Radiance's generators are expanded (engine/radiance/generators.h), never run.
 // docs/engine.md lists what of the language is read, expanded, replaced or refused.
 #pragma once
 
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 #include "engine/scene.h"
 
 #include <filesystem>

@@ -1,7 +1,7 @@
 // First stage of reading Radiance's scene description language (Radiance reference manual,
 // "Scene Description"): text → primitives `modifier type identifier` with their string, integer
 // and real arguments, and inline command lines (`!command args`), in file order. Nothing here
-// knows what a type means; engine/rad_reader.cpp builds the scene, engine/rad_generators.cpp
+// knows what a type means; engine/radiance/reader.cpp builds the scene, engine/radiance/generators.cpp
 // expands the commands.
 #pragma once
 

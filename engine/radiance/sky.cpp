@@ -1,7 +1,7 @@
-#include "engine/rad_sky.h"
+#include "engine/radiance/sky.h"
 
 #include "base/units.h"
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 #include "photometry/site.h"
 
 #include <algorithm>
@@ -38,7 +38,7 @@ RadianceSkyFunction::RadianceSkyFunction(const ScenePattern& p) : kind_(p.kind),
   if (p.strings[0] != function)
     throw InputError(p.loc, what + ": " + file + " defines the sky function '" + function + "', not '" + p.strings[0] + "'");
   // Transform arguments (Radiance reference manual, "Transformations"; xform appends its own,
-  // engine/rad_transform.h): a turn about +Z turns the sky, a translation or scale leaves
+  // engine/radiance/transform.h): a turn about +Z turns the sky, a translation or scale leaves
   // directions as they are; a transform that tilts or mirrors the sky is refused.
   RadTransform xf;
   const size_t end = parseRadTransform(p.strings, 2, xf, p.loc, what);

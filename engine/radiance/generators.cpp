@@ -1,5 +1,5 @@
-#include "engine/rad_generators.h"
-#include "engine/rad_gen.h"
+#include "engine/radiance/generators.h"
+#include "engine/radiance/gen.h"
 
 #include <map>
 
@@ -9,7 +9,7 @@ namespace {
 
 using Generator = std::vector<RadPrimitive> (*)(const RadCommand&, const RadExpandContext&);
 
-// Each generator lives in a file of its own (engine/rad_gen_*.cpp), declared in engine/rad_gen.h.
+// Each generator lives in a file of its own (engine/radiance/gen_*.cpp), declared in engine/radiance/gen.h.
 const std::map<std::string, Generator>& generators() {
   static const std::map<std::string, Generator> table = {
       {"xform", expandXform},

@@ -1,6 +1,6 @@
 // The Radiance scene reader: a scene using every supported primitive and material, and one
 // fixture per error the reader reports, each checking the line named in the message.
-#include "engine/rad_reader.h"
+#include "engine/radiance/reader.h"
 
 #include <gtest/gtest.h>
 

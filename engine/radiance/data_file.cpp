@@ -1,4 +1,4 @@
-#include "engine/rad_data_file.h"
+#include "engine/radiance/data_file.h"
 
 #include "base/input_file.h"
 

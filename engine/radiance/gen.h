@@ -1,9 +1,9 @@
-// The generators candela expands (engine/rad_generators.cpp registers them): each returns the
+// The generators candela expands (engine/radiance/generators.cpp registers them): each returns the
 // primitives the Radiance program of the same name would write, or throws InputError(cmd.loc, ...).
 // One line per generator; docs/engine.md, "Generators and functions", says what each reads.
 #pragma once
 
-#include "engine/rad_generators.h"
+#include "engine/radiance/generators.h"
 
 namespace candela {
 

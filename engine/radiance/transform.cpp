@@ -1,4 +1,4 @@
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -3,8 +3,8 @@
 // doc/man/man1/xform.1; the code is candela's. docs/engine.md, "xform: names and files", states
 // the rules and where candela differs.
 #include "base/input_file.h"
-#include "engine/rad_gen.h"
-#include "engine/rad_transform.h"
+#include "engine/radiance/gen.h"
+#include "engine/radiance/transform.h"
 
 #include <charconv>
 #include <cmath>
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 // Argument files naming argument files: refused this deep (a file naming itself).
 constexpr int kMaxArgFileDepth = 32;
-// The largest -a count (the -i count it becomes has the same bound in rad_transform).
+// The largest -a count (the -i count it becomes has the same bound in radiance/transform).
 constexpr long kMaxArrayCount = 1000000;
 
 // What xform does to a type's arguments (xform.c's initotypes: o_* and m_* functions, addxform for

@@ -4,7 +4,7 @@
 // Radiance's src/gen/genprism.c (doc/man/man1/genprism.1); the code is candela's.
 #include "base/input_file.h"
 #include "base/math.h"
-#include "engine/rad_gen.h"
+#include "engine/radiance/gen.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,7 +1,7 @@
-// Radiance data files (engine/rad_data_file.h): the ies2rad panel's .dat against its IES table,
+// Radiance data files (engine/radiance/data_file.h): the ies2rad panel's .dat against its IES table,
 // data.c's interpolation and extrapolation rule, irregular and descending axes, and one error per
 // check with its line.
-#include "engine/rad_data_file.h"
+#include "engine/radiance/data_file.h"
 #include "tests/engine/ies2rad_tables.h"
 
 #include <gtest/gtest.h>

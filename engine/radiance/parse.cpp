@@ -1,4 +1,4 @@
-#include "engine/rad_parse.h"
+#include "engine/radiance/parse.h"
 
 #include <cctype>
 #include <charconv>

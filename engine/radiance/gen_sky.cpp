@@ -2,8 +2,8 @@
 // (src/gen/gensky.c, src/gen/gendaylit.c and their man pages, for the facts: options, defaults,
 // formulas and output), with the sun placed by candela's NREL SPA instead of the programs' own
 // solar formulas (docs/daylight.md, "Skies from gensky and gendaylit"). The sky functions the
-// output names (skybright.cal, perezlum.cal) are evaluated natively by engine/rad_sky.h.
-#include "engine/rad_gen.h"
+// output names (skybright.cal, perezlum.cal) are evaluated natively by engine/radiance/sky.h.
+#include "engine/radiance/gen.h"
 
 #include "base/math.h"
 #include "base/units.h"

@@ -1,4 +1,4 @@
-// gensky and gendaylit (engine/rad_gen_sky.cpp) and their sky functions (engine/rad_sky.h),
+// gensky and gendaylit (engine/radiance/gen_sky.cpp) and their sky functions (engine/radiance/sky.h),
 // against numbers computed here independently:
 //  - closed forms of the options (-B is the sky's horizontal irradiance of the CIE overcast
 //    sky, 7 pi / 9 its zenith factor; -R the sun's horizontal irradiance through gensky's 5.98e-5 sr
@@ -8,9 +8,9 @@
 //  - the sun's direction against NREL SPA (photometry/sun_spa.h) within 0.01 degree;
 //  - a point under the open sky through candela's tracer, within 4 standard errors.
 #include "engine/daylight.h"
-#include "engine/rad_generators.h"
-#include "engine/rad_reader.h"
-#include "engine/rad_sky.h"
+#include "engine/radiance/generators.h"
+#include "engine/radiance/reader.h"
+#include "engine/radiance/sky.h"
 #include "engine/tracer.h"
 #include "photometry/site.h"
 #include "photometry/sky_cie.h"
@@ -621,7 +621,7 @@ TEST(SceneSky, ReaderRules) {
     EXPECT_EQ(std::string(e.what()), "more.rad:3: the sky function 'skyfunc' brings a second sky; the scene's sky is "
                                      "already defined at sky.rad:3: a scene has one sky");
   }
-  // xform turns the sky file: the sky function carries `-i 1 -rz 30` (engine/rad_transform.h).
+  // xform turns the sky file: the sky function carries `-i 1 -rz 30` (engine/radiance/transform.h).
   const std::string dir = std::string(CANDELA_TEST_DATA) + "/rad/sky/";
   Scene turned;
   readRadianceText("!xform -rz 30 " + dir + "honeybee_sunny.rad\n", "sky.rad", turned);

@@ -2,7 +2,7 @@
 // The faces, their names, vertex order and the rounded and bevelled corners are those Radiance's
 // src/gen/genbox.c writes (doc/man/man1/genbox.1); the code is candela's.
 #include "base/math.h"
-#include "engine/rad_gen.h"
+#include "engine/radiance/gen.h"
 
 #include <algorithm>
 #include <array>

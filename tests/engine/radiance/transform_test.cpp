@@ -1,6 +1,6 @@
 // Radiance's transform arguments: each option against the matrix it must be, the order of
 // application, -i repeats, and the errors.
-#include "engine/rad_transform.h"
+#include "engine/radiance/transform.h"
 
 #include <gtest/gtest.h>
 
