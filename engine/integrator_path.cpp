@@ -107,7 +107,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
 // count as bounces.
 Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
   Vec3 out(0.0);
-  if (!sampleWardLobe(m, v.inDir, v.nf, ctx.rng, out)) return Rgb(0.0);
+  if (!familyOf(m).sampleLobe(m, v.inDir, v.nf, ctx.rng, out)) return Rgb(0.0);
   const TallyFactor tf(ctx.tally, m.specularReflectance);
   PathState next;
   next.skip = v.flatSkip;

@@ -145,7 +145,7 @@ Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3&
     Rgb sum(0.0);
     for (int k = 0; k < n; ++k) {
       Vec3 dir(0.0);
-      if (sampleWardLobe(m, d, nf, cr.ctx.rng, dir)) sum += pathRadiance(cr.ctx, xf, dir, next);
+      if (familyOf(m).sampleLobe(m, d, nf, cr.ctx.rng, dir)) sum += pathRadiance(cr.ctx, xf, dir, next);
     }
     out += m.specularReflectance * sum / static_cast<double>(n);
   }

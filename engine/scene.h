@@ -43,7 +43,7 @@ struct ScenePattern {
   int channels = 0;
   std::array<int32_t, 3> functions{-1, -1, -1};
   std::vector<double> args;
-  RadTransform toFunction;
+  RadTransform toFunction, toWorld;
   double functionScale = 1.0;
   int next = -1;
 };

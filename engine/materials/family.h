@@ -148,6 +148,15 @@ class MaterialFamily {
   // irradiance estimate may stand in for a path.
   virtual bool cacheable(const Material& /*m*/) const { return false; }
   virtual bool matteOpaque(const Material& /*m*/) const { return false; }
+  // kScatter: one direction of the glossy lobe for a ray arriving along inDir on the side of nf;
+  // false when the sample is lost (engine/materials/normal.h).
+  virtual bool sampleLobe(const Material& /*m*/, const Vec3& /*inDir*/, const Vec3& /*nf*/, Rng& /*rng*/,
+                          Vec3& /*out*/) const {
+    return false;
+  }
+  // The family's primitive names functions in a function file (plastic2's u direction): the reader
+  // reads them as a pattern of three functions into Material::anisotropy before read().
+  virtual bool usesFunctions() const { return false; }
 
   // kSpecular: one sampled event (paths), or every part at once (the camera).
   virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,

@@ -13,9 +13,10 @@ namespace candela {
 
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
-  kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface
+  kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
+  kPlastic2, kMetal2, kTrans2
 };
-inline constexpr int kMaterialTypeCount = 12;
+inline constexpr int kMaterialTypeCount = 15;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -29,7 +30,13 @@ struct MaterialParameters {
   Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
                          // dielectric transmission per metre of path inside (fraction, per channel)
   double specularity = 0.0;   // plastic, metal, trans (fraction)
-  double roughness = 0.0;     // plastic, metal, trans (rms slope)
+  double roughness = 0.0;     // plastic, metal, trans (rms slope); plastic2, metal2, trans2: along u
+  // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u, the pattern whose three
+  // functions give the u direction (Scene::patterns), and that direction at a hit (world, set by
+  // engine/materials/pattern_hook.h; zero until then).
+  double roughnessV = 0.0;
+  int anisotropy = -1;
+  Vec3 anisotropyU{0.0};
   double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
   double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
   double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)

@@ -6,17 +6,37 @@
 
 namespace candela {
 
+bool sampleWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
+
+// Radiance's parts of the normal materials (reference manual, "Plastic", "Metal", "Trans"):
+// plastic's diffuse part is colour·(1 − spec), its specular part uncoloured spec; metal's specular
+// part takes the colour; trans splits the non-specular light into reflected (1 − trans), diffusely
+// transmitted trans·(1 − tspec) and specularly transmitted trans·tspec.
+void derivePlastic(MaterialParameters& m);
+void deriveMetal(MaterialParameters& m);
+void deriveTrans(MaterialParameters& m);
+
 class NormalFamily : public MaterialFamily {
  public:
   HitRole role() const override { return HitRole::kScatter; }
   // Diffuse reflection served by the irradiance cache: something reflected diffusely, nothing
   // transmitted.
   bool cacheable(const Material& m) const override;
+  // Radiance's isotropic Ward lobe (sampleWardLobe).
+  bool sampleLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
+    return sampleWardLobe(m, inDir, nf, rng, out);
+  }
 
  protected:
   // plastic/metal's five arguments (colour, specularity, roughness), trans's two more, checked.
   static void readCommon(const MaterialReadContext& ctx, Material& m, size_t reals);
+  // What cannot exist: more reflected or transmitted than received, a roughness below 0.
+  static void checkCommon(const MaterialReadContext& ctx, const Material& m, bool transmits);
 };
+
+// Radiance's anisotropic Ward lobe (plastic2, metal2, trans2): roughness along m.anisotropyU
+// (projected on the surface) and roughnessV across it.
+bool sampleAnisotropicWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
 
 // One direction of the glossy (Ward) lobe of m for a ray arriving along inDir on the side of nf;
 // false when the sample is lost (arrival from behind, or eight draws below the surface).

@@ -57,13 +57,28 @@ double PatternEvaluator::value(int index, const PatternPoint& p) {
   }
 }
 
+Vec3 PatternEvaluator::direction(int index, const PatternPoint& p) {
+  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  begin(sp, p);
+  Vec3 v(0.0);
+  try {
+    for (int k = 0; k < 3; ++k) v[k] = eval_->value(sp.functions[static_cast<size_t>(k)]);
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
+  return sp.toWorld.direction(v);
+}
+
 const Material& patterned(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
                           Material& out) {
   if (!hasFunctionPattern(scene, m)) return m;
   static_cast<MaterialParameters&>(out) = m;
-  // A negative brightness is no light: 0 (Radiance would carry it on as negative light).
-  out.color = m.color * glm::max(eval.colour(m.pattern, p), Rgb(0.0));
-  deriveMaterial(out);
+  if (m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction) {
+    // A negative brightness is no light: 0 (Radiance would carry it on as negative light).
+    out.color = m.color * glm::max(eval.colour(m.pattern, p), Rgb(0.0));
+    deriveMaterial(out);
+  }
+  if (m.anisotropy >= 0) out.anisotropyU = eval.direction(m.anisotropy, p);
   return out;
 }
 

@@ -27,6 +27,8 @@ class PatternEvaluator {
   Rgb colour(int index, const PatternPoint& p);
   // The value of pattern `index`'s (first) function at p: a mixture's coefficient.
   double value(int index, const PatternPoint& p);
+  // Pattern `index`'s three functions at p as a direction in the world (plastic2's u).
+  Vec3 direction(int index, const PatternPoint& p);
 
  private:
   // Starts an evaluation of pattern sp at p (the ray's variables in its coordinates).
@@ -38,6 +40,7 @@ class PatternEvaluator {
 
 // Whether m's colour is modified by a function pattern (the hook has work to do).
 inline bool hasFunctionPattern(const Scene& scene, const MaterialParameters& m) {
+  if (m.anisotropy >= 0) return true;  // plastic2's u direction
   return m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction &&
          familyOf(m.type).role() != HitRole::kMix;  // a mixture's pattern is its coefficient
 }

@@ -11,10 +11,7 @@ class Plastic : public NormalFamily {
   MaterialType type() const override { return MaterialType::kPlastic; }
   const char* name() const override { return "plastic"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 5); }
-  void derive(MaterialParameters& m) const override {
-    m.diffuseReflectance = m.color * (1.0 - m.specularity);
-    m.specularReflectance = Rgb(m.specularity);
-  }
+  void derive(MaterialParameters& m) const override { derivePlastic(m); }
   bool matteOpaque(const Material& m) const override { return photopic(m.specularReflectance) <= 0.0; }
 };
 
@@ -23,10 +20,7 @@ class Metal : public NormalFamily {
   MaterialType type() const override { return MaterialType::kMetal; }
   const char* name() const override { return "metal"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 5); }
-  void derive(MaterialParameters& m) const override {
-    m.diffuseReflectance = m.color * (1.0 - m.specularity);
-    m.specularReflectance = m.color * m.specularity;
-  }
+  void derive(MaterialParameters& m) const override { deriveMetal(m); }
   bool matteOpaque(const Material& m) const override { return photopic(m.specularReflectance) <= 0.0; }
 };
 

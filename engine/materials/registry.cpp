@@ -25,6 +25,9 @@ constexpr Entry kFamilies[] = {
     {glowFamily, {"glow", nullptr}},
     {mixtureFamily, {nullptr, nullptr}},  // read with the patterns (engine/radiance/function_patterns.h)
     {interfaceFamily, {"interface", nullptr}},
+    {plastic2Family, {"plastic2", nullptr}},
+    {metal2Family, {"metal2", nullptr}},
+    {trans2Family, {"trans2", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -17,5 +17,8 @@ const MaterialFamily& illumFamily();
 const MaterialFamily& glowFamily();
 const MaterialFamily& mixtureFamily();
 const MaterialFamily& interfaceFamily();
+const MaterialFamily& plastic2Family();
+const MaterialFamily& metal2Family();
+const MaterialFamily& trans2Family();
 
 }  // namespace candela

@@ -11,15 +11,7 @@ class Trans : public NormalFamily {
   MaterialType type() const override { return MaterialType::kTrans; }
   const char* name() const override { return "trans"; }
   void read(const MaterialReadContext& ctx, Material& m) const override { readCommon(ctx, m, 7); }
-  void derive(MaterialParameters& m) const override {
-    // The non-specular light splits into reflected (1 − trans), diffusely transmitted
-    // trans·(1 − tspec) and specularly transmitted trans·tspec.
-    const Rgb nonSpec = m.color * (1.0 - m.specularity);
-    m.diffuseReflectance = nonSpec * (1.0 - m.transmissivity);
-    m.diffuseTransmittance = nonSpec * m.transmissivity * (1.0 - m.transmittedSpecular);
-    m.specularTransmittance = nonSpec * m.transmissivity * m.transmittedSpecular;
-    m.specularReflectance = Rgb(m.specularity);
-  }
+  void derive(MaterialParameters& m) const override { deriveTrans(m); }
   // Its specular transmission passes straight (shadow) rays, as Radiance's trans with roughness 0.
   bool mayPassShadowRays(const Material& m) const override { return photopic(m.specularTransmittance) > 0.0; }
   std::optional<Rgb> straightTransmittance(const Material& m, const Vec3&, const Vec3&) const override {

@@ -64,9 +64,14 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.reals = p.reals;
   sp.args = p.reals;
   sp.next = next;
-  // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname file.
+  // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
+  // file; plastic2, metal2, trans2: ux uy uz file.
   const bool mixture = p.type == "mixfunc";
-  sp.channels = p.type == "colorfunc" ? 3 : 1;
+  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2";
+  if (vector && p.strings.size() < 4)
+    throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
+                                std::to_string(p.strings.size()));
+  sp.channels = p.type == "colorfunc" || vector ? 3 : 1;
   const size_t firstFunction = mixture ? 2 : 0;
   const size_t fileAt = firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
@@ -76,16 +81,20 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
     throw InputError(p.loc, what + ": '" + p.strings[end] +
                                 "' is not a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
   sp.toFunction = toWorld.inverse();
+  sp.toWorld = toWorld;
   sp.functionScale = std::abs(toWorld.scale);
   // Each function is an expression (a name, or written inline), a definition of its own.
   static const char* const kChannel[] = {"red", "green", "blue"};
+  static const char* const kAxis[] = {"ux", "uy", "uz"};
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
     const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
     try {
       sp.functions[static_cast<size_t>(k)] = files.program()->addExpression(expression, label, p.loc);
     } catch (const InputError& e) {
-      throw InputError(p.loc, what + ": " + (sp.channels == 1 ? "its function" : std::string(kChannel[k]) + " function") +
+      throw InputError(p.loc, what + ": " +
+                                  (sp.channels == 1 ? "its function"
+                                                    : std::string(vector ? kAxis[k] : kChannel[k]) + " function") +
                                   " '" + expression + "' is not an expression: " + e.message());
     }
     // A plain name is checked as itself (its messages name it); an expression as a whole.

@@ -376,6 +376,12 @@ class SceneReader::Builder {
     }
     m.name = p.name;
     m.loc = p.loc;
+    if (family.usesFunctions()) {  // plastic2's u direction: three functions of a function file
+      const int index = static_cast<int>(scene_.patterns.size());
+      scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
+      scene_.functions = functionFiles_.program();
+      m.anisotropy = index;
+    }
     const MaterialReadContext ctx{p, [this](const std::string& name) {
                                     const auto it = materials_.find(name);
                                     return it == materials_.end() ? -1 : it->second;

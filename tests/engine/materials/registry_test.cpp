@@ -25,7 +25,8 @@ TEST(MaterialRegistry, OneFamilyForEveryTypeInItsOrder) {
 
 TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
-       {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface"}) {
+       {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
+        "metal2", "trans2"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -34,17 +35,19 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("spotlight")->type(), MaterialType::kLight);
   // A modifier "void" is no material; the types no family reads yet are refused by the reader.
   EXPECT_EQ(familyNamed("void"), nullptr);
-  EXPECT_EQ(familyNamed("plastic2"), nullptr);
+  EXPECT_EQ(familyNamed("BRTDfunc"), nullptr);
   EXPECT_EQ(familyNamed("Plastic"), nullptr);
   // A mixture (mixfunc) is read with the patterns, not by its family.
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
-            "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface");
+            "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
+            "metal2, trans2");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {
   EXPECT_EQ(familyOf(MaterialType::kVoid).role(), HitRole::kAbsorb);
-  for (MaterialType t : {MaterialType::kPlastic, MaterialType::kMetal, MaterialType::kTrans})
+  for (MaterialType t : {MaterialType::kPlastic, MaterialType::kMetal, MaterialType::kTrans, MaterialType::kPlastic2,
+                         MaterialType::kMetal2, MaterialType::kTrans2})
     EXPECT_EQ(familyOf(t).role(), HitRole::kScatter);
   for (MaterialType t : {MaterialType::kMirror, MaterialType::kGlass, MaterialType::kDielectric,
                          MaterialType::kInterface})
