@@ -146,11 +146,26 @@ class SceneReader::Builder {
     if (p.strings.empty()) fail(p, "mesh '" + p.name + "' needs its file as first string argument");
     const std::string& file = p.strings[0];
     const std::string ext = lower(std::filesystem::path(file).extension().string());
-    if (ext == ".rtm")
-      fail(p, "mesh '" + p.name + "' names a Radiance compiled mesh (" + file +
-                  "); pass its source OBJ file instead (mesh ... model.obj, the file obj2mesh compiled it from)");
-    if (!isObjPath(file))
-      fail(p, "mesh '" + p.name + "' names '" + file + "', which is not an OBJ file (.obj)");
+    std::string objFile = file;
+    if (ext == ".rtm" || ext == ".msh") {
+      // The OBJ file obj2mesh compiled it from, when it lies beside it (same name, .obj), is read
+      // in its place with a warning; otherwise the mesh is refused.
+      std::filesystem::path beside = std::filesystem::path(file).replace_extension(".obj");
+      std::filesystem::path besidePath = beside.is_relative() ? folderOf(p) / beside : beside;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(besidePath, ec))
+        fail(p, "mesh '" + p.name + "' names a Radiance compiled mesh (" + file +
+                    "); pass its source OBJ file instead (mesh ... model.obj, the file obj2mesh compiled it from)");
+      scene_.inputWarnings.push_back(Warning{
+          "compiled_mesh_replaced",
+          "mesh '" + p.name + "' names the compiled mesh " + file + ": the OBJ file beside it, " + beside.string() +
+              ", is read in its place (its materials by its usemtl names unless the mesh has a modifier)",
+          p.loc});
+      objFile = beside.string();
+    }
+    const std::string& fileRead = objFile;
+    if (!isObjPath(fileRead))
+      fail(p, "mesh '" + p.name + "' names '" + fileRead + "', which is not an OBJ file (.obj)");
     if (!p.reals.empty()) fail(p, "mesh '" + p.name + "' takes no real arguments, got " + std::to_string(p.reals.size()));
     ObjReadOptions opt;
     const size_t end = parseRadTransform(p.strings, 1, opt.transform, p.loc, "mesh '" + p.name + "'");
@@ -161,7 +176,7 @@ class SceneReader::Builder {
       modifierOf(p);  // defined before use, as every modifier
       opt.forcedModifier = p.modifier;
     }
-    std::filesystem::path path(file);
+    std::filesystem::path path(fileRead);
     if (path.is_relative()) path = folderOf(p) / path;
     try {
       checkInputFile(path, "OBJ file");
@@ -226,6 +241,31 @@ class SceneReader::Builder {
     const auto it = kIndex.find(p.type);
     if (it == kIndex.end() || p.strings.size() <= it->second) return {};
     return p.strings[it->second];
+  }
+
+  // A `source` modified by a pattern with no material under it (`skyfunc source skydome`): in
+  // Radiance it is invisible and emits nothing, here too, with a warning.
+  bool sourceOfAPattern(const Primitive& p) {
+    std::string name = p.modifier;
+    bool throughPattern = false;
+    for (size_t k = 0; k <= patterns_.size(); ++k) {
+      if (name == "void") {
+        if (!throughPattern) return false;
+        scene_.inputWarnings.push_back(
+            Warning{"source_without_material",
+                    "source '" + p.name + "' is modified by the pattern '" + p.modifier +
+                        "' with no material (light, glow) under it: as in Radiance it is invisible and emits "
+                        "nothing (a sky needs `skyfunc glow skyglow 0 0 4 1 1 1 0` and `skyglow source ...`)",
+                    p.loc});
+        return true;
+      }
+      if (materials_.count(name)) return false;
+      const auto pt = patterns_.find(name);
+      if (pt == patterns_.end()) return false;  // undefined: modifierOf refuses it
+      throughPattern = true;
+      name = pt->second.base;
+    }
+    return false;
   }
 
   // The first pattern candela implements along a modifier's chain (-1: none).
@@ -418,10 +458,12 @@ class SceneReader::Builder {
     const Vec3 n = nn / (2.0 * area);
     size_t worst = 0;
     const double off = planeDeviation(pts, n, &worst);
-    if (off > kPlanarTolerance * diameter) {
+    // Within 0.1 mm of its plane a polygon is read as it is (CAD exports' tessellation noise);
+    // beyond, within 0.1 % of its size.
+    if (off > kPlanarTolerance * diameter && off > kPlanarAbsoluteToleranceM) {
       std::ostringstream msg;
       msg << "polygon '" << p.name << "' is not planar: vertex " << (worst + 1) << " is " << off
-          << " m from its plane (tolerance 0.1 % of its size, " << kPlanarTolerance * diameter << " m)";
+          << " m from its plane (tolerance 0.1 mm, or 0.1 % of its size: " << kPlanarTolerance * diameter << " m)";
       if (options_.nonplanar == NonplanarPolicy::kRefuse)
         fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
       return addTriangulated(p, pts, n, mat, target, msg.str());
@@ -491,6 +533,7 @@ class SceneReader::Builder {
     const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
                            t == "cup" || t == "cylinder" || t == "tube" || t == "source";
     if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + supportedTypes() + ")");
+    if (t == "source" && sourceOfAPattern(p)) return;
     const int mod = modifierOf(p);
     if (t == "source") {
       expectStrings(p, 0);

@@ -19,6 +19,8 @@ namespace candela {
 // diameter from its best plane makes it non-planar; an area below kDegenerateTolerance ×
 // diameter² makes it degenerate.
 inline constexpr double kPlanarTolerance = 1e-3;
+// A vertex within kPlanarAbsoluteToleranceM (0.1 mm) of the plane never makes a polygon non-planar.
+inline constexpr double kPlanarAbsoluteToleranceM = 1e-4;
 inline constexpr double kDegenerateTolerance = 1e-10;
 
 // Patterns, textures and mixtures (texfunc, colorpict, brightfunc with a file candela does not

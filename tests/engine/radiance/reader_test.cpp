@@ -1,10 +1,12 @@
 // The Radiance scene reader: a scene using every supported primitive and material, and one
 // fixture per error the reader reports, each checking the line named in the message.
 #include "engine/radiance/reader.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace candela {
@@ -398,6 +400,56 @@ TEST(RadReader, DielectricErrors) {
   Scene sc;
   EXPECT_THROW(readRadianceText("void dielectric black 0 0 5 0 1 1 1.5 0\n", "t.rad", sc), InputError);
   EXPECT_THROW(readRadianceText("void dielectric neg 0 0 5 1 1 1 -1.5 0\n", "t.rad", sc), InputError);
+}
+
+}  // namespace
+}  // namespace candela
+
+namespace candela {
+namespace {
+
+// Within 0.1 mm of its plane a polygon is read as it is, however small; beyond, the 0.1 % rule.
+TEST(RadReader, NonplanarWithinATenthOfAMillimetreIsRead) {
+  Scene small;
+  // A 1 cm square, one corner 0.05 mm up: 0.35 % of its size, but within 0.1 mm.
+  readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\nm polygon p 0 0 12 0 0 0 .01 0 0 .01 .01 .00005 0 .01 0\n",
+                   "small.rad", small);
+  EXPECT_EQ(small.shapes.size(), 1u);
+  Scene big;
+  try {
+    // A 10 cm square, one corner 2 mm up (about 0.5 mm from the best plane): beyond both.
+    readRadianceText("void plastic m 0 0 5 .5 .5 .5 0 0\nm polygon p 0 0 12 0 0 0 .1 0 0 .1 .1 .002 0 .1 0\n",
+                     "big.rad", big);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("big.rad:2: polygon 'p' is not planar"), std::string::npos) << e.what();
+  }
+}
+
+// `skyfunc source skydome`: a source of a pattern with no material is invisible, with a warning.
+TEST(RadReader, SourceOfAPatternIsInvisibleWithAWarning) {
+  Scene sc;
+  readRadianceText("void brightfunc skyfunc 2 skybr skybright.cal 0 7 1 3.2 2.1 .2 .5 .6 .7\n"
+                   "skyfunc source skydome 0 0 4 0 0 1 180\n",
+                   "sky.rad", sc);
+  EXPECT_TRUE(sc.distant.empty());
+  EXPECT_FALSE(sc.sky.has_value());
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_EQ(sc.inputWarnings[0].code, "source_without_material");
+  EXPECT_EQ(sc.inputWarnings[0].loc.line, 2);
+}
+
+// A compiled mesh whose OBJ file lies beside it: the OBJ is read, with a warning.
+TEST(RadReader, CompiledMeshWithItsObjBesideIsReadFromTheObj) {
+  const std::filesystem::path dir = test_support::scratchDir("rad_reader", "rtm");
+  std::ofstream(dir / "thing.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl grey\nf 1 2 3\n";
+  std::ofstream(dir / "scene.rad") << "void plastic grey 0 0 5 .5 .5 .5 0 0\nvoid mesh thing 1 thing.rtm 0 0\n";
+  Scene sc;
+  readRadianceFile(dir / "scene.rad", sc);
+  EXPECT_EQ(sc.mesh.triangles.size(), 1u);
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  EXPECT_EQ(sc.inputWarnings[0].code, "compiled_mesh_replaced");
+  EXPECT_NE(sc.inputWarnings[0].message.find("the OBJ file beside it, thing.obj"), std::string::npos);
 }
 
 }  // namespace
