@@ -115,8 +115,10 @@ struct TriangleMesh {
 struct Scene {
   std::vector<Material> materials;
   std::vector<ScenePattern> patterns;
-  // The function files and inline expressions the patterns use (none: no function pattern).
+  // The function files and inline expressions the patterns use (none: no function pattern), and
+  // the paths of the function files read, in order (summary.json's function_files).
   std::shared_ptr<const cal::Program> functions;
+  std::vector<std::string> functionFiles;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   TriangleMesh mesh;

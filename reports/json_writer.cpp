@@ -76,6 +76,7 @@ std::string summaryJson(const ReportData& data) {
   json settings = json::object();
   for (const auto& [k, v] : data.run.settings) settings[k] = v;
   j["settings"] = settings;
+  if (!data.run.functionFiles.empty()) j["function_files"] = data.run.functionFiles;
   if (data.run.coefficientsTimeS) j["coefficients_time_s"] = number(*data.run.coefficientsTimeS);
   if (data.run.productTimeS) j["product_time_s"] = number(*data.run.productTimeS);
   json grids = json::array();

@@ -146,6 +146,8 @@ struct RunInfo {
   std::optional<double> productTimeS;
   // Settings as shown to the reader, in order: {"quality", "normal"}, {"bounces", "2"}, ...
   std::vector<std::pair<std::string, std::string>> settings;
+  // The function files the scene's patterns read (where they were found: docs/engine.md).
+  std::vector<std::string> functionFiles;
 };
 
 // A rendered view: its pictures (PNG bytes, embedded in the HTML) and visual metrics as rows.

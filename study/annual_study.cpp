@@ -683,6 +683,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
   data.run.coefficientsTimeS = result.coefficientsS;
   data.run.productTimeS = result.productS;
   describeAnnualSettings(data, c, in, t, trace, y.occupiedCount);
+  data.run.functionFiles = in.scene->functionFiles;
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   data.warnings = warnings;
   annualGridReports(data, in, th, y, grids);

@@ -356,6 +356,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   ReportData& data = result.data;
   data = reportDataFor(c, run, trace.settings.seed);
   describeSettings(data, c, *scene, trace, gridPoints);
+  data.run.functionFiles = scene->functionFiles;
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
   if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0)
     data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)",

@@ -289,6 +289,7 @@ class SceneReader::Builder {
         if (p.type == "mixfunc") return addMixture(p, index);
         scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, patternAlong(p.modifier)));
         scene_.functions = functionFiles_.program();
+        scene_.functionFiles = functionFiles_.files();
         patterns_[p.name] = PatternEntry{index, p.modifier};
         materials_.erase(p.name);
         return;
@@ -359,6 +360,7 @@ class SceneReader::Builder {
     const int fore = materialNamed(p.strings[0], "foreground"), back = materialNamed(p.strings[1], "background");
     scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
     scene_.functions = functionFiles_.program();
+    scene_.functionFiles = functionFiles_.files();
     Material m;
     m.type = MaterialType::kMixture;
     m.name = p.name;
@@ -420,6 +422,7 @@ class SceneReader::Builder {
       const int index = static_cast<int>(scene_.patterns.size());
       scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
       scene_.functions = functionFiles_.program();
+      scene_.functionFiles = functionFiles_.files();
       m.anisotropy = index;
     }
     const MaterialReadContext ctx{p, [this](const std::string& name) {

@@ -43,6 +43,8 @@ candela_run_test(annual_report_sensor 2 "annual_bad_sensor/case.toml:9: report_s
 # runs with the material unmodified and the replacement in summary.json and the report.
 candela_run_test(pattern_refused 2 "pattern_base/room.rad:8: colorpict 'dimmer' (dim.hdr) is a pattern, texture or mixture candela does not implement"
                  pattern_base/refused.toml)
+# A function pattern read from its .cal file beside the scene; summary.json names the file.
+candela_run_test(function_pattern 0 "function_pattern/checker.cal" function_pattern/case.toml --quality draft)
 candela_run_test(pattern_base_summary 0 "\"code\": \"pattern_replaced\"" pattern_base/case.toml --quality draft)
 candela_run_test(pattern_base_option 0 "\"code\": \"pattern_replaced\"" pattern_base/refused.toml --quality draft --patterns base)
 
