@@ -92,6 +92,22 @@ class SceneReader::Builder {
 
   Vec3 vec(const Primitive& p, size_t i) const { return Vec3(p.reals[i], p.reals[i + 1], p.reals[i + 2]); }
 
+  // A material or pattern candela cannot use is refused only when something uses it (shared
+  // material libraries define dozens): its refusal is kept under its name until then.
+  void defer(const Primitive& p, const std::string& message) {
+    deferred_.insert_or_assign(p.name, InputError(p.loc, message));
+    materials_.erase(p.name);
+    patterns_.erase(p.name);
+  }
+  // Throws the kept refusal of `name`, saying what uses it, if it has one.
+  void refuseIfDeferred(const std::string& name, const std::string& user) const {
+    const auto d = deferred_.find(name);
+    if (d != deferred_.end()) throw InputError(d->second.loc(), d->second.message() + " (used by " + user + ")");
+  }
+  static std::string userOf(const Primitive& p) {
+    return p.type + " '" + p.name + "' at line " + std::to_string(p.loc.line);
+  }
+
   // The material a surface's modifier names (-1: void), through patterns replaced by their base.
   int modifierOf(const Primitive& p) {
     std::string name = p.modifier;
@@ -100,6 +116,7 @@ class SceneReader::Builder {
       const auto it = materials_.find(name);
       if (it != materials_.end()) return it->second;
       const auto pt = patterns_.find(name);
+      refuseIfDeferred(name, userOf(p));
       if (pt == patterns_.end())
         fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
       if (pt->second.pattern >= 0)
@@ -123,6 +140,7 @@ class SceneReader::Builder {
         return it->second;
       }
       const auto pt = patterns_.find(n);
+      refuseIfDeferred(n, "an OBJ face at " + where.file + ":" + std::to_string(where.line));
       if (pt == patterns_.end())
         throw InputError(where, "modifier '" + name + "' (" + why +
                                     ") is not defined in the Radiance files read before: define it in a .rad "
@@ -198,6 +216,7 @@ class SceneReader::Builder {
     for (;;) {
       if (name == "void" || materials_.count(name)) return -1;
       const auto pt = patterns_.find(name);
+      refuseIfDeferred(name, userOf(p));
       if (pt == patterns_.end())
         fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not defined before use");
       if (pt->second.pattern >= 0) return pt->second.pattern;
@@ -273,7 +292,7 @@ class SceneReader::Builder {
     for (;;) {
       if (name == "void") return -1;
       const auto pt = patterns_.find(name);
-      if (pt == patterns_.end()) return -1;  // a material: the caller's own rule refuses it
+      if (pt == patterns_.end()) return -1;  // a material: the caller's own rule refuses it (a kept refusal: above)
       if (pt->second.pattern >= 0) return pt->second.pattern;
       name = pt->second.base;
     }
@@ -282,6 +301,7 @@ class SceneReader::Builder {
   void addPattern(const Primitive& p) {
     std::string unreadable;  // why a function pattern could not be read (--patterns base)
     if (!implementedPattern(p) && isFunctionPattern(p)) {
+      refuseIfDeferred(p.modifier, userOf(p));
       if (p.modifier != "void" && !patterns_.count(p.modifier))
         fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not a pattern defined before use");
       try {
@@ -294,10 +314,15 @@ class SceneReader::Builder {
         materials_.erase(p.name);
         return;
       } catch (const InputError& e) {
-        if (options_.patterns == PatternPolicy::kRefuse)
-          throw InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
-                                        (p.type == "mixfunc" ? "s it mixes" : " it modifies") +
-                                        " unmodified, with a warning");
+        if (options_.patterns == PatternPolicy::kRefuse) {
+          // Kept until something uses the pattern (the message names the file that failed).
+          deferred_.insert_or_assign(p.name, InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
+                                                               (p.type == "mixfunc" ? "s it mixes" : " it modifies") +
+                                                               " unmodified, with a warning"));
+          materials_.erase(p.name);
+          patterns_.erase(p.name);
+          return;
+        }
         unreadable = " (" + e.message() + ")";
       }
     }
@@ -321,12 +346,14 @@ class SceneReader::Builder {
                              (file.empty() ? "" : file == "." ? " (its function written inline)" : " (" + file + ")");
     if (options_.patterns == PatternPolicy::kRefuse && p.type == "brightdata" && p.strings.size() > 2 &&
         p.strings[2] == "source.cal")
-      fail(p, what + " calls '" + p.strings[0] +
-                  "', which is not one of source.cal's functions candela implements (corr, flatcorr, boxcorr, "
-                  "cylcorr); run with --patterns base to use the light it modifies unmodified, with a warning");
+      return defer(p, what + " calls '" + p.strings[0] +
+                          "', which is not one of source.cal's functions candela implements (corr, flatcorr, "
+                          "boxcorr, cylcorr); run with --patterns base to use the light it modifies unmodified, "
+                          "with a warning");
     if (options_.patterns == PatternPolicy::kRefuse)
-      fail(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns base "
-                     "(or [settings] patterns = \"base\") to use the material it modifies unmodified, with a warning");
+      return defer(p, what + " is a pattern, texture or mixture candela does not implement; run with --patterns "
+                             "base (or [settings] patterns = \"base\") to use the material it modifies unmodified, "
+                             "with a warning");
     // A mixture (mixfunc, mixdata, mixpict, mixtext) is used as a material: it stands for its
     // foreground material, its first string argument ("void" for none).
     const bool mixture = p.type.rfind("mix", 0) == 0;
@@ -353,6 +380,7 @@ class SceneReader::Builder {
     auto materialNamed = [&](const std::string& name, const char* role) {
       if (name == "void") return -1;
       const auto it = materials_.find(name);
+      refuseIfDeferred(name, userOf(p));
       if (it == materials_.end())
         fail(p, what + ": its " + role + " '" + name + "' is not a material defined before use");
       return it->second;
@@ -376,6 +404,7 @@ class SceneReader::Builder {
   // `mod` is not "inherit" (Radiance reference manual, "Alias").
   void addAlias(const Primitive& p) {
     const auto it = materials_.find(p.strings[0]);
+    refuseIfDeferred(p.strings[0], userOf(p));
     if (it == materials_.end())
       fail(p, "alias '" + p.name + "' stands for '" + p.strings[0] + "', which is not a material defined before use");
     int pattern = -1;
@@ -425,7 +454,8 @@ class SceneReader::Builder {
       scene_.functionFiles = functionFiles_.files();
       m.anisotropy = index;
     }
-    const MaterialReadContext ctx{p, [this](const std::string& name) {
+    const MaterialReadContext ctx{p, [this, &p](const std::string& name) {
+                                    refuseIfDeferred(name, userOf(p));
                                     const auto it = materials_.find(name);
                                     return it == materials_.end() ? -1 : it->second;
                                   }};
@@ -525,6 +555,9 @@ class SceneReader::Builder {
     const std::string& t = p.type;
     if (!p.integers.empty())
       fail(p, t + " '" + p.name + "' takes no integer arguments, got " + std::to_string(p.integers.size()));
+    const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
+                           t == "cup" || t == "cylinder" || t == "tube" || t == "source";
+    if (!isSurface && t != "mesh" && t != "instance") deferred_.erase(p.name);  // a new definition
     if (const MaterialFamily* family = familyNamed(t)) return addMaterial(p, *family);
     if (t == "alias") return addAlias(p);
     if (isPatternType(t)) return addPattern(p);
@@ -533,9 +566,8 @@ class SceneReader::Builder {
       fail(p, "instance '" + p.name + "' places a Radiance octree (" + (p.strings.empty() ? "" : p.strings[0]) +
                   "), which candela does not read; pass the scene files the octree was made from instead "
                   "(through !xform with the instance's transform)");
-    const bool isSurface = t == "polygon" || t == "sphere" || t == "bubble" || t == "ring" || t == "cone" ||
-                           t == "cup" || t == "cylinder" || t == "tube" || t == "source";
-    if (!isSurface) fail(p, "primitive type '" + t + "' is not supported (" + supportedTypes() + ")");
+    // Any other type is a material or pattern (Radiance's surface types are those above).
+    if (!isSurface) return defer(p, "primitive type '" + t + "' is not supported (" + supportedTypes() + ")");
     if (t == "source" && sourceOfAPattern(p)) return;
     const int mod = modifierOf(p);
     if (t == "source") {
@@ -617,6 +649,7 @@ class SceneReader::Builder {
     std::string base;
   };
   std::unordered_map<std::string, PatternEntry> patterns_;
+  std::unordered_map<std::string, InputError> deferred_;  // refusals kept until used (defer)
   std::optional<ObjMapping> mapping_;
   std::string topFile_;  // the file read now, and its folder (readText's may differ from its name's)
   std::filesystem::path topFolder_;

@@ -138,9 +138,12 @@ TEST(FunctionPatterns, ShadowRaysThroughAMixtureBlendItsMaterials) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(t[c], 0.3 * tr[c] + 0.7, 1e-12);
 }
 
-std::string errorOf(const fs::path& dir, const std::string& text, PatternPolicy patterns = PatternPolicy::kRefuse) {
+// A pattern is refused only when a surface uses it: each text ends with a material the pattern
+// `p` modifies and a surface of it (a mixture `m`: a surface of it).
+std::string errorOf(const fs::path& dir, const std::string& text, PatternPolicy patterns = PatternPolicy::kRefuse,
+                    const std::string& user = "p plastic used 0 0 5 .5 .5 .5 0 0\nused") {
   try {
-    readIn(dir, text, patterns);
+    readIn(dir, text + user + " polygon x 0 0 9 0 0 0 1 0 0 0 1 0\n", patterns);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -163,6 +166,25 @@ TEST(FunctionPatterns, FilesAreFoundAsRadianceFindsThemAndNowhereElse) {
   EXPECT_NE(errorOf(dir, "void brightfunc p 2 v ../x.cal 0 0\n").find("no absolute path, no '..'"), std::string::npos);
 }
 
+// A pattern no surface uses is never refused: a library may define what a scene does not use.
+TEST(FunctionPatterns, UnusedPatternsAreNotRefused) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "unused");
+  const Scene sc = readIn(dir, "void brightfunc p 2 v nofile.cal 0 0\nvoid colorpict pic 7 r g b x.hdr p.cal u v 0 0\n"
+                               "void antimatter am 1 void 0 0\n");
+  EXPECT_TRUE(sc.inputWarnings.empty());
+  // Used by a material a surface uses, it is refused at its own line, saying what used it.
+  const std::string used = errorOf(dir, "void colorpict pic 7 r g b x.hdr p.cal u v 0 0\n", PatternPolicy::kRefuse,
+                                   "pic plastic used 0 0 5 .5 .5 .5 0 0\nused");
+  EXPECT_NE(used.find("scene.rad:1: colorpict 'pic' (x.hdr) is a pattern, texture or mixture candela does not "
+                      "implement"),
+            std::string::npos)
+      << used;
+  EXPECT_NE(used.find("(used by plastic 'used' at line 2)"), std::string::npos) << used;
+  EXPECT_NE(errorOf(dir, "void antimatter am 1 void 0 0\nvoid alias p am\n")
+                .find("(used by alias 'p' at line 2)"),
+            std::string::npos);
+}
+
 TEST(FunctionPatterns, RefusalsNameTheirLine) {
   const fs::path dir = test_support::scratchDir("function_patterns", "refusals");
   std::ofstream(dir / "bad.cal") << "ok = 1;\n\nbroken = (2 + ;\n";
@@ -175,7 +197,8 @@ TEST(FunctionPatterns, RefusalsNameTheirLine) {
   EXPECT_NE(errorOf(dir, "void brightfunc p 2 (1+ . 0 0\n").find("its function '(1+' is not an expression"),
             std::string::npos);
   EXPECT_NE(errorOf(dir, "void brightfunc p 3 1 . -q 0 0\n").find("'-q' is not a transform option"), std::string::npos);
-  EXPECT_NE(errorOf(dir, "void mixfunc m 4 nothere void .5 . 0 0\n").find("its foreground 'nothere' is not a material"),
+  EXPECT_NE(errorOf(dir, "void mixfunc m 4 nothere void .5 . 0 0\n", PatternPolicy::kRefuse, "m")
+                .find("its foreground 'nothere' is not a material"),
             std::string::npos);
   // On a light source: refused, or the source unmodified with a warning under --patterns base.
   const std::string lamp = "void brightfunc p 2 .5 . 0 0\np light lamp 0 0 3 10 10 10\n";
