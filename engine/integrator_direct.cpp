@@ -1,6 +1,7 @@
 #include "engine/integrator_direct.h"
 
 #include "engine/light_selection.h"
+#include "engine/radiance/sky.h"
 #include "engine/sampling.h"
 #include "engine/sky_tally.h"
 #include "photometry/site.h"
@@ -191,7 +192,10 @@ void tallySuns(TraceContext& ctx, const Receiver& at) {
 
 // Luminance (cd/m²) of the sky, or of the ground below the horizon, towards model direction dir.
 double skyOrGroundLuminance(const SkyDome& sky, const Vec3& dir) {
-  return dir.z > 0.0 ? sky.model->luminance(modelToTrue(dir, sky.northDeg)) : sky.groundLuminanceCdM2;
+  if (dir.z > 0.0) return sky.model->luminance(modelToTrue(dir, sky.northDeg));
+  if (sky.groundFunction)
+    return std::max(0.0, sky.groundFactorCdM2 * sky.groundFunction->value(modelToTrue(dir, sky.northDeg)));
+  return sky.groundLuminanceCdM2;
 }
 
 // The sky by importance sampling of its luminance (k samples) and, when portals are above the

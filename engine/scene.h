@@ -48,6 +48,8 @@ struct ScenePattern {
   int next = -1;
 };
 
+class RadianceSkyFunction;
+
 // A source at infinity: Radiance's `source` primitive (a cone of directions).
 struct DistantSource {
   Vec3 direction{0.0, 0.0, 1.0};  // unit, towards the source
@@ -74,6 +76,11 @@ struct SkyDome {
   bool fromScene = false;
   FileLoc sceneLoc;
   int sceneSun = -1;
+  // A scene's sky function over the ground hemisphere too (skybright.cal, perezlum.cal: the ground
+  // blends into the sky near the horizon), times the ground source's factor (cd/m² per unit of
+  // the function); none: the ground is the uniform groundLuminanceCdM2.
+  std::shared_ptr<const RadianceSkyFunction> groundFunction;
+  double groundFactorCdM2 = 0.0;
   // Outside horizontal illuminance (sky + sun, no ground): the daylight factor's denominator.
   double outsideHorizontalLux() const { return horizontalSkyLux + horizontalSunLux; }
 };

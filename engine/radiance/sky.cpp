@@ -180,9 +180,13 @@ void SceneSkyBuilder::apply(Scene& scene) {
   dome.model = model;
   dome.northDeg = -f.rotationDeg();  // the pattern turned counter-clockwise by -rz
   dome.horizontalSkyLux = model->horizontalIlluminanceLux();
-  if (ground_.material >= 0)
-    dome.groundLuminanceCdM2 =
-        luminanceFromRadiance(scene.materials[static_cast<size_t>(ground_.material)].color) * f.groundBrightness();
+  if (ground_.material >= 0) {
+    // Far below the horizon the function is the ground brightness; near it, the sky's and the
+    // ground's blend, evaluated direction by direction.
+    dome.groundFactorCdM2 = luminanceFromRadiance(scene.materials[static_cast<size_t>(ground_.material)].color);
+    dome.groundLuminanceCdM2 = dome.groundFactorCdM2 * f.groundBrightness();
+    dome.groundFunction = std::make_shared<const RadianceSkyFunction>(f);
+  }
   dome.fromScene = true;
   dome.sceneLoc = sky_.loc;
   // The sun: the brightest small distant `light` (gensky's 0.5 degree, gendaylit's 0.533 degree

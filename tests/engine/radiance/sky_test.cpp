@@ -673,3 +673,47 @@ TEST(SceneSky, CaseSkyReplacesTheScenesSkyAndSun) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// Below the horizon a gensky sky is its ground source's brightness times skybright.cal's value,
+// which blends the sky into the ground brightness near the horizon: wmean((Dz+1.01)^10, sky,
+// (Dz+1.01)^-10, ground). A sensor facing straight down in the open sees only the ground
+// hemisphere; its illuminance is 2π ∫₀¹ L(−μ) μ dμ, computed here by Simpson's rule (10⁴
+// intervals) independently of the engine. A uniform ground would read 179 π A2 instead: the test
+// checks the estimate against the blend within 4 standard errors and apart from the uniform
+// ground by more than 8.
+TEST(SceneSky, GroundHemisphereBlendsIntoTheSkyNearTheHorizon) {
+  Scene sc;
+  readRadianceText("void brightfunc skyfunc 2 skybr skybright.cal 0 7 2 3.2 .4 1 0 0 1\n"
+                   "skyfunc glow skyglow 0 0 4 1 1 1 0\nskyglow source sky 0 0 4 0 0 1 180\n"
+                   "skyfunc glow groundglow 0 0 4 1 1 1 0\ngroundglow source ground 0 0 4 0 0 -1 180\n",
+                   "sky.rad", sc);
+  ASSERT_TRUE(sc.sky.has_value());
+  const double zenith = 3.2, ground = 0.4;
+  auto luminance = [&](double mu) {  // cd/m² towards Dz = −mu (CIE overcast, 179 lm/W)
+    const double dz = -mu, sky = zenith * (1.0 + 2.0 * dz) / 3.0;
+    const double w = std::pow(dz + 1.01, 10.0), v = std::pow(dz + 1.01, -10.0);
+    return kLumensPerWatt * (w * sky + v * ground) / (w + v);
+  };
+  const int n = 10000;
+  double sum = luminance(0.0) * 0.0 + luminance(1.0) * 1.0;
+  for (int i = 1; i < n; ++i) {
+    const double mu = static_cast<double>(i) / n;
+    sum += (i % 2 ? 4.0 : 2.0) * luminance(mu) * mu;
+  }
+  const double want = kTwoPi * sum / (3.0 * n);
+  const double uniform = kPi * kLumensPerWatt * ground;
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.seed = 2;
+  s.hemisphereSamples = 4096;
+  s.maxBounces = 0;
+  const IrradianceEstimate e = tracer.irradiance(Vec3(0.0, 0.0, 10.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
+  EXPECT_GT(std::abs(want - uniform), 8.0 * e.standardErrorLux());
+}
+
+}  // namespace
+}  // namespace candela
