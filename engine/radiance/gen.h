@@ -7,11 +7,12 @@
 
 namespace candela {
 
-std::vector<RadPrimitive> expandXform(const RadCommand& cmd, const RadExpandContext& ctx);    // rad_gen_xform.cpp
-std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandContext& ctx);   // rad_gen_box.cpp
-std::vector<RadPrimitive> expandGenprism(const RadCommand& cmd, const RadExpandContext& ctx); // rad_gen_prism.cpp
-std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext& ctx);   // rad_gen_sky.cpp
-std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext& ctx); // rad_gen_sky.cpp
+std::vector<RadPrimitive> expandXform(const RadCommand& cmd, const RadExpandContext& ctx);    // gen_xform.cpp
+std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandContext& ctx);   // gen_box.cpp
+std::vector<RadPrimitive> expandGenprism(const RadCommand& cmd, const RadExpandContext& ctx); // gen_prism.cpp
+std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext& ctx);   // gen_sky.cpp
+std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext& ctx); // gen_sky.cpp
+std::vector<RadPrimitive> expandGenrev(const RadCommand& cmd, const RadExpandContext& ctx);   // gen_rev.cpp
 
 // A primitive as a generator writes it (no integer arguments).
 // 6 parameters: a primitive's own fields.

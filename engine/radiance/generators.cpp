@@ -17,6 +17,7 @@ const std::map<std::string, Generator>& generators() {
       {"genprism", expandGenprism},
       {"gensky", expandGensky},
       {"gendaylit", expandGendaylit},
+      {"genrev", expandGenrev},
   };
   return table;
 }

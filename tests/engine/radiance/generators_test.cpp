@@ -675,3 +675,73 @@ TEST(Genprism, BadArgumentsAreRefused) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// genrev: the surface of revolution of (r(t), z(t)), its pieces as genrev.c writes them.
+TEST(Genrev, PiecesByHowZAndRChange) {
+  // z rises, r stays: cylinders; z rises, r shrinks: cones; z stays, r grows: rings facing down;
+  // z falls: a tube or cup.
+  auto ps = run("!genrev m cyl t 1 4");
+  ASSERT_EQ(ps.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(ps[i].type, "cylinder");
+    EXPECT_EQ(ps[i].name, "cyl." + std::to_string(i + 1));
+    EXPECT_EQ(ps[i].reals, (std::vector<double>{0, 0, 0.25 * i, 0, 0, 0.25 * (i + 1), 1}));
+  }
+  ps = run("!genrev m c 't' '1-t' 2");
+  ASSERT_EQ(ps.size(), 2u);
+  EXPECT_EQ(ps[0].type, "cone");
+  EXPECT_EQ(ps[0].reals, (std::vector<double>{0, 0, 0, 0, 0, 0.5, 1, 0.5}));
+  ps = run("!genrev m d 0 t 2");
+  ASSERT_EQ(ps.size(), 2u);
+  EXPECT_EQ(ps[1].type, "ring");
+  EXPECT_EQ(ps[1].reals, (std::vector<double>{0, 0, 0, 0, 0, -1, 0.5, 1}));
+  ps = run("!genrev m down '1-t' '1+t' 1");
+  ASSERT_EQ(ps.size(), 1u);
+  EXPECT_EQ(ps[0].type, "cup");
+  ps = run("!genrev m flat 0 1 3");  // neither changes: nothing
+  EXPECT_TRUE(ps.empty());
+}
+
+// Radiance's torus.rad: genrev of (2 + cos 2πt, sin 2πt) in 32 segments, -s. The frustums' area,
+// π (r0 + r1) × slant, summed independently, approaches the torus's 4π² R a (R = 2, a = 1) as
+// the polygon's perimeter approaches the circle's: 32 sin(π/32)/π of it.
+TEST(Genrev, TorusOfRadiancesTestScene) {
+  const auto ps = run("!genrev striped torus \"sin(2*PI*t)\" \"2+cos(2*PI*t)\" 32 -s");
+  ASSERT_EQ(ps.size(), 32u);
+  double area = 0.0;
+  int cones = 0, cups = 0;
+  for (const RadPrimitive& p : ps) {
+    EXPECT_EQ(p.modifier, "striped");
+    cones += p.type == "cone";
+    cups += p.type == "cup";
+    const double z0 = p.reals[2], z1 = p.reals[5], r0 = p.reals[6], r1 = p.reals[7];
+    area += kPi * (r0 + r1) * std::hypot(z1 - z0, r1 - r0);
+  }
+  EXPECT_EQ(cones, 16);
+  EXPECT_EQ(cups, 16);
+  // Each chord's midpoint lies at cos(π/32) of the tube's radius from its centre: the frustums
+  // sweep a circle of radius 2 + a cos(θ) cos(π/32) with chords 2 sin(π/32) long.
+  double want = 0.0;
+  for (int i = 0; i < 32; ++i) {
+    const double mid = kTwoPi * (i + 0.5) / 32.0;
+    want += kTwoPi * (2.0 + std::cos(mid) * std::cos(kPi / 32.0)) * 2.0 * std::sin(kPi / 32.0);
+  }
+  EXPECT_NEAR(area, want, 1e-9 * want);
+}
+
+TEST(Genrev, BadCommandsAreRefusedAtTheirLine) {
+  EXPECT_NE(errorOf([] { run("!genrev m x t 1"); }).find("x.rad:3: genrev: usage"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genrev m x t -1 2"); }).find("r(t) is negative"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genrev m x t 1 0"); }).find("the number of segments must be 1"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genrev m x 't+' 1 2"); }).find("z(t) 't+' is not an expression"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genrev m x t 1 2 -q"); }).find("unknown option '-q'"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genrev m x f(t) 1 2"); }).find("'f'"), std::string::npos);
+  // Definitions from -e.
+  EXPECT_EQ(run("!genrev m x 'h*t' 1 2 -e 'h = 3'")[1].reals[5], 3.0);
+}
+
+}  // namespace
+}  // namespace candela

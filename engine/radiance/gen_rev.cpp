@@ -1,0 +1,106 @@
+// genrev(1), interpreted: `genrev mat name 'z(t)' 'r(t)' nseg [-e expr] [-f file] [-s]`, the
+// surface of revolution of the curve (r(t), z(t)), t from 0 to 1 in nseg segments, about the z
+// axis. The functions are Radiance's function language (engine/radiance/cal/); the primitives,
+// their names (name.1 … name.nseg) and orientation are those Radiance's src/gen/genrev.c writes:
+// a cone where z rises and r changes, a cup where z falls, a cylinder or tube where r stays, a
+// ring where z stays (facing down when r grows, up when it shrinks), nothing where neither
+// changes. With -s Radiance smooths the shading normals with a texfunc of rev.cal; candela writes
+// the same surfaces unsmoothed (the texture is not evaluated: docs/engine.md). The code is
+// candela's.
+#include "engine/radiance/function_patterns.h"
+#include "engine/radiance/gen.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace candela {
+namespace {
+
+constexpr double kTiny = 1e-9;          // genrev.c's FTINY: a change smaller than this is none
+constexpr int kMaxSegments = 1000000;   // the bound on what one command may make
+
+}  // namespace
+
+std::vector<RadPrimitive> expandGenrev(const RadCommand& cmd, const RadExpandContext& ctx) {
+  const std::vector<std::string>& w = cmd.words;
+  auto fail = [&](const std::string& msg) -> void { throw InputError(cmd.loc, "genrev: " + msg); };
+  if (w.size() < 6) fail("usage: genrev material name 'z(t)' 'r(t)' nseg [-e expr] [-f file] [-s]");
+  const std::string& mat = w[1];
+  const std::string& name = w[2];
+  RadPrimitive self;  // for the function files' messages
+  self.type = "genrev";
+  self.name = name;
+  self.loc = cmd.loc;
+  FunctionFiles files;
+  cal::Program& program = *files.program();
+  for (size_t i = 6; i < w.size(); ++i) {
+    if (w[i] == "-s") continue;  // smoothing: not evaluated (above)
+    if ((w[i] == "-e" || w[i] == "-f") && i + 1 < w.size()) {
+      try {
+        if (w[i] == "-e") program.addText(w[i + 1], "-e");
+        else files.load(w[i + 1], self, ctx.folder);
+      } catch (const InputError& e) {
+        if (w[i] == "-f") throw;  // a file's own line
+        fail("-e '" + w[i + 1] + "': " + e.message());
+      }
+      ++i;
+      continue;
+    }
+    fail("unknown option '" + w[i] + "' (-e expr, -f file, -s)");
+  }
+  const FileLoc at = cmd.loc;
+  cal::Symbol nName = -1;
+  // z and r as functions of t: each expression the body of a definition with the parameter t.
+  const char* const what[] = {"z(t)", "r(t)", "nseg"};
+  for (int k = 0; k < 3; ++k) {
+    try {
+      if (k < 2) program.addText(std::string(k == 0 ? "`genrev.zf" : "`genrev.rf") + "(t) = " + w[3 + k] + ";", "-");
+      else nName = program.addExpression(w[5], "`genrev.n", at);
+    } catch (const InputError& e) {
+      fail(std::string(what[k]) + " '" + w[3 + k] + "' is not an expression: " + e.message());
+    }
+  }
+  program.check("`genrev.zf", 1, at, w[3]);
+  program.check("`genrev.rf", 1, at, w[4]);
+  program.check("`genrev.n", -1, at, w[5]);
+  cal::Evaluator eval(program);
+  eval.begin({});
+  const double nsegValue = eval.value(nName) + 0.5;
+  if (!(nsegValue >= 1.0 && nsegValue <= kMaxSegments))
+    fail("the number of segments must be 1 to " + std::to_string(kMaxSegments) + ", got " + w[5]);
+  const int nseg = static_cast<int>(nsegValue);
+  const cal::Symbol zf = program.find("`genrev.zf"), rf = program.find("`genrev.rf");
+  auto at_t = [&](int i, double& z, double& r) {
+    const double t[] = {static_cast<double>(i) / nseg};
+    eval.begin({});
+    z = eval.call(zf, t);
+    eval.begin({});
+    r = eval.call(rf, t);
+    if (!std::isfinite(z) || !std::isfinite(r)) fail("z(t) or r(t) is not a finite number at t = " + std::to_string(t[0]));
+    if (r < 0.0) fail("r(t) is negative at t = " + std::to_string(t[0]) + " (genrev forbids negative radii)");
+  };
+  std::vector<RadPrimitive> out;
+  double lastz = 0.0, lastr = 0.0;
+  at_t(0, lastz, lastr);
+  for (int i = 1; i <= nseg; ++i) {
+    double z = 0.0, r = 0.0;
+    at_t(i, z, r);
+    const bool down = z < lastz - kTiny, up = z > lastz + kTiny;
+    const bool in = r < lastr - kTiny, outward = r > lastr + kTiny;
+    const std::string id = name + "." + std::to_string(i);
+    if (!(down || up)) {
+      if (in || outward)  // a ring at z, its radii in order, facing up where r shrinks
+        out.push_back(generatedPrimitive(mat, "ring", id, cmd.loc, {},
+                                         {0, 0, z, 0, 0, in ? 1.0 : -1.0, std::min(lastr, r), std::max(lastr, r)}));
+    } else if (!(in || outward)) {
+      out.push_back(generatedPrimitive(mat, down ? "tube" : "cylinder", id, cmd.loc, {}, {0, 0, lastz, 0, 0, z, r}));
+    } else {
+      out.push_back(generatedPrimitive(mat, down ? "cup" : "cone", id, cmd.loc, {}, {0, 0, lastz, 0, 0, z, lastr, r}));
+    }
+    lastz = z;
+    lastr = r;
+  }
+  return out;
+}
+
+}  // namespace candela
