@@ -94,11 +94,13 @@ class Evaluator {
   uint64_t evaluations_ = 0;
 };
 
-// A failure during evaluation that a program's check could not foresee (recursion deeper than
-// kMaxDepth calls).
+// A failure during evaluation that a program's check could not foresee: recursion deeper than
+// kMaxDepth calls, or one evaluation of more than kMaxSteps nodes (a recursion that branches
+// would otherwise take exponential time: time is bounded by what the input really asks for).
 struct EvalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 inline constexpr int kMaxDepth = 1024;
+inline constexpr uint64_t kMaxSteps = 10000000;
 
 }  // namespace candela::cal

@@ -33,6 +33,7 @@ struct Evaluator::State {
   std::vector<uint32_t> stamp;
   uint32_t epoch = 1;
   int depth = 0;
+  uint64_t steps = 0;  // nodes evaluated by the current value() or call(), at most kMaxSteps
 
   explicit State(const Program::Impl& program)
       : p(program), values(program.symbols.size(), 0.0), stamp(program.symbols.size(), 0) {}
@@ -98,6 +99,7 @@ struct Evaluator::State {
   }
 
   double node(int32_t index, const Activation* act) {
+    if (++steps > kMaxSteps) fail("one evaluation took more than 10^7 steps (a recursion that branches?)");
     const Node& n = p.nodes[static_cast<size_t>(index)];
     switch (n.op) {
       case Op::kNum:
@@ -143,8 +145,8 @@ struct Evaluator::State {
       case Native::kSelect: {
         // select(N, a1, a2, ...): aN; select(0, ...) the count of a's.
         const double a1 = x(0);
+        if (!(a1 >= -0.5 && a1 + 0.5 < a.count)) return 0.0;  // NaN and out of range alike
         const int n = static_cast<int>(a1 + 0.5);
-        if (a1 < -0.5 || n >= a.count) return 0.0;
         return n == 0 ? a.count - 1 : x(n);
       }
       case Native::kMin:
@@ -187,11 +189,12 @@ struct Evaluator::State {
       case Native::kFnoise3: return fractalNoise3(x(0), x(1), x(2));
       case Native::kArg: {
         // arg(0): the count of the primitive's real arguments; arg(n): the n-th.
-        const int n = static_cast<int>(x(0) + 0.5);
-        if (n == 0) return static_cast<double>(env.args.size());
-        if (n < 0 || n > static_cast<int>(env.args.size()))
-          fail("arg(" + std::to_string(n) + "): the primitive has " + std::to_string(env.args.size()) +
+        const double a1 = x(0);
+        if (!(a1 >= -0.5 && a1 + 0.5 < static_cast<double>(env.args.size()) + 1.0))
+          fail("arg(" + std::to_string(a1) + "): the primitive has " + std::to_string(env.args.size()) +
                " real arguments");
+        const int n = static_cast<int>(a1 + 0.5);
+        if (n == 0) return static_cast<double>(env.args.size());
         return env.args[static_cast<size_t>(n - 1)];
       }
       case Native::kNone:
@@ -216,12 +219,14 @@ void Evaluator::begin(const Environment& env) {
 double Evaluator::value(Symbol name) {
   ++evaluations_;
   state_->depth = 0;
+  state_->steps = 0;
   return state_->variable(name);
 }
 
 double Evaluator::call(Symbol name, std::span<const double> args) {
   ++evaluations_;
   state_->depth = 0;
+  state_->steps = 0;
   Activation act;
   act.argValues = args.data();
   act.count = static_cast<int>(args.size());

@@ -36,6 +36,12 @@ double fadeSlope(double t) { return 30 * t * t * (t * (t - 2) + 1); }
 
 // Value and gradient of the noise at (x, y, z).
 double noiseWithGradient(double x, double y, double z, double out[3]) {
+  // Beyond 2^50 (and for NaN) the lattice has no meaning left in double precision: no noise.
+  constexpr double kLimit = 1125899906842624.0;
+  if (!(std::abs(x) < kLimit && std::abs(y) < kLimit && std::abs(z) < kLimit)) {
+    out[0] = out[1] = out[2] = 0.0;
+    return 0.0;
+  }
   const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
   const int64_t ix = static_cast<int64_t>(fx), iy = static_cast<int64_t>(fy), iz = static_cast<int64_t>(fz);
   const double t[3] = {x - fx, y - fy, z - fz};

@@ -197,11 +197,18 @@ TEST(Cal, CheckRefusesWhatAnEvaluationWouldNotFind) {
 
 TEST(Cal, RecursionWithoutEndIsAnErrorNotACrash) {
   Program p;
-  p.addText("loop(n) = loop(n + 1); x = loop(0); self = self + 1;", "r.cal");
+  p.addText("loop(n) = loop(n + 1); x = loop(0); self = self + 1;\n"
+            "{ 2^60 calls within the depth bound: stopped by the step bound }\n"
+            "fan(n) = if(n, fan(n - 1) + fan(n - 1), 1); wide = fan(60);\n"
+            "sel = select(1e300, 1, 2) + select(-1e300, 1) + noise3(1e300, 0, 0);",
+            "r.cal");
   Evaluator e(p);
   e.begin({});
   EXPECT_THROW(e.value(p.find("x")), EvalError);
   EXPECT_THROW(e.value(p.find("self")), EvalError);
+  EXPECT_THROW(e.value(p.find("wide")), EvalError);
+  // Out-of-range selections and a coordinate beyond the lattice's precision give 0, not UB.
+  EXPECT_EQ(e.value(p.find("sel")), 0.0);
 }
 
 TEST(Cal, VariablesAreComputedOncePerEvaluation) {
