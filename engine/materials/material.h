@@ -14,9 +14,9 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2
+  kPlastic2, kMetal2, kTrans2, kMist
 };
-inline constexpr int kMaterialTypeCount = 15;
+inline constexpr int kMaterialTypeCount = 16;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);

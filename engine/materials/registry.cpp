@@ -28,6 +28,7 @@ constexpr Entry kFamilies[] = {
     {plastic2Family, {"plastic2", nullptr}},
     {metal2Family, {"metal2", nullptr}},
     {trans2Family, {"trans2", nullptr}},
+    {mistFamily, {"mist", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -20,5 +20,6 @@ const MaterialFamily& interfaceFamily();
 const MaterialFamily& plastic2Family();
 const MaterialFamily& metal2Family();
 const MaterialFamily& trans2Family();
+const MaterialFamily& mistFamily();
 
 }  // namespace candela

@@ -567,6 +567,9 @@ class SceneReader::Builder {
                   "), which candela does not read; pass the scene files the octree was made from instead "
                   "(through !xform with the instance's transform)");
     // Any other type is a material or pattern (Radiance's surface types are those above).
+    if (t == "prism1" || t == "prism2")
+      return defer(p, t + " '" + p.name + "' redirects light through virtual sources, which candela does not "
+                          "model (no model it was tried on needs it); replace it with glass or trans");
     if (!isSurface) return defer(p, "primitive type '" + t + "' is not supported (" + supportedTypes() + ")");
     if (t == "source" && sourceOfAPattern(p)) return;
     const int mod = modifierOf(p);

@@ -26,7 +26,7 @@ TEST(MaterialRegistry, OneFamilyForEveryTypeInItsOrder) {
 TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
        {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
-        "metal2", "trans2"}) {
+        "metal2", "trans2", "mist"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -41,7 +41,7 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
             "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
-            "metal2, trans2");
+            "metal2, trans2, mist");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {
@@ -197,6 +197,15 @@ TEST(MaterialFamilies, InterfaceBetweenTwoMedia) {
     EXPECT_EQ(sa.dir, sb.dir);
     EXPECT_EQ(ba, bb);
   }
+}
+
+// mist is a boundary without scattering: every ray passes it, shadow rays unattenuated.
+TEST(MaterialFamilies, MistIsABoundaryRaysPass) {
+  Material m;
+  m.type = MaterialType::kMist;
+  EXPECT_EQ(familyOf(m).seenInstead(m), std::optional<int>(-1));
+  EXPECT_EQ(*familyOf(m).straightTransmittance(m, Vec3(0, 0, 1), Vec3(0, 0, 1)), Rgb(1.0));
+  EXPECT_TRUE(familyOf(m).mayPassShadowRays(m));
 }
 
 }  // namespace
