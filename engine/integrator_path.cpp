@@ -271,16 +271,13 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
-    m = scene.functions ? resolved(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patterns(), ctx.rng)
-                        : seenMaterial(scene.materials, *m);
+    std::optional<Material> patternedHere;  // the hook's copy when patterns modify m
+    m = materialAt(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patternEval, ctx.rng, patternedHere);
     if (!m) {  // an illum with no alternate or a void in a mixture: pass straight through
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
       continue;
     }
-    std::optional<Material> patternedHere;  // the hook's copy when patterns modify m (no string copied)
-    if (hasFunctionPattern(scene, *m))
-      m = &patterned(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patterns(), patternedHere.emplace());
     const MaterialFamily& family = familyOf(*m);
     switch (family.role()) {
       case HitRole::kEmit:

@@ -184,11 +184,9 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   const Vec3 nf = front ? ng : -ng;
   const double off = Tracer::originOffset(x);
   const uint32_t flatSkip = isFlat(shape) ? h.shape : kNoShape;
-  m = scene.functions ? resolved(scene, *m, {x, d, ng, h.t}, cr.ctx.patterns(), cr.ctx.rng)
-                      : seenMaterial(scene.materials, *m);
+  std::optional<Material> patternedHere;  // the hook's copy when patterns modify m
+  m = materialAt(scene, *m, {x, d, ng, h.t}, cr.ctx.patternEval, cr.ctx.rng, patternedHere);
   if (!m) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // invisible here
-  std::optional<Material> patternedHere;  // the hook's copy when patterns modify m (no string copied)
-  if (hasFunctionPattern(scene, *m)) m = &patterned(scene, *m, {x, d, ng, h.t}, cr.ctx.patterns(), patternedHere.emplace());
   const MaterialFamily& family = familyOf(*m);
   switch (family.role()) {
     case HitRole::kEmit:

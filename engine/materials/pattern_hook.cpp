@@ -27,20 +27,24 @@ void PatternEvaluator::begin(const ScenePattern& sp, const PatternPoint& p) {
   eval_->begin(env);
 }
 
+double PatternEvaluator::function(const ScenePattern& sp, int k) {
+  try {
+    return eval_->value(sp.functions[static_cast<size_t>(k)]);
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
+}
+
 Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   Rgb c(1.0);
   for (int i = index; i >= 0;) {
     const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
     begin(sp, p);
-    try {
-      if (sp.channels == 1) {
-        c *= eval_->value(sp.functions[0]);
-      } else {
-        for (int k = 0; k < 3; ++k) c[k] *= eval_->value(sp.functions[static_cast<size_t>(k)]);
-      }
-    } catch (const cal::EvalError& e) {
-      throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+    if (sp.channels == 1) {
+      c *= function(sp, 0);
+    } else {
+      for (int k = 0; k < 3; ++k) c[k] *= function(sp, k);
     }
     i = sp.next;
   }
@@ -50,22 +54,14 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
 double PatternEvaluator::value(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
-  try {
-    return eval_->value(sp.functions[0]);
-  } catch (const cal::EvalError& e) {
-    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
-  }
+  return function(sp, 0);
 }
 
 Vec3 PatternEvaluator::direction(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
   Vec3 v(0.0);
-  try {
-    for (int k = 0; k < 3; ++k) v[k] = eval_->value(sp.functions[static_cast<size_t>(k)]);
-  } catch (const cal::EvalError& e) {
-    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
-  }
+  for (int k = 0; k < 3; ++k) v[k] = function(sp, k);
   return sp.toWorld.direction(v);
 }
 
@@ -130,6 +126,21 @@ std::optional<Rgb> throughAt(const Scene& scene, const Material* m, const Patter
 std::optional<Rgb> straightThrough(const Scene& scene, const Material& m, const PatternPoint& p,
                                    PatternEvaluator& eval) {
   return throughAt(scene, &m, p, eval, 0);
+}
+
+}  // namespace candela
+
+namespace candela {
+
+const Material* materialAt(const Scene& scene, const Material& m, const PatternPoint& p,
+                           std::unique_ptr<PatternEvaluator>& evaluator, Rng& rng,
+                           std::optional<Material>& patternedCopy) {
+  if (!scene.functions) return seenMaterial(scene.materials, m);
+  if (!evaluator) evaluator = std::make_unique<PatternEvaluator>(scene);
+  PatternEvaluator& eval = *evaluator;
+  const Material* at = resolved(scene, m, p, eval, rng);
+  if (at && hasFunctionPattern(scene, *at)) at = &patterned(scene, *at, p, eval, patternedCopy.emplace());
+  return at;
 }
 
 }  // namespace candela

@@ -9,6 +9,7 @@
 #include "engine/scene.h"
 
 #include <memory>
+#include <optional>
 
 namespace candela {
 
@@ -33,6 +34,8 @@ class PatternEvaluator {
  private:
   // Starts an evaluation of pattern sp at p (the ray's variables in its coordinates).
   void begin(const ScenePattern& sp, const PatternPoint& p);
+  // Function k of sp in the evaluation begun; a failure is an InputError at the pattern's line.
+  double function(const ScenePattern& sp, int k);
 
   const Scene& scene_;
   std::unique_ptr<cal::Evaluator> eval_;
@@ -56,6 +59,15 @@ const Material& patterned(const Scene& scene, const Material& m, const PatternPo
 // alternate (the ray passes straight on). Patterns are not applied here (patterned, after).
 const Material* resolved(const Scene& scene, const Material& m, const PatternPoint& p, PatternEvaluator& eval,
                          Rng& rng);
+
+// The material a ray that is not a shadow ray meets at p on a surface of m, as every user of a
+// hit asks it: resolved (illum's alternate, a mixture's choice) and patterned (in patternedCopy,
+// no string copied); nullptr: the ray passes straight on. Without function patterns in the scene
+// only illum's alternate is looked at and nothing is drawn or made; otherwise the evaluator is
+// made on first use.
+const Material* materialAt(const Scene& scene, const Material& m, const PatternPoint& p,
+                           std::unique_ptr<PatternEvaluator>& evaluator, Rng& rng,
+                           std::optional<Material>& patternedCopy);
 
 // What a straight (shadow) ray gets through a surface of m at p, patterns and mixtures evaluated
 // (a mixture: its materials' transmittances weighted by its coefficient); nullopt when opaque.

@@ -3,7 +3,6 @@
 #include "base/input_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <system_error>
 
@@ -98,12 +97,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
                                   " '" + expression + "' is not an expression: " + e.message());
     }
     // A plain name is checked as itself (its messages name it); an expression as a whole.
-    const bool plainName = !expression.empty() && (std::isalpha(static_cast<unsigned char>(expression[0])) ||
-                                                   expression[0] == '`') &&
-                           std::all_of(expression.begin(), expression.end(), [](char c) {
-                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '`';
-                           });
-    if (plainName) files.program()->check(expression, -1, p.loc);
+    if (cal::isName(expression)) files.program()->check(expression, -1, p.loc);
     files.program()->check(label, -1, p.loc, expression);
   }
   return sp;

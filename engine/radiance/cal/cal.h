@@ -73,6 +73,10 @@ class Program {
   std::unique_ptr<Impl> impl_;
 };
 
+// Whether `text` is a plain name of the language (a letter or '`', then letters, digits, '_', '.'
+// and '`'), as the parser reads names.
+bool isName(std::string_view text);
+
 // Evaluates a program's names. Keeps per-evaluation caches: one evaluator per thread.
 class Evaluator {
  public:

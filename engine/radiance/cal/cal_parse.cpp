@@ -2,6 +2,7 @@
 // the text into nodes, every error an InputError at its file and line.
 #include "engine/radiance/cal/cal_impl.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
@@ -257,6 +258,10 @@ class Parser {
 };
 
 }  // namespace
+
+bool isName(std::string_view text) {
+  return !text.empty() && isIdStart(text[0]) && std::all_of(text.begin(), text.end(), isIdChar);
+}
 
 Symbol Program::Impl::intern(std::string_view name) {
   const auto it = byName.find(std::string(name));
