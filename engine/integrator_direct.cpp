@@ -38,7 +38,9 @@ double collapsedPairs(const std::vector<double>& z, int kk) {
 // through a mirror). With a closed form for the unoccluded irradiance E_u, the samples only
 // estimate the visible fraction: E = E_u · Σ f V / Σ f, f = w cos ι. This ratio estimator is
 // exact when the source is wholly visible, exactly 0 when wholly hidden (no light leaks), and its
-// bias falls as 1/k. Without a closed form: E = mean(f V).
+// bias falls as 1/k. Without a closed form: E = mean(f V). A light's function pattern P at each
+// sample multiplies V (the closed form is the unpatterned source's, the samples its patterned
+// share: exact for a constant pattern).
 // About 90 lines: the sampling loop and the variance share its per-sample sums; split, they
 // would pass a dozen of them.
 template <class Visibility>
@@ -86,8 +88,8 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
   for (int i = 0; i < kk; ++i) {
     const Vec2 u = strata.sample(i, ctx.rng);
     LightSample ls;
-    const bool ok = clippedPolygon ? sampleClippedPolygon(light, sc.tris, sc.cumulative, p, u.x, u.y, ls)
-                                   : sampleLight(light, scene, p, u.x, u.y, ls);
+    const bool ok = clippedPolygon ? sampleClippedPolygon(light, sc.tris, sc.cumulative, p, u.x, u.y, ls, ctx.patternsIfAny())
+                                   : sampleLight(light, scene, p, u.x, u.y, ls, ctx.patternsIfAny());
     if (!ok) continue;
     const double cosI = response ? response->weight(ls.dir) : glm::dot(n, ls.dir);
     if (cosI <= 0.0) continue;
@@ -95,7 +97,7 @@ Rgb lightEstimate(TraceContext& ctx, const Light& light, const Receiver& at, int
     // Nothing sent this way (a downlight seen from above its opening): no shadow ray; the sums
     // would add 0.
     if (f.x <= 0.0 && f.y <= 0.0 && f.z <= 0.0) continue;
-    const Rgb v = visibility(ls, lightShape);
+    const Rgb v = ls.pattern * visibility(ls, lightShape);  // a pattern counts as visibility does
     const double c = haveExact ? 1.0 : 0.0;
     sumFvc += f * v * c;
     sumFc += f * c;
@@ -274,7 +276,7 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
   // Path vertices (no variance wanted): one light chosen per sample (engine/light_selection.h).
   const bool atPathVertex = variance == nullptr;
   if (atPathVertex) {
-    total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf,
+    total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf, ctx.patternsIfAny(),
                                      [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
                                        return ctx.transmittance(o, dir, tMax, at.skip, lightShape);
                                      }, ctx.smallSin2, ctx.light.useGlowShare ? ctx.light.glowShare.data() : nullptr);
@@ -313,7 +315,8 @@ double skyMisWeight(const Tracer& tracer, const Vec3& dir, const SkyMis& mis) {
   return c2 / (c2 + t.sky * t.sky + t.portal * t.portal);
 }
 
-Rgb distantRadiance(const Tracer& tracer, const Vec3& dir, bool countSources, const SkyMis& mis) {
+Rgb distantRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& dir, bool countSources, const SkyMis& mis) {
+  const Tracer& tracer = ctx.tracer;
   const Scene& scene = tracer.scene();
   // Where sources at infinity overlap, the smallest one is seen (it lies in front of the larger,
   // as the sun in front of the sky).
@@ -322,8 +325,11 @@ Rgb distantRadiance(const Tracer& tracer, const Vec3& dir, bool countSources, co
     if (glm::dot(dir, d.direction) >= d.cosHalfAngle && (!seen || d.solidAngleSr < seen->solidAngleSr)) seen = &d;
   if (seen) {
     const Material& m = scene.materials[seen->material];
-    if (!m.isSampledSource()) return m.color;  // a glow: seen whether sources count or not
-    return countSources ? m.color : Rgb(0.0);
+    if (m.isSampledSource() && !countSources) return Rgb(0.0);  // a glow is seen whether sources count or not
+    const int pattern = functionPatternOf(scene, m);
+    if (pattern < 0) return m.color;
+    const PatternPoint at{origin + kDistantPointM * dir, dir, -dir, kDistantPointM};
+    return m.color * glm::max(ctx.patterns().colour(pattern, at), Rgb(0.0));
   }
   if (!scene.sky) return Rgb(0.0);
   return Rgb(skyMisWeight(tracer, dir, mis) * skyOrGroundLuminance(*scene.sky, dir) / kLumensPerWatt);

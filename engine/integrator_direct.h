@@ -67,8 +67,9 @@ SkyMisTerms skyMisTerms(const Tracer& tracer, const Vec3& dir, const Vec3& p, co
 // the sky samples; 1 when mis.cosPdf is 0.
 double skyMisWeight(const Tracer& tracer, const Vec3& dir, const SkyMis& mis);
 
-// Radiance of the sky, the ground and the distant sources seen along an escaping ray of
-// direction dir, the sky and ground weighted by skyMisWeight.
-Rgb distantRadiance(const Tracer& tracer, const Vec3& dir, bool countSources, const SkyMis& mis);
+// Radiance of the sky, the ground and the distant sources seen along an escaping ray from origin
+// in direction dir, the sky and ground weighted by skyMisWeight; a distant source's function
+// pattern evaluated where the ray meets it (kDistantPointM along it).
+Rgb distantRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& dir, bool countSources, const SkyMis& mis);
 
 }  // namespace candela

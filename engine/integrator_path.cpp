@@ -48,7 +48,7 @@ Rgb escapeRadiance(TraceContext& ctx, const Vec3& d, const PathState& st, const 
   const SkyMis mis{st.misCosPdf, st.misRatio, st.misPortalRatio, st.misOrigin, st.misNormal};
   if (tally && tally->patches && scene.sky && !(tally->directApart && st.diffuse == 0 && !ray.reflected))
     tallySky(*tally, d, ray.beta * skyMisWeight(ctx.tracer, d, mis), st.diffuse == 0 && !ray.reflected);
-  return distantRadiance(ctx.tracer, d, st.countSources, mis);
+  return distantRadiance(ctx, ray.o, d, st.countSources, mis);
 }
 
 // Follows a specular surface (mirror, thin glass, dielectric: its family samples the event) at v:

@@ -26,11 +26,13 @@ double lightImportance(const Light& light, const Scene& scene, const Vec3& p, co
 // the caller's scratch (TraceContext), reused from call to call. A glow counts with the share
 // glowShare[l] of its light when given (a cache lookup: LightScratch::glowShare), else fully
 // where glowSampledFrom(smallSin2) samples it from p and not at all elsewhere.
-// 10 parameters: the scene and point, the sample count and stream, the scratch, the visibility
-// test and the glows' rule are separate inputs of one estimate.
+// `patterns` evaluates the lights' function patterns (sampleLight; nullptr when the scene has none).
+// 11 parameters: the scene and point, the sample count and stream, the scratch, the patterns'
+// evaluator, the visibility test and the glows' rule are separate inputs of one estimate.
 template <class Visibility>
 Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scene, const Vec3& p, const Vec3& n,
-                             int k, Rng& rng, std::vector<double>& cdf, const Visibility& visibility,
+                             int k, Rng& rng, std::vector<double>& cdf, PatternEvaluator* patterns,
+                             const Visibility& visibility,
                              double smallSin2 = 0.0, const double* glowShare = nullptr) {
   const size_t count = lights.size();
   if (count == 0) return Rgb(0.0);
@@ -67,13 +69,13 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
     if (pl <= 0.0) continue;
     const double v1 = std::clamp((target - lo) / (cdf[l] - lo), 0.0, 1.0 - 1e-12);
     LightSample ls;
-    if (!sampleLight(lights[l], scene, p, v1, u.y, ls)) continue;
+    if (!sampleLight(lights[l], scene, p, v1, u.y, ls, patterns)) continue;
     const double cosI = glm::dot(n, ls.dir);
     if (cosI <= 0.0) continue;
     const uint32_t lightShape = lights[l].ownShape;
     const double tMax = std::isinf(ls.distance) ? std::numeric_limits<double>::infinity()
                                                 : ls.distance * (1.0 - 1e-9);
-    sum += ls.weight * (cosI * share(l) / pl) * visibility(p, ls.dir, tMax, lightShape);
+    sum += ls.weight * ls.pattern * (cosI * share(l) / pl) * visibility(p, ls.dir, tMax, lightShape);
   }
   return sum / static_cast<double>(k);
 }

@@ -1,11 +1,13 @@
 #include "engine/lights.h"
 
 #include "engine/materials/family.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/sampling.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace candela {
 
@@ -150,6 +152,7 @@ std::vector<Light> collectLights(const Scene& scene) {
     l.radiance = m.color;
     l.areaM2 = shapeArea(s, scene.vertices);
     l.distribution = sourceDistributionOf(scene, m);
+    l.pattern = functionPatternOf(scene, m);
     if (m.spot) l.spot = &m;
     if (l.distribution && !l.distribution->emits()) continue;
     if (glow) {
@@ -184,6 +187,7 @@ std::vector<Light> collectLights(const Scene& scene) {
     l.kind = Light::Kind::kDistant;
     l.distant = i;
     l.radiance = m.color;
+    l.pattern = functionPatternOf(scene, m);
     lights.push_back(std::move(l));
   }
   return lights;
@@ -235,7 +239,13 @@ bool openingBelowHorizon(const LuminaireSource& lum, const Vec3& p, const Vec3& 
 
 }  // namespace
 
-bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out) {
+namespace {
+
+// sampleLight without the light's function pattern; y and ny receive the sampled point and its
+// front normal (a distant source: 10^10 m along the ray, facing back along it), where the
+// pattern is evaluated.
+bool sampleUnpatterned(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out,
+                       Vec3& y, Vec3& ny) {
   if (light.kind == Light::Kind::kLuminaire) return sampleLuminaire(scene.luminaires[light.luminaire], p, u1, u2, out);
   if (light.kind == Light::Kind::kDistant) {
     const DistantSource& d = scene.distant[light.distant];
@@ -243,10 +253,11 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
     out.dir = f.toWorld(sampleUniformCone(u1, u2, d.cosHalfAngle));
     out.distance = std::numeric_limits<double>::infinity();
     out.weight = light.radiance * d.solidAngleSr;
+    y = p + kDistantPointM * out.dir;
+    ny = -out.dir;
     return true;
   }
   const Shape& s = scene.shapes[light.shape];
-  Vec3 y, ny;
   switch (s.type) {
     case ShapeType::kTriangle:
     case ShapeType::kPolygon: {
@@ -270,10 +281,9 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
       out.dir = dir;
       out.distance = b - std::sqrt(disc);
       out.weight = light.radiance * (kTwoPi * (1.0 - cosMax));
-      if (light.distribution) {
-        const Vec3 ny = (p + out.distance * dir - s.a) / s.r0;
-        out.weight *= light.distribution->factor(dir, -glm::dot(dir, ny));
-      }
+      y = p + out.distance * dir;
+      ny = (y - s.a) / s.r0;
+      if (light.distribution) out.weight *= light.distribution->factor(dir, -glm::dot(dir, ny));
       if (light.spot) out.weight *= light.spot->spotFactor(-dir, out.distance);
       return true;
     }
@@ -304,6 +314,24 @@ bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u
   return areaSample(y, ny, p, light, light.areaM2, out);
 }
 
+// The light's function pattern where the sample out meets it at y (front normal ny).
+void patternAt(const Light& light, PatternEvaluator* patterns, const Vec3& y, const Vec3& ny, LightSample& out) {
+  if (light.pattern < 0) return;
+  if (!patterns) throw std::logic_error("a light with a function pattern is sampled without an evaluator");
+  const double t = std::isinf(out.distance) ? kDistantPointM : out.distance;
+  out.pattern = glm::max(patterns->colour(light.pattern, {y, out.dir, ny, t}), Rgb(0.0));
+}
+
+}  // namespace
+
+bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out,
+                 PatternEvaluator* patterns) {
+  Vec3 y(0.0), ny(0.0);
+  if (!sampleUnpatterned(light, scene, p, u1, u2, out, y, ny)) return false;
+  patternAt(light, patterns, y, ny, out);
+  return true;
+}
+
 double polygonProjectedSolidAngle(const std::vector<Vec3>& poly, const Vec3& p, const Vec3& n) {
   double sum = 0.0;
   for (size_t i = 0; i < poly.size(); ++i) {
@@ -328,13 +356,15 @@ void diskVectorIrradiance(double radiusM, double hM, double rhoM, double& alongA
 
 bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3, 3>>& tris,
                           const std::vector<double>& cumulative, const Vec3& p, double u1, double u2,
-                          LightSample& out) {
+                          LightSample& out, PatternEvaluator* patterns) {
   if (tris.empty()) return false;
   const double area = cumulative.back();
   size_t k;
   const Vec3 y = pointOnTriangles(tris, cumulative, u1, u2, k);
   // The clipped part lies in the source's plane and p in front of it (unoccludedIrradiance).
-  return areaSample(y, light.normal, p, light, area, out);
+  if (!areaSample(y, light.normal, p, light, area, out)) return false;
+  patternAt(light, patterns, y, light.normal, out);
+  return true;
 }
 
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,

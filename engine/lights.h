@@ -14,6 +14,8 @@
 
 namespace candela {
 
+class PatternEvaluator;
+
 struct Light {
   enum class Kind { kArea, kDistant, kLuminaire };
   Kind kind = Kind::kArea;
@@ -35,6 +37,9 @@ struct Light {
   const SourceDistribution* distribution = nullptr;
   // Area: the spotlight material (its cone and focal distance; owned by the scene), or none.
   const Material* spot = nullptr;
+  // Area or distant: the function pattern modifying the radiance (an index into Scene::patterns,
+  // evaluated at each sample by the caller's PatternEvaluator), or -1.
+  int pattern = -1;
   // Area, a `glow` surface: sampled only from the points glowSampledFrom accepts. Its radius
   // argument (Material::glowRadiusM) and a sphere bounding the shape (centre, radius in m).
   bool glow = false;
@@ -86,34 +91,41 @@ struct SampledSources {
 };
 SampledSources collectSampledSources(const Scene& scene);
 
-// One sample of a light seen from point p: unit direction to the light, distance (infinity for
-// distant sources) and the unoccluded contribution w such that irradiance = E[w · cos θ · V].
+// One sample of a light seen from p: unit direction to the light, distance (infinity for
+// distant sources) and the unoccluded contribution w such that irradiance = E[w · P · cos θ · V],
+// P the light's function pattern where the sample meets it (1 without one).
 struct LightSample {
   Vec3 dir{0.0};
   double distance = 0.0;
   Rgb weight{0.0};
+  Rgb pattern{1.0};
 };
 
 // Draws a sample of `light` from p for the stratified pair (u1, u2); false when the sample
-// cannot contribute (behind a one-sided source, p inside a spherical source).
-bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out);
+// cannot contribute (behind a one-sided source, p inside a spherical source). A light with a
+// function pattern gets the pattern at the sampled point in out.pattern, as the shadow ray meets it
+// (Radiance's srcvalue: the pattern sees the shadow ray's direction and the source's normal; a
+// distant source's point is 10^10 m along the ray and its normal the reverse of the ray):
+// `patterns` is then required (std::logic_error without it), else unused (nullptr is fine).
+bool sampleLight(const Light& light, const Scene& scene, const Vec3& p, double u1, double u2, LightSample& out,
+                 PatternEvaluator* patterns);
 
 // Exact unoccluded irradiance (W/m²) from `light` at p on a surface with normal n, where a closed
 // form exists: Lambert's polygon formula on the source clipped to the receiver's horizon (the
 // clipped outline is returned in *clipped, to be sampled with sampleClippedPolygon); the
 // vector irradiance of a disk or annulus wholly above the horizon; the cap formula
 // π L sin²α cos θ for spherical and distant sources wholly above the horizon; a far-field
-// luminaire's I cos ι / d² (a point luminaire only: an opening is sampled, lights.cpp). Returns false where no closed form applies (and for every source
-// with a distribution).
+// luminaire's I cos ι / d² (a point luminaire only: an opening is sampled, lights.cpp). Returns
+// false where no closed form applies (and for every source with a distribution or a pattern).
 bool unoccludedIrradiance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n, Rgb& out,
                           std::vector<Vec3>* clipped = nullptr);
 
 // Uniform sample of a polygon source restricted to `tris` (its part above a receiver's horizon,
 // triangulated, with cumulative areas `cumulative`).
-// 7 parameters: sampleLight's six with the clipped triangulation in place of the light's own.
+// 8 parameters: sampleLight's seven with the clipped triangulation in place of the light's own.
 bool sampleClippedPolygon(const Light& light, const std::vector<std::array<Vec3, 3>>& tris,
                           const std::vector<double>& cumulative, const Vec3& p, double u1, double u2,
-                          LightSample& out);
+                          LightSample& out, PatternEvaluator* patterns);
 
 // Vector irradiance of a uniform Lambertian disk of radius R (W/m² per unit radiance) at a point
 // h in front of its plane and ρ off its axis: the component along the axis towards the disk,

@@ -167,7 +167,7 @@ Rgb cameraRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t skip, d
     // (opening_reflectance, in the same plane), its luminance plus what that surface reflects.
     if (photopic(emitted) > 0.0 && !(hit && tMax >= h.t * (1.0 - 1e-9))) return emitted;
   }
-  if (!hit) return distantRadiance(cr.ctx.tracer, d, true, SkyMis{});  // seen, not sampled: no MIS weight
+  if (!hit) return distantRadiance(cr.ctx, o, d, true, SkyMis{});  // seen, not sampled: no MIS weight
   return emitted + seenSurfaceRadiance(cr, o, d, skip, h, share, events);
 }
 

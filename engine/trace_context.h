@@ -50,13 +50,15 @@ struct TraceContext {
   // call's evaluator).
   Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) {
     uint32_t firstGlass = kNoShape;
-    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass, tracer.hasPatterns() ? &patterns() : nullptr);
+    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass, patternsIfAny());
   }
   // The function patterns' evaluator of this call, made on first use.
   PatternEvaluator& patterns() {
     if (!patternEval) patternEval = std::make_unique<PatternEvaluator>(tracer.scene());
     return *patternEval;
   }
+  // The evaluator when the scene has function patterns, else nullptr (nothing made).
+  PatternEvaluator* patternsIfAny() { return tracer.hasPatterns() ? &patterns() : nullptr; }
 
   const Tracer& tracer;
   const TraceSettings& settings;

@@ -41,6 +41,16 @@ class PatternEvaluator {
   std::unique_ptr<cal::Evaluator> eval_;
 };
 
+// Where a ray meets a source at infinity, for a pattern evaluated there: this far along the ray
+// (Radiance's FHUGE), the normal facing back along the ray.
+constexpr double kDistantPointM = 1e10;
+
+// The function pattern modifying emitter m's radiance (an index into Scene::patterns), or -1.
+inline int functionPatternOf(const Scene& scene, const MaterialParameters& m) {
+  return m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction ? m.pattern
+                                                                                                      : -1;
+}
+
 // Whether m's colour is modified by a function pattern (the hook has work to do).
 inline bool hasFunctionPattern(const Scene& scene, const MaterialParameters& m) {
   if (m.anisotropy >= 0) return true;  // plastic2's u direction

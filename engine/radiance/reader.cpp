@@ -432,19 +432,6 @@ class SceneReader::Builder {
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
                   scene_.patterns[static_cast<size_t>(m.pattern)].name +
                   "', which candela applies to light, illum and glow only");
-    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction &&
-        family.emits()) {
-      const ScenePattern& sp = scene_.patterns[static_cast<size_t>(m.pattern)];
-      const std::string what = sp.type + " '" + sp.name + "'";
-      if (options_.patterns == PatternPolicy::kRefuse)
-        fail(p, p.type + " '" + p.name + "' is modified by " + what +
-                    ": candela evaluates function patterns on reflecting and transmitting materials, not yet on "
-                    "light sources; run with --patterns base to use the source unmodified, with a warning");
-      scene_.inputWarnings.push_back(Warning{
-          "pattern_replaced", what + " on the light source " + p.type + " '" + p.name + "' is not implemented: "
-                                 "the source is used unmodified", sp.loc});
-      m.pattern = -1;
-    }
     m.name = p.name;
     m.loc = p.loc;
     if (family.usesFunctions()) {  // plastic2's u direction: three functions of a function file

@@ -200,19 +200,96 @@ TEST(FunctionPatterns, RefusalsNameTheirLine) {
   EXPECT_NE(errorOf(dir, "void mixfunc m 4 nothere void .5 . 0 0\n", PatternPolicy::kRefuse, "m")
                 .find("its foreground 'nothere' is not a material"),
             std::string::npos);
-  // On a light source: refused, or the source unmodified with a warning under --patterns base.
-  const std::string lamp = "void brightfunc p 2 .5 . 0 0\np light lamp 0 0 3 10 10 10\n";
-  EXPECT_NE(errorOf(dir, lamp).find("scene.rad:2: light 'lamp' is modified by brightfunc 'p'"), std::string::npos);
-  const Scene sc = readIn(dir, lamp, PatternPolicy::kBase);
-  ASSERT_EQ(sc.inputWarnings.size(), 1u);
-  EXPECT_EQ(sc.inputWarnings[0].code, "pattern_replaced");
-  EXPECT_EQ(sc.materials.back().pattern, -1);
   // A missing file under --patterns base: the material unmodified, with the reason.
   const Scene base = readIn(dir, "void brightfunc p 2 v nofile.cal 0 0\np plastic f 0 0 5 .5 .5 .5 0 0\n",
                             PatternPolicy::kBase);
   ASSERT_EQ(base.inputWarnings.size(), 1u);
   EXPECT_NE(base.inputWarnings[0].message.find("cannot be read (brightfunc 'p': function file 'nofile.cal'"),
             std::string::npos);
+}
+
+// Function patterns on light sources (Radiance's srcvalue: the pattern is evaluated where the
+// shadow ray or the ray meets the source). A 4 m square light of radiance L 1 m above a sensor
+// facing it, under a pattern P: E = L ∫ P cos θ cos θ' / d² dA = L ∫ P / d⁴ dA (the sensor
+// below the plane's point (x, y)), computed here by the midpoint rule on 800 × 800 cells
+// (relative error below 1e-5). A constant pattern k gives k times the unpatterned light; a
+// pattern lighting the x > 0 half, half of it for a sensor at x = 0; the pattern Dz (the shadow
+// ray's direction: P = 1/d) the integral of 1/d⁵.
+constexpr const char* kCeiling = "lamp polygon ceiling 0 0 12 -2 -2 1  -2 2 1  2 2 1  2 -2 1\n";
+constexpr const char* kBlackFloor =
+    "void plastic black 0 0 5 0 0 0 0 0\nblack polygon floor 0 0 12 -1e4 -1e4 0  1e4 -1e4 0  1e4 1e4 0  -1e4 1e4 0\n";
+
+// ∫ over the ceiling of d^-power, d the distance from (0, y0, 0).
+double ceilingIntegral(double y0, int power) {
+  const int n = 800;
+  const double h = 4.0 / n;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double x = -2.0 + (i + 0.5) * h, y = -2.0 + (j + 0.5) * h - y0;
+      sum += std::pow(x * x + y * y + 1.0, -0.5 * power);
+    }
+  return sum * h * h;
+}
+
+void expectLux(const Scene& sc, const Vec3& at, const Vec3& n, double want, const char* what, int maxBounces = 0) {
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.seed = 3;
+  s.hemisphereSamples = 1024;
+  s.lightSamples = 1024;
+  s.maxBounces = maxBounces;
+  const IrradianceEstimate e = tracer.irradiance(at, Response::planar(n), 0, s);
+  // A constant pattern is exact (the ratio estimator): then the quadrature's error, 1e-5.
+  EXPECT_NEAR(e.illuminanceLux(), want, std::max(4.0 * e.standardErrorLux(), 1e-5 * want)) << what;
+  EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;  // the test tells a wrong factor apart
+}
+
+TEST(FunctionPatterns, PatternsOnAreaLightsWeighTheirSamples) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "lamp");
+  const double l = 10.0 * kLumensPerWatt;  // the light's luminance (cd/m²)
+  const Vec3 at(0.0, -0.2, 0.0), up(0, 0, 1);
+  const double plain = l * ceilingIntegral(-0.2, 4);
+  const std::string lamp = "p light lamp 0 0 3 10 10 10\n";
+  expectLux(readIn(dir, "void brightfunc p 2 .4 . 0 0\n" + lamp + kCeiling), at, up, 0.4 * plain, "constant 0.4");
+  expectLux(readIn(dir, "void brightfunc p 2 if(Px,1,0) . 0 0\n" + lamp + kCeiling), at, up, 0.5 * plain,
+            "the x > 0 half");
+  expectLux(readIn(dir, "void brightfunc p 2 Dz . 0 0\n" + lamp + kCeiling), at, up, l * ceilingIntegral(-0.2, 5),
+            "L cos θ");
+  // At a path vertex (one light chosen per sample): light reflected by a floor under the square
+  // is 0.4 times the unpatterned light's, sample for sample (the same stream: the pattern
+  // changes no choice).
+  const std::string floor = "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
+                            "grey polygon floor 0 0 12 -1e4 -1e4 0  1e4 -1e4 0  1e4 1e4 0  -1e4 1e4 0\n";
+  auto reflected = [&](const std::string& text) {
+    const Scene sc = readIn(dir, text);
+    TraceSettings s;
+    s.seed = 5;
+    s.hemisphereSamples = 256;
+    s.maxBounces = 1;
+    return Tracer(sc).irradiance(Vec3(0.3, -0.2, 0.5), Response::planar(-up), 0, s).illuminanceLux();
+  };
+  const double patterned = reflected("void brightfunc p 2 .4 . 0 0\n" + lamp + kCeiling + floor);
+  const double unpatterned = reflected("void light lamp 0 0 3 10 10 10\n" + std::string(kCeiling) + floor);
+  ASSERT_GT(unpatterned, 0.01 * plain);
+  EXPECT_NEAR(patterned, 0.4 * unpatterned, 1e-9 * unpatterned);
+}
+
+TEST(FunctionPatterns, PatternsOnDistantSources) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "distant");
+  const Vec3 at(0.0, 0.0, 1.0), up(0, 0, 1);
+  // A glow dome of luminance L Dz (found by hemisphere rays): 2π L / 3 on a horizontal sensor
+  // above a black floor.
+  const Scene dome =
+      readIn(dir, std::string("void brightfunc p 2 Dz . 0 0\np glow g 0 0 4 10 10 10 0\ng source dome 0 0 4 0 0 1 180\n") +
+                      kBlackFloor);
+  expectLux(dome, at, up, 2.0 * kPi / 3.0 * 10.0 * kLumensPerWatt, "glow dome L Dz");
+  // A sun (a light source, sampled) under a pattern 0.25: a quarter of L π sin²α.
+  const Scene sun =
+      readIn(dir, std::string("void brightfunc p 2 .25 . 0 0\np light s 0 0 3 1e4 1e4 1e4\ns source sun 0 0 4 0 0 1 0.5\n") +
+                      kBlackFloor);
+  const double sinA = std::sin(0.25 * kPi / 180.0);  // exact (the cap formula)
+  expectLux(sun, at, up, 0.25 * 1e4 * kLumensPerWatt * kPi * sinA * sinA, "sun 0.25");
 }
 
 }  // namespace
