@@ -1,10 +1,11 @@
 // plastic2, metal2 and trans2 (Radiance reference manual, "Plastic2", "Metal2", "Trans2"):
 // plastic, metal and trans with an anisotropic Ward lobe, `mod plastic2 id 4+ ux uy uz funcfile
 // transform 0 6 red green blue spec urough vrough` (trans2: `0 8 … trans tspec`). The u direction
-// is three functions of the function file (read as a pattern into Material::anisotropy), evaluated
+// is three functions of the function file (read as a pattern into Material::functions), evaluated
 // at each hit by engine/materials/pattern_hook.h; the lobe has roughness urough along u and vrough
 // across it.
 #include "engine/materials/normal.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
 
 namespace candela {
@@ -16,7 +17,11 @@ class Anisotropic : public NormalFamily {
       : type_(type), name_(name), transmits_(transmits), derive_(derive) {}
   MaterialType type() const override { return type_; }
   const char* name() const override { return name_; }
-  bool usesFunctions() const override { return true; }
+  int functionPatterns() const override { return 1; }
+  void atHit(const Material& m, const PatternPoint& p, const Rgb&, PatternEvaluator& eval,
+             MaterialParameters& out) const override {
+    out.anisotropyU = eval.direction(m.functions, p);
+  }
   void read(const MaterialReadContext& ctx, Material& m) const override {
     ctx.expectReals(transmits_ ? 8 : 6);
     const RadPrimitive& p = ctx.primitive;

@@ -18,6 +18,9 @@
 
 namespace candela {
 
+class PatternEvaluator;
+struct PatternPoint;
+
 // What a ray that is not a shadow ray finds at a surface of the family.
 enum class HitRole {
   kAbsorb,    // void: nothing is seen, the path ends
@@ -154,9 +157,15 @@ class MaterialFamily {
                           Vec3& /*out*/) const {
     return false;
   }
-  // The family's primitive names functions in a function file (plastic2's u direction): the reader
-  // reads them as a pattern of three functions into Material::anisotropy before read().
-  virtual bool usesFunctions() const { return false; }
+  // The number of patterns of functions the family's primitive names (plastic2's u direction: 1;
+  // BRTDfunc's specular reflectance and transmittance: 2): the reader reads them into
+  // Scene::patterns, the first at Material::functions, before read().
+  virtual int functionPatterns() const { return 0; }
+  // The parts at a hit p of a material with such functions, in out (m's parameters, its colour
+  // already multiplied by its patterns' colour patternColour, its parts derived from it):
+  // engine/materials/pattern_hook.h calls it.
+  virtual void atHit(const Material& /*m*/, const PatternPoint& /*p*/, const Rgb& /*patternColour*/,
+                     PatternEvaluator& /*eval*/, MaterialParameters& /*out*/) const {}
 
   // kSpecular: one sampled event (paths), or every part at once (the camera).
   virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,

@@ -14,9 +14,9 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc
 };
-inline constexpr int kMaterialTypeCount = 16;
+inline constexpr int kMaterialTypeCount = 17;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -31,12 +31,19 @@ struct MaterialParameters {
                          // dielectric transmission per metre of path inside (fraction, per channel)
   double specularity = 0.0;   // plastic, metal, trans (fraction)
   double roughness = 0.0;     // plastic, metal, trans (rms slope); plastic2, metal2, trans2: along u
-  // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u, the pattern whose three
-  // functions give the u direction (Scene::patterns), and that direction at a hit (world, set by
-  // engine/materials/pattern_hook.h; zero until then).
+  // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u and the u direction at a
+  // hit (world, set by engine/materials/pattern_hook.h; zero until then).
   double roughnessV = 0.0;
-  int anisotropy = -1;
   Vec3 anisotropyU{0.0};
+  // The first of the patterns (Scene::patterns) holding the functions of the family's own
+  // arguments, evaluated at each hit (MaterialFamily::atHit): plastic2's u direction; BRTDfunc's
+  // specular reflectance, then (functions + 1) its specular transmittance. -1: none.
+  int functions = -1;
+  // BRTDfunc: the back side's diffuse reflectance and the diffuse transmittance as given (color is
+  // the front's), and whether its specular transmittance can be non-zero.
+  Rgb backColor{0.0};
+  Rgb transmissionColor{0.0};
+  bool specularTransmission = false;
   double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
   double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
   double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)

@@ -1,5 +1,5 @@
 // mist (Radiance reference manual, "Mist"): the boundary of a participating medium,
-// `mod mist id N s1 … sN 0 3|6|7 rext gext bext [ralb galb balb [g]]`. candela reads it as a
+// `mod mist id N s1 … sN 0 0|3|6|7 [rext gext bext [ralb galb balb [g]]]`. candela reads it as a
 // boundary without scattering: rays and shadow rays pass it as if it were not there; the
 // medium's extinction and scattering inside, and its light sources, are not modelled
 // (docs/engine.md).
@@ -15,8 +15,11 @@ class Mist : public MaterialFamily {
   HitRole role() const override { return HitRole::kAbsorb; }  // never asked: rays pass (seenInstead)
   void read(const MaterialReadContext& ctx, Material& m) const override {
     const RadPrimitive& p = ctx.primitive;
-    if (p.reals.size() != 3 && p.reals.size() != 6 && p.reals.size() != 7)
-      ctx.fail(ctx.what() + " needs 3, 6 or 7 real arguments, got " + std::to_string(p.reals.size()));
+    // None: a volume that only names the sources scattering in it (the strings), its medium the
+    // global one (Radiance's own spotcones.rad).
+    if (p.reals.size() != 0 && p.reals.size() != 3 && p.reals.size() != 6 && p.reals.size() != 7)
+      ctx.fail(ctx.what() + " needs 0, 3, 6 or 7 real arguments, got " + std::to_string(p.reals.size()));
+    if (p.reals.empty()) return;
     m.color = ctx.vec(0);  // the extinction coefficients, read and not used
     ctx.expectNonNegative(m.color);
   }

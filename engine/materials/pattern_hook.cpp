@@ -5,10 +5,15 @@
 namespace candela {
 
 void PatternEvaluator::begin(const ScenePattern& sp, const PatternPoint& p) {
+  cal::Environment env;
+  fill(sp, p, env);
+  eval_->begin(env);
+}
+
+void PatternEvaluator::fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env) {
   if (!eval_) eval_ = std::make_unique<cal::Evaluator>(*scene_.functions);
   // The ray's variables in the function's coordinates (Radiance's func.c: the point, direction
   // and normal through the inverse of the pattern's transform; T in its units).
-  cal::Environment env;
   const RadTransform& f = sp.toFunction;
   const Vec3 x = f.point(p.x), d = glm::normalize(f.direction(p.d)), n = glm::normalize(f.direction(p.ng));
   const Vec3 o = f.point(Vec3(0.0)), ix = f.direction(Vec3(1, 0, 0)), jy = f.direction(Vec3(0, 1, 0)),
@@ -24,7 +29,6 @@ void PatternEvaluator::begin(const ScenePattern& sp, const PatternPoint& p) {
   env.ray[cal::kKx] = kz.x, env.ray[cal::kKy] = kz.y, env.ray[cal::kKz] = kz.z;
   env.ray[cal::kNxP] = n.x, env.ray[cal::kNyP] = n.y, env.ray[cal::kNzP] = n.z;
   env.args = sp.args;
-  eval_->begin(env);
 }
 
 double PatternEvaluator::function(const ScenePattern& sp, int k) {
@@ -57,6 +61,23 @@ double PatternEvaluator::value(int index, const PatternPoint& p) {
   return function(sp, 0);
 }
 
+Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patternColour) {
+  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  cal::Environment env;
+  fill(sp, p, env);
+  // Radiance's m_brdf.c (setbrdfunc): the perturbed normal and RdotP turned towards the ray,
+  // the pattern's colour as CrP CgP CbP; Rdot keeps its sign.
+  const double rdot = -glm::dot(p.d, p.ng);
+  const Vec3 n = glm::normalize(sp.toFunction.direction(rdot < 0.0 ? -p.ng : p.ng));
+  env.ray[cal::kNxP] = n.x, env.ray[cal::kNyP] = n.y, env.ray[cal::kNzP] = n.z;
+  env.ray[cal::kRdotP] = std::min(1.0, std::abs(rdot));
+  env.ray[cal::kCrP] = patternColour.x, env.ray[cal::kCgP] = patternColour.y, env.ray[cal::kCbP] = patternColour.z;
+  eval_->begin(env);
+  Rgb c(0.0);
+  for (int k = 0; k < 3; ++k) c[k] = function(sp, k);
+  return c;
+}
+
 Vec3 PatternEvaluator::direction(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
@@ -69,12 +90,14 @@ const Material& patterned(const Scene& scene, const Material& m, const PatternPo
                           Material& out) {
   if (!hasFunctionPattern(scene, m)) return m;
   static_cast<MaterialParameters&>(out) = m;
+  Rgb pc(1.0);
   if (m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction) {
     // A negative brightness is no light: 0 (Radiance would carry it on as negative light).
-    out.color = m.color * glm::max(eval.colour(m.pattern, p), Rgb(0.0));
+    pc = glm::max(eval.colour(m.pattern, p), Rgb(0.0));
+    out.color = m.color * pc;
     deriveMaterial(out);
   }
-  if (m.anisotropy >= 0) out.anisotropyU = eval.direction(m.anisotropy, p);
+  if (m.functions >= 0) familyOf(m).atHit(m, p, pc, eval, out);
   return out;
 }
 

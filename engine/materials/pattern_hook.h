@@ -30,10 +30,15 @@ class PatternEvaluator {
   double value(int index, const PatternPoint& p);
   // Pattern `index`'s three functions at p as a direction in the world (plastic2's u).
   Vec3 direction(int index, const PatternPoint& p);
+  // Pattern `index`'s three functions at p with the variables Radiance's BRTDfunc defines: NxP
+  // NyP NzP and RdotP turned towards the ray, CrP CgP CbP the material's pattern colour.
+  Rgb oriented(int index, const PatternPoint& p, const Rgb& patternColour);
 
  private:
   // Starts an evaluation of pattern sp at p (the ray's variables in its coordinates).
   void begin(const ScenePattern& sp, const PatternPoint& p);
+  // The ray's variables of pattern sp at p (makes the evaluator on first use).
+  void fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env);
   // Function k of sp in the evaluation begun; a failure is an InputError at the pattern's line.
   double function(const ScenePattern& sp, int k);
 
@@ -53,7 +58,7 @@ inline int functionPatternOf(const Scene& scene, const MaterialParameters& m) {
 
 // Whether m's colour is modified by a function pattern (the hook has work to do).
 inline bool hasFunctionPattern(const Scene& scene, const MaterialParameters& m) {
-  if (m.anisotropy >= 0) return true;  // plastic2's u direction
+  if (m.functions >= 0) return true;  // plastic2's u direction, BRTDfunc's specular parts
   return m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction &&
          familyOf(m.type).role() != HitRole::kMix;  // a mixture's pattern is its coefficient
 }

@@ -29,6 +29,7 @@ constexpr Entry kFamilies[] = {
     {metal2Family, {"metal2", nullptr}},
     {trans2Family, {"trans2", nullptr}},
     {mistFamily, {"mist", nullptr}},
+    {brtdFuncFamily, {"BRTDfunc", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -21,5 +21,6 @@ const MaterialFamily& plastic2Family();
 const MaterialFamily& metal2Family();
 const MaterialFamily& trans2Family();
 const MaterialFamily& mistFamily();
+const MaterialFamily& brtdFuncFamily();
 
 }  // namespace candela

@@ -52,7 +52,7 @@ bool isFunctionPattern(const RadPrimitive& p) {
 }
 
 ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
-                                 int index, int next) {
+                                 int index, int next, int part) {
   const std::string what = p.type + " '" + p.name + "'";
   ScenePattern sp;
   sp.kind = PatternKind::kFunction;
@@ -64,15 +64,20 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.args = p.reals;
   sp.next = next;
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
-  // file; plastic2, metal2, trans2: ux uy uz file.
+  // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
+  // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.
   const bool mixture = p.type == "mixfunc";
   const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2";
+  const bool brtd = p.type == "BRTDfunc";
   if (vector && p.strings.size() < 4)
     throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
                                 std::to_string(p.strings.size()));
-  sp.channels = p.type == "colorfunc" || vector ? 3 : 1;
-  const size_t firstFunction = mixture ? 2 : 0;
-  const size_t fileAt = firstFunction + static_cast<size_t>(sp.channels);
+  if (brtd && p.strings.size() < 10)
+    throw InputError(p.loc, what + " needs 10 or more string arguments (rrefl grefl brefl rtrns gtrns btrns rbrtd "
+                                   "gbrtd bbrtd funcfile [transform]), got " + std::to_string(p.strings.size()));
+  sp.channels = p.type == "colorfunc" || vector || brtd ? 3 : 1;
+  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : 0;
+  const size_t fileAt = brtd ? 9 : firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
   RadTransform toWorld;
   const size_t end = parseRadTransform(p.strings, fileAt + 1, toWorld, p.loc, what);
@@ -85,6 +90,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   // Each function is an expression (a name, or written inline), a definition of its own.
   static const char* const kChannel[] = {"red", "green", "blue"};
   static const char* const kAxis[] = {"ux", "uy", "uz"};
+  static const char* const kBrtd[] = {"rrefl", "grefl", "brefl", "rtrns", "gtrns", "btrns"};
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
     const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
@@ -93,6 +99,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
     } catch (const InputError& e) {
       throw InputError(p.loc, what + ": " +
                                   (sp.channels == 1 ? "its function"
+                                   : brtd           ? std::string("its ") + kBrtd[firstFunction + static_cast<size_t>(k)]
                                                     : std::string(vector ? kAxis[k] : kChannel[k]) + " function") +
                                   " '" + expression + "' is not an expression: " + e.message());
     }

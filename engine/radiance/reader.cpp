@@ -434,12 +434,13 @@ class SceneReader::Builder {
                   "', which candela applies to light, illum and glow only");
     m.name = p.name;
     m.loc = p.loc;
-    if (family.usesFunctions()) {  // plastic2's u direction: three functions of a function file
+    // The functions of its own arguments (plastic2's u direction, BRTDfunc's specular parts).
+    for (int part = 0; part < family.functionPatterns(); ++part) {
       const int index = static_cast<int>(scene_.patterns.size());
-      scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
+      scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1, part));
       scene_.functions = functionFiles_.program();
       scene_.functionFiles = functionFiles_.files();
-      m.anisotropy = index;
+      if (part == 0) m.functions = index;
     }
     const MaterialReadContext ctx{p, [this, &p](const std::string& name) {
                                     refuseIfDeferred(name, userOf(p));

@@ -43,7 +43,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"inst", {"instance 'porsche #1' places a Radiance octree (porsche.octf)", ""}},
       {"mesh", {"mesh 'plainclothes.0.woman' names a Radiance compiled mesh (woman.rtm)", ""}},
       {"mirror", {"primitive type 'antimatter' is not supported", ""}},
-      {"mist", {"primitive type 'BRTDfunc' is not supported", ""}},
+      {"mist", {"loads; no reference", ""}},
       {"mixtex", {"texfunc 'bumpy_func' (its function written inline)", "primitive type 'aBSDF' is not supported"}},
       {"patterns", {"colortext 'textpat' (helvet.fnt)", "disagrees: point 1"}},
       {"prism1", {"colorpict 'vase_pat' (vase.hdr)", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
@@ -51,7 +51,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"spectra", {"spectrum 'gold_spec'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
       {"tfunc", {"colorpict 'sunset_pat' (sunset.hdr)", "primitive type 'transfunc' is not supported"}},
       {"trans", {"mixtext 'plas2_text' (helvet.fnt)", "primitive type 'plasfunc' is not supported"}},
-      {"trans2", {"primitive type 'BRTDfunc' is not supported", ""}},
+      {"trans2", {"colorpict 'sunset_pat' (sunset.hdr)", "loads; no reference"}},
       {"wgmdf", {"primitive type 'WGMDfunc' is not supported", ""}},
   };
   return table;
@@ -119,7 +119,7 @@ TEST(PeerSuite, EverySetLoadsAndAgreesOrIsRefusedForItsStatedReason) {
   ASSERT_EQ(sets.size(), expectedOutcomes().size());
   std::ifstream js(suite / "expected.json");
   const nlohmann::json expected = nlohmann::json::parse(js);
-  int agreeing = 0;
+  int agreeing = 0, loading = 0;
   for (const auto& [name, files] : sets) {
     SCOPED_TRACE(name);
     const auto want = expectedOutcomes().find(name);
@@ -131,13 +131,19 @@ TEST(PeerSuite, EverySetLoadsAndAgreesOrIsRefusedForItsStatedReason) {
                                      : "";
     std::cout << name << ": " << outcome << (withBase.empty() ? "" : "; with --patterns base: " + withBase) << "\n";
     if (outcome == "agrees") ++agreeing;
+    if (outcome == "agrees" || outcome == "loads; no reference" || outcome.rfind("disagrees", 0) == 0 ||
+        outcome.rfind("too noisy", 0) == 0)
+      ++loading;
     EXPECT_NE(outcome.find(want->second.byDefault), std::string::npos) << "outcome: " << outcome;
     if (want->second.withBase.empty())
       EXPECT_EQ(withBase, "");
     else
       EXPECT_NE(withBase.find(want->second.withBase), std::string::npos) << "with --patterns base: " << withBase;
   }
-  std::cout << agreeing << " of " << sets.size() << " sets agree within 5 %\n";
+  std::cout << loading << " of " << sets.size() << " sets load with the default options, " << agreeing
+            << " agree within 5 %\n";
+  // The count docs/engine.md states (a set that starts or stops loading fails above too).
+  EXPECT_EQ(loading, 1);
 }
 
 // patterns.mat with each of its six patterns (noisepat, the four text patterns, cfpat) replaced by

@@ -76,7 +76,7 @@ TEST(AnisotropicWard, DirectionFromTheFunctionFileThroughItsTransform) {
   EXPECT_EQ(m.type, MaterialType::kPlastic2);
   EXPECT_DOUBLE_EQ(m.roughness, 0.05);
   EXPECT_DOUBLE_EQ(m.roughnessV, 0.2);
-  ASSERT_GE(m.anisotropy, 0);
+  ASSERT_GE(m.functions, 0);
   PatternEvaluator eval(sc);
   Material out;
   const Material& at = patterned(sc, m, {Vec3(0.5, 0.5, 0.0), Vec3(0, 0, -1), Vec3(0, 0, 1), 1.0}, eval, out);
