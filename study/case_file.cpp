@@ -89,7 +89,7 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
   if (tab.get("maintenance_factor")) {
     if (!(p.maintenanceFactor > 0.0 && p.maintenanceFactor <= 1.0))
       c.fail(*tab.get("maintenance_factor"), "'maintenance_factor' must be in (0, 1], got " +
-                                                 std::to_string(p.maintenanceFactor));
+                                                 compactNumber(p.maintenanceFactor));
   }
   if (tab.get("opening_reflectance")) {
     p.openingReflectance = numberOr(tab, "opening_reflectance", 0.0);
@@ -279,8 +279,10 @@ void readObserver(const Context& c, const toml::table& t, int index, std::set<st
   o.positionM = asVec2(c, tab.require("position"), "position", "[x, y] in metres (the plan position)");
   const toml::node& dir = tab.require("direction");
   o.direction = asVec2(c, dir, "direction", "[x, y]: the horizontal line of sight");
-  if (!(glm::length(o.direction) > 0.0)) c.fail(dir, "'direction' must not be zero");
-  o.direction = glm::normalize(o.direction);
+  if (o.direction == Vec2(0.0)) c.fail(dir, "'direction' must not be zero");
+  const std::optional<Vec2> unit = unitDirection(o.direction);
+  if (!unit) c.fail(dir, "'direction' cannot be normalised: its length underflows");
+  o.direction = *unit;
   o.eyeHeightM = numberOr(tab, "eye_height", 1.2);
   checkMin(tab, "eye_height", o.eyeHeightM, 0.0, true, "m");
   if (const toml::node* n = tab.get("ugr_limit")) {

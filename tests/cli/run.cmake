@@ -25,6 +25,9 @@ candela_run_test(same_csv 2 "same_file/case.toml:10: grids 'a b' and 'a_b' would
                  same_file/case.toml)
 candela_run_test(grid_named_summary 2 "grid_named_summary/case.toml:5: grid name 'summary'"
                  grid_named_summary/case.toml)
+# A sensor direction of 1e200 once aborted the process inside Embree (exit 134).
+candela_run_test(huge_direction 2 "huge_direction/sensors.pts:2: sensor direction (1e+200 0 0) cannot be normalised"
+                 huge_direction/case.toml)
 candela_run_test(missing_case 2 "no_such_case.toml" no_such_case.toml)
 # Options are checked by the command-line parser before anything is read.
 candela_run_test(bad_quality 2 "--quality" ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality best)
