@@ -1,10 +1,18 @@
 #include "base/error.h"
 
+#include <cstdio>
+
 namespace candela {
 
 std::string FileLoc::str() const {
   if (line <= 0) return file;
   return file + ":" + std::to_string(line);
+}
+
+std::string compactNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
 }
 
 std::string printable(std::string_view text) {

@@ -19,6 +19,10 @@ struct FileLoc {
 // echoed in a message cannot drive the terminal it is printed on.
 std::string printable(std::string_view text);
 
+// `v` in at most 9 significant digits ("%.9g": 1e+308, 0.1, 2.5): a number quoted in a message
+// stays a few characters long whatever its size (std::to_string(1e308) has 309 digits).
+std::string compactNumber(double v);
+
 // Bad user input. what() reads "file:line: message", ready to print as the one error line, with
 // control characters escaped (printable).
 class InputError : public std::runtime_error {

@@ -2,7 +2,12 @@
 
 #include "base/error.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <map>
+#include <mutex>
+#include <set>
+#include <vector>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -41,6 +46,64 @@ Fd openRegular(const std::filesystem::path& path, const std::string& what, struc
 
 }  // namespace
 
+uint64_t fnv1a(const void* bytes, size_t n, uint64_t h) {
+  const auto* p = static_cast<const unsigned char*>(bytes);
+  for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 0x100000001b3ULL;
+  return h;
+}
+
+struct InputFileLog::State {
+  std::map<std::string, std::set<uint64_t>> reads;  // absolute path -> hashes of what was read
+};
+
+namespace {
+// The logs alive: a record of reads, never consulted by a reader (it changes no result).
+std::mutex logsMutex;
+std::vector<InputFileLog::State*>& liveLogs() {
+  static std::vector<InputFileLog::State*> logs;
+  return logs;
+}
+}  // namespace
+
+InputFileLog::InputFileLog() : state_(new State) {
+  const std::lock_guard<std::mutex> lock(logsMutex);
+  liveLogs().push_back(state_);
+}
+
+InputFileLog::~InputFileLog() {
+  {
+    const std::lock_guard<std::mutex> lock(logsMutex);
+    auto& logs = liveLogs();
+    logs.erase(std::find(logs.begin(), logs.end(), state_));
+  }
+  delete state_;
+}
+
+void InputFileLog::record(const std::filesystem::path& path, const std::string& content) {
+  std::error_code ec;
+  std::filesystem::path full = std::filesystem::absolute(path, ec);
+  if (ec) full = path;
+  const std::string name = full.lexically_normal().string();
+  const uint64_t h = fnv1a(content.data(), content.size());
+  const std::lock_guard<std::mutex> lock(logsMutex);
+  for (State* s : liveLogs()) s->reads[name].insert(h);
+}
+
+uint64_t InputFileLog::fingerprint() const {
+  const std::lock_guard<std::mutex> lock(logsMutex);
+  uint64_t h = fnv1a("", 0);
+  for (const auto& [name, hashes] : state_->reads) {
+    h = fnv1a(name.data(), name.size() + 1, h);
+    for (const uint64_t c : hashes) h = fnv1a(&c, sizeof c, h);
+  }
+  return h;
+}
+
+size_t InputFileLog::files() const {
+  const std::lock_guard<std::mutex> lock(logsMutex);
+  return state_->reads.size();
+}
+
 std::string normalizeText(std::string text) {
   std::size_t start = 0;
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) start = 3;
@@ -76,7 +139,9 @@ std::string readInputFile(const std::filesystem::path& path, const std::string& 
     got += static_cast<std::size_t>(n);
   }
   out.resize(got);
-  return normalizeText(std::move(out));
+  std::string text = normalizeText(std::move(out));
+  InputFileLog::record(path, text);
+  return text;
 }
 
 void checkInputFile(const std::filesystem::path& path, const std::string& what) {

@@ -19,6 +19,33 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t(4) << 30;
 std::string readInputFile(const std::filesystem::path& path, const std::string& what,
                           std::uintmax_t maxBytes = kMaxInputFileBytes);
 
+// What the files read while it lives held: every readInputFile call (from any thread) adds the
+// file's absolute path and a 64-bit FNV-1a hash of the bytes it returned to every log alive.
+// A record of the run, it changes no result: sharded runs compare it (study/run_case.cpp), so
+// that parts traced against an edited `!xform` include, `.dat`, OBJ, function file or genprism
+// vertex file are not merged. Logs nest; each sees the reads made while it lives.
+class InputFileLog {
+ public:
+  InputFileLog();
+  ~InputFileLog();
+  InputFileLog(const InputFileLog&) = delete;
+  InputFileLog& operator=(const InputFileLog&) = delete;
+  // One hash over every file read (path and content, in path order); a file read twice with
+  // different content counts both.
+  uint64_t fingerprint() const;
+  // How many distinct files were read.
+  size_t files() const;
+  // Adds a read to every live log (readInputFile calls it).
+  static void record(const std::filesystem::path& path, const std::string& content);
+  struct State;
+
+ private:
+  State* state_;
+};
+
+// FNV-1a (64 bit) of `n` bytes, continuing from `h`.
+uint64_t fnv1a(const void* bytes, size_t n, uint64_t h = 0xcbf29ce484222325ULL);
+
 // Text as every reader expects it: a leading UTF-8 byte-order mark removed, and CRLF and lone CR
 // line endings (classic Mac files, some exporters) turned into LF, so line numbers are right
 // whatever wrote the file. readInputFile applies it; binary files are not read through it.

@@ -5,6 +5,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 
 namespace candela {
 
@@ -37,6 +39,17 @@ struct Frame {
   Vec3 toWorld(const Vec3& v) const { return v.x * t + v.y * b + v.z * n; }
   Vec3 toLocal(const Vec3& v) const { return Vec3(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n)); }
 };
+
+// `v` scaled to unit length, or nothing when it cannot be: a component not finite, the zero
+// vector, or a squared length that overflows or underflows in double (a component of 1e200 or
+// 1e-200). glm::normalize gives (0, 0, 0) or NaN for those, and Embree aborts on such a ray
+// direction, so a direction from input is checked here and refused at its line.
+template <class V>
+std::optional<V> unitDirection(const V& v) {
+  const double squared = glm::dot(v, v);
+  if (!std::isfinite(squared) || !(squared >= std::numeric_limits<double>::min())) return std::nullopt;
+  return v / std::sqrt(squared);
+}
 
 // Axis-aligned box.
 struct Box {

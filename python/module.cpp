@@ -5,6 +5,7 @@
 #include "python/interruptible.h"
 
 #include "base/error.h"
+#include "base/units.h"
 #include "base/warning.h"
 #include "engine/daylight.h"
 #include "engine/radiance/reader.h"
@@ -113,13 +114,23 @@ LuminairePlacement placementFromDict(const py::dict& d, int index) {
   };
   p.positionM = vec("position", Vec3(0.0));
   p.aim = vec("aim", Vec3(0.0, 0.0, -1.0));
-  if (!(glm::length(p.aim) > 0.0)) throw InputError(kPython, "a luminaire's aim must not be zero");
-  p.aim = glm::normalize(p.aim);
   p.spinDeg = optionalItem<double>(d, "spin").value_or(0.0);
   p.multiplier = optionalItem<double>(d, "multiplier").value_or(1.0);
   p.maintenanceFactor = optionalItem<double>(d, "maintenance_factor").value_or(1.0);
   for (double v : {p.positionM.x, p.positionM.y, p.positionM.z, p.aim.x, p.aim.y, p.aim.z, p.spinDeg, p.multiplier})
     if (!std::isfinite(v)) throw InputError(kPython, "a luminaire's numbers must be finite");
+  // As a case file's numbers (study/case_toml.cpp): positions within 1e7 m, and no multiplier
+  // or spin near the overflow of the intensities (multiplier=1e308 once ended as an internal error).
+  for (double v : {p.positionM.x, p.positionM.y, p.positionM.z})
+    if (std::abs(v) > kMaxCoordinateM)
+      throw InputError(kPython, "a luminaire's position lies beyond 1e7 m from the origin (" + compactNumber(v) + ")");
+  for (double v : {p.spinDeg, p.multiplier})
+    if (std::abs(v) > kMaxCoordinateM)
+      throw InputError(kPython, "a luminaire's spin and multiplier must lie within ±1e7, got " + compactNumber(v));
+  if (p.aim == Vec3(0.0)) throw InputError(kPython, "a luminaire's aim must not be zero");
+  const std::optional<Vec3> aim = unitDirection(p.aim);
+  if (!aim) throw InputError(kPython, "a luminaire's aim cannot be normalised: its length overflows or underflows");
+  p.aim = *aim;
   if (!(p.multiplier >= 0.0)) throw InputError(kPython, "a luminaire's multiplier must be >= 0");
   if (!(p.maintenanceFactor > 0.0 && p.maintenanceFactor <= 1.0))
     throw InputError(kPython, "a luminaire's maintenance_factor must be in (0, 1]");

@@ -1,5 +1,6 @@
 #include "reports/csv_writer.h"
 
+#include <algorithm>
 #include <functional>
 #include <stdexcept>
 #include <string_view>
@@ -30,6 +31,14 @@ constexpr std::size_t kRowsPerPiece = 4096;
 
 PointsCsvWriter::PointsCsvWriter(std::function<void(std::string_view)> sink, const std::vector<std::string>& columns)
     : sink_(std::move(sink)), columns_(columns.size()) {
+  // Every column name once: a cylindrical modelling grid once named cylindrical_illuminance_lux
+  // twice, and a reader by name took the first of two different values.
+  std::vector<std::string> names = {"x", "y", "z", "dx", "dy", "dz"};
+  for (const std::string& c : columns) {
+    if (std::find(names.begin(), names.end(), c) != names.end())
+      throw std::logic_error("CSV column '" + c + "' is named twice");
+    names.push_back(c);
+  }
   pending_ = "x,y,z,dx,dy,dz";
   for (const std::string& c : columns) pending_ += "," + csvField(c);
   pending_ += "\n";

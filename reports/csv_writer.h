@@ -25,6 +25,7 @@ std::string pointsCsv(const std::vector<ReportPoint>& points, const std::vector<
 // A points CSV made a row at a time, for results that come in blocks (the grid study streams its
 // estimates): the header "x,y,z,dx,dy,dz[,column...]" and rows as pointsCsv writes them, the
 // same bytes, handed to `sink` a few thousand rows at a time. finish() hands over the rest.
+// Throws std::logic_error when a column name repeats another (every header's names are unique).
 class PointsCsvWriter {
  public:
   PointsCsvWriter(std::function<void(std::string_view)> sink, const std::vector<std::string>& columns);

@@ -25,7 +25,17 @@ std::string xmlEscape(const std::string& text) {
       case '>': s += "&gt;"; break;
       case '"': s += "&quot;"; break;
       case '\'': s += "&#39;"; break;
-      default: s += c;
+      default:
+        // Control characters (a case name with ESC or BEL) are written as \xNN, as error
+        // messages write them (base/error.h, printable): they reached report.html raw, and XML
+        // forbids them. Tab, line feed and carriage return are text.
+        if ((static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) {
+          char hex[5];
+          std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned char>(c));
+          s += hex;
+        } else {
+          s += c;
+        }
     }
   }
   return s;

@@ -89,7 +89,7 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
   if (tab.get("maintenance_factor")) {
     if (!(p.maintenanceFactor > 0.0 && p.maintenanceFactor <= 1.0))
       c.fail(*tab.get("maintenance_factor"), "'maintenance_factor' must be in (0, 1], got " +
-                                                 std::to_string(p.maintenanceFactor));
+                                                 compactNumber(p.maintenanceFactor));
   }
   if (tab.get("opening_reflectance")) {
     p.openingReflectance = numberOr(tab, "opening_reflectance", 0.0);
@@ -279,8 +279,10 @@ void readObserver(const Context& c, const toml::table& t, int index, std::set<st
   o.positionM = asVec2(c, tab.require("position"), "position", "[x, y] in metres (the plan position)");
   const toml::node& dir = tab.require("direction");
   o.direction = asVec2(c, dir, "direction", "[x, y]: the horizontal line of sight");
-  if (!(glm::length(o.direction) > 0.0)) c.fail(dir, "'direction' must not be zero");
-  o.direction = glm::normalize(o.direction);
+  if (o.direction == Vec2(0.0)) c.fail(dir, "'direction' must not be zero");
+  const std::optional<Vec2> unit = unitDirection(o.direction);
+  if (!unit) c.fail(dir, "'direction' cannot be normalised: its length underflows");
+  o.direction = *unit;
   o.eyeHeightM = numberOr(tab, "eye_height", 1.2);
   checkMin(tab, "eye_height", o.eyeHeightM, 0.0, true, "m");
   if (const toml::node* n = tab.get("ugr_limit")) {
@@ -528,25 +530,29 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
 
 CaseFile readCaseFile(const fs::path& path) { return parseCaseFile(readInputFile(path, "case file"), path); }
 
-void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double toleranceM) {
-  if (sceneBounds.empty()) return;
+std::optional<Warning> gridOutsideScene(const GridSpec& grid, const Box& sceneBounds, double toleranceM) {
+  if (sceneBounds.empty()) return std::nullopt;
   const Vec3 lo = sceneBounds.lo - Vec3(toleranceM), hi = sceneBounds.hi + Vec3(toleranceM);
   auto inside = [&](const Vec3& p) {
     return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
   };
-  auto fail = [&](const Vec3& p) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf,
-                  "grid '%s' reaches outside the scene: point (%.3f, %.3f, %.3f) m is not within the scene's "
-                  "bounds (%.3f, %.3f, %.3f)..(%.3f, %.3f, %.3f) m",
-                  grid.name.c_str(), p.x, p.y, p.z, sceneBounds.lo.x, sceneBounds.lo.y, sceneBounds.lo.z,
-                  sceneBounds.hi.x, sceneBounds.hi.y, sceneBounds.hi.z);
-    throw InputError(grid.loc, buf);
+  auto outside = [&](const Vec3& p) {
+    auto c = [](double v) { return compactNumber(std::round(v * 1000.0) / 1000.0); };
+    auto vec = [&](const Vec3& v) { return "(" + c(v.x) + ", " + c(v.y) + ", " + c(v.z) + ")"; };
+    // Under a sky the box is open upwards and downwards (gridBounds): say so, not 1e+300.
+    const bool open = sceneBounds.hi.z >= 1e299;
+    const std::string box = open ? "(" + c(sceneBounds.lo.x) + ", " + c(sceneBounds.lo.y) + ")..(" +
+                                       c(sceneBounds.hi.x) + ", " + c(sceneBounds.hi.y) + ") m in plan"
+                                 : vec(sceneBounds.lo) + ".." + vec(sceneBounds.hi) + " m";
+    return Warning{"grid_outside_scene",
+                   "grid '" + grid.name + "' reaches outside the scene: point " + vec(p) +
+                       " m is not within the box of the scene and its luminaires " + box,
+                   grid.loc};
   };
   if (grid.kind == GridKind::kPoints) {
     for (const SensorPoint& s : readPointsFile(grid.pointsFile).points)
-      if (!inside(s.position)) fail(s.position);
-    return;
+      if (!inside(s.position)) return outside(s.position);
+    return std::nullopt;
   }
   const PlaneGridSpec& p = grid.plane;
   std::vector<Vec2> outline = p.outline;
@@ -554,8 +560,9 @@ void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double tolera
     outline = {outline[0], Vec2(outline[1].x, outline[0].y), outline[1], Vec2(outline[0].x, outline[1].y)};
   for (const Vec2& uv : outline) {
     const Vec3 w = p.origin + uv.x * p.uAxis + uv.y * p.vAxis;
-    if (!inside(w)) fail(w);
+    if (!inside(w)) return outside(w);
   }
+  return std::nullopt;
 }
 
 }  // namespace candela

@@ -2,6 +2,8 @@
 // resolved relative to the case file, every bad key an InputError naming the file and line.
 #pragma once
 
+#include "base/warning.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -269,9 +271,11 @@ CaseFile readCaseFile(const std::filesystem::path& path);
 // Same from text; `path` names the file in errors and anchors relative paths.
 CaseFile parseCaseFile(std::string_view text, const std::filesystem::path& path);
 
-// Throws InputError at the grid's line when a point of the grid (the outline's corners for plane
-// grids, every point of a points file) lies outside the scene's bounding box grown by
-// `toleranceM`. An empty box (no geometry) accepts every grid.
-void checkGridInside(const GridSpec& grid, const Box& sceneBounds, double toleranceM = 1e-3);
+// grid_outside_scene (docs/warnings.md) at the grid's line when a point of the grid (the
+// outline's corners for plane grids, every point of a points file) lies outside `bounds` grown by
+// `toleranceM`; nothing otherwise. An empty box (no geometry) accepts every grid. `bounds` is the
+// box of the scene and its luminaires (gridBounds): a grid over a flat ground lit by luminaires
+// (a car park) lies inside it.
+std::optional<Warning> gridOutsideScene(const GridSpec& grid, const Box& bounds, double toleranceM = 1e-3);
 
 }  // namespace candela

@@ -131,8 +131,10 @@ void readGridQuantity(Table& tab, GridSpec& g) {
   if (fn) {
     if (!wantsFacing) c.fail(*fn, "'facing' applies to quantity = \"vertical\" or \"semi-cylindrical\" only");
     g.facing = asVec2(c, *fn, "facing", "a horizontal direction [x, y]");
-    if (!(glm::length(g.facing) > 0.0)) c.fail(*fn, "'facing' must not be the zero vector");
-    g.facing = glm::normalize(g.facing);
+    if (g.facing == Vec2(0.0)) c.fail(*fn, "'facing' must not be the zero vector");
+    const std::optional<Vec2> unit = unitDirection(g.facing);
+    if (!unit) c.fail(*fn, "'facing' cannot be normalised: its length underflows");
+    g.facing = *unit;
   } else if (wantsFacing) {
     c.fail(*qn, "quantity \"" + std::string(gridQuantityKey(*g.quantity)) +
                     "\" needs 'facing' = [x, y], the horizontal direction it faces");

@@ -83,8 +83,10 @@ Vec2 asVec2(const Context& c, const toml::node& n, std::string_view key, const c
 
 Vec3 asDirection(const Context& c, const toml::node& n, std::string_view key) {
   const Vec3 v = asVec3(c, n, key);
-  if (!(glm::length(v) > 0.0)) c.fail(n, keyText(key) + " must not be the zero vector");
-  return glm::normalize(v);
+  if (v == Vec3(0.0)) c.fail(n, keyText(key) + " must not be the zero vector");
+  const std::optional<Vec3> unit = unitDirection(v);
+  if (!unit) c.fail(n, keyText(key) + " cannot be normalised: its length underflows");
+  return *unit;
 }
 
 std::vector<Vec2> asPointList(const Context& c, const toml::node& n, std::string_view key) {

@@ -27,7 +27,7 @@ void readWindowGroup(const Context& c, const toml::table& t, int index, std::set
   if (const toml::node* n = tab.get("blinds_transmittance")) {
     const double tau = asNumber(c, *n, "blinds_transmittance");
     if (!(tau > 0.0 && tau <= 1.0))
-      c.fail(*n, "'blinds_transmittance' must be greater than 0 and at most 1, got " + std::to_string(tau));
+      c.fail(*n, "'blinds_transmittance' must be greater than 0 and at most 1, got " + compactNumber(tau));
     g.blindsTransmittance = tau;
   }
   tab.finish();

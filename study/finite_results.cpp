@@ -8,7 +8,7 @@ namespace candela {
 namespace {
 
 [[noreturn]] void nonFinite(const std::string& what, std::size_t i) {
-  throw std::runtime_error("a non-finite result in " + what + " at index " + std::to_string(i) +
+  throw NonFiniteResult("a non-finite result in " + what + " at index " + std::to_string(i) +
                            "; nothing was written");
 }
 

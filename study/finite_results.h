@@ -6,19 +6,27 @@
 #include "engine/tracer.h"
 
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace candela {
 
-// Throws std::runtime_error naming `what` and the first point whose illuminance or error is not
+// A result that is not finite (NaN or infinity). An internal failure in a run; a merge turns it
+// into an InputError at its parts (a part whose data hold a NaN is damaged input).
+class NonFiniteResult : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws NonFiniteResult naming `what` and the first point whose illuminance or error is not
 // finite.
 void checkFinite(const std::vector<IrradianceEstimate>& estimates, const std::string& what);
 // The same for a block of n estimates whose first is point `firstIndex` of the run (the grid
 // study's blocks, engine/sensors.h): the index named is the run's.
 void checkFinite(const IrradianceEstimate* estimates, std::size_t n, const std::string& what, std::size_t firstIndex);
 
-// Throws std::runtime_error naming `what` and the first index whose value is not finite.
+// Throws NonFiniteResult naming `what` and the first index whose value is not finite.
 void checkFinite(const std::vector<float>& values, const std::string& what);
 void checkFinite(const std::vector<double>& values, const std::string& what);
 // The same for a block of a larger array, whose first value is the larger array's `firstIndex`

@@ -187,6 +187,9 @@ void gridReports(ReportData& data, const std::vector<PreparedGrid>& grids, const
 // error_lux and, for daylight-factor grids, daylight_factor_pct; modelling grids add their
 // cylindrical and horizontal values and the point's ratio, written once all are traced.
 class GridCsvFiles {
+  // Whether the grid's first column is quantity q's (its `quantity` key says so).
+  static bool measures(const PreparedGrid& g, GridQuantity q) { return g.spec->quantity && *g.spec->quantity == q; }
+
  public:
   GridCsvFiles(const std::filesystem::path& beside, const std::vector<PreparedGrid>& grids, double outsideLux)
       : grids_(grids), outsideLux_(outsideLux) {
@@ -196,10 +199,14 @@ class GridCsvFiles {
       std::vector<std::string> columns = {g.spec->quantity ? gridQuantityColumn(*g.spec->quantity) : "illuminance_lux",
                                           "error_lux"};
       if (g.spec->daylightFactor) columns.emplace_back("daylight_factor_pct");
-      if (g.spec->modelling)
-        for (const char* c : {"cylindrical_illuminance_lux", "cylindrical_error_lux", "horizontal_illuminance_lux",
-                              "horizontal_error_lux", "modelling_ratio"})
-          columns.emplace_back(c);
+      if (g.spec->modelling) {
+        // The pair the grid's own quantity already gives is not repeated (estimatesPerPoint).
+        if (!measures(g, GridQuantity::kCylindrical))
+          columns.insert(columns.end(), {"cylindrical_illuminance_lux", "cylindrical_error_lux"});
+        if (!measures(g, GridQuantity::kHorizontal))
+          columns.insert(columns.end(), {"horizontal_illuminance_lux", "horizontal_error_lux"});
+        columns.emplace_back("modelling_ratio");
+      }
       AtomicFile* f = file.get();
       writers_.push_back(std::make_unique<PointsCsvWriter>([f](std::string_view piece) { f->write(piece); }, columns));
       files_.push_back(std::move(file));
@@ -220,8 +227,11 @@ class GridCsvFiles {
       for (std::size_t k = 0; k < g.lux.size(); ++k) {
         std::vector<double> v = {g.lux[k], g.errorLux[k]};
         if (grids_[gi].spec->daylightFactor) v.push_back(100.0 * g.lux[k] / outsideLux_);
-        v.insert(v.end(), {g.cylindricalLux[k], g.cylindricalErrorLux[k], g.horizontalLux[k], g.horizontalErrorLux[k],
-                           pointModellingRatio(g.cylindricalLux[k], g.horizontalLux[k])});
+        if (!measures(grids_[gi], GridQuantity::kCylindrical))
+          v.insert(v.end(), {g.cylindricalLux[k], g.cylindricalErrorLux[k]});
+        if (!measures(grids_[gi], GridQuantity::kHorizontal))
+          v.insert(v.end(), {g.horizontalLux[k], g.horizontalErrorLux[k]});
+        v.push_back(pointModellingRatio(g.cylindricalLux[k], g.horizontalLux[k]));
         const SensorPoint& p = grids_[gi].grid.points[k];
         writers_[gi]->row(p.position, p.normal, v.data());
       }

@@ -89,6 +89,11 @@ PlanLayout planLayout(const PreparedGrid& g) {
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
   std::vector<PreparedGrid> grids;
   checkOutputNames(c);
+  // A grid is judged against the scene and its luminaires: over a flat ground lit by luminaires
+  // (a car park) a grid lies outside the ground's flat box, inside this one.
+  Box judged = bounds;
+  if (!judged.empty())
+    for (const LuminairePlacement& l : c.luminaires) judged.extend(l.positionM);
   for (const GridSpec& spec : c.grids) {
     // A task area's bands without a `room` end at the scene's plan extent (its walls, for a room).
     GridSpec clipped;
@@ -99,9 +104,9 @@ std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds) {
       if (!(o[1].x > o[0].x && o[1].y > o[0].y)) continue;
     }
     const GridSpec& made = spec.clipToRoom ? clipped : spec;
-    if (spec.surfaceGrid.empty()) checkGridInside(made, bounds);  // a surface's grid lies on the scene
     PreparedGrid g;
     g.spec = &spec;
+    if (spec.surfaceGrid.empty()) g.outside = gridOutsideScene(made, judged);  // a surface's grid lies on the scene
     g.grid = spec.kind == GridKind::kPlane ? makePlaneGrid(made.plane, spec.loc) : readPointsFile(spec.pointsFile);
     if (g.grid.size() == 0) continue;  // a band its room leaves empty (a task area filling the room)
     // A quantity replaces the grid's normals by its own sensor at each position.

@@ -8,6 +8,7 @@
 #include "study/sensor_grid.h"
 #include "reports/report_data.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,13 @@ struct PreparedGrid {
   const GridSpec* spec = nullptr;
   SensorGrid grid;
   std::string fileStem;  // <fileStem>.csv
+  // grid_outside_scene: the grid reaches beyond the box of the scene and its luminaires
+  // (gridOutsideScene); the studies' input warnings carry it.
+  std::optional<Warning> outside;
 };
 
-// Every [[grid]] of the case, checked against `bounds`, and every output name of the case for
+// Every [[grid]] of the case, judged against `bounds` grown by the case's luminaires (a warning
+// in PreparedGrid::outside), and every output name of the case for
 // collisions (study/output_names.h); throws InputError at the entry's line.
 std::vector<PreparedGrid> prepareGrids(const CaseFile& c, const Box& bounds);
 

@@ -3,6 +3,7 @@
 #include "base/error.h"
 #include "study/annual_study.h"
 #include "study/case_file.h"
+#include "study/finite_results.h"
 #include "study/grid_study.h"
 #include "study/run_outputs.h"
 #include "study/shard_distribution.h"
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 
 namespace candela {
 
@@ -19,38 +21,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// FNV-1a over the bytes of the case file and every file it names (scenes, luminaires, weather,
-// points files), in a fixed order: parts computed from edited files are told apart. Files a
-// scene file includes (`!xform`) are not followed.
-std::string caseFingerprint(const CaseFile& c) {
-  std::vector<fs::path> files{c.path};
-  for (const ScenePath& s : c.scenes) files.push_back(s.file);
-  std::set<fs::path> luminaires;
-  for (const LuminairePlacement& l : c.luminaires) luminaires.insert(l.file);
-  files.insert(files.end(), luminaires.begin(), luminaires.end());
-  if (!c.sky.weather.empty()) files.push_back(c.sky.weather);
-  for (const GridSpec& g : c.grids)
-    if (!g.pointsFile.empty()) files.push_back(g.pointsFile);
-  uint64_t h = 0xcbf29ce484222325ULL;
-  auto mix = [&h](const char* p, size_t n) {
-    for (size_t i = 0; i < n; ++i) h = (h ^ static_cast<unsigned char>(p[i])) * 0x100000001b3ULL;
-  };
-  char buf[1 << 16];
-  for (const fs::path& f : files) {
-    const std::string name = f.filename().string();
-    mix(name.data(), name.size() + 1);
-    std::ifstream in(f, std::ios::binary);
-    while (in.read(buf, sizeof buf) || in.gcount() > 0) mix(buf, static_cast<size_t>(in.gcount()));
-  }
+// The content of every file the run read (base/input_file.h: the case, scene files and what
+// they include, data, OBJ, function and vertex files, luminaires, weather, points and portal
+// files), as 16 hex digits: parts traced against an edited file are told apart.
+std::string inputFingerprint(const RunContext& run) {
+  if (!run.inputs) throw std::logic_error("a sharded run without its input log");
   char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(run.inputs->fingerprint()));
   return hex;
 }
 
 PartIdentity partIdentity(const CaseFile& c, const RunContext& run) {
   PartIdentity id;
   id.caseFile = fs::absolute(c.path).lexically_normal().string();
-  id.fingerprint = caseFingerprint(c);
+  id.fingerprint = inputFingerprint(run);
   RunRequest shown = run.request;
   shown.caseFileShown = c.path.string();  // merge names the case as the shards were given it
   id.request = requestJson(shown);
@@ -115,6 +99,16 @@ void checkOnRankZero(const Distribution& d, const std::function<void()>& check) 
 
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const fs::path&)>& write) {
   const Distribution& d = run.request.processes();
+  if (const auto* merge = dynamic_cast<const MergeDistribution*>(&d)) {
+    // Checked once the run has read everything the shards read: a file a scene file includes
+    // (`!xform`, a .dat, an OBJ) once changed between shards and the merge mixed both scenes.
+    const PartHeader& first = merge->parts().front();
+    if (inputFingerprint(run) != first.id.fingerprint)
+      throw InputError(FileLoc{(first.dir / kPartManifest).string(), 0, 0},
+                       "the case " + first.id.caseFile +
+                           " or a file it reads (a scene, an included file, a data, OBJ or luminaire file) changed "
+                           "since the shards ran, or differed between them: run the shards again");
+  }
   d.finish();
   if (const auto* shard = dynamic_cast<const ShardDistribution*>(&d)) {
     const PartIdentity id = partIdentity(c, run);
@@ -143,7 +137,9 @@ ReportData reportDataFor(const CaseFile& c, const RunContext& run, uint64_t seed
 }
 
 RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& request, StudyObserver& observer) {
+  const InputFileLog inputs;  // what the run reads: the parts' fingerprint (commitRun)
   RunContext run;
+  run.inputs = &inputs;
   run.request = request;
   run.start = std::chrono::steady_clock::now();
   run.startedAt = localTimeNow();
@@ -167,10 +163,8 @@ RunResult mergeParts(const std::vector<std::filesystem::path>& parts, const std:
   if (first.id.version != CANDELA_VERSION)
     throw InputError(part, "computed by candela " + first.id.version + ", this is " + CANDELA_VERSION +
                                ": merge with the candela that ran the shards");
-  const CaseFile c = readCaseFile(first.id.caseFile);
-  if (caseFingerprint(c) != first.id.fingerprint)
-    throw InputError(part, "the case " + first.id.caseFile +
-                               " or a file it names changed since the shards ran: run the shards again");
+  // The case's files are compared with the parts' fingerprint once the run has read them all
+  // (commitRun), before anything is written.
   RunRequest request;
   try {
     request = requestFromJson(first.id.request);
@@ -179,9 +173,17 @@ RunResult mergeParts(const std::vector<std::filesystem::path>& parts, const std:
   }
   request.outDir = outDir;
   request.trace.threads = threads;
+  const std::string firstDir = first.dir.string();
   const MergeDistribution merge(std::move(headers));
   request.distribution = &merge;
-  return runCase(first.id.caseFile, request, observer);
+  try {
+    return runCase(first.id.caseFile, request, observer);
+  } catch (const NonFiniteResult& e) {
+    // The shards checked their own items; a NaN now came from the parts' bytes (a part edited
+    // with its checksum, say): bad input, not an internal failure.
+    throw InputError(part, std::string("the parts hold a value that is not a number (") + e.what() +
+                               "): a part in " + firstDir + "'s set is damaged; run the shards again");
+  }
 }
 
 }  // namespace candela

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "base/distribution.h"
+#include "base/input_file.h"
 #include "reports/report_data.h"
 #include "study/observer.h"
 #include "study/resource_estimate.h"
@@ -49,6 +50,9 @@ struct RunContext {
   std::filesystem::path outDir;
   std::chrono::steady_clock::time_point start;
   std::string startedAt;  // local time, "YYYY-MM-DD HH:MM"
+  // The files read since the run started (base/input_file.h); a shard's part carries their
+  // fingerprint and a merge compares it. Not owned.
+  const InputFileLog* inputs = nullptr;
 };
 
 RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& request,

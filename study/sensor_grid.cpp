@@ -216,8 +216,13 @@ SensorPoint checkedSensorPoint(const double v[6], const FileLoc& loc) {
   for (int k = 0; k < 3; ++k)
     if (std::abs(v[k]) > kMaxCoordinateM) throw InputError(loc, "a sensor point lies beyond 1e7 m from the origin");
   const Vec3 dir(v[3], v[4], v[5]);
-  if (!(glm::length(dir) > 0.0)) throw InputError(loc, "sensor direction is zero");
-  return {Vec3(v[0], v[1], v[2]), glm::normalize(dir)};
+  if (dir == Vec3(0.0)) throw InputError(loc, "sensor direction is zero");
+  // A component of 1e200 once reached Embree as a zero direction and aborted the process.
+  const std::optional<Vec3> unit = unitDirection(dir);
+  if (!unit)
+    throw InputError(loc, "sensor direction (" + compactNumber(v[3]) + " " + compactNumber(v[4]) + " " +
+                              compactNumber(v[5]) + ") cannot be normalised: its length overflows or underflows");
+  return {Vec3(v[0], v[1], v[2]), *unit};
 }
 
 std::vector<SensorPoint> readPoints(std::istream& in, const std::string& sourceName, std::vector<int>* lines) {

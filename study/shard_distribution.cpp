@@ -2,13 +2,16 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/input_file.h"
 #include "base/parallel.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -21,7 +24,29 @@ namespace {
 // fills.bin: per fill a header of six little-endian uint64 (magic, items, itemBytes, chunk,
 // use, data bytes) and the data.
 constexpr uint64_t kFillMagic = 0x4c4c49464c444e43ULL;  // "CNDLFILL"
-constexpr int kPartFormat = 1;
+// 2: part.json carries fills.bin's checksum.
+constexpr int kPartFormat = 2;
+// What a part.json may say before anything is made of it: a merge of more shards than --shard
+// accepts (6 digits) is not a part, and no manifest this candela writes comes near 1 MiB.
+constexpr int64_t kMaxShards = 999'999;
+constexpr uint64_t kMaxManifestBytes = 1 << 20;
+constexpr size_t kMaxManifestText = 4096;  // a field quoted in messages or compared (version, case path)
+
+// fills.bin's checksum as part.json gives it: FNV-1a 64 of every byte, 16 hex digits.
+std::string checksumText(uint64_t h) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+uint64_t fileChecksum(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::vector<char> buf(1 << 16);
+  uint64_t h = fnv1a("", 0);
+  while (in.read(buf.data(), static_cast<std::streamsize>(buf.size())) || in.gcount() > 0)
+    h = fnv1a(buf.data(), static_cast<size_t>(in.gcount()), h);
+  return h;
+}
 
 struct FillHeader {
   uint64_t magic = kFillMagic, items = 0, itemBytes = 0, chunk = 0, use = 0, dataBytes = 0;
@@ -117,7 +142,7 @@ void writePart(const fs::path& dir, const PartIdentity& id, ShardSpec spec, cons
   // The folder is the run's fresh temporary one (study/run_outputs.h): a new file in it cannot
   // meet a planted link.
   std::ofstream out(dir / kPartData, std::ios::binary | std::ios::trunc);
-  uint64_t bytes = 0;
+  uint64_t bytes = 0, sum = fnv1a("", 0);
   for (const FillRecord& f : fills) {
     FillHeader h;
     h.items = f.items;
@@ -127,6 +152,7 @@ void writePart(const fs::path& dir, const PartIdentity& id, ShardSpec spec, cons
     h.dataBytes = f.data.size();
     out.write(reinterpret_cast<const char*>(&h), sizeof h);
     out.write(reinterpret_cast<const char*>(f.data.data()), static_cast<std::streamsize>(f.data.size()));
+    sum = fnv1a(f.data.data(), f.data.size(), fnv1a(&h, sizeof h, sum));
     bytes += sizeof h + f.data.size();
   }
   out.close();
@@ -142,44 +168,74 @@ void writePart(const fs::path& dir, const PartIdentity& id, ShardSpec spec, cons
   j["shards"] = spec.count;
   j["fills"] = fills.size();
   j["data_bytes"] = bytes;
+  j["data_checksum"] = checksumText(sum);
   writeFileAtomic(dir / kPartManifest, j.dump(2) + "\n");
 }
 
 PartHeader readPartHeader(const fs::path& dir) {
+  const FileLoc manifest = at(dir, kPartManifest);
+  std::error_code sizeError;
+  const uintmax_t manifestBytes = fs::file_size(dir / kPartManifest, sizeError);
   std::ifstream in(dir / kPartManifest);
-  if (!in) throw InputError(at(dir, kPartManifest), "not a candela part (no part.json): was the shard run finished?");
+  if (sizeError || !in) throw InputError(manifest, "not a candela part (no part.json): was the shard run finished?");
+  if (manifestBytes > kMaxManifestBytes)
+    throw InputError(manifest, "not a candela part (part.json has " + std::to_string(manifestBytes) +
+                                   " bytes, a part's has a few hundred)");
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception&) {
-    throw InputError(at(dir, kPartManifest), "not a candela part (part.json is not JSON)");
+    throw InputError(manifest, "not a candela part (part.json is not JSON)");
   }
   PartHeader h;
   h.dir = dir;
+  // Every count is checked before it is used: a 280-byte part.json with "shards": 20000000 once
+  // printed a 369 MB message naming each missing shard.
+  auto count = [&](const char* key, int64_t lo, int64_t hi) {
+    const nlohmann::json& v = j.at(key);
+    if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi || (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(hi)))
+      throw InputError(manifest, std::string("part.json: \"") + key + "\" must be an integer from " + std::to_string(lo) +
+                                     " to " + std::to_string(hi));
+    return v.get<int64_t>();
+  };
+  auto text = [&](const char* key) {
+    std::string v = j.at(key).get<std::string>();
+    if (v.size() > kMaxManifestText)
+      throw InputError(manifest, std::string("part.json: \"") + key + "\" is longer than " +
+                                     std::to_string(kMaxManifestText) + " characters");
+    return v;
+  };
+  std::string checksum;
   try {
-    if (j.at("format") != "candela-part" || j.at("format_version") != kPartFormat)
-      throw InputError(at(dir, kPartManifest), "a part of another format (this candela reads version " +
-                                                    std::to_string(kPartFormat) + ")");
-    h.id.version = j.at("candela").get<std::string>();
-    h.id.caseFile = j.at("case").get<std::string>();
-    h.id.fingerprint = j.at("fingerprint").get<std::string>();
+    if (!j.is_object() || j.at("format") != "candela-part" || j.at("format_version") != kPartFormat)
+      throw InputError(manifest, "a part of another format (this candela reads version " + std::to_string(kPartFormat) +
+                                     "): run the shards again with this candela");
+    h.id.version = text("candela");
+    h.id.caseFile = text("case");
+    h.id.fingerprint = text("fingerprint");
     h.id.request = j.at("request").get<std::string>();
-    h.id.shards = j.at("shards").get<int>();
-    h.spec = {j.at("shard").get<int>(), h.id.shards};
-    h.fills = j.at("fills").get<uint64_t>();
-    h.dataBytes = j.at("data_bytes").get<uint64_t>();
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(at(dir, kPartManifest), std::string("part.json lacks a field: ") + e.what());
+    if (h.id.request.size() > kMaxManifestBytes) throw InputError(manifest, "part.json: \"request\" is too long");
+    h.id.shards = static_cast<int>(count("shards", 1, kMaxShards));
+    h.spec = {static_cast<int>(count("shard", 0, kMaxShards - 1)), h.id.shards};
+    h.dataBytes = static_cast<uint64_t>(count("data_bytes", 0, std::numeric_limits<int64_t>::max()));
+    // Each fill has a header of 48 bytes.
+    h.fills = static_cast<uint64_t>(count("fills", 0, static_cast<int64_t>(h.dataBytes / sizeof(FillHeader))));
+    checksum = text("data_checksum");
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(manifest, "part.json lacks a field or has one of the wrong type");
   }
-  if (h.spec.count < 1 || h.spec.index < 0 || h.spec.index >= h.spec.count)
-    throw InputError(at(dir, kPartManifest), "part.json: shard " + std::to_string(h.spec.index) + " of " +
-                                                 std::to_string(h.spec.count) + " is not a shard");
+  if (h.spec.index >= h.spec.count)
+    throw InputError(manifest, "part.json: shard " + std::to_string(h.spec.index) + " of " +
+                                   std::to_string(h.spec.count) + " is not a shard");
   std::error_code ec;
   const uint64_t size = fs::file_size(dir / kPartData, ec);
   if (ec || size != h.dataBytes)
     throw InputError(at(dir, kPartData), "the part is incomplete: fills.bin holds " +
                                              (ec ? std::string("nothing") : std::to_string(size) + " bytes") + ", part.json says " +
                                              std::to_string(h.dataBytes));
+  // A same-size damaged copy (one double changed) once merged into -179 000 lx.
+  if (checksumText(fileChecksum(dir / kPartData)) != checksum)
+    throw InputError(at(dir, kPartData), "the part is damaged: fills.bin's checksum differs from part.json's");
   return h;
 }
 
@@ -205,10 +261,14 @@ std::vector<PartHeader> checkPartSet(std::vector<PartHeader> parts) {
       throw InputError(at(p.dir, kPartManifest), "shard " + std::to_string(p.spec.index) + " is given twice (also " +
                                                      it->second.dir.string() + ")");
   }
+  // Named up to 8 (the count says the rest): the message stays one short line for any N.
   std::string missing;
+  int absent = 0;
   for (int i = 0; i < n; ++i)
-    if (!byIndex.count(i)) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(n);
-  if (!missing.empty())
+    if (!byIndex.count(i) && ++absent <= 8)
+      missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(n);
+  if (absent > 8) missing += " and " + std::to_string(absent - 8) + " more";
+  if (absent > 0)
     throw InputError(at(first.dir, kPartManifest), "the parts are incomplete: shard " + missing + " missing");
   std::vector<PartHeader> ordered;
   for (auto& [i, p] : byIndex) ordered.push_back(std::move(p));
@@ -218,6 +278,7 @@ std::vector<PartHeader> checkPartSet(std::vector<PartHeader> parts) {
 struct MergeDistribution::Reader {
   std::ifstream in;
   uint64_t read = 0;  // fills read
+  uint64_t left = 0;  // bytes of fills.bin not read yet
 };
 
 MergeDistribution::MergeDistribution(std::vector<PartHeader> parts) : parts_(std::move(parts)) {
@@ -225,6 +286,7 @@ MergeDistribution::MergeDistribution(std::vector<PartHeader> parts) : parts_(std
     auto r = std::make_unique<Reader>();
     r->in.open(p.dir / kPartData, std::ios::binary);
     if (!r->in) throw InputError(at(p.dir, kPartData), "cannot read the part");
+    r->left = p.dataBytes;
     readers_.push_back(std::move(r));
   }
 }
@@ -240,13 +302,18 @@ uint64_t MergeDistribution::nextFill(size_t part, uint64_t n, uint64_t itemBytes
                                                 ": the part was computed from another case, scene or settings");
   };
   FillHeader h;
-  if (r.read >= p.fills || !r.in.read(reinterpret_cast<char*>(&h), sizeof h)) throw foreign("is missing");
+  if (r.read >= p.fills || r.left < sizeof h || !r.in.read(reinterpret_cast<char*>(&h), sizeof h))
+    throw foreign("is missing");
   ++r.read;
+  r.left -= sizeof h;
   if (h.magic != kFillMagic) throw foreign("is damaged");
   const uint64_t chunk = shardChunkItems(n, static_cast<int>(parts_.size()));
   if (h.items != n || h.itemBytes != itemBytes || h.chunk != chunk || h.use != (use == ItemUse::kShared ? 1u : 0u))
     throw foreign("has " + std::to_string(h.items) + " items of " + std::to_string(h.itemBytes) + " bytes, the case " +
                   std::to_string(n) + " of " + std::to_string(itemBytes));
+  // The fill's size, bounded by what the file holds before anything is allocated for it.
+  if (h.dataBytes > r.left) throw damaged(part, h.dataBytes);
+  r.left -= h.dataBytes;
   return h.dataBytes;
 }
 
@@ -289,10 +356,15 @@ void MergeDistribution::fillLists(std::vector<std::vector<std::byte>>& lists, It
     const uint64_t bytes = nextFill(s, lists.size(), 0, use);
     const std::vector<size_t> which = itemsOfPart(s, lists.size(), use);
     Reader& r = *readers_[s];
+    if (which.size() > bytes / sizeof(uint64_t)) throw damaged(s, bytes);
     std::vector<uint64_t> sizes(which.size());
     r.in.read(reinterpret_cast<char*>(sizes.data()), static_cast<std::streamsize>(sizes.size() * sizeof(uint64_t)));
+    // Summed without wrapping: sizes whose sum wraps to the fill's size once allocated 3 GiB.
     uint64_t total = sizes.size() * sizeof(uint64_t);
-    for (uint64_t z : sizes) total += z;
+    for (uint64_t z : sizes) {
+      if (z > bytes - total) throw damaged(s, bytes);
+      total += z;
+    }
     if (!r.in || total != bytes) throw damaged(s, bytes);
     for (size_t k = 0; k < which.size(); ++k) {
       lists[which[k]].resize(sizes[k]);

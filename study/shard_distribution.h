@@ -108,6 +108,7 @@ class MergeDistribution : public Distribution {
                  const std::function<void(size_t, std::vector<std::byte>&)>& compute) const override;
   // Throws InputError when the parts hold fills the study did not ask for.
   void finish() const override;
+  const std::vector<PartHeader>& parts() const { return parts_; }
 
  private:
   struct Reader;

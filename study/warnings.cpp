@@ -5,8 +5,10 @@
 #include "photometry/site.h"
 #include "reports/report_data.h"
 #include "study/case_scene.h"
+#include "study/sight_line.h"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <cmath>
 
@@ -30,6 +32,14 @@ std::string vec(const Vec3& p) { return "(" + num(p.x) + ", " + num(p.y) + ", " 
 bool inside(const Box& b, const Vec3& p, double tol) {
   return p.x >= b.lo.x - tol && p.y >= b.lo.y - tol && p.z >= b.lo.z - tol && p.x <= b.hi.x + tol &&
          p.y <= b.hi.y + tol && p.z <= b.hi.z + tol;
+}
+
+// Far beyond the scene (over ten times its size away) and inside it once read in millimetres.
+bool millimetresFor(const Box& box, const Vec3& p, double tol) {
+  if (inside(box, p, tol)) return false;
+  const double away = glm::length(glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0)));
+  const double size = std::max({box.size().x, box.size().y, box.size().z});
+  return away > 10.0 * size && inside(box, p / 1000.0, tol);
 }
 
 // Two unit vectors that complete n to an orthonormal basis.
@@ -172,10 +182,7 @@ void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>
     const Vec3& p = l.positionM;
     const std::string who = "luminaire '" + l.name + "' at " + vec(p) + " m";
     if (!inside(box, p, kLuminaireBoxToleranceM)) {
-      // Far beyond the scene (over ten times its size away) and inside it in millimetres.
-      const double away = glm::length(glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0)));
-      const double size = std::max({box.size().x, box.size().y, box.size().z});
-      if (away > 10.0 * size && inside(box, p / 1000.0, kLuminaireBoxToleranceM))
+      if (millimetresFor(box, p, kLuminaireBoxToleranceM))
         out.push_back({"millimetre_positions",
                        who + " lies outside the scene " + boxText + " but inside it if read in millimetres: "
                              "case positions are in metres",
@@ -204,6 +211,68 @@ void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>
                      l.loc});
     else
       out.push_back({"luminaire_reaches_no_sensor", who + " reaches none of the sensors: its light is blocked", l.loc});
+  }
+}
+
+void checkMillimetrePositions(const CaseFile& c, const Box& box, Warnings& out) {
+  if (box.empty()) return;
+  const std::string boxText = vec(box.lo) + " – " + vec(box.hi) + " m";
+  auto check = [&](const std::string& who, const Vec3& p, const FileLoc& loc) {
+    if (!millimetresFor(box, p, kLuminaireBoxToleranceM)) return false;
+    out.push_back({"millimetre_positions",
+                   who + " at " + vec(p) + " m lies outside the scene " + boxText +
+                       " but inside it if read in millimetres: case positions are in metres",
+                   loc});
+    return true;
+  };
+  // One warning a list: its first such position (the rest are likely written the same way).
+  for (const ComplianceSpec& s : c.compliance) {
+    const std::string entry = "[[compliance]] '" + s.name + "'";
+    for (size_t i = 0; i < s.sunlightPoints.size(); ++i)
+      if (check(entry + ": sunlight point " + std::to_string(i + 1), s.sunlightPoints[i], s.sunlightLoc)) break;
+    for (size_t i = 0; i < s.viewPoints.size(); ++i)
+      if (check(entry + ": view point " + std::to_string(i + 1), s.viewPoints[i], s.viewLoc)) break;
+    for (size_t i = 0; i < s.glareViews.size(); ++i)
+      if (check(entry + ": glare view " + std::to_string(i + 1), s.glareViews[i].positionM, s.glareViews[i].loc)) break;
+  }
+  // An observer is a plan position and an eye height: judged in plan (its height within the box).
+  for (const ObserverSpec& o : c.observers) {
+    const Vec3 plan(o.positionM.x, o.positionM.y, std::clamp(o.eyeHeightM, box.lo.z, box.hi.z));
+    if (millimetresFor(box, plan, kLuminaireBoxToleranceM) || millimetresFor(box, o.eyeM(), kLuminaireBoxToleranceM))
+      out.push_back({"millimetre_positions",
+                     "observer '" + o.name + "' at " + vec(o.eyeM()) + " m lies outside the scene " + boxText +
+                         " but inside it if read in millimetres: case positions are in metres",
+                     o.loc});
+  }
+}
+
+void checkViewOutOpenings(const Tracer& tracer, const CaseFile& c, Warnings& out) {
+  constexpr int kRays = 360;  // one a degree round the eye's horizon
+  for (const ComplianceSpec& s : c.compliance) {
+    size_t points = 0, first = 0;
+    int firstDeg = 0;
+    for (size_t i = 0; i < s.viewPoints.size(); ++i) {
+      int open = 0;
+      for (int k = 0; k < kRays; ++k) {
+        const double a = degToRad(k + 0.5);
+        uint64_t rays = 0;
+        const SightLine line = traceSightLine(tracer, s.viewPoints[i], Vec3(std::cos(a), std::sin(a), 0.0),
+                                              std::numeric_limits<double>::infinity(), rays);
+        open += line.glazingCrossed == 0 && !line.blocked;
+      }
+      if (open > 0 && points++ == 0) {
+        first = i;
+        firstDeg = open;
+      }
+    }
+    if (points == 0) continue;
+    out.push_back({"view_out_unglazed_opening",
+                   "[[compliance]] '" + s.name + "': " + std::to_string(points) + " of " +
+                       std::to_string(s.viewPoints.size()) + " view points see outside without glazing (the first, " +
+                       "point " + std::to_string(first + 1) + " at " + vec(s.viewPoints[first]) + " m, over " +
+                       std::to_string(firstDeg) + " deg of its horizon): EN 17037's view out counts lines of sight "
+                       "through glazing only, so an unglazed opening (or an eye outdoors) reads 0 deg and \"none\" there",
+                   s.viewLoc});
   }
 }
 
@@ -262,7 +331,9 @@ void checkSensors(const Tracer& tracer, const SensorSet& set, Warnings& out) {
                    pointLoc(set, firstNear)});
   // Outside: beyond the scene's box in a scene with no sky, or open to the outside where at least
   // three quarters of a set of four or more are enclosed (so an open scene never warns).
-  const Box box = tracer.scene().bounds();
+  // The box of the scene and its luminaires, as grids are judged (prepareGrids).
+  Box box = tracer.scene().bounds();
+  for (const LuminaireSource& l : tracer.scene().luminaires) box.extend(l.position);
   const bool mostEnclosed = pts.size() >= 4 && 4 * enclosed >= 3 * pts.size();
   std::size_t outside = 0, firstOutside = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -425,8 +496,11 @@ Warnings pointInTimeWarnings(const CaseFile& c, const Tracer& tracer, const std:
   checkSkySun(c, tracer.scene(), w);
   const std::vector<SensorSet> sets = sensorSets(grids);
   checkLuminaires(tracer, c.luminaires, sets, w);
+  checkMillimetrePositions(c, tracer.scene().bounds(), w);
   checkPhotometry(tracer.scene(), c.luminaires, w);
   checkLuminairePower(tracer.scene(), c, w);
+  for (const PreparedGrid& g : grids)
+    if (g.outside) w.push_back(*g.outside);
   for (const PreparedGrid& g : grids) checkGridSpacing(g, w);
   for (const PreparedGrid& g : grids) checkModellingHeight(g, w);
   for (const SensorSet& set : sets) checkSensors(tracer, set, w);
@@ -438,8 +512,12 @@ Warnings annualInputWarnings(const CaseFile& c, const EpwLocation& weather, cons
   Warnings w;
   checkSceneInput(scene, w);
   checkSiteAgainstWeather(c, weather, w);
+  checkMillimetrePositions(c, scene.bounds(), w);
   const Tracer probe(scene);
+  checkViewOutOpenings(probe, c, w);
   const std::vector<SensorSet> sets = sensorSets(grids);
+  for (const PreparedGrid& g : grids)
+    if (g.outside) w.push_back(*g.outside);
   for (const PreparedGrid& g : grids) checkGridSpacing(g, w);
   for (const SensorSet& set : sets) checkSensors(probe, set, w);
   return w;

@@ -45,6 +45,16 @@ void checkLightSources(const Scene& scene, const FileLoc& where, Warnings& out);
 void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>& luminaires,
                      const std::vector<SensorSet>& sensors, Warnings& out);
 
+// millimetre_positions for the case's other positions: EN 17037 sunlight and view points and
+// glare views ([[compliance]]) and [[observer]] eyes lying more than ten times the scene's size
+// outside its box `box` and inside it once divided by 1000 (one warning a list, at its key).
+void checkMillimetrePositions(const CaseFile& c, const Box& box, Warnings& out);
+
+// view_out_unglazed_opening: an EN 17037 view point from which a horizontal line of sight (one
+// a degree) leaves the model without crossing glazing: view out (study/view_out.h) counts
+// glazing only, so the opening reads 0 deg and "none" (one warning a [[compliance]] entry).
+void checkViewOutOpenings(const Tracer& tracer, const CaseFile& c, Warnings& out);
+
 // grid_spacing_exceeds_extent: a plane grid whose spacing is larger than its calculation area
 // (after the border) along a side.
 void checkGridSpacing(const PreparedGrid& grid, Warnings& out);

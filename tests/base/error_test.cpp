@@ -28,3 +28,19 @@ TEST(InputError, ControlCharactersAreEscaped) {
 }
 
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// 1e308 was quoted in messages with std::to_string: 309 digits and six decimals.
+TEST(InputError, CompactNumbers) {
+  EXPECT_EQ(compactNumber(1e308), "1e+308");
+  EXPECT_EQ(compactNumber(0.1), "0.1");
+  EXPECT_EQ(compactNumber(2.5), "2.5");
+  EXPECT_EQ(compactNumber(-1000.0), "-1000");
+  EXPECT_EQ(compactNumber(123456789.0), "123456789");
+  EXPECT_LE(compactNumber(-1.2345678901234e-300).size(), 16u);
+}
+
+}  // namespace
+}  // namespace candela

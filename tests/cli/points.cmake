@@ -47,6 +47,9 @@ candela_cli_test(points.folder_points 2 "the points file is a folder, not a regu
 # A finite but huge coordinate once aborted the process inside Embree (exit 134).
 candela_cli_test(points.far_point 2 "points/far_point.pts:2: a sensor point lies beyond 1e7 m from the origin"
                  points points/room.rad --points points/far_point.pts)
+# A direction of 1e200 was normalised to (0, 0, 0) and aborted the process inside Embree (exit 134).
+candela_cli_test(points.huge_direction 2 "points/huge_direction.pts:2: sensor direction (1e+200 0 0) cannot be normalised"
+                 points points/room.rad --points points/huge_direction.pts)
 # Points from an endless stdin without newlines (/dev/zero) once ate memory: the line is bounded.
 candela_cli_test(points.endless_stdin 2 "<stdin>:1: a sensor point line is longer than 65536 characters"
                  points points/room.rad)

@@ -123,6 +123,24 @@ def test_bad_points_name_the_row():
         candela.illuminance(None, np.zeros((3, 5)), sky=candela.Sky.uniform())
 
 
+def test_huge_directions_and_luminaire_numbers_are_input_errors(tmp_path):
+    # A direction of 1e200 once killed the interpreter inside Embree; aim=(1e200, 0, 0) and
+    # multiplier=1e308 ended as internal errors (RuntimeError).
+    with pytest.raises(candela.InputError) as e:
+        candela.illuminance(None, [[0, 0, 0, 0, 0, 1], [2, 1.5, 0.8, 1e200, 0, 0]], sky=candela.Sky.uniform())
+    assert (e.value.file, e.value.line) == ("points", 2)
+    assert "cannot be normalised" in e.value.message
+    ies = tmp_path / "none.ies"  # the numbers are checked before the file is read
+    for kwargs, words in [(dict(aim=(1e200, 0, 0)), "aim"), (dict(multiplier=1e308), "multiplier"),
+                          (dict(position=(0, 0, 1e8)), "beyond 1e7 m")]:
+        position = kwargs.pop("position", (0, 0, 3))
+        with pytest.raises(candela.InputError) as e:
+            candela.illuminance(None, [[0, 0, 0, 0, 0, -1]],
+                                luminaires=[candela.Luminaire(ies, position, **kwargs)])
+        assert words in e.value.message
+        assert len(str(e.value)) < 200
+
+
 def test_missing_luminaire_file_is_an_input_error(tmp_path):
     with pytest.raises(candela.InputError) as e:
         candela.illuminance(None, [[0, 0, 0, 0, 0, -1]], luminaires=[candela.Luminaire(tmp_path / "none.ies", (0, 0, 3))])

@@ -315,3 +315,45 @@ TEST(Summary, CsvFieldsThatLookLikeFormulasStayText) {
 
 }  // namespace
 }  // namespace candela
+
+namespace candela {
+namespace {
+
+// Every CSV header names each column once: the cylindrical modelling grid named
+// cylindrical_illuminance_lux twice (tests/study/quantities_study_test.cpp checks that grid's
+// header); here every writer of reports/csv_writer.h with every optional block switched on.
+void expectUniqueHeader(const std::string& csv, const std::string& what) {
+  const std::vector<std::string> head = parseCsv(csv).at(0);
+  std::vector<std::string> sorted = head;
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  EXPECT_EQ(twice, sorted.end()) << what << " names '" << (twice == sorted.end() ? "" : *twice) << "' twice";
+  EXPECT_GT(head.size(), 1u) << what;
+}
+
+TEST(CsvHeaders, EveryWriterNamesEachColumnOnce) {
+  ReportData d = testing_sample::sampleAnnualReport();
+  d.grids[0].quantity = "Cylindrical illuminance Ē_z";
+  d.grids[0].quantityKey = "cylindrical";
+  d.grids[0].modelling = modellingRatio({100.0, 200.0}, {300.0, 500.0});
+  ObserverReport o;
+  o.name = "desk";
+  d.observers = {o};
+  expectUniqueHeader(summaryCsv(d), "summary.csv");
+  expectUniqueHeader(observersCsv(d), "observers.csv");
+  std::vector<ReportPoint> pts;
+  const GridReport g = testing_sample::sampleGrid("Daylit office", 0.0, 0.0, 6.0, 4.0, 0.25, &pts);
+  const AnnualGridReport annual = testing_sample::sampleAnnual(g);
+  expectUniqueHeader(annualGridCsv(pts, annual), "the annual grid CSV");
+  const std::vector<double> ones(pts.size(), 1.0);
+  expectUniqueHeader(gridCsv(pts, g.values, {{"error_lux", ones}, {"daylight_factor_pct", ones}}), "a grid CSV");
+  // The streaming writer refuses a repeated name outright (an internal error, never a file).
+  EXPECT_THROW(PointsCsvWriter([](std::string_view) {}, {"cylindrical_illuminance_lux", "error_lux",
+                                                          "cylindrical_illuminance_lux"}),
+               std::logic_error);
+  EXPECT_THROW(PointsCsvWriter([](std::string_view) {}, {"x"}), std::logic_error);
+  EXPECT_THROW(gridCsv(pts, g.values, {{"illuminance_lux", ones}}), std::logic_error);
+}
+
+}  // namespace
+}  // namespace candela

@@ -45,6 +45,20 @@ TEST(HtmlReport, IsSelfContained) {
   EXPECT_NE(html.find("</html>"), std::string::npos);
 }
 
+// Control characters in names from the case file (ESC, BEL: a terminal title sequence) reached
+// report.html raw; they are written as \xNN there, as in error messages.
+TEST(HtmlReport, ControlCharactersInCaseNamesAreEscaped) {
+  ReportData data = testing_sample::sampleReport();
+  data.run.caseName = "Office\x1b]0;pwned\x07 \x7f";
+  data.run.description = "line\x1b[2J";
+  data.grids[0].name = "grid\x01";
+  const std::string html = htmlReport(data);
+  for (const char c : {'\x1b', '\x07', '\x7f', '\x01'}) EXPECT_EQ(html.find(c), std::string::npos) << int(c);
+  EXPECT_NE(html.find("<h1>Office\\x1b]0;pwned\\x07 \\x7f</h1>"), std::string::npos);
+  EXPECT_NE(html.find("line\\x1b[2J"), std::string::npos);
+  EXPECT_EQ(xmlEscape("a\tb\nc<"), "a\tb\nc&lt;");
+}
+
 TEST(HtmlReport, HasEachGridsPlanAndTable) {
   const ReportData data = testing_sample::sampleReport();
   const std::string html = reportText();

@@ -171,6 +171,24 @@ TEST(SensorGrid, BadPointLinesNameTheLine) {
   expectPointsError("# c\n1 2 x 0 0 1\n", 2);                // not a number
   expectPointsError("1 2 3 0 0 0\n", 1);                     // zero direction
   expectPointsError("1 2 3e 0 0 1\n", 1);                    // junk after a number
+  // Finite components whose squared length overflows or underflows: glm::normalize gave (0, 0, 0)
+  // and Embree aborted the process.
+  expectPointsError("0 0 0 0 0 1\n2 1.5 0.8 1e200 0 0\n", 2);
+  expectPointsError("2 1.5 0.8 0 -1e300 1\n", 1);
+  expectPointsError("2 1.5 0.8 1e-200 0 0\n", 1);
+}
+
+TEST(SensorGrid, HugeDirectionsAreRefusedNotNormalisedToZero) {
+  const double v[6] = {2, 1.5, 0.8, 1e200, 0, 0};
+  try {
+    checkedSensorPoint(v, FileLoc{"p.pts", 7, 0});
+    FAIL() << "a direction of 1e200 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "p.pts:7: sensor direction (1e+200 0 0) cannot be normalised: its length overflows or underflows");
+  }
+  // Large but representable: normalised exactly.
+  const double w[6] = {0, 0, 0, 1e150, 0, 0};
+  EXPECT_EQ(checkedSensorPoint(w, FileLoc{"p.pts", 1, 0}).normal, Vec3(1, 0, 0));
 }
 
 TEST(SensorGrid, ReadsPointsFileFixture) {

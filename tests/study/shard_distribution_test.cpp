@@ -2,12 +2,16 @@
 
 #include "base/atomic_file.h"
 #include "base/error.h"
+#include "base/input_file.h"
+
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -189,6 +193,125 @@ TEST_F(Parts, IncompleteOrMissingPartIsRefused) {
   EXPECT_THROW(readPartHeader(root_ / "no_such_part"), InputError);
   std::ofstream(dirs[0] / kPartManifest) << "{ not json";
   EXPECT_THROW(readPartHeader(dirs[0]), InputError);
+}
+
+// fills.bin's fill headers: six uint64 (magic, items, itemBytes, chunk, use, data bytes).
+struct RawFill {
+  uint64_t offset;  // of the fill's data in fills.bin
+  uint64_t h[6];
+};
+std::vector<RawFill> rawFills(const fs::path& data) {
+  std::ifstream in(data, std::ios::binary);
+  std::vector<RawFill> fills;
+  RawFill f{};
+  while (in.read(reinterpret_cast<char*>(f.h), sizeof f.h)) {
+    f.offset = static_cast<uint64_t>(in.tellg());
+    fills.push_back(f);
+    in.seekg(static_cast<std::streamoff>(f.h[5]), std::ios::cur);
+  }
+  return fills;
+}
+
+void overwrite(const fs::path& file, uint64_t offset, const void* bytes, size_t n) {
+  std::fstream f(file, std::ios::binary | std::ios::in | std::ios::out);
+  f.seekp(static_cast<std::streamoff>(offset));
+  f.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(n));
+}
+
+// part.json with `key` set to `value` (and the rest as written).
+void setManifest(const fs::path& dir, const std::string& key, const nlohmann::json& value) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / kPartManifest));
+  j[key] = value;
+  std::ofstream(dir / kPartManifest, std::ios::trunc) << j.dump();
+}
+
+// part.json's checksum made to match fills.bin again, as a deliberate edit would.
+void resealPart(const fs::path& dir) {
+  const std::string data = [&] {
+    std::ifstream in(dir / kPartData, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(data.data(), data.size())));
+  setManifest(dir, "data_checksum", hex);
+}
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_F(Parts, SameSizeDamageIsRefusedByTheChecksum) {
+  const std::vector<fs::path> dirs = shardRun(2, 4, 50);
+  EXPECT_NO_THROW(readPartHeader(dirs[1]));
+  // One double of the data set to -1000: the size is unchanged (once merged into -179 000 lx).
+  const std::vector<RawFill> fills = rawFills(dirs[1] / kPartData);
+  ASSERT_FALSE(fills.empty());
+  const RawFill& last = fills.back();
+  ASSERT_GE(last.h[5], 8u);
+  const double bad = -1000.0;
+  overwrite(dirs[1] / kPartData, last.offset, &bad, sizeof bad);
+  const std::string m = messageOf([&] { readPartHeader(dirs[1]); });
+  EXPECT_NE(m.find("fills.bin: the part is damaged: fills.bin's checksum differs"), std::string::npos) << m;
+  // A part without a checksum (an older format) is refused too.
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(dirs[0] / kPartManifest));
+  j.erase("data_checksum");
+  std::ofstream(dirs[0] / kPartManifest, std::ios::trunc) << j.dump();
+  EXPECT_THROW(readPartHeader(dirs[0]), InputError);
+}
+
+TEST_F(Parts, CountsInPartJsonAreBoundedBeforeUse) {
+  const std::vector<fs::path> dirs = shardRun(2, 4, 50);
+  // "shards": 20000000 once printed a 369 MB line naming every missing shard.
+  setManifest(dirs[0], "shards", 20000000);
+  std::string m = messageOf([&] { readPartHeader(dirs[0]); });
+  EXPECT_NE(m.find("part.json: \"shards\" must be an integer from 1 to 999999"), std::string::npos) << m;
+  EXPECT_LT(m.size(), 300u);
+  for (const nlohmann::json& bad : {nlohmann::json(-1), nlohmann::json(2.5), nlohmann::json("2"),
+                                    nlohmann::json(18446744073709551615ULL)}) {
+    setManifest(dirs[0], "shards", bad);
+    EXPECT_THROW(readPartHeader(dirs[0]), InputError) << bad;
+  }
+  setManifest(dirs[0], "shards", 2);
+  setManifest(dirs[0], "fills", 1000000000);  // more fills than the data could hold
+  EXPECT_THROW(readPartHeader(dirs[0]), InputError);
+  // The most shards a part may name, one given: the message names 8 and counts the rest.
+  setManifest(dirs[1], "shards", 999999);
+  setManifest(dirs[1], "shard", 5);
+  m = messageOf([&] { checkPartSet(headers({dirs[1]})); });
+  EXPECT_NE(m.find("shard 0/999999, 1/999999, 2/999999, 3/999999, 4/999999, 6/999999, 7/999999, 8/999999 and "
+                   "999990 more missing"),
+            std::string::npos)
+      << m;
+  EXPECT_LT(m.size(), 400u);
+}
+
+TEST_F(Parts, ListSizesThatWrapAreRefusedBeforeAllocating) {
+  const std::vector<fs::path> dirs = shardRun(1, 4, 50);
+  // The first fill is the shared lists (4 sizes, then the bytes): make the first size huge and
+  // the second wrap the sum back to the fill's size, then reseal the part.
+  const std::vector<RawFill> fills = rawFills(dirs[0] / kPartData);
+  ASSERT_EQ(fills[0].h[2], 0u) << "a fill of lists";
+  uint64_t sizes[4];
+  {
+    std::ifstream in(dirs[0] / kPartData, std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(fills[0].offset));
+    in.read(reinterpret_cast<char*>(sizes), sizeof sizes);
+  }
+  sizes[0] += uint64_t(3) << 30;           // 3 GiB more ...
+  sizes[1] -= uint64_t(3) << 30;           // ... and the sum wraps back
+  overwrite(dirs[0] / kPartData, fills[0].offset, sizes, sizeof sizes);
+  resealPart(dirs[0]);
+  const MergeDistribution merge(checkPartSet(headers(dirs)));
+  std::vector<std::vector<std::byte>> lists(4);
+  const std::string m = messageOf(
+      [&] { merge.fillLists(lists, ItemUse::kShared, 1, [](size_t, std::vector<std::byte>&) {}); });
+  EXPECT_NE(m.find("is damaged or was computed from another case"), std::string::npos) << m;
+  for (const auto& l : lists) EXPECT_LT(l.size(), 1000u);
 }
 
 }  // namespace

@@ -116,6 +116,101 @@ TEST(Warnings, LuminairesOutsideEnclosedOrInMillimetres) {
   for (const Warning& x : w) EXPECT_EQ(x.loc.file, (kDir / "case.toml").string());
 }
 
+// The case's other positions written in millimetres lay kilometres away and flipped verdicts with
+// no warning (EN 17037 sunlight "below minimum" to "high", UGR "fail" to "pass").
+TEST(Warnings, ObserversAndComplianceListsInMillimetres) {
+  const std::string observer = "[[observer]]\nposition = ";
+  const std::string text = kRoom + kLuminaire + kGrid +                                  // lines 1–11
+                           observer + "[1.0, 1.5]\ndirection = [1.0, 0.0]\n" +          // line 12: fine
+                           observer + "[1000.0, 1500.0]\ndirection = [1.0, 0.0]\n";     // line 15: millimetres
+  const Warnings w = inputWarnings(caseOf(text));
+  ASSERT_EQ(codes(w), std::vector<std::string>{"millimetre_positions"}) << dump(w);
+  EXPECT_EQ(w[0].loc.line, 15);
+  EXPECT_NE(w[0].message.find("observer 'observer2'"), std::string::npos) << w[0].message;
+
+  // EN 17037's lists: one warning a list, at its key; metres give none.
+  Box room;
+  room.extend(Vec3(0.0));
+  room.extend(Vec3(4.0, 3.0, 2.8));
+  CaseFile c;
+  ComplianceSpec s;
+  s.name = "en17037";
+  s.sunlightPoints = {{2000.0, 10.0, 1200.0}, {3000.0, 10.0, 1200.0}};
+  s.sunlightLoc = FileLoc{"case.toml", 7, 0};
+  s.viewPoints = {{2.0, 1.5, 1.2}};
+  s.viewLoc = FileLoc{"case.toml", 8, 0};
+  GlareViewSpec g;
+  g.positionM = Vec3(2000.0, 1500.0, 1200.0);
+  g.loc = FileLoc{"case.toml", 10, 0};
+  s.glareViews = {g};
+  c.compliance = {s};
+  Warnings m;
+  checkMillimetrePositions(c, room, m);
+  ASSERT_EQ(codes(m), (std::vector<std::string>{"millimetre_positions", "millimetre_positions"})) << dump(m);
+  EXPECT_EQ(m[0].loc.line, 7);
+  EXPECT_NE(m[0].message.find("sunlight point 1"), std::string::npos) << m[0].message;
+  EXPECT_EQ(m[1].loc.line, 10);
+  c.compliance[0].viewPoints = {{2000.0, 1500.0, 1200.0}};
+  m.clear();
+  checkMillimetrePositions(c, room, m);
+  EXPECT_EQ(m.size(), 3u) << dump(m);
+  c.compliance[0].sunlightPoints = {{2.0, 0.01, 1.2}};
+  c.compliance[0].viewPoints = {{2.0, 1.5, 1.2}};
+  c.compliance[0].glareViews[0].positionM = Vec3(2.0, 1.5, 1.2);
+  m.clear();
+  checkMillimetrePositions(c, room, m);
+  EXPECT_TRUE(m.empty()) << dump(m);
+}
+
+// A room 4 x 3 x 2.8 m closed but for a 1 m x 1.2 m opening in its south wall (y = 0), glazed
+// with clear glass or not.
+std::string roomWithOpening(bool glazed) {
+  auto rect = [](const std::string& mod, const std::string& name, const std::vector<Vec3>& v) {
+    std::ostringstream s;
+    s << mod << " polygon " << name << " 0 0 12";
+    for (const Vec3& p : v) s << " " << p.x << " " << p.y << " " << p.z;
+    return s.str() + "\n";
+  };
+  auto south = [&](const std::string& mod, const std::string& name, double x0, double x1, double z0, double z1) {
+    return rect(mod, name, {{x0, 0, z0}, {x1, 0, z0}, {x1, 0, z1}, {x0, 0, z1}});
+  };
+  std::string s = "void plastic grey 0 0 5 .5 .5 .5 0 0\nvoid glass clear 0 0 3 .9 .9 .9\n";
+  s += rect("grey", "floor", {{0, 0, 0}, {0, 3, 0}, {4, 3, 0}, {4, 0, 0}});
+  s += rect("grey", "ceiling", {{0, 0, 2.8}, {4, 0, 2.8}, {4, 3, 2.8}, {0, 3, 2.8}});
+  s += rect("grey", "north", {{0, 3, 0}, {4, 3, 0}, {4, 3, 2.8}, {0, 3, 2.8}});
+  s += rect("grey", "west", {{0, 0, 0}, {0, 3, 0}, {0, 3, 2.8}, {0, 0, 2.8}});
+  s += rect("grey", "east", {{4, 0, 0}, {4, 3, 0}, {4, 3, 2.8}, {4, 0, 2.8}});
+  s += south("grey", "s_left", 0, 1.5, 0, 2.8) + south("grey", "s_right", 2.5, 4, 0, 2.8) +
+       south("grey", "s_below", 1.5, 2.5, 0, 0.9) + south("grey", "s_above", 1.5, 2.5, 2.1, 2.8);
+  if (glazed) s += south("clear", "window", 1.5, 2.5, 0.9, 2.1);
+  return s;
+}
+
+// An unglazed opening is no window for EN 17037's view out: the eye read 0 deg and "none" with
+// no warning.
+TEST(Warnings, ViewOutThroughAnUnglazedOpening) {
+  CaseFile c;
+  ComplianceSpec s;
+  s.name = "en17037";
+  s.viewPoints = {{2.0, 2.9, 1.2}, {2.0, 1.5, 1.2}};  // both see the opening at eye height
+  s.viewLoc = FileLoc{"case.toml", 9, 0};
+  c.compliance = {s};
+  for (const bool glazed : {false, true}) {
+    Scene scene;
+    readRadianceText(roomWithOpening(glazed), "room.rad", scene);
+    const Tracer tracer(scene);
+    Warnings w;
+    checkViewOutOpenings(tracer, c, w);
+    if (glazed) {
+      EXPECT_TRUE(w.empty()) << dump(w);
+      continue;
+    }
+    ASSERT_EQ(codes(w), std::vector<std::string>{"view_out_unglazed_opening"});
+    EXPECT_EQ(w[0].loc.line, 9);
+    EXPECT_NE(w[0].message.find("2 of 2 view points see outside without glazing"), std::string::npos) << w[0].message;
+  }
+}
+
 // luminaire_power_unknown: a photometric file with 0 input watts (a real one: the shared
 // reference's defined.ies) and no `power_w`; once per [[luminaire]] entry, however many fittings
 // its array has, at the entry's line. `power_w` or a file with its watts gives none.
