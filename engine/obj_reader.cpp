@@ -257,7 +257,7 @@ class ObjReader {
     p = opt_.transform.point(p);
     for (int k = 0; k < 3; ++k)
       if (std::abs(p[k]) > kMaxCoordinateM)
-        fail(line, "vertex coordinate " + std::to_string(p[k]) + " is beyond 1e7 m");
+        fail(line, "vertex coordinate " + compactNumber(p[k]) + " is beyond 1e7 m");
     if (scene_.mesh.vertices.size() >= kMaxIndex) fail(line, "more than 2^32 - 2 vertices");
     scene_.mesh.vertices.push_back(p);
     ++stats_.vertices;

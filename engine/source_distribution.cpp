@@ -1,5 +1,6 @@
 #include "engine/source_distribution.h"
 
+#include "engine/radiance/file_lookup.h"
 #include "engine/radiance/transform.h"
 #include "engine/scene.h"
 
@@ -151,7 +152,8 @@ SourceDistribution SourceDistribution::parse(const ScenePattern& p) {
   SourceDistribution s;
   s.correction_ = correctionByName(p.strings.at(0));
   readReals(p, what, s.correction_, s.multiplier_, s.a2_, s.a3_, s.a4_);
-  const std::filesystem::path dat = std::filesystem::path(p.loc.file).parent_path() / p.strings.at(1);
+  const std::filesystem::path dat =
+      findSceneFile(p.strings.at(1), std::filesystem::path(p.loc.file).parent_path(), p.loc, what, "data file");
   s.data_ = readRadDataFile(dat, p.loc);
   const size_t nd = static_cast<size_t>(s.data_.dimensions());
   // strings: function, data file, source.cal, one coordinate per data dimension, transform.

@@ -1,6 +1,7 @@
 #include "engine/radiance/function_patterns.h"
 
 #include "base/input_file.h"
+#include "engine/radiance/file_lookup.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -12,38 +13,15 @@ FunctionFiles::FunctionFiles() : program_(std::make_shared<cal::Program>()) {}
 
 std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
   if (name == ".") return {};
-  const std::string what = p.type + " '" + p.name + "'";
-  const std::filesystem::path rel(name);
-  bool up = false;
-  for (const auto& part : rel) up |= part == "..";
-  if (rel.is_absolute() || up || name.empty())
-    throw InputError(p.loc, what + ": function file '" + name +
-                                "' must be a name relative to the working directory, RAYPATH or the scene's "
-                                "folder (no absolute path, no '..')");
-  std::vector<std::filesystem::path> places = {std::filesystem::current_path()};
-  if (const char* raypath = std::getenv("RAYPATH")) {
-    std::string list(raypath);
-    for (size_t start = 0; start <= list.size();) {
-      const size_t end = std::min(list.find(':', start), list.size());
-      if (end > start) places.emplace_back(list.substr(start, end - start));
-      start = end + 1;
-    }
+  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "function file");
+  std::error_code ec;
+  const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+  if (!loaded_.count(key)) {
+    loaded_[key] = true;
+    files_.push_back(path.string());
+    program_->addText(readInputFile(path, "function file"), path.string());
   }
-  places.push_back(folder);
-  for (const std::filesystem::path& place : places) {
-    const std::filesystem::path path = place / rel;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) continue;
-    const std::string key = std::filesystem::weakly_canonical(path, ec).string();
-    if (!loaded_.count(key)) {
-      loaded_[key] = true;
-      files_.push_back(path.string());
-      program_->addText(readInputFile(path, "function file"), path.string());
-    }
-    return path.string();
-  }
-  throw InputError(p.loc, what + ": function file '" + name + "' is not in the working directory, in RAYPATH or in " +
-                              folder.string());
+  return path.string();
 }
 
 bool isFunctionPattern(const RadPrimitive& p) {

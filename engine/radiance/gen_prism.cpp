@@ -4,6 +4,7 @@
 // Radiance's src/gen/genprism.c (doc/man/man1/genprism.1); the code is candela's.
 #include "base/input_file.h"
 #include "base/math.h"
+#include "engine/radiance/file_lookup.h"
 #include "engine/radiance/gen.h"
 
 #include <charconv>
@@ -41,8 +42,7 @@ using Vec2 = glm::dvec2;
 
 // x y pairs, blank-separated, from a vertex file (genprism.c's readverts).
 std::vector<Vec2> readVertexFile(const RadCommand& cmd, const RadExpandContext& ctx, const std::string& name) {
-  const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : ctx.folder / name;
-  if (!mayExist(path)) fail(cmd, "cannot find the vertex file '" + name + "' in '" + ctx.folder.string() + "'");
+  const fs::path path = findSceneFile(name, ctx.folder, cmd.loc, "genprism", "vertex file");
   std::istringstream in(readInputFile(path, "genprism vertex file"));
   std::vector<double> xy;
   std::string line;

@@ -3,6 +3,7 @@
 // doc/man/man1/xform.1; the code is candela's. docs/engine.md, "xform: names and files", states
 // the rules and where candela differs.
 #include "base/input_file.h"
+#include "engine/radiance/file_lookup.h"
 #include "engine/radiance/gen.h"
 #include "engine/radiance/transform.h"
 
@@ -251,9 +252,9 @@ class XformExpansion {
     single(av, copies);
   }
 
-  fs::path resolve(const std::string& name) const {
-    const fs::path p(name);
-    return p.is_absolute() ? p : ctx_.folder / p;
+  // A file the command names, found as Radiance finds files (engine/radiance/file_lookup.h).
+  fs::path resolve(const std::string& name, const char* role) const {
+    return findSceneFile(name, ctx_.folder, cmd_.loc, "xform", role);
   }
 
   // xform.c's doargf: each line not empty and not a comment is one invocation, the line's words
@@ -264,8 +265,7 @@ class XformExpansion {
     if (argDepth >= kMaxArgFileDepth)
       fail("argument files name each other more than " + std::to_string(kMaxArgFileDepth) +
            " levels deep (does '" + av[fi + 1] + "' name itself?)");
-    const fs::path path = resolve(av[fi + 1]);
-    if (!mayExist(path)) fail("cannot find the argument file '" + av[fi + 1] + "' in '" + ctx_.folder.string() + "'");
+    const fs::path path = resolve(av[fi + 1], "argument file");
     const std::vector<ArgLine> lines = argLines(readInputFile(path, "xform argument file"));
     long n = 0;
     for (const ArgLine& l : lines) n += !l.text.empty() && l.text[0] != '#';
@@ -396,10 +396,9 @@ class XformExpansion {
 
   // A file's primitives, its own commands expanded relative to its folder; read once per command.
   const std::vector<RadPrimitive>& scene(const std::string& name) {
-    const fs::path path = resolve(name);
+    const fs::path path = resolve(name, "file");
     const auto it = files_.find(path);
     if (it != files_.end()) return it->second;
-    if (!mayExist(path)) fail("cannot find the file '" + name + "' in '" + ctx_.folder.string() + "'");
     return files_.emplace(path, ctx_.readFile(path, cmd_.loc)).first->second;
   }
 

@@ -5,6 +5,7 @@
 #include "engine/obj_reader.h"
 #include "engine/materials/family.h"
 #include "engine/polygon_split.h"
+#include "engine/radiance/file_lookup.h"
 #include "engine/radiance/function_patterns.h"
 #include "engine/radiance/generators.h"
 #include "engine/radiance/sky.h"
@@ -168,12 +169,13 @@ class SceneReader::Builder {
     if (ext == ".rtm" || ext == ".msh") {
       // The OBJ file obj2mesh compiled it from, when it lies beside it (same name, .obj), is read
       // in its place with a warning; otherwise the mesh is refused.
-      std::filesystem::path beside = std::filesystem::path(file).replace_extension(".obj");
-      std::filesystem::path besidePath = beside.is_relative() ? folderOf(p) / beside : beside;
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(besidePath, ec))
+      const std::filesystem::path beside = std::filesystem::path(file).replace_extension(".obj");
+      try {
+        findSceneFile(beside.string(), folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file");
+      } catch (const InputError&) {
         fail(p, "mesh '" + p.name + "' names a Radiance compiled mesh (" + file +
                     "); pass its source OBJ file instead (mesh ... model.obj, the file obj2mesh compiled it from)");
+      }
       scene_.inputWarnings.push_back(Warning{
           "compiled_mesh_replaced",
           "mesh '" + p.name + "' names the compiled mesh " + file + ": the OBJ file beside it, " + beside.string() +
@@ -194,8 +196,7 @@ class SceneReader::Builder {
       modifierOf(p);  // defined before use, as every modifier
       opt.forcedModifier = p.modifier;
     }
-    std::filesystem::path path(fileRead);
-    if (path.is_relative()) path = folderOf(p) / path;
+    const std::filesystem::path path = findSceneFile(fileRead, folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file");
     try {
       checkInputFile(path, "OBJ file");
     } catch (const InputError&) {
@@ -457,7 +458,7 @@ class SceneReader::Builder {
   void checkCoordinates(const Primitive& p) {
     for (double v : p.reals)
       if (std::abs(v) > kMaxCoordinateM)
-        fail(p, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + std::to_string(v) + ")");
+        fail(p, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + compactNumber(v) + ")");
   }
 
   void addPolygon(const Primitive& p, uint32_t mat, Scene& target) {

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -393,11 +395,18 @@ TEST(Xform, BadOptionsNameTheCommandLine) {
   EXPECT_HAS(runError("!xform -a 2.5 -t 1 0 0 unit.rad"), "-a needs a whole count");
   EXPECT_HAS(runError("!xform -f"), "-f needs an argument file");
   EXPECT_HAS(runError("!xform -f - unit.rad"), "standard input");
-  EXPECT_HAS(runError("!xform -f nosuch.txt"), "cannot find the argument file 'nosuch.txt'");
+  EXPECT_HAS(runError("!xform -f nosuch.txt"), "argument file 'nosuch.txt' is not in the working directory, in RAYPATH or in");
   EXPECT_HAS(runError("!xform -f empty.txt"), "the argument file 'empty.txt' has no argument lines");
   EXPECT_HAS(runError("!xform -f badargs.txt"),
              "xform: -t needs a number, not 'unit.rad' (argument file 'badargs.txt' line 3)");
-  EXPECT_HAS(runError("!xform -t 1 0 0 nosuch.rad"), "cannot find the file 'nosuch.rad'");
+  EXPECT_HAS(runError("!xform -t 1 0 0 nosuch.rad"), "file 'nosuch.rad' is not in the working directory, in RAYPATH or in");
+  // Files only from the places Radiance looks (engine/radiance/file_lookup.h): never an absolute
+  // name or one with '..', and no message quotes what such a file holds.
+  for (const char* outside : {"!xform /etc/passwd", "!xform -f /etc/passwd", "!xform ../gen/unit.rad"}) {
+    const std::string e = runError(outside);
+    EXPECT_HAS(e, "must be a name relative to the working directory, RAYPATH or the scene's folder");
+    EXPECT_EQ(e.find("root"), std::string::npos) << e;
+  }
   EXPECT_HAS(runError("!xform -s 0 unit.rad"), "-s needs a non-zero factor");
 }
 
@@ -644,7 +653,9 @@ TEST(GenprismPeerSuite, RoundedSawtoothCornersAreARadiusFromBothEdges) {
   auto cross = [](const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; };
   double area2 = 0.0;
   for (size_t i = 0; i < n; ++i) area2 += cross(v[i], v[(i + 1) % n]);
-  const auto ps = run("!genprism alum sawtooth " + pts.string() + " -l 0 0 300 -r .1");
+  ::setenv("RAYPATH", suite.string().c_str(), 1);  // the suite's file found as Radiance finds it
+  const auto ps = run("!genprism alum sawtooth sawtooth.pts -l 0 0 300 -r .1");
+  ::unsetenv("RAYPATH");
   size_t convex = 0;
   for (size_t i = 0; i < n; ++i) {
     const glm::dvec2 p = v[(i + n - 1) % n], c = v[i], q = v[(i + 1) % n];
@@ -670,7 +681,8 @@ TEST(Genprism, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genprism m p 3 0 0 1 0 0 1 -r 2"), "more than the height");
   EXPECT_HAS(runError("!genprism m p 3 0 0 1 0 0 1 -i"), "genprism: unknown option '-i'");
   EXPECT_HAS(runError("!genprism m p 3 0 0 0 0 1 1 -r .1"), "has no length");
-  EXPECT_HAS(runError("!genprism m p nosuch.txt"), "cannot find the vertex file 'nosuch.txt'");
+  EXPECT_HAS(runError("!genprism m p nosuch.txt"), "vertex file 'nosuch.txt' is not in the working directory");
+  EXPECT_HAS(runError("!genprism m p /etc/passwd"), "vertex file '/etc/passwd' must be a name relative");
 }
 
 }  // namespace

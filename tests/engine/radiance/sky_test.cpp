@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <cmath>
 #include <functional>
 #include <string>
@@ -624,7 +626,9 @@ TEST(SceneSky, ReaderRules) {
   // xform turns the sky file: the sky function carries `-i 1 -rz 30` (engine/radiance/transform.h).
   const std::string dir = std::string(CANDELA_TEST_DATA) + "/rad/sky/";
   Scene turned;
-  readRadianceText("!xform -rz 30 " + dir + "honeybee_sunny.rad\n", "sky.rad", turned);
+  ::setenv("RAYPATH", dir.c_str(), 1);  // found as Radiance finds files
+  readRadianceText("!xform -rz 30 honeybee_sunny.rad\n", "sky.rad", turned);
+  ::unsetenv("RAYPATH");
   ASSERT_TRUE(turned.sky.has_value());
   EXPECT_NEAR(turned.sky->northDeg, -30.0, 1e-9);
   ASSERT_EQ(turned.distant.size(), 1u);
