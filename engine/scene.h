@@ -8,6 +8,7 @@
 #include "engine/materials/material.h"
 #include "engine/radiance/transform.h"
 #include "engine/radiance/cal/cal.h"
+#include "engine/radiance/data_file.h"
 #include "engine/shapes.h"
 #include "photometry/sky_model.h"
 
@@ -42,6 +43,13 @@ struct ScenePattern {
   // and the function's scale (S), and the pattern it is itself modified by (-1: none).
   int channels = 0;
   std::array<int32_t, 3> functions{-1, -1, -1};
+  // Data patterns (brightdata, colordata, colorpict, mixdata, mixpict; kFunction too): the arrays
+  // looked up (one; or one a channel, a picture's three), the functions giving the lookup point
+  // (one a dimension; a picture's u then v) and, in `functions`, the functions the looked-up
+  // values are passed to (one value each for brightdata and mixdata, three for the others).
+  std::array<std::shared_ptr<const RadDataArray>, 3> data;
+  std::vector<int32_t> coordinates;
+  bool picture = false;
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;

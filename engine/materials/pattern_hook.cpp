@@ -39,16 +39,34 @@ double PatternEvaluator::function(const ScenePattern& sp, int k) {
   }
 }
 
+double PatternEvaluator::dataFunction(const ScenePattern& sp, int k) {
+  // The lookup point (a picture's: v then u, Radiance's y-major order), the values there, and the
+  // function of channel k called with them.
+  double pt[kMaxDataDimensions];
+  const size_t n = sp.coordinates.size();
+  try {
+    for (size_t i = 0; i < n; ++i) pt[sp.picture ? n - 1 - i : i] = eval_->value(sp.coordinates[i]);
+    double values[3];
+    int count = 0;
+    for (const auto& d : sp.data)
+      if (d) values[count++] = d->value(pt);
+    return eval_->call(sp.functions[static_cast<size_t>(k)], std::span<const double>(values, static_cast<size_t>(count)));
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
+}
+
 Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   Rgb c(1.0);
   for (int i = index; i >= 0;) {
     const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
     begin(sp, p);
+    const bool data = !sp.coordinates.empty();
     if (sp.channels == 1) {
-      c *= function(sp, 0);
+      c *= data ? dataFunction(sp, 0) : function(sp, 0);
     } else {
-      for (int k = 0; k < 3; ++k) c[k] *= function(sp, k);
+      for (int k = 0; k < 3; ++k) c[k] *= data ? dataFunction(sp, k) : function(sp, k);
     }
     i = sp.next;
   }
@@ -58,7 +76,7 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
 double PatternEvaluator::value(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
-  return function(sp, 0);
+  return sp.coordinates.empty() ? function(sp, 0) : dataFunction(sp, 0);
 }
 
 Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patternColour) {

@@ -41,6 +41,8 @@ class PatternEvaluator {
   void fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env);
   // Function k of sp in the evaluation begun; a failure is an InputError at the pattern's line.
   double function(const ScenePattern& sp, int k);
+  // A data pattern's function k called with its data at the point its coordinates give.
+  double dataFunction(const ScenePattern& sp, int k);
 
   const Scene& scene_;
   std::unique_ptr<cal::Evaluator> eval_;

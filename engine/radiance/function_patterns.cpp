@@ -2,6 +2,7 @@
 
 #include "base/input_file.h"
 #include "engine/radiance/file_lookup.h"
+#include "engine/radiance/picture.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -24,10 +25,123 @@ std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, 
   return path.string();
 }
 
+std::shared_ptr<const RadDataArray> FunctionFiles::data(const std::string& name, const RadPrimitive& p,
+                                                        const std::filesystem::path& folder) {
+  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "data file");
+  std::error_code ec;
+  const std::string key = std::filesystem::weakly_canonical(path, ec).string();
+  auto it = arrays_.find(key);
+  if (it == arrays_.end()) {
+    files_.push_back(path.string());
+    it = arrays_.emplace(key, std::array<std::shared_ptr<const RadDataArray>, 3>{
+                                  std::make_shared<const RadDataArray>(readRadDataFile(path, p.loc))}).first;
+  }
+  return it->second[0];
+}
+
+std::array<std::shared_ptr<const RadDataArray>, 3> FunctionFiles::picture(const std::string& name,
+                                                                          const RadPrimitive& p,
+                                                                          const std::filesystem::path& folder) {
+  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "picture");
+  std::error_code ec;
+  const std::string key = "picture:" + std::filesystem::weakly_canonical(path, ec).string();
+  auto it = arrays_.find(key);
+  if (it == arrays_.end()) {
+    files_.push_back(path.string());
+    std::array<RadDataArray, 3> rgb = readRadiancePicture(path);
+    std::array<std::shared_ptr<const RadDataArray>, 3> shared;
+    for (int c = 0; c < 3; ++c) shared[static_cast<size_t>(c)] = std::make_shared<const RadDataArray>(std::move(rgb[static_cast<size_t>(c)]));
+    it = arrays_.emplace(key, shared).first;
+  }
+  return it->second;
+}
+
+namespace {
+bool isDataPattern(const RadPrimitive& p) {
+  return (p.type == "brightdata" && p.strings.size() >= 3 && p.strings[2] != "source.cal") ||
+         p.type == "colordata" || p.type == "colorpict" || p.type == "mixdata" || p.type == "mixpict";
+}
+}  // namespace
+
 bool isFunctionPattern(const RadPrimitive& p) {
   return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
-         (p.type == "mixfunc" && p.strings.size() >= 4);
+         (p.type == "mixfunc" && p.strings.size() >= 4) || isDataPattern(p);
 }
+
+bool isMixture(const RadPrimitive& p) { return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict"; }
+
+namespace {
+
+// brightdata, colordata, colorpict, mixdata, mixpict (Radiance's p_data.c and mx_data.c): the
+// functions called with the looked-up value(s), the data (files or a picture), the function file,
+// one coordinate a dimension (a picture: u v), then the transform.
+ScenePattern readDataPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                             ScenePattern sp, int index) {
+  const std::string what = p.type + " '" + p.name + "'";
+  const bool mixture = p.type == "mixdata" || p.type == "mixpict";
+  const bool picture = p.type == "colorpict" || p.type == "mixpict";
+  const bool colour = p.type == "colordata" || p.type == "colorpict";
+  const size_t first = mixture ? 2 : 0;                       // the first value function
+  const size_t nFunctions = colour ? 3 : 1;
+  const size_t nData = p.type == "colordata" ? 3 : 1;
+  const size_t dataAt = first + nFunctions, fileAt = dataAt + nData;
+  auto need = [&](size_t n, const char* layout) {
+    if (p.strings.size() < n)
+      throw InputError(p.loc, what + " needs " + std::to_string(n) + " or more string arguments (" + layout +
+                                  "), got " + std::to_string(p.strings.size()));
+  };
+  static const std::map<std::string, const char*> kLayout = {
+      {"brightdata", "func datafile funcfile x1 .. xn [transform]"},
+      {"colordata", "rfunc gfunc bfunc rdatafile gdatafile bdatafile funcfile x1 .. xn [transform]"},
+      {"colorpict", "rfunc gfunc bfunc pictfile funcfile u v [transform]"},
+      {"mixdata", "foreground background func datafile funcfile x1 .. xn [transform]"},
+      {"mixpict", "foreground background func pictfile funcfile u v [transform]"}};
+  need(fileAt + 1, kLayout.at(p.type));
+  files.load(p.strings[fileAt], p, folder);
+  if (picture) {
+    sp.data = files.picture(p.strings[dataAt], p, folder);
+    sp.picture = true;
+  } else {
+    for (size_t k = 0; k < nData; ++k) sp.data[k] = files.data(p.strings[dataAt + k], p, folder);
+    for (size_t k = 1; k < nData; ++k)
+      if (sp.data[k]->dimensions() != sp.data[0]->dimensions())
+        throw InputError(p.loc, what + ": its data files have different numbers of dimensions");
+  }
+  const size_t dims = picture ? 2 : static_cast<size_t>(sp.data[0]->dimensions());
+  need(fileAt + 1 + dims, kLayout.at(p.type));
+  for (size_t k = 0; k < dims; ++k) {
+    const std::string& expression = p.strings[fileAt + 1 + k];
+    const std::string label = "`pattern" + std::to_string(index) + ".x" + std::to_string(k);
+    try {
+      sp.coordinates.push_back(files.program()->addExpression(expression, label, p.loc));
+    } catch (const InputError& e) {
+      throw InputError(p.loc, what + ": its coordinate '" + expression + "' is not an expression: " + e.message());
+    }
+    files.program()->check(label, -1, p.loc, expression);
+  }
+  RadTransform toWorld;
+  const size_t end = parseRadTransform(p.strings, fileAt + 1 + dims, toWorld, p.loc, what);
+  if (end != p.strings.size())
+    throw InputError(p.loc, what + ": '" + p.strings[end] + "' is not a coordinate or a transform option (the data " +
+                                "have " + std::to_string(dims) + " dimensions)");
+  sp.toFunction = toWorld.inverse();
+  sp.toWorld = toWorld;
+  sp.functionScale = std::abs(toWorld.scale);
+  // The value functions: names of functions taking the looked-up value(s).
+  const int args = nData == 3 || picture ? 3 : 1;
+  sp.channels = static_cast<int>(nFunctions);
+  for (size_t k = 0; k < nFunctions; ++k) {
+    const std::string& name = p.strings[first + k];
+    if (!cal::isName(name))
+      throw InputError(p.loc, what + ": '" + name + "' must name a function of " + std::to_string(args) +
+                                  (args == 1 ? " argument" : " arguments"));
+    files.program()->check(name, args, p.loc);
+    sp.functions[k] = files.program()->find(name);
+  }
+  return sp;
+}
+
+}  // namespace
 
 ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
                                  int index, int next, int part) {
@@ -41,6 +155,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.reals = p.reals;
   sp.args = p.reals;
   sp.next = next;
+  if (isDataPattern(p)) return readDataPattern(p, files, folder, std::move(sp), index);
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
   // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.

@@ -32,17 +32,27 @@ class FunctionFiles {
   // Reads function file `name` (named by p; "." is none) into the program unless read before;
   // returns the path used ("" for ".").
   std::string load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder);
+  // A data file (.dat) or the three channels of a picture (.hdr) named by p, read once.
+  std::shared_ptr<const RadDataArray> data(const std::string& name, const RadPrimitive& p,
+                                           const std::filesystem::path& folder);
+  std::array<std::shared_ptr<const RadDataArray>, 3> picture(const std::string& name, const RadPrimitive& p,
+                                                             const std::filesystem::path& folder);
   // The files read, in order (for summary.json).
   const std::vector<std::string>& files() const { return files_; }
 
  private:
   std::shared_ptr<cal::Program> program_;
   std::map<std::string, bool> loaded_;
+  std::map<std::string, std::array<std::shared_ptr<const RadDataArray>, 3>> arrays_;
   std::vector<std::string> files_;
 };
 
-// Whether p is a brightfunc, colorfunc or mixfunc candela evaluates with the function language.
+// Whether p is a pattern or mixture candela evaluates with the function language: brightfunc,
+// colorfunc, mixfunc, and the data types brightdata (but source.cal's: engine/source_distribution.h),
+// colordata, colorpict, mixdata, mixpict.
 bool isFunctionPattern(const RadPrimitive& p);
+// Whether p is a mixture of two materials (mixfunc, mixdata, mixpict).
+bool isMixture(const RadPrimitive& p);
 
 // The pattern p describes, its expressions added to files.program() and checked (every name they
 // reach defined, each used as it is defined): an InputError at p's line otherwise. `index` is the

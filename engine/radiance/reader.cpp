@@ -307,7 +307,7 @@ class SceneReader::Builder {
         fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not a pattern defined before use");
       try {
         const int index = static_cast<int>(scene_.patterns.size());
-        if (p.type == "mixfunc") return addMixture(p, index);
+        if (isMixture(p)) return addMixture(p, index);
         scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, patternAlong(p.modifier)));
         scene_.functions = functionFiles_.program();
         scene_.functionFiles = functionFiles_.files();
@@ -318,7 +318,7 @@ class SceneReader::Builder {
         if (options_.patterns == PatternPolicy::kRefuse) {
           // Kept until something uses the pattern (the message names the file that failed).
           deferred_.insert_or_assign(p.name, InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
-                                                               (p.type == "mixfunc" ? "s it mixes" : " it modifies") +
+                                                               (isMixture(p) ? "s it mixes" : " it modifies") +
                                                                " unmodified, with a warning"));
           materials_.erase(p.name);
           patterns_.erase(p.name);

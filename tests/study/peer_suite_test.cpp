@@ -37,21 +37,21 @@ struct Outcome {
 
 const std::map<std::string, Outcome>& expectedOutcomes() {
   static const std::map<std::string, Outcome> table = {
-      {"combined", {"colorpict 'sunset_pat' (sunset.hdr)", "mesh 'dielectric.vase' names a Radiance compiled mesh (vase.rtm)"}},
-      {"dielectric", {"colorpict 'vase_pat' (vase.hdr)", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
-      {"glass", {"colorpict 'sunset_pat' (sunset.hdr)", "loads; no reference"}},
+      {"combined", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "mesh 'dielectric.vase' names a Radiance compiled mesh (vase.rtm)"}},
+      {"dielectric", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
+      {"glass", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
       {"inst", {"instance 'porsche #1' places a Radiance octree (porsche.octf)", ""}},
       {"mesh", {"mesh 'plainclothes.0.woman' names a Radiance compiled mesh (woman.rtm)", ""}},
       {"mirror", {"primitive type 'antimatter' is not supported", ""}},
       {"mist", {"loads; no reference", ""}},
       {"mixtex", {"texfunc 'bumpy_func' (its function written inline)", "primitive type 'aBSDF' is not supported"}},
       {"patterns", {"colortext 'textpat' (helvet.fnt)", "disagrees: point 1"}},
-      {"prism1", {"colorpict 'vase_pat' (vase.hdr)", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
-      {"prism2", {"colorpict 'vase_pat' (vase.hdr)", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
+      {"prism1", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
+      {"prism2", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
       {"spectra", {"spectrum 'gold_spec'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
-      {"tfunc", {"colorpict 'sunset_pat' (sunset.hdr)", "primitive type 'transfunc' is not supported"}},
+      {"tfunc", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "primitive type 'transfunc' is not supported"}},
       {"trans", {"mixtext 'plas2_text' (helvet.fnt)", "primitive type 'plasfunc' is not supported"}},
-      {"trans2", {"colorpict 'sunset_pat' (sunset.hdr)", "loads; no reference"}},
+      {"trans2", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
       {"wgmdf", {"primitive type 'WGMDfunc' is not supported", ""}},
   };
   return table;

@@ -126,6 +126,49 @@ TEST(FunctionPatterns, MixtureByPositionOfTwoMaterials) {
   expectDownward(sc, 0.5 * 10000.0, "striped mixture", 16384);
 }
 
+// Data patterns (Radiance's p_data.c, mx_data.c): the data at the point the coordinates give,
+// passed to the named functions. A 1-D array rising linearly from 0.2 to 0.6 over frac(Px), a
+// stripe width of 5 cm, averages 0.4 on the floor; colordata gives each channel its own file; a
+// mixdata coefficient of 0.25 mixes a quarter of white plastic with void.
+TEST(FunctionPatterns, DataPatternsLookUpTheirFilesAtTheCoordinates) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "data");
+  std::ofstream(dir / "ramp.dat") << "1\n0 1 2\n0.2 0.6\n";
+  std::ofstream(dir / "one.dat") << "1\n0 1 2\n1 1\n";
+  std::ofstream(dir / "half.dat") << "1\n0 1 2\n.5 .5\n";
+  std::ofstream(dir / "quarter.dat") << "1\n0 1 2\n.25 .25\n";
+  Scene ramp = readIn(dir, std::string("void brightdata p 4 noop ramp.dat . frac(Px/.05) 0 0\n"
+                                       "p plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(ramp);
+  expectDownward(ramp, 0.4 * 0.5 * 10000.0, "brightdata ramp", 16384);
+  Scene colour = readIn(dir, std::string("void colordata p 8 red green blue one.dat half.dat ramp.dat . frac(Px)\n0 0\n"
+                                         "p plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(colour);
+  // Red 1, green 0.5, blue 0.4 on average (red(r, g, b) = r, ...).
+  expectDownward(colour, (kWeightR + 0.5 * kWeightG + 0.4 * kWeightB) * 0.5 * 10000.0, "colordata", 16384);
+  Scene mix = readIn(dir, std::string("void plastic white 0 0 5 .8 .8 .8 0 0\n"
+                                      "void mixdata f 6 white void noop quarter.dat . frac(Py)\n0 0\n") + kFloor);
+  addSky(mix);
+  expectDownward(mix, 0.25 * 0.8 * 10000.0, "mixdata 0.25", 16384);
+}
+
+// colorpict of a uniform picture (every pixel m = 128, e = 128: (128.5)·2^-8) on the floor,
+// looked up at (frac(Px), frac(Py)) inside the picture.
+TEST(FunctionPatterns, PicturePatternLooksUpTheImage) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "picture");
+  {
+    std::ofstream out(dir / "grey.hdr", std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n";
+    for (int k = 0; k < 16; ++k) out << char(128) << char(128) << char(128) << char(128);
+  }
+  Scene sc = readIn(dir, std::string("void colorpict p 7 red green blue grey.hdr . frac(Px) frac(Py)\n0 0\n"
+                                     "p plastic f 0 0 5 .5 .5 .5 0 0\n") + kFloor);
+  addSky(sc);
+  expectDownward(sc, 128.5 / 256.0 * 0.5 * 10000.0, "colorpict", 4096);
+  // The picture and data files are listed with the function files (summary.json).
+  ASSERT_EQ(sc.functionFiles.size(), 1u);
+  EXPECT_NE(sc.functionFiles[0].find("grey.hdr"), std::string::npos);
+}
+
 // Shadow rays through a mixture of glass and void blend what each lets through.
 TEST(FunctionPatterns, ShadowRaysThroughAMixtureBlendItsMaterials) {
   const fs::path dir = test_support::scratchDir("function_patterns", "mixture_glass");
@@ -175,8 +218,7 @@ TEST(FunctionPatterns, UnusedPatternsAreNotRefused) {
   // Used by a material a surface uses, it is refused at its own line, saying what used it.
   const std::string used = errorOf(dir, "void colorpict pic 7 r g b x.hdr p.cal u v 0 0\n", PatternPolicy::kRefuse,
                                    "pic plastic used 0 0 5 .5 .5 .5 0 0\nused");
-  EXPECT_NE(used.find("scene.rad:1: colorpict 'pic' (x.hdr) is a pattern, texture or mixture candela does not "
-                      "implement"),
+  EXPECT_NE(used.find("scene.rad:1: colorpict 'pic': function file 'p.cal' is not in the working directory"),
             std::string::npos)
       << used;
   EXPECT_NE(used.find("(used by plastic 'used' at line 2)"), std::string::npos) << used;
@@ -290,6 +332,20 @@ TEST(FunctionPatterns, PatternsOnDistantSources) {
                       kBlackFloor);
   const double sinA = std::sin(0.25 * kPi / 180.0);  // exact (the cap formula)
   expectLux(sun, at, up, 0.25 * 1e4 * kLumensPerWatt * kPi * sinA * sinA, "sun 0.25");
+}
+
+TEST(FunctionPatterns, DataPatternRefusals) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "data_refusals");
+  std::ofstream(dir / "two.dat") << "2\n0 1 2\n0 1 2\n1 1 1 1\n";
+  EXPECT_NE(errorOf(dir, "void brightdata p 4 noop two.dat . Px 0 0\n").find("needs 5 or more string arguments"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightdata p 5 Px+1 two.dat . Px Py 0 0\n").find("'Px+1' must name a function of 1 argument"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void colorpict p 7 red green blue none.hdr . Px Py 0 0\n")
+                .find("picture 'none.hdr' is not in the working directory"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brightdata p 5 noop /etc/passwd . Px Py 0 0\n").find("must be a name relative"),
+            std::string::npos);
 }
 
 }  // namespace
