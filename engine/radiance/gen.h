@@ -3,6 +3,7 @@
 // One line per generator; docs/engine.md, "Generators and functions", says what each reads.
 #pragma once
 
+#include "engine/radiance/function_patterns.h"
 #include "engine/radiance/generators.h"
 
 namespace candela {
@@ -13,6 +14,8 @@ std::vector<RadPrimitive> expandGenprism(const RadCommand& cmd, const RadExpandC
 std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext& ctx);   // gen_sky.cpp
 std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext& ctx); // gen_sky.cpp
 std::vector<RadPrimitive> expandGenrev(const RadCommand& cmd, const RadExpandContext& ctx);   // gen_rev.cpp
+std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandContext& ctx);  // gen_surf.cpp
+std::vector<RadPrimitive> expandGenworm(const RadCommand& cmd, const RadExpandContext& ctx);  // gen_worm.cpp
 
 // A primitive as a generator writes it (no integer arguments).
 // 6 parameters: a primitive's own fields.
@@ -22,6 +25,12 @@ RadPrimitive generatedPrimitive(const std::string& modifier, const std::string& 
 // Whether a file a command names may exist: true also when the system cannot look the name up
 // (too long, no permission), so that the reader, not a filesystem_error, says what is wrong.
 bool mayExist(const std::filesystem::path& p);
+
+// The options genrev, gensurf and genworm share, words[from..]: `-e expr` (definitions added to
+// files.program()), `-f file` (a function file, found as every file a scene names) and, where
+// `smooth` is given, `-s` (sets it); anything else is refused at the command's line.
+void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, size_t from, FunctionFiles& files,
+                         bool* smooth);
 
 // Refused above this many primitives from one command (about 300 bytes each once read).
 inline constexpr double kMaxGeneratedPrimitives = 1e7;

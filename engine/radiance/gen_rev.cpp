@@ -7,7 +7,6 @@
 // changes. With -s Radiance smooths the shading normals with a texfunc of rev.cal; candela writes
 // the same surfaces unsmoothed (the texture is not evaluated: docs/engine.md). The code is
 // candela's.
-#include "engine/radiance/function_patterns.h"
 #include "engine/radiance/gen.h"
 
 #include <algorithm>
@@ -27,27 +26,10 @@ std::vector<RadPrimitive> expandGenrev(const RadCommand& cmd, const RadExpandCon
   if (w.size() < 6) fail("usage: genrev material name 'z(t)' 'r(t)' nseg [-e expr] [-f file] [-s]");
   const std::string& mat = w[1];
   const std::string& name = w[2];
-  RadPrimitive self;  // for the function files' messages
-  self.type = "genrev";
-  self.name = name;
-  self.loc = cmd.loc;
   FunctionFiles files;
   cal::Program& program = *files.program();
-  for (size_t i = 6; i < w.size(); ++i) {
-    if (w[i] == "-s") continue;  // smoothing: not evaluated (above)
-    if ((w[i] == "-e" || w[i] == "-f") && i + 1 < w.size()) {
-      try {
-        if (w[i] == "-e") program.addText(w[i + 1], "-e");
-        else files.load(w[i + 1], self, ctx.folder);
-      } catch (const InputError& e) {
-        if (w[i] == "-f") throw;  // a file's own line
-        fail("-e '" + w[i + 1] + "': " + e.message());
-      }
-      ++i;
-      continue;
-    }
-    fail("unknown option '" + w[i] + "' (-e expr, -f file, -s)");
-  }
+  bool smooth = false;  // not evaluated (above)
+  readFunctionOptions(cmd, ctx, 6, files, &smooth);
   const FileLoc at = cmd.loc;
   cal::Symbol nName = -1;
   // z and r as functions of t: each expression the body of a definition with the parameter t.

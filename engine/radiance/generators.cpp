@@ -18,6 +18,8 @@ const std::map<std::string, Generator>& generators() {
       {"gensky", expandGensky},
       {"gendaylit", expandGendaylit},
       {"genrev", expandGenrev},
+      {"gensurf", expandGensurf},
+      {"genworm", expandGenworm},
   };
   return table;
 }
@@ -41,6 +43,34 @@ RadPrimitive generatedPrimitive(const std::string& modifier, const std::string& 
   p.strings = std::move(strings);
   p.reals = std::move(reals);
   return p;
+}
+
+void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, size_t from, FunctionFiles& files,
+                         bool* smooth) {
+  const std::vector<std::string>& w = cmd.words;
+  const std::string gen = w.empty() ? std::string("generator") : w[0];
+  RadPrimitive self;  // for the function files' messages
+  self.type = gen;
+  self.name = w.size() > 2 ? w[2] : std::string();
+  self.loc = cmd.loc;
+  for (size_t i = from; i < w.size(); ++i) {
+    if (w[i] == "-s" && smooth) {
+      *smooth = true;
+      continue;
+    }
+    if ((w[i] == "-e" || w[i] == "-f") && i + 1 < w.size()) {
+      try {
+        if (w[i] == "-e") files.program()->addText(w[i + 1], "-e");
+        else files.load(w[i + 1], self, ctx.folder);
+      } catch (const InputError& e) {
+        if (w[i] == "-f") throw;  // a file's own line
+        throw InputError(cmd.loc, gen + ": -e '" + w[i + 1] + "': " + e.message());
+      }
+      ++i;
+      continue;
+    }
+    throw InputError(cmd.loc, gen + ": unknown option '" + w[i] + "' (-e expr, -f file" + (smooth ? ", -s)" : ")"));
+  }
 }
 
 bool mayExist(const std::filesystem::path& p) {

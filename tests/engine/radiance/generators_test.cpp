@@ -5,6 +5,7 @@
 #include "engine/radiance/gen.h"
 #include "engine/radiance/generators.h"
 #include "engine/radiance/reader.h"
+#include "engine/scene.h"
 #include "tests/support/peer_suite.h"
 
 #include <gtest/gtest.h>
@@ -685,6 +686,7 @@ TEST(Genprism, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genprism m p /etc/passwd"), "vertex file '/etc/passwd' must be a name relative");
 }
 
+
 }  // namespace
 }  // namespace candela
 
@@ -753,6 +755,97 @@ TEST(Genrev, BadCommandsAreRefusedAtTheirLine) {
   EXPECT_NE(errorOf([] { run("!genrev m x f(t) 1 2"); }).find("'f'"), std::string::npos);
   // Definitions from -e.
   EXPECT_EQ(run("!genrev m x 'h*t' 1 2 -e 'h = 3'")[1].reals[5], 3.0);
+}
+
+
+// gensurf: the Newell vector (twice the area along the normal) of a generated polygon.
+Vec3 areaVector(const RadPrimitive& p) {
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i + 2 < p.reals.size(); i += 3) pts.emplace_back(p.reals[i], p.reals[i + 1], p.reals[i + 2]);
+  return 0.5 * newellNormal(pts);
+}
+
+// A flat unit square in 2 × 3 cells: six quadrilaterals name.1 … name.6, facing +z (∂/∂s × ∂/∂t
+// = x × y), their areas summing to 1.
+TEST(Gensurf, FlatSquareInQuadrilateralsByTheRightHandRule) {
+  const auto ps = run("!gensurf m sq s t 0 2 3");
+  ASSERT_EQ(ps.size(), 6u);
+  Vec3 sum(0.0);
+  for (size_t i = 0; i < ps.size(); ++i) {
+    EXPECT_EQ(ps[i].name, "sq." + std::to_string(i + 1));
+    EXPECT_EQ(ps[i].type, "polygon");
+    EXPECT_EQ(ps[i].reals.size(), 12u);
+    sum += areaVector(ps[i]);
+  }
+  expectVec(sum, Vec3(0, 0, 1), 1e-12);
+}
+
+// A cylinder of radius 1 and height 1 in 64 facets: the inscribed prism's lateral area
+// 64 · 2 sin(π/64), each facet a planar quadrilateral facing outwards.
+TEST(Gensurf, CylinderIsTheInscribedPrism) {
+  const auto ps = run("!gensurf m cyl 'cos(2*PI*t)' 'sin(2*PI*t)' s 1 64");
+  ASSERT_EQ(ps.size(), 64u);
+  double area = 0.0;
+  for (const RadPrimitive& p : ps) {
+    const Vec3 a = areaVector(p);
+    area += glm::length(a);
+    const Vec3 centre(p.reals[0] + p.reals[6], p.reals[1] + p.reals[7], 0.0);
+    EXPECT_LT(glm::dot(a, centre), 0.0) << p.name;  // s × t = z × tangent: inwards, as gensurf's rule gives
+  }
+  EXPECT_NEAR(area, 64.0 * 2.0 * std::sin(kPi / 64.0), 1e-9);
+}
+
+// A saddle z = s·t in one cell is not planar: two triangles, (p0 p1 p2) and (p2 p1 p3) of the
+// cell's corners, whose areas are those of the triangles (1,0,0) (1,1,1) (0,0,0) and
+// (0,0,0) (1,1,1) (0,1,0): √3/2 · … computed here from the corners.
+TEST(Gensurf, NonPlanarCellsAreTwoTrianglesAndValidLeavesPointsOut) {
+  const auto ps = run("!gensurf m saddle s t s*t 1 1");
+  ASSERT_EQ(ps.size(), 2u);
+  EXPECT_EQ(ps[0].reals.size(), 9u);
+  EXPECT_EQ(ps[1].name, "saddle.2");
+  const Vec3 a(1, 0, 0), b(1, 1, 1), c(0, 0, 0), d(0, 1, 0);
+  const double want = 0.5 * glm::length(glm::cross(b - a, c - a)) + 0.5 * glm::length(glm::cross(b - c, d - c));
+  EXPECT_NEAR(glm::length(areaVector(ps[0])) + glm::length(areaVector(ps[1])), want, 1e-12);
+  // valid(s, t) > 0 only for s < 0.75: of the rows s = 0, 0.5, 1 the last is left out.
+  EXPECT_EQ(run("!gensurf m v s t 0 2 3 -e 'valid(s,t) = .75 - s'").size(), 3u);
+}
+
+TEST(Gensurf, DataFileAndBounds) {
+  // z from a data file of (m+1)(n+1) = 6 corner values, all 2: the square lifted to z = 2.
+  const auto ps = run("!gensurf m d s t surf.dat 1 2");
+  ASSERT_EQ(ps.size(), 2u);
+  for (size_t k = 2; k < ps[0].reals.size(); k += 3) EXPECT_DOUBLE_EQ(ps[0].reals[k], 2.0);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 10000 10000"); }).find("more than 10^7"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 0 3"); }).find("m must be a whole number"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 2"); }).find("x.rad:3: gensurf: usage"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s 't+' 0 2 2"); }).find("y(s,t) 't+' is not an expression"),
+            std::string::npos);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t surf.dat 2 2"); }).find("holds 6 values"), std::string::npos);
+}
+
+// genworm: spheres at the points, cylinders where the radius stays, and where it changes a cone
+// tangent to both spheres: in the plane of the axis, its slant line lies at each sphere's radius
+// from the sphere's centre.
+TEST(Genworm, SpheresJoinedByCylindersAndTangentCones) {
+  const auto straight = run("!genworm m w t 0 0 .1 4");
+  ASSERT_EQ(straight.size(), 9u);
+  EXPECT_EQ(straight[0].name, "w.s0");
+  EXPECT_EQ(straight[1].name, "w.c1");
+  EXPECT_EQ(straight[1].type, "cylinder");
+  EXPECT_EQ(straight[8].name, "w.s4");
+  const auto cone = run("!genworm m k t 0 0 '.2-.1*t' 1");
+  ASSERT_EQ(cone.size(), 3u);
+  const RadPrimitive& c = cone[1];
+  ASSERT_EQ(c.type, "cone");
+  // The slant line through (x0, r0) and (x1, r1) in the (x, ρ) plane.
+  const double x0 = c.reals[0], x1 = c.reals[3], r0 = c.reals[6], r1 = c.reals[7];
+  auto distance = [&](double x) {
+    return std::abs((r1 - r0) * x - (x1 - x0) * 0.0 + x1 * r0 - r1 * x0) / std::hypot(r1 - r0, x1 - x0);
+  };
+  EXPECT_NEAR(distance(0.0), 0.2, 1e-12);
+  EXPECT_NEAR(distance(1.0), 0.1, 1e-12);
+  EXPECT_NE(errorOf([] { run("!genworm m w t 0 0 '-1' 2"); }).find("r(t) is negative"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!genworm m w t 0 0 1 2.5"); }).find("whole number"), std::string::npos);
 }
 
 }  // namespace

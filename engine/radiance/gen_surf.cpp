@@ -1,0 +1,203 @@
+// gensurf(1), interpreted: `gensurf mat name 'x(s,t)' 'y(s,t)' 'z(s,t)' m n [-e expr] [-f file] [-s]`,
+// the parametric surface (x, y, z)(s, t), s and t from 0 to 1 in m and n steps, as m·n cells each
+// written as a quadrilateral when its two triangles are coplanar and as the triangles otherwise,
+// the normal by the right-hand rule on (s, t), the cells alternating their diagonal, a function
+// `valid(s, t)` (when defined) leaving out the points where it is not positive. The z argument
+// (or all three when they name the same file) may name a data file of m+1 by n+1 values (or m by
+// n cell centres; triplets when all three), interpolated bilinearly. Primitives, names
+// (name.1, name.2, … in order) and the rules above are those of Radiance's src/gen/gensurf.c
+// (facts of its output); -s smooths the shading in Radiance with a texfunc, candela writes the
+// same surfaces unsmoothed (docs/engine.md); the code is candela's.
+#include "base/input_file.h"
+#include "engine/radiance/file_lookup.h"
+#include "engine/radiance/gen.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace candela {
+namespace {
+
+constexpr double kTiny = 1e-6;  // gensurf.c's FTINY
+constexpr long kMaxSide = 1000000;
+
+struct Point {
+  bool valid = false;
+  Vec3 p{0.0};
+};
+
+// A data file's values in place of the functions (gensurf.c's loaddata and l_dataval).
+struct SurfaceData {
+  long m = 0, n = 0;  // the grid's points along s and t
+  int size = 1;       // values a point: 1 (z) or 3 (x, y, z)
+  bool border = true; // values at the cells' corners (m+1 by n+1), else at their centres
+  std::vector<double> values;
+
+  double value(double u, double v, int component) const {
+    long i, j;
+    if (border) {
+      u *= static_cast<double>(m - 1);
+      v *= static_cast<double>(n - 1);
+    } else {
+      u = u * static_cast<double>(m) - 0.5;
+      v = v * static_cast<double>(n) - 0.5;
+    }
+    i = static_cast<long>(u);
+    j = static_cast<long>(v);
+    i = std::clamp(i, 0L, m - 2);
+    j = std::clamp(j, 0L, n - 2);
+    auto at = [&](long a, long b) { return values[static_cast<size_t>((b * m + a) * size + component)]; };
+    const double d00 = at(i, j), d01 = at(i + 1, j), d10 = at(i, j + 1), d11 = at(i + 1, j + 1);
+    return (static_cast<double>(j + 1) - v) * ((static_cast<double>(i + 1) - u) * d00 + (u - static_cast<double>(i)) * d01) +
+           (v - static_cast<double>(j)) * ((static_cast<double>(i + 1) - u) * d10 + (u - static_cast<double>(i)) * d11);
+  }
+};
+
+}  // namespace
+
+std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandContext& ctx) {
+  const std::vector<std::string>& w = cmd.words;
+  auto fail = [&](const std::string& msg) -> void { throw InputError(cmd.loc, "gensurf: " + msg); };
+  if (w.size() < 8) fail("usage: gensurf material name 'x(s,t)' 'y(s,t)' 'z(s,t)' m n [-e expr] [-f file] [-s]");
+  const std::string& mat = w[1];
+  const std::string& name = w[2];
+  auto count = [&](const std::string& word, const char* what) {
+    char* end = nullptr;
+    const long v = std::strtol(word.c_str(), &end, 10);
+    if (end == word.c_str() || *end != '\0' || v < 1 || v > kMaxSide)
+      fail(std::string(what) + " must be a whole number from 1 to " + std::to_string(kMaxSide) + ", got '" + word + "'");
+    return v;
+  };
+  const long m = count(w[6], "m"), n = count(w[7], "n");
+  if (2.0 * static_cast<double>(m) * static_cast<double>(n) > kMaxGeneratedPrimitives)
+    fail("m × n = " + std::to_string(m) + " × " + std::to_string(n) + " cells would make up to " +
+         std::to_string(2 * m * n) + " polygons, more than 10^7");
+  FunctionFiles files;
+  cal::Program& program = *files.program();
+  bool smooth = false;  // written unsmoothed (above)
+  readFunctionOptions(cmd, ctx, 8, files, &smooth);
+  // Data: z names a file (all three the same file: triplets).
+  std::optional<SurfaceData> data;
+  std::filesystem::path dataPath;
+  try {
+    dataPath = findSceneFile(w[5], ctx.folder, cmd.loc, "gensurf", "data file");
+  } catch (const InputError&) {
+    dataPath.clear();  // an expression
+  }
+  if (!dataPath.empty()) {
+    SurfaceData d;
+    d.size = w[3] == w[5] && w[4] == w[5] ? 3 : 1;
+    std::istringstream in(readInputFile(dataPath, "gensurf data file"));
+    std::string word;
+    while (in >> word) {
+      char* end = nullptr;
+      const double v = std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0' || !std::isfinite(v))
+        fail("data file '" + w[5] + "': '" + word.substr(0, 40) + "' is not a number");
+      if (d.values.size() > static_cast<size_t>((m + 1) * (n + 1) * d.size)) break;
+      d.values.push_back(v);
+    }
+    const size_t corners = static_cast<size_t>((m + 1) * (n + 1) * d.size), centres = static_cast<size_t>(m * n * d.size);
+    d.border = d.values.size() == corners;
+    d.m = d.border ? m + 1 : m;
+    d.n = d.border ? n + 1 : n;
+    if ((d.values.size() != corners && d.values.size() != centres) || d.m < 2 || d.n < 2)
+      fail("data file '" + w[5] + "' holds " + std::to_string(d.values.size()) + " values; " + std::to_string(m) +
+           " × " + std::to_string(n) + " cells need " + std::to_string(corners) + " (corners) or " +
+           std::to_string(centres) + " (centres)");
+    data = std::move(d);
+  }
+  static const char* const kName[] = {"`gensurf.x", "`gensurf.y", "`gensurf.z"};
+  static const char* const kWhat[] = {"x(s,t)", "y(s,t)", "z(s,t)"};
+  const int functions = !data ? 3 : data->size == 3 ? 0 : 2;
+  for (int k = 0; k < functions; ++k) {
+    try {
+      program.addText(std::string(kName[k]) + "(s, t) = " + w[3 + static_cast<size_t>(k)] + ";", "-");
+    } catch (const InputError& e) {
+      fail(std::string(kWhat[k]) + " '" + w[3 + static_cast<size_t>(k)] + "' is not an expression: " + e.message());
+    }
+    program.check(kName[k], 2, cmd.loc, w[3 + static_cast<size_t>(k)]);
+  }
+  // valid(s, t), when the options define it as a function of two arguments.
+  bool checkValid = false;
+  if (program.find("valid") >= 0) {
+    try {
+      program.check("valid", 2, cmd.loc);
+      checkValid = true;
+    } catch (const InputError&) {
+      checkValid = false;
+    }
+  }
+  cal::Evaluator eval(program);
+  cal::Symbol f[3] = {-1, -1, -1};
+  for (int k = 0; k < functions; ++k) f[k] = program.find(kName[k]);
+  const cal::Symbol validF = checkValid ? program.find("valid") : -1;
+  auto row = [&](long i, std::vector<Point>& out) {
+    out.assign(static_cast<size_t>(n + 1), Point{});
+    for (long j = 0; j <= n; ++j) {
+      const double st[] = {static_cast<double>(i) / static_cast<double>(m), static_cast<double>(j) / static_cast<double>(n)};
+      eval.begin({});
+      if (checkValid && !(eval.call(validF, st) > 0.0)) continue;
+      Point& pt = out[static_cast<size_t>(j)];
+      for (int k = 0; k < 3; ++k) {
+        double v;
+        if (k < functions) {
+          eval.begin({});
+          v = eval.call(f[k], st);
+        } else {
+          v = data->value(st[0], st[1], data->size == 3 ? k : 0);
+        }
+        if (!std::isfinite(v))
+          fail(std::string(kWhat[k]) + " is not a finite number at s = " + std::to_string(st[0]) + ", t = " +
+               std::to_string(st[1]));
+        pt.p[k] = v;
+      }
+      pt.valid = true;
+    }
+  };
+  std::vector<RadPrimitive> out;
+  long serial = 0;
+  auto polygon = [&](std::initializer_list<Vec3> vs) {
+    std::vector<double> reals;
+    for (const Vec3& v : vs) reals.insert(reals.end(), {v.x, v.y, v.z});
+    out.push_back(generatedPrimitive(mat, "polygon", name + "." + std::to_string(++serial), cmd.loc, {}, std::move(reals)));
+  };
+  // One cell: the triangles (p0, p1, p2) and (p2, p1, p3), or the quadrilateral p0 p1 p3 p2 when
+  // their normals agree.
+  auto cell = [&](const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
+    Vec3 n1(0.0), n2(0.0);
+    bool ok1 = p0.valid && p1.valid && p2.valid, ok2 = p1.valid && p2.valid && p3.valid;
+    if (ok1) {
+      n1 = glm::cross(p1.p - p0.p, p2.p - p0.p);
+      const double l = glm::length(n1);
+      ok1 = l > 0.0;
+      if (ok1) n1 /= l;
+    }
+    if (ok2) {
+      n2 = glm::cross(p2.p - p3.p, p1.p - p3.p);
+      const double l = glm::length(n2);
+      ok2 = l > 0.0;
+      if (ok2) n2 /= l;
+    }
+    if (ok1 && ok2 && glm::dot(n1, n2) >= 1.0 - kTiny * kTiny) return polygon({p0.p, p1.p, p3.p, p2.p});
+    if (ok1) polygon({p0.p, p1.p, p2.p});
+    if (ok2) polygon({p2.p, p1.p, p3.p});
+  };
+  std::vector<Point> row0, row1;
+  row(0, row1);
+  for (long i = 0; i < m; ++i) {
+    row0.swap(row1);
+    row(i + 1, row1);
+    for (long j = 0; j < n; ++j) {
+      const size_t a = static_cast<size_t>(j), b = static_cast<size_t>(j + 1);
+      bool orient = (j & 1) != 0;
+      if (!(row0[a].valid && row1[b].valid)) orient = true;
+      else if (!(row1[a].valid && row0[b].valid)) orient = false;
+      if (orient) cell(row0[a], row1[a], row0[b], row1[b]);
+      else cell(row1[a], row1[b], row0[a], row0[b]);
+    }
+  }
+  return out;
+}
+
+}  // namespace candela
