@@ -24,6 +24,8 @@ struct Hit {
   Vec3 inDir{0.0};   // direction of the ray that arrived
   Vec3 ng{0.0};      // geometric normal
   Vec3 nf{0.0};      // normal facing the incoming ray
+  Vec3 ns{0.0};      // shading normal: nf, turned by a texture's perturbation (textured)
+  bool textured = false;
   bool front = true; // the ray arrived on the side of ng
   double off = 0.0;  // origin offset (Tracer::originOffset)
   uint32_t flatSkip = kNoShape;  // the shape when flat (rays leaving it skip it), or kNoShape
@@ -107,7 +109,8 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
 // count as bounces.
 Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
   Vec3 out(0.0);
-  if (!familyOf(m).sampleLobe(m, v.inDir, v.nf, ctx.rng, out)) return Rgb(0.0);
+  if (!familyOf(m).sampleLobe(m, v.inDir, v.ns, ctx.rng, out)) return Rgb(0.0);
+  if (v.textured && glm::dot(out, v.nf) <= 0.0) return Rgb(0.0);  // turned below the surface
   const TallyFactor tf(ctx.tally, m.specularReflectance);
   PathState next;
   next.skip = v.flatSkip;
@@ -163,18 +166,22 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
 // transmission (trans), which keeps its direction.
 Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st) {
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
-  const Vec3 nf = v.nf;
-  const Vec3 xf = v.x + v.off * nf, xb = v.x - v.off * nf;
+  // Directions by the shading normal (a texture turns it, as Radiance's raynormal); the points
+  // off the surface by the geometric one. A textured surface is no skip for its own rays: what
+  // the turned normal sends below the surface meets the surface itself.
+  const Vec3 nf = v.ns;
+  const Vec3 xf = v.x + v.off * v.nf, xb = v.x - v.off * v.nf;
+  const uint32_t self = v.textured ? kNoShape : v.flatSkip;
   const int k = std::max(1, st.split);
   Rgb out(0.0);
   // Light reflected (and diffusely transmitted) from the sampled sources.
   if (photopic(rho) > 0.0) {
     const TallyFactor tf(ctx.tally, rho * kInvPi);
-    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, v.flatSkip}, k, nullptr, 1.0);
+    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self}, k, nullptr, 1.0);
   }
   if (photopic(tauD) > 0.0) {
     const TallyFactor tf(ctx.tally, tauD * kInvPi);
-    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, v.flatSkip}, k, nullptr, 1.0);
+    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self}, k, nullptr, 1.0);
   }
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
@@ -185,7 +192,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   if (pRho + pTd + pTs + pSp <= 0.0) return out;
   const Strata2D strata(k, 1.0 / kPi);
   PathState bounce;  // a diffuse continuation: cosine-sampled, sources sampled here
-  bounce.skip = v.flatSkip;
+  bounce.skip = self;
   bounce.diffuse = st.diffuse + 1;
   bounce.lighting = true;
   Rgb acc(0.0);
@@ -194,6 +201,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
     const double u = ctx.rng.uniform() * norm;
     if (u < pRho) {
       const Vec3 dir = Frame::fromNormal(nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      if (v.textured && glm::dot(dir, v.nf) <= 0.0) continue;  // turned below the surface
       const TallyFactor tf(ctx.tally, rho * (norm / pRho / k));
       bounce.misCosPdf = glm::dot(dir, nf) * kInvPi;
       bounce.litPoint = xf;
@@ -202,6 +210,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       acc += rho * (norm / pRho) * pathRadiance(ctx, xf, dir, bounce);
     } else if (u < pRho + pTd) {
       const Vec3 dir = Frame::fromNormal(-nf).toWorld(sampleCosineHemisphere(u12.x, u12.y));
+      if (v.textured && glm::dot(dir, v.nf) >= 0.0) continue;  // turned above the surface
       const TallyFactor tf(ctx.tally, tauD * (norm / pTd / k));
       bounce.misCosPdf = -glm::dot(dir, nf) * kInvPi;
       bounce.litPoint = xb;
@@ -278,6 +287,11 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       st.skip = v.flatSkip;
       continue;
     }
+    v.ns = v.nf;
+    if (m->perturbation != Vec3(0.0)) {  // a texture turns the shading normal
+      v.ns = shadingNormal(v.nf, v.front ? m->perturbation : -m->perturbation);
+      v.textured = true;
+    }
     const MaterialFamily& family = familyOf(*m);
     switch (family.role()) {
       case HitRole::kEmit:
@@ -295,7 +309,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
-    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m)) {
+    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured) {
       if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
       PathState miss = st;
       miss.split = 1;

@@ -123,16 +123,20 @@ Rgb specularSplit(CameraRay& cr, const Rgb& wa, const Vec3& oa, const Vec3& da, 
 // Light leaving a plastic, metal or trans surface at x towards the camera ray d: the diffuse
 // parts from irradiance estimates, the straight-on transmission followed, the glossy lobe
 // sampled. The decomposition is diffuseVertex's (engine/integrator_path.cpp), term by term.
-Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3& d, const Vec3& nf, double off,
-                    uint32_t flatSkip, double share, int events) {
+// 10 parameters: the hit (material, point, direction, both normals, offset, shape) and the
+// camera ray's state (its share and events).
+Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3& d, const Vec3& nf, const Vec3& ns,
+                    double off, uint32_t flatSkip, double share, int events) {
   const Tracer& tracer = cr.ctx.tracer;
+  // Light received on the shading normal ns (a texture turns it), the points off the surface by nf.
+  const bool textured = ns != nf;
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   Rgb out(0.0);
   if (photopic(m.diffuseReflectance) > 0.0)
-    out += m.diffuseReflectance * kInvPi * tracer.irradiance(xf, nf, cr.nextStream++, cr.irradianceSettings).irradiance;
+    out += m.diffuseReflectance * kInvPi * tracer.irradiance(xf, ns, cr.nextStream++, cr.irradianceSettings).irradiance;
   if (photopic(m.diffuseTransmittance) > 0.0)
     out += m.diffuseTransmittance * kInvPi *
-           tracer.irradiance(xb, -nf, cr.nextStream++, cr.irradianceSettings).irradiance;
+           tracer.irradiance(xb, -ns, cr.nextStream++, cr.irradianceSettings).irradiance;
   const double pTs = photopic(m.specularTransmittance);
   if (pTs > 0.0) out += m.specularTransmittance * cameraRadiance(cr, xb, d, flatSkip, share * pTs, events + 1);
   if (photopic(m.specularReflectance) > 0.0) {
@@ -145,7 +149,8 @@ Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3&
     Rgb sum(0.0);
     for (int k = 0; k < n; ++k) {
       Vec3 dir(0.0);
-      if (familyOf(m).sampleLobe(m, d, nf, cr.ctx.rng, dir)) sum += pathRadiance(cr.ctx, xf, dir, next);
+      if (familyOf(m).sampleLobe(m, d, ns, cr.ctx.rng, dir) && !(textured && glm::dot(dir, nf) <= 0.0))
+        sum += pathRadiance(cr.ctx, xf, dir, next);
     }
     out += m.specularReflectance * sum / static_cast<double>(n);
   }
@@ -215,7 +220,8 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   // plastic, metal, trans.
   if (cr.estimatesLeft < 2) return plainPath(cr, o, d, skip);
   cr.estimatesLeft -= 2;  // at most two estimates (front and back)
-  return surfaceRadiance(cr, *m, x, d, nf, off, flatSkip, share, events);
+  const Vec3 ns = m->perturbation != Vec3(0.0) ? shadingNormal(nf, front ? m->perturbation : -m->perturbation) : nf;
+  return surfaceRadiance(cr, *m, x, d, nf, ns, off, flatSkip, share, events);
 }
 
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.

@@ -50,6 +50,9 @@ struct ScenePattern {
   std::array<std::shared_ptr<const RadDataArray>, 3> data;
   std::vector<int32_t> coordinates;
   bool picture = false;
+  // texfunc, texdata: the three values perturb the surface normal (in the function's
+  // coordinates, turned to the world) instead of multiplying the colour.
+  bool texture = false;
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;

@@ -35,6 +35,10 @@ struct MaterialParameters {
   // hit (world, set by engine/materials/pattern_hook.h; zero until then).
   double roughnessV = 0.0;
   Vec3 anisotropyU{0.0};
+  // At a hit: the perturbation of the front normal by the textures modifying the material
+  // (texfunc, texdata: Radiance's r->pert, world), set by engine/materials/pattern_hook.h; zero
+  // elsewhere.
+  Vec3 perturbation{0.0};
   // The first of the patterns (Scene::patterns) holding the functions of the family's own
   // arguments, evaluated at each hit (MaterialFamily::atHit): plastic2's u direction; BRTDfunc's
   // specular reflectance, then (functions + 1) its specular transmittance. -1: none.

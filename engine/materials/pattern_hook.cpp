@@ -61,6 +61,10 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   for (int i = index; i >= 0;) {
     const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
+    if (sp.texture) {  // perturbs the normal (perturbation), no colour
+      i = sp.next;
+      continue;
+    }
     begin(sp, p);
     const bool data = !sp.coordinates.empty();
     if (sp.channels == 1) {
@@ -96,6 +100,23 @@ Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patt
   return c;
 }
 
+Vec3 PatternEvaluator::perturbation(int index, const PatternPoint& p) {
+  Vec3 sum(0.0);
+  for (int i = index; i >= 0;) {
+    const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
+    if (sp.kind != PatternKind::kFunction) break;
+    if (sp.texture) {
+      begin(sp, p);
+      Vec3 v(0.0);
+      for (int k = 0; k < 3; ++k) v[k] = sp.coordinates.empty() ? function(sp, k) : dataFunction(sp, k);
+      // Radiance's t_func.c: the displacement turned to the world, its scale taken out.
+      sum += sp.toWorld.direction(v) / sp.functionScale;
+    }
+    i = sp.next;
+  }
+  return sum;
+}
+
 Vec3 PatternEvaluator::direction(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
@@ -114,6 +135,7 @@ const Material& patterned(const Scene& scene, const Material& m, const PatternPo
     pc = glm::max(eval.colour(m.pattern, p), Rgb(0.0));
     out.color = m.color * pc;
     deriveMaterial(out);
+    out.perturbation = eval.perturbation(m.pattern, p);
   }
   if (m.functions >= 0) familyOf(m).atHit(m, p, pc, eval, out);
   return out;

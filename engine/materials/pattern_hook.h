@@ -30,6 +30,8 @@ class PatternEvaluator {
   double value(int index, const PatternPoint& p);
   // Pattern `index`'s three functions at p as a direction in the world (plastic2's u).
   Vec3 direction(int index, const PatternPoint& p);
+  // The sum of the perturbations of the textures along pattern `index`'s chain at p (world).
+  Vec3 perturbation(int index, const PatternPoint& p);
   // Pattern `index`'s three functions at p with the variables Radiance's BRTDfunc defines: NxP
   // NyP NzP and RdotP turned towards the ray, CrP CgP CbP the material's pattern colour.
   Rgb oriented(int index, const PatternPoint& p, const Rgb& patternColour);
@@ -56,6 +58,14 @@ constexpr double kDistantPointM = 1e10;
 inline int functionPatternOf(const Scene& scene, const MaterialParameters& m) {
   return m.pattern >= 0 && scene.patterns[static_cast<size_t>(m.pattern)].kind == PatternKind::kFunction ? m.pattern
                                                                                                       : -1;
+}
+
+// The shading normal: nf turned by the perturbation pert (both on the side the ray met), as
+// Radiance's raynormal; nf itself when they cancel.
+inline Vec3 shadingNormal(const Vec3& nf, const Vec3& pert) {
+  const Vec3 n = nf + pert;
+  const double l = glm::length(n);
+  return l > 1e-9 ? n / l : nf;
 }
 
 // Whether m's colour is modified by a function pattern (the hook has work to do).

@@ -59,13 +59,15 @@ std::array<std::shared_ptr<const RadDataArray>, 3> FunctionFiles::picture(const 
 namespace {
 bool isDataPattern(const RadPrimitive& p) {
   return (p.type == "brightdata" && p.strings.size() >= 3 && p.strings[2] != "source.cal") ||
-         p.type == "colordata" || p.type == "colorpict" || p.type == "mixdata" || p.type == "mixpict";
+         p.type == "colordata" || p.type == "colorpict" || p.type == "mixdata" || p.type == "mixpict" ||
+         p.type == "texdata";
 }
 }  // namespace
 
 bool isFunctionPattern(const RadPrimitive& p) {
   return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
-         (p.type == "mixfunc" && p.strings.size() >= 4) || isDataPattern(p);
+         (p.type == "mixfunc" && p.strings.size() >= 4) || (p.type == "texfunc" && p.strings.size() >= 4) ||
+         isDataPattern(p);
 }
 
 bool isMixture(const RadPrimitive& p) { return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict"; }
@@ -80,10 +82,11 @@ ScenePattern readDataPattern(const RadPrimitive& p, FunctionFiles& files, const 
   const std::string what = p.type + " '" + p.name + "'";
   const bool mixture = p.type == "mixdata" || p.type == "mixpict";
   const bool picture = p.type == "colorpict" || p.type == "mixpict";
-  const bool colour = p.type == "colordata" || p.type == "colorpict";
+  const bool colour = p.type == "colordata" || p.type == "colorpict" || p.type == "texdata";
   const size_t first = mixture ? 2 : 0;                       // the first value function
   const size_t nFunctions = colour ? 3 : 1;
-  const size_t nData = p.type == "colordata" ? 3 : 1;
+  const size_t nData = p.type == "colordata" || p.type == "texdata" ? 3 : 1;
+  sp.texture = p.type == "texdata";
   const size_t dataAt = first + nFunctions, fileAt = dataAt + nData;
   auto need = [&](size_t n, const char* layout) {
     if (p.strings.size() < n)
@@ -93,6 +96,7 @@ ScenePattern readDataPattern(const RadPrimitive& p, FunctionFiles& files, const 
   static const std::map<std::string, const char*> kLayout = {
       {"brightdata", "func datafile funcfile x1 .. xn [transform]"},
       {"colordata", "rfunc gfunc bfunc rdatafile gdatafile bdatafile funcfile x1 .. xn [transform]"},
+      {"texdata", "xfunc yfunc zfunc xdatafile ydatafile zdatafile funcfile x1 .. xn [transform]"},
       {"colorpict", "rfunc gfunc bfunc pictfile funcfile u v [transform]"},
       {"mixdata", "foreground background func datafile funcfile x1 .. xn [transform]"},
       {"mixpict", "foreground background func pictfile funcfile u v [transform]"}};
@@ -161,6 +165,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.
   const bool mixture = p.type == "mixfunc";
   const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2";
+  sp.texture = p.type == "texfunc";  // xpert ypert zpert funcfile
   const bool brtd = p.type == "BRTDfunc";
   if (vector && p.strings.size() < 4)
     throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
@@ -168,7 +173,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   if (brtd && p.strings.size() < 10)
     throw InputError(p.loc, what + " needs 10 or more string arguments (rrefl grefl brefl rtrns gtrns btrns rbrtd "
                                    "gbrtd bbrtd funcfile [transform]), got " + std::to_string(p.strings.size()));
-  sp.channels = p.type == "colorfunc" || vector || brtd ? 3 : 1;
+  sp.channels = p.type == "colorfunc" || vector || brtd || sp.texture ? 3 : 1;
   const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : 0;
   const size_t fileAt = brtd ? 9 : firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
@@ -183,6 +188,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   // Each function is an expression (a name, or written inline), a definition of its own.
   static const char* const kChannel[] = {"red", "green", "blue"};
   static const char* const kAxis[] = {"ux", "uy", "uz"};
+  static const char* const kPert[] = {"xpert", "ypert", "zpert"};
   static const char* const kBrtd[] = {"rrefl", "grefl", "brefl", "rtrns", "gtrns", "btrns"};
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
@@ -193,7 +199,8 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
       throw InputError(p.loc, what + ": " +
                                   (sp.channels == 1 ? "its function"
                                    : brtd           ? std::string("its ") + kBrtd[firstFunction + static_cast<size_t>(k)]
-                                                    : std::string(vector ? kAxis[k] : kChannel[k]) + " function") +
+                                                    : std::string(vector ? kAxis[k] : sp.texture ? kPert[k] : kChannel[k]) +
+                                                          " function") +
                                   " '" + expression + "' is not an expression: " + e.message());
     }
     // A plain name is checked as itself (its messages name it); an expression as a whole.

@@ -44,7 +44,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"mesh", {"mesh 'plainclothes.0.woman' names a Radiance compiled mesh (woman.rtm)", ""}},
       {"mirror", {"primitive type 'antimatter' is not supported", ""}},
       {"mist", {"loads; no reference", ""}},
-      {"mixtex", {"texfunc 'bumpy_func' (its function written inline)", "primitive type 'aBSDF' is not supported"}},
+      {"mixtex", {"texdata 'bumpy_pat': function file 'bumpypat.cal'", "primitive type 'aBSDF' is not supported"}},
       {"patterns", {"colortext 'textpat' (helvet.fnt)", "disagrees: point 1"}},
       {"prism1", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
       {"prism2", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},

@@ -169,6 +169,41 @@ TEST(FunctionPatterns, PicturePatternLooksUpTheImage) {
   EXPECT_NE(sc.functionFiles[0].find("grey.hdr"), std::string::npos);
 }
 
+// texfunc and texdata turn the shading normal (Radiance's raynormal: the normal plus the
+// perturbation, normalised). A floor of reflectance 0.5 under a sun 40° from the zenith (in the
+// x–z plane) and nothing else, seen by a sensor facing down 2 m above it (first bounce only),
+// reads 0.5 E_n cos γ, E_n = L π sin²α the sun's normal irradiance and γ the angle between the
+// sun and the shading normal: cos 40° unperturbed; the perturbation (1, 0, 0) turns the normal
+// 45° towards +x, cos 5°; turned by the texture's -rz 90 it is (0, 1, 0), cos 40°/√2.
+TEST(FunctionPatterns, TexturesTurnTheShadingNormal) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "texture");
+  std::ofstream(dir / "one.dat") << "1\n0 1 2\n1 1\n";
+  std::ofstream(dir / "zero.dat") << "1\n0 1 2\n0 0\n";
+  const double a = 40.0 * kPi / 180.0;
+  const std::string sun = "void light s 0 0 3 1e4 1e4 1e4\ns source sun 0 0 4 " + std::to_string(std::sin(a)) +
+                          " 0 " + std::to_string(std::cos(a)) + " 0.5\n";
+  const double sinA = std::sin(0.25 * kPi / 180.0);
+  const double en = 1e4 * kLumensPerWatt * kPi * sinA * sinA;
+  auto reflected = [&](const std::string& modifier) {
+    const Scene sc = readIn(dir, sun + modifier + "p plastic f 0 0 5 .5 .5 .5 0 0\n" + kFloor);
+    TraceSettings s;
+    s.seed = 4;
+    s.hemisphereSamples = 1024;
+    s.maxBounces = 1;
+    return Tracer(sc).irradiance(Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  };
+  auto expectNear = [&](const IrradianceEstimate& e, double cosG, const char* what) {
+    const double want = 0.5 * en * cosG;
+    EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux()) << what;
+    EXPECT_LT(e.standardErrorLux(), 0.01 * want) << what;
+  };
+  expectNear(reflected("void brightfunc p 2 1 . 0 0\n"), std::cos(a), "unperturbed");
+  expectNear(reflected("void texfunc p 4 1 0 0 . 0 0\n"), std::cos(a - kPi / 4.0), "texfunc (1, 0, 0)");
+  expectNear(reflected("void texfunc p 6 1 0 0 . -rz 90 0 0\n"), std::cos(a) / std::sqrt(2.0), "texfunc turned");
+  expectNear(reflected("void texdata p 8 red green blue one.dat zero.dat zero.dat . frac(Px) 0 0\n"),
+             std::cos(a - kPi / 4.0), "texdata (1, 0, 0)");
+}
+
 // Shadow rays through a mixture of glass and void blend what each lets through.
 TEST(FunctionPatterns, ShadowRaysThroughAMixtureBlendItsMaterials) {
   const fs::path dir = test_support::scratchDir("function_patterns", "mixture_glass");
