@@ -192,6 +192,14 @@ std::vector<std::string> splitWords(std::string_view line, const FileLoc& loc) {
 void parseRadiance(std::string_view text, const std::string& fileName,
                    const std::function<void(RadPrimitive&&)>& onPrimitive,
                    const std::function<void(RadCommand&&)>& onCommand) {
+  // What is not a scene at all, said as such: oconv's octree (a header, then binary data) and
+  // other binary files (a NUL byte near the start), instead of a message about its first word.
+  const std::string_view head = text.substr(0, 4096);
+  if (head.rfind("#?RADIANCE", 0) == 0 && head.find("FORMAT=Radiance_octree") != std::string_view::npos)
+    throw InputError(FileLoc{fileName, 1}, "a Radiance octree (oconv's output), not a scene file: pass the scene "
+                                           "files it was made from (its header's oconv line names them)");
+  if (head.find('\0') != std::string_view::npos)
+    throw InputError(FileLoc{fileName, 1}, "a binary file, not a Radiance scene (text)");
   Parser(text, fileName).run(onPrimitive, onCommand);
 }
 

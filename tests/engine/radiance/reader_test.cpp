@@ -170,6 +170,25 @@ void expectError(const std::string& file, int line, const std::string& text) {
   }
 }
 
+// What is not a scene is said to be so: an octree (as oconv writes it: a header naming its
+// scene files, FORMAT=Radiance_octree, then binary data) and any binary file, at line 1.
+TEST(RadReader, OctreesAndBinaryFilesAreNotScenes) {
+  auto errorOf = [](const std::string& text) {
+    try {
+      Scene sc;
+      readRadianceText(text, "scene.oct", sc);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  std::string octree = "#?RADIANCE\noconv model/scene/envelope.rad\nFORMAT=Radiance_octree\n\n";
+  octree += std::string("\x03\x00\x08\x01", 4);
+  EXPECT_NE(errorOf(octree).find("scene.oct:1: a Radiance octree (oconv's output), not a scene file"), std::string::npos);
+  EXPECT_NE(errorOf(std::string("void plastic p 0 0 5 1 1 1 0 0\n\x00\x01", 34)).find("scene.oct:1: a binary file"),
+            std::string::npos);
+}
+
 TEST(RadReader, UnknownModifier) {
   expectError("unknown_modifier.rad", 3, "modifier 'nosuch' of polygon 'p' is not defined before use");
 }
