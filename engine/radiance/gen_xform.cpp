@@ -25,6 +25,8 @@ namespace fs = std::filesystem;
 constexpr int kMaxArgFileDepth = 32;
 // The largest -a count (the -i count it becomes has the same bound in radiance/transform).
 constexpr long kMaxArrayCount = 1000000;
+// The most -a and -f options one command may hold (each nests the expansion once more).
+constexpr size_t kMaxArrayOptions = 1000;
 
 // What xform does to a type's arguments (xform.c's initotypes: o_* and m_* functions, addxform for
 // every type with a function file, o_default for the rest).
@@ -235,16 +237,27 @@ class XformExpansion {
       : cmd_(cmd), ctx_(ctx), input_(input) {}
 
   std::vector<RadPrimitive> run() {
-    invoke(cmd_.words, 1.0, 0);
+    checkOptions(cmd_.words);
+    std::vector<std::string> words = cmd_.words;  // edited in place by array(), restored after
+    invoke(words, 1.0, 0);
     return std::move(out_);
   }
 
  private:
   [[noreturn]] void fail(const std::string& msg) const { throw InputError(cmd_.loc, "xform: " + msg); }
 
+  // At most kMaxArrayOptions -a and -f options in one invocation (each nests it once more).
+  void checkOptions(const std::vector<std::string>& av) const {
+    size_t options = 0;
+    for (const std::string& w : av) options += w == "-a" || w == "-f";
+    if (options > kMaxArrayOptions)
+      fail(std::to_string(options) + " -a and -f options in one command, more than " +
+           std::to_string(kMaxArrayOptions) + " (each nests the command once more)");
+  }
+
   // `copies`: how many invocations this one stands for (the product of the enclosing -a counts
   // and argument files' line counts), for the bound.
-  void invoke(const std::vector<std::string>& av, double copies, int argDepth) {
+  void invoke(std::vector<std::string>& av, double copies, int argDepth) {
     for (size_t a = 1; a < av.size(); ++a)
       if (av[a] == "-f") return fromArgFile(av, a, copies, argDepth);
     for (size_t a = 1; a < av.size(); ++a)
@@ -287,6 +300,7 @@ class XformExpansion {
         if (nav[i - 1] == "-n") nav[i].append(".").append(std::to_string(k)), named = true;
       if (!named) nav.insert(nav.begin() + 1, {"-n", std::string("i").append(std::to_string(k))});
       try {
+        checkOptions(nav);
         invoke(nav, copies * n, argDepth + 1);
       } catch (const InputError& e) {
         // The command's own errors: say which argument line made them.
@@ -324,8 +338,9 @@ class XformExpansion {
   }
 
   // xform.c's doarray: copy i replaces "-a N" by "-i i" (zero applications for the first copy)
-  // and its name prefix is "-n" X.i, or "ai".
-  void array(const std::vector<std::string>& av, size_t ai, double copies, int argDepth) {
+  // and its name prefix is "-n" X.i, or "ai". The words are edited in place and restored, so
+  // that nested arrays take memory in proportion to the command, not its square.
+  void array(std::vector<std::string>& av, size_t ai, double copies, int argDepth) {
     long n = 0;
     if (ai + 1 >= av.size() || !parseCount(av[ai + 1], n) || n <= 0 || n > kMaxArrayCount)
       fail("-a needs a whole count from 1 to " + std::to_string(kMaxArrayCount) +
@@ -335,14 +350,25 @@ class XformExpansion {
     std::vector<size_t> names;
     for (size_t i = 1; i < av.size(); ++i)
       if (av[i - 1] == "-n") names.push_back(i);
+    std::vector<std::string> savedNames;
+    for (size_t j : names) savedNames.push_back(av[j]);
+    const std::string count = av[ai + 1];
+    const std::string last = names.empty() ? std::string() : av[names.back()];
+    av[ai] = "-i";
     for (long i = 0; i < n; ++i) {
-      std::vector<std::string> nav = av;
-      for (size_t j : names) nav[j] = av[names.back()] + "." + std::to_string(i);
-      nav[ai] = "-i";
-      nav[ai + 1] = std::to_string(i);
-      if (names.empty()) nav.insert(nav.begin() + 1, {"-n", "a" + std::to_string(i)});
-      invoke(nav, copies * n, argDepth);
+      for (size_t j : names) av[j] = last + "." + std::to_string(i);
+      av[ai + 1] = std::to_string(i);
+      if (names.empty()) {
+        av.insert(av.begin() + 1, {"-n", "a" + std::to_string(i)});
+        invoke(av, copies * n, argDepth);
+        av.erase(av.begin() + 1, av.begin() + 3);
+      } else {
+        invoke(av, copies * n, argDepth);
+      }
     }
+    av[ai] = "-a";
+    av[ai + 1] = count;
+    for (size_t k = 0; k < names.size(); ++k) av[names[k]] = savedNames[k];
     multipliers_.pop_back();
   }
 

@@ -411,6 +411,20 @@ TEST(Xform, BadOptionsNameTheCommandLine) {
   EXPECT_HAS(runError("!xform -s 0 unit.rad"), "-s needs a non-zero factor");
 }
 
+// Nested arrays edit one list of words in place: 999 `-a 1` (each nesting the command once
+// more) make the one copy, named by every level (a0.0.0…: xform.c's names), where copying the
+// words at each level took memory in the square of their number (4000: 1 GB); more than 1000
+// such options are refused before anything is made.
+TEST(Xform, ManyNestedArraysAreLinear) {
+  std::string many = "!xform";
+  for (int i = 0; i < 999; ++i) many += " -a 1";
+  const auto ps = run(many + " unit.rad");
+  ASSERT_FALSE(ps.empty());
+  EXPECT_EQ(ps.size(), run("!xform unit.rad").size());
+  EXPECT_EQ(ps[0].name.rfind("a0.0.0.0", 0), 0u) << ps[0].name.substr(0, 40);
+  EXPECT_HAS(runError(many + " -a 1 -a 1 unit.rad"), "1001 -a and -f options in one command, more than 1000");
+}
+
 TEST(Xform, ArrayCountsAreBoundedBeforeAnythingIsMade) {
   auto t0 = std::chrono::steady_clock::now();
   EXPECT_HAS(runError("!xform -a 1000 -t 1 0 0 -a 1000 -t 0 1 0 -a 100 -t 0 0 1 unit.rad"),
