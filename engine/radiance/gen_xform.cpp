@@ -10,8 +10,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string_view>
 
 namespace candela {
@@ -428,14 +430,46 @@ class XformExpansion {
     return files_.emplace(path, ctx_.readFile(path, cmd_.loc)).first->second;
   }
 
+  // What a primitive becomes once read: a mesh its OBJ file's triangles (an n-gon face n − 2), the
+  // rest one each; a mesh whose OBJ cannot be found counts one (the reader refuses it later).
+  double weight(const RadPrimitive& p) {
+    if (p.type != "mesh" || p.strings.empty()) return 1.0;
+    fs::path obj(p.strings[0]);
+    const std::string ext = obj.extension().string();
+    if (ext == ".rtm" || ext == ".msh") obj.replace_extension(".obj");
+    fs::path path;
+    try {
+      path = findSceneFile(obj.string(), fs::path(p.loc.file).parent_path(), p.loc, "mesh", "OBJ file");
+    } catch (const InputError&) {
+      return 1.0;
+    }
+    const auto it = meshTriangles_.find(path);
+    if (it != meshTriangles_.end()) return it->second;
+    double triangles = 0.0;
+    std::istringstream in(readInputFile(path, "OBJ file"));
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.size() < 2 || line[0] != 'f' || (line[1] != ' ' && line[1] != '\t')) continue;
+      std::istringstream words(line.substr(1));
+      std::string w;
+      double corners = 0.0;
+      while (words >> w) corners += 1.0;
+      triangles += std::max(1.0, corners - 2.0);
+    }
+    return meshTriangles_[path] = std::max(1.0, triangles);
+  }
+
   void emit(const std::vector<RadPrimitive>& prims, const Invocation& v, double copies) {
-    const double projected = copies * static_cast<double>(prims.size());
+    double perCopy = 0.0;
+    for (const RadPrimitive& p : prims) perCopy += weight(p);
+    const double projected = copies * perCopy;
     if (projected > kMaxGeneratedPrimitives)
-      fail("makes about " + formatCount(projected) + " primitives (" + std::to_string(prims.size()) +
-           " per copy, " + formatCount(copies) + " copies: " + multiplierText() + "), more than " +
-           formatCount(kMaxGeneratedPrimitives));
-    if (static_cast<double>(out_.size() + prims.size()) > kMaxGeneratedPrimitives)
-      fail("makes more than " + formatCount(kMaxGeneratedPrimitives) + " primitives");
+      fail("makes about " + formatCount(projected) + " primitives (" + formatCount(perCopy) +
+           " per copy, meshes counted by their triangles, " + formatCount(copies) + " copies: " + multiplierText() +
+           "), more than " + formatCount(kMaxGeneratedPrimitives));
+    made_ += perCopy;
+    if (made_ > kMaxGeneratedPrimitives)
+      fail("makes more than " + formatCount(kMaxGeneratedPrimitives) + " primitives (meshes counted by their triangles)");
     for (const RadPrimitive& p : prims) out_.push_back(transformPrimitive(p, v));
   }
 
@@ -445,6 +479,8 @@ class XformExpansion {
   std::map<fs::path, std::vector<RadPrimitive>> files_;
   std::vector<std::string> multipliers_;
   std::vector<RadPrimitive> out_;
+  std::map<fs::path, double> meshTriangles_;  // per OBJ file read for weight()
+  double made_ = 0.0;                          // primitives made so far, meshes by their triangles
 };
 
 }  // namespace

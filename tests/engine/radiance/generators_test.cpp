@@ -415,6 +415,13 @@ TEST(Xform, BadOptionsNameTheCommandLine) {
 // more) make the one copy, named by every level (a0.0.0…: xform.c's names), where copying the
 // words at each level took memory in the square of their number (4000: 1 GB); more than 1000
 // such options are refused before anything is made.
+// A mesh counts as the triangles of its OBJ file (faces.obj: a quadrilateral and a pentagon, 5):
+// 3·10⁶ copies of it would make 1.5·10⁷ triangles, refused before any is made.
+TEST(Xform, MeshesCountByTheirTriangles) {
+  EXPECT_HAS(runError("!xform -a 1000 -a 1000 -a 3 mesh.rad"), "makes about 15000000 primitives (5 per copy");
+  EXPECT_EQ(run("!xform -a 3 mesh.rad").size(), 3u);
+}
+
 TEST(Xform, ManyNestedArraysAreLinear) {
   std::string many = "!xform";
   for (int i = 0; i < 999; ++i) many += " -a 1";
