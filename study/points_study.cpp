@@ -16,13 +16,16 @@ PointsScene loadPointsScene(const PointsJob& job) {
   if (!job.caseFile.empty()) {
     c = readCaseFile(job.caseFile);
     c->settings.scene = sceneReadOptions(&c->settings, job.trace);
+    c->settings.scene.maxMemoryBytes = job.limits.maxMemoryBytes;
     // A sky asked for replaces the case's; its site and time still come from the case.
     out.scene = loadCaseScene(*c, !job.sky);
     if (job.sky) daylight = daylightFromCase(*c);
   } else {
     out.scene = std::make_unique<Scene>();
   }
-  readSceneFiles(job.scenes, *out.scene, sceneReadOptions(c ? &c->settings : nullptr, job.trace));
+  SceneReadOptions reading = sceneReadOptions(c ? &c->settings : nullptr, job.trace);
+  reading.maxMemoryBytes = job.limits.maxMemoryBytes;
+  readSceneFiles(job.scenes, *out.scene, reading);
   for (const auto& f : job.portalFiles)
     for (Portal& p : readPortalFile(f)) out.scene->portals.push_back(std::move(p));
   placeLuminaires(*out.scene, job.luminaires);

@@ -145,6 +145,7 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   run.startedAt = localTimeNow();
   CaseFile c = readCaseFile(caseFile);
   c.settings.scene = sceneReadOptions(&c.settings, request.trace);
+  c.settings.scene.maxMemoryBytes = request.limits.maxMemoryBytes;
   if (c.grids.empty() && c.surfaceGrids.empty())
     throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;

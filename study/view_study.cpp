@@ -200,6 +200,7 @@ RenderResult renderCaseView(const std::filesystem::path& caseFile, const RenderR
                             StudyObserver& observer) {
   CaseFile c = readCaseFile(caseFile);
   c.settings.scene = sceneReadOptions(&c.settings, request.trace);
+  c.settings.scene.maxMemoryBytes = request.limits.maxMemoryBytes;
   const FileLoc atCase{c.path.string(), 0, 0};
   const ViewSpec* view = nullptr;
   for (const ViewSpec& v : c.views)

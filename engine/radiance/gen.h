@@ -32,7 +32,17 @@ bool mayExist(const std::filesystem::path& p);
 void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, size_t from, FunctionFiles& files,
                          bool* smooth);
 
-// Refused above this many primitives from one command (about 300 bytes each once read).
+// Refused above this many primitives from one command.
 inline constexpr double kMaxGeneratedPrimitives = 1e7;
+// What a generated primitive takes once read, through the reader, the scene and the accelerator
+// (bytes; measured on genbox's rounded boxes and xform arrays of polygons: about 1.2 KB).
+inline constexpr double kBytesPerGeneratedPrimitive = 1200.0;
+
+// The most primitives one command may make: 10^7, or what --max-memory (ctx.maxMemoryBytes)
+// holds at kBytesPerGeneratedPrimitive each when that is fewer.
+double generatedPrimitivesAllowed(const RadExpandContext& ctx);
+// The words that bound says in messages: "the 10000000 primitives a command may make", or
+// "the 1747626 primitives --max-memory 2 GiB holds (about 1.2 KB each once read)".
+std::string generatedLimitText(const RadExpandContext& ctx);
 
 }  // namespace candela

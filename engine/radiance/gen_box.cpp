@@ -184,7 +184,7 @@ constexpr const char* kUsage = " (genbox mat name xsiz ysiz zsiz [-i] [-b bevel 
 
 }  // namespace
 
-std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandContext&) {
+std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandContext& ctx) {
   const std::vector<std::string>& w = cmd.words;
   if (w.size() < 6) throw InputError(cmd.loc, std::string("genbox needs a material, a name and three sizes") + kUsage);
   GenBox box;
@@ -230,9 +230,9 @@ std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandCon
   std::vector<RadPrimitive> out;
   if (rounde > 1) {
     const double faces = 6.0 + 12.0 * std::ldexp(1.0, rounde) + 8.0 * std::ldexp(1.0, 2 * rounde);
-    if (faces > kMaxGeneratedPrimitives)
+    if (faces > generatedPrimitivesAllowed(ctx))
       throw InputError(cmd.loc, "genbox: -n " + std::to_string(nsegs) + " makes " + std::to_string(long(faces)) +
-                                    " polygons, more than a command may make");
+                                    " polygons, more than " + generatedLimitText(ctx));
     if (smooth)
       throw InputError(cmd.loc, "genbox: -s smooths the rounded edges with a Phong texfunc, which candela does not "
                                 "implement; drop -s");

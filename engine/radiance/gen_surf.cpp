@@ -69,9 +69,9 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
     return v;
   };
   const long m = count(w[6], "m"), n = count(w[7], "n");
-  if (2.0 * static_cast<double>(m) * static_cast<double>(n) > kMaxGeneratedPrimitives)
+  if (2.0 * static_cast<double>(m) * static_cast<double>(n) > generatedPrimitivesAllowed(ctx))
     fail("m × n = " + std::to_string(m) + " × " + std::to_string(n) + " cells would make up to " +
-         std::to_string(2 * m * n) + " polygons, more than 10^7");
+         std::to_string(2 * m * n) + " polygons, more than " + generatedLimitText(ctx));
   FunctionFiles files;
   cal::Program& program = *files.program();
   bool smooth = false;  // written unsmoothed (above)

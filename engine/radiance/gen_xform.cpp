@@ -375,9 +375,8 @@ class XformExpansion {
   }
 
   void checkCopies(double copies) const {
-    if (copies > kMaxGeneratedPrimitives) fail("makes " + formatCount(copies) + " copies (" + multiplierText() +
-                                               "), more than the " + formatCount(kMaxGeneratedPrimitives) +
-                                               " primitives one command may make");
+    if (copies > generatedPrimitivesAllowed(ctx_))
+      fail("makes " + formatCount(copies) + " copies (" + multiplierText() + "), more than " + generatedLimitText(ctx_));
   }
 
   std::string multiplierText() const {
@@ -463,13 +462,13 @@ class XformExpansion {
     double perCopy = 0.0;
     for (const RadPrimitive& p : prims) perCopy += weight(p);
     const double projected = copies * perCopy;
-    if (projected > kMaxGeneratedPrimitives)
+    if (projected > generatedPrimitivesAllowed(ctx_))
       fail("makes about " + formatCount(projected) + " primitives (" + formatCount(perCopy) +
            " per copy, meshes counted by their triangles, " + formatCount(copies) + " copies: " + multiplierText() +
-           "), more than " + formatCount(kMaxGeneratedPrimitives));
+           "), more than " + generatedLimitText(ctx_));
     made_ += perCopy;
-    if (made_ > kMaxGeneratedPrimitives)
-      fail("makes more than " + formatCount(kMaxGeneratedPrimitives) + " primitives (meshes counted by their triangles)");
+    if (made_ > generatedPrimitivesAllowed(ctx_))
+      fail("makes more than " + generatedLimitText(ctx_) + " (meshes counted by their triangles)");
     for (const RadPrimitive& p : prims) out_.push_back(transformPrimitive(p, v));
   }
 

@@ -1,6 +1,9 @@
 #include "engine/radiance/generators.h"
 #include "engine/radiance/gen.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace candela {
@@ -71,6 +74,20 @@ void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, siz
     }
     throw InputError(cmd.loc, gen + ": unknown option '" + w[i] + "' (-e expr, -f file" + (smooth ? ", -s)" : ")"));
   }
+}
+
+double generatedPrimitivesAllowed(const RadExpandContext& ctx) {
+  if (ctx.maxMemoryBytes == 0) return kMaxGeneratedPrimitives;
+  return std::min(kMaxGeneratedPrimitives, std::floor(static_cast<double>(ctx.maxMemoryBytes) / kBytesPerGeneratedPrimitive));
+}
+
+std::string generatedLimitText(const RadExpandContext& ctx) {
+  const double n = generatedPrimitivesAllowed(ctx);
+  if (n >= kMaxGeneratedPrimitives) return "the 10000000 primitives a command may make";
+  char gib[32];
+  std::snprintf(gib, sizeof gib, "%.3g GiB", static_cast<double>(ctx.maxMemoryBytes) / 1073741824.0);
+  return "the " + std::to_string(static_cast<long long>(n)) + " primitives --max-memory " + gib +
+         " holds (about 1.2 KB each once read)";
 }
 
 bool mayExist(const std::filesystem::path& p) {

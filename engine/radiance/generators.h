@@ -21,6 +21,9 @@ struct RadExpandContext {
   // In a pipeline (`!genbox ... | xform -t ...`), what the previous command wrote: a generator
   // that reads its standard input when given no file (xform) reads this; null when there is none.
   const std::vector<RadPrimitive>* standardInput = nullptr;
+  // --max-memory in bytes (0: none): what one command may make is bounded by it too
+  // (engine/radiance/gen.h, generatedPrimitivesAllowed).
+  uint64_t maxMemoryBytes = 0;
 };
 
 // The generators candela expands, in the order the refusal message lists them.

@@ -46,6 +46,7 @@ class SceneReader::Builder {
               const std::function<void(RadPrimitive&&)>& sink) {
     RadExpandContext ctx;
     ctx.folder = folder;
+    ctx.maxMemoryBytes = options_.maxMemoryBytes;
     ctx.readFile = [this, depth](const std::filesystem::path& file, const FileLoc& from) {
       if (depth + 1 > kMaxIncludeDepth)
         throw InputError(from, "files include each other more than " + std::to_string(kMaxIncludeDepth) +

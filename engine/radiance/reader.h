@@ -40,6 +40,9 @@ struct SceneReadOptions {
   // An obj2rad mapping file (obj2rad -m; engine/obj_reader.h) for every OBJ file read, plain or
   // through a `mesh` with a void modifier; empty: usemtl, then group, then "white".
   std::filesystem::path objMapping;
+  // --max-memory in bytes (0: none): bounds what one inline command may make
+  // (engine/radiance/gen.h, generatedPrimitivesAllowed).
+  uint64_t maxMemoryBytes = 0;
 };
 
 // Reads scene files, in order, into one scene: modifiers defined in one file serve the next.

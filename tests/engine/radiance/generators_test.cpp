@@ -422,6 +422,31 @@ TEST(Xform, MeshesCountByTheirTriangles) {
   EXPECT_EQ(run("!xform -a 3 mesh.rad").size(), 3u);
 }
 
+// --max-memory bounds what a command may make before it makes it (about 1.2 KB a primitive once
+// read): 1 MiB holds 873 primitives, so -a 1000 of one polygon is refused, -a 800 made.
+TEST(Xform, MaxMemoryBoundsWhatACommandMakes) {
+  RadExpandContext ctx;
+  ctx.folder = genDir();
+  ctx.maxMemoryBytes = 1 << 20;
+  ctx.readFile = [](const fs::path& f, const FileLoc&) { return expandFile(f, 1); };
+  auto expand = [&](const std::string& words) {
+    std::vector<RadPrimitive> out;
+    parseRadiance("\n\n" + words + "\n", "x.rad", [&](RadPrimitive&& p) { out.push_back(std::move(p)); },
+                  [&](RadCommand&& c) {
+                    for (RadPrimitive& p : expandRadCommand(c, ctx)) out.push_back(std::move(p));
+                  });
+    return out;
+  };
+  EXPECT_DOUBLE_EQ(generatedPrimitivesAllowed(ctx), 873.0);
+  EXPECT_EQ(expand("!xform -a 800 unit.rad").size(), 800u * run("!xform unit.rad").size());
+  EXPECT_NE(errorOf([&] { expand("!xform -a 1000 unit.rad"); })
+                .find("more than the 873 primitives --max-memory 0.000977 GiB holds (about 1.2 KB each once read)"),
+            std::string::npos)
+      << errorOf([&] { expand("!xform -a 1000 unit.rad"); });
+  EXPECT_NE(errorOf([&] { expand("!genbox m b 1 1 1 -r .1 -n 16"); }).find("polygons, more than the 873 primitives"),
+            std::string::npos);
+}
+
 TEST(Xform, ManyNestedArraysAreLinear) {
   std::string many = "!xform";
   for (int i = 0; i < 999; ++i) many += " -a 1";
@@ -575,7 +600,7 @@ TEST(Genbox, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -o"), "-o writes a Wavefront .OBJ file");
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 8 -s"), "-s smooths");
   // -n 1024: 2¹⁰ strips, 6 + 12·2¹⁰ + 8·4¹⁰ ≈ 8.4·10⁶ polygons, allowed; -n 1025 rounds up to 2¹¹.
-  EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 1025"), "makes 33579014 polygons, more than a command may make");
+  EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 1025"), "makes 33579014 polygons, more than the 10000000 primitives a command may make");
 }
 
 // ---------------------------------------------------------------------------------- genprism
@@ -836,7 +861,7 @@ TEST(Gensurf, DataFileAndBounds) {
   const auto ps = run("!gensurf m d s t surf.dat 1 2");
   ASSERT_EQ(ps.size(), 2u);
   for (size_t k = 2; k < ps[0].reals.size(); k += 3) EXPECT_DOUBLE_EQ(ps[0].reals[k], 2.0);
-  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 10000 10000"); }).find("more than 10^7"), std::string::npos);
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 10000 10000"); }).find("more than the 10000000 primitives a command may make"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 0 3"); }).find("m must be a whole number"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 2"); }).find("x.rad:3: gensurf: usage"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s 't+' 0 2 2"); }).find("y(s,t) 't+' is not an expression"),
