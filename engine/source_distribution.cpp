@@ -59,10 +59,11 @@ void readReals(const ScenePattern& p, const std::string& what, SourceCorrection 
   a1 = p.reals.empty() ? 1.0 : p.reals[0];
   if (!(a1 >= 0.0) || !std::isfinite(a1))
     throw InputError(p.loc, what + ": the multiplier (first real argument) must be a number ≥ 0, got " + number(a1));
+  // Sizes from a micrometre to 10^7 m: below, the correction's division overflows (1e-200 did).
   for (size_t i = 1; i < need; ++i)
-    if (!(p.reals[i] > 0.0) || !std::isfinite(p.reals[i]))
-      throw InputError(p.loc, what + ": real argument " + std::to_string(i + 1) +
-                                  " (a size in metres) must be > 0, got " + number(p.reals[i]));
+    if (!(p.reals[i] > 0.0) || !std::isfinite(p.reals[i]) || p.reals[i] < 1e-6 || p.reals[i] > 1e7)
+      throw InputError(p.loc, what + ": real argument " + std::to_string(i + 1) + " (a size in metres) must be > 0" +
+                                  (p.reals[i] > 0.0 ? ", from 1e-6 to 1e7 m" : "") + ", got " + number(p.reals[i]));
   a2 = need > 1 ? p.reals[1] : 0.0;
   a3 = need > 2 ? p.reals[2] : 0.0;
   a4 = need > 3 ? p.reals[3] : 0.0;
@@ -178,6 +179,13 @@ SourceDistribution SourceDistribution::parse(const ScenePattern& p) {
   // the pattern sees a unit direction, rotated and mirrored only.
   const RadTransform inv = xf.inverse();
   s.toPattern_ = glm::dmat3(inv.matrix) / std::abs(inv.scale);
+  // The largest factor the distribution can give must stay a number through the light's products
+  // (.dat values of 1e308 with a multiplier of 1e10 overflowed into an internal error): at most
+  // 1e30, as a light's radiance (engine/materials/family.h, expectRadiance).
+  const double peak = s.typicalIntensityFactor();
+  if (!std::isfinite(peak) || peak > 1e30)
+    throw InputError(p.loc, what + ": the multiplier times the data's largest value over the smallest size (" +
+                                number(peak) + ") is beyond 1e30: the light would overflow");
   return s;
 }
 

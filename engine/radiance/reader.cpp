@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -66,6 +67,7 @@ class SceneReader::Builder {
     topFolder_ = folder;
     expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
     sky_.apply(scene_);
+    flushTriangulated();
   }
 
   // An OBJ file with the modifiers defined so far (obj2rad's naming rules, or the mapping file).
@@ -489,7 +491,7 @@ class SceneReader::Builder {
           << " m from its plane (tolerance 0.1 mm, or 0.1 % of its size: " << kPlanarTolerance * diameter << " m)";
       if (options_.nonplanar == NonplanarPolicy::kRefuse)
         fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
-      return addTriangulated(p, pts, n, mat, target, msg.str());
+      return addTriangulated(p, pts, n, mat, target, msg.str(), off);
     }
     checkSpotAim(p, mat, n);
     target.addPolygon(pts, mat, p.name);
@@ -519,14 +521,40 @@ class SceneReader::Builder {
   // clipping, engine/polygon_split.h): each vertex is kept where it is, so the surface passes
   // through every vertex; each triangle is planar by construction.
   void addTriangulated(const Primitive& p, const std::vector<Vec3>& pts, const Vec3& n, uint32_t mat, Scene& target,
-                       const std::string& why) {
+                       const std::string& why, double off) {
     std::vector<std::array<uint32_t, 3>> tris;
     if (!splitPolygon(pts, n, tris))
       fail(p, why + "; it is too intricate to split into triangles (more than 10^8 point tests)");
     for (const auto& t : tris) target.addPolygon({pts[t[0]], pts[t[1]], pts[t[2]]}, mat, p.name);
-    if (&target == &scene_)
-      scene_.inputWarnings.push_back(
-          Warning{"nonplanar_triangulated", why + ": split into " + std::to_string(tris.size()) + " triangles", p.loc});
+    if (&target != &scene_) return;
+    // One warning per file read (100 000 nearly planar quads gave 20 MB of warnings): the count,
+    // and the worst polygon's message at its line.
+    Triangulated& t = triangulated_[p.loc.file];
+    ++t.polygons;
+    t.triangles += tris.size();
+    if (off >= t.worst) {
+      t.worst = off;
+      t.message = why + ": split into " + std::to_string(tris.size()) + " triangles";
+      t.loc = p.loc;
+    }
+  }
+
+  struct Triangulated {
+    size_t polygons = 0, triangles = 0;
+    double worst = -1.0;
+    std::string message;
+    FileLoc loc;
+  };
+
+  void flushTriangulated() {
+    for (auto& [file, t] : triangulated_) {
+      const std::string text = t.polygons == 1 ? t.message
+                                               : std::to_string(t.polygons) + " polygons beyond the planarity tolerance "
+                                                 "were split into " + std::to_string(t.triangles) +
+                                                 " triangles; the farthest from its plane: " + t.message;
+      scene_.inputWarnings.push_back(Warning{"nonplanar_triangulated", text, t.loc});
+    }
+    triangulated_.clear();
   }
 
   // The sky function (skybright.cal, perezlum.cal) modifying material `mod`, if any.
@@ -644,6 +672,7 @@ class SceneReader::Builder {
   std::unordered_map<std::string, PatternEntry> patterns_;
   std::unordered_map<std::string, InputError> deferred_;  // refusals kept until used (defer)
   std::optional<ObjMapping> mapping_;
+  std::map<std::string, Triangulated> triangulated_;  // per file: the polygons split (flushTriangulated)
   std::string topFile_;  // the file read now, and its folder (readText's may differ from its name's)
   std::filesystem::path topFolder_;
   SceneSkyBuilder sky_;

@@ -184,6 +184,29 @@ TEST(ObjReader, NonPlanarRadiancePolygonRefusedOrTriangulated) {
   EXPECT_EQ(sc.shapeNames[0], "warped");
 }
 
+// Many polygons split in one file give one warning (100 000 quads gave 20 MB of them): the count,
+// the triangles, and the farthest polygon's message at its line.
+TEST(ObjReader, TriangulatedPolygonsWarnOncePerFile) {
+  std::string text = "void plastic m 0 0 5 .5 .5 .5 0 0\n";
+  for (int i = 0; i < 50; ++i) {
+    const double lift = i == 17 ? 0.3 : 0.2, x = 2.0 * i;
+    text += "m polygon q" + std::to_string(i) + " 0 0 12 " + std::to_string(x) + " 0 0 " + std::to_string(x + 1) +
+            " 0 0 " + std::to_string(x + 1) + " 1 " + std::to_string(lift) + " " + std::to_string(x) + " 1 0\n";
+  }
+  Scene sc;
+  SceneReadOptions opt;
+  opt.nonplanar = NonplanarPolicy::kTriangulate;
+  SceneReader(sc, opt).readText(text, "quads.rad");
+  EXPECT_EQ(sc.shapes.size(), 100u);
+  ASSERT_EQ(sc.inputWarnings.size(), 1u);
+  const Warning& w = sc.inputWarnings[0];
+  EXPECT_EQ(w.code, "nonplanar_triangulated");
+  EXPECT_EQ(w.loc.line, 19);  // q17, the farthest from its plane
+  EXPECT_NE(w.message.find("50 polygons beyond the planarity tolerance were split into 100 triangles"), std::string::npos)
+      << w.message;
+  EXPECT_NE(w.message.find("polygon 'q17' is not planar"), std::string::npos) << w.message;
+}
+
 TEST(ObjReader, ConcaveFaceSplitsInsideItsOutline) {
   // An L-shaped hexagon (concave at (1, 1)): area 3; a fan from vertex 1 would cover (2, 2).
   const std::vector<Vec3> l = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};

@@ -215,6 +215,13 @@ TEST(SourceDistribution, RefusesWhatItCannotEvaluate) {
   EXPECT_NE(error("\nvoid brightdata d\n5 boxcorr box.dat source.cal src_phi2 src_theta\n0\n4 0.5 0.6 0 0.2\n")
                 .find("must be > 0"),
             std::string::npos);
+  // Sizes below a micrometre and products beyond 1e30 overflowed into internal errors.
+  EXPECT_NE(error("\nvoid brightdata d\n5 boxcorr box.dat source.cal src_phi2 src_theta\n0\n4 0.5 0.6 1e-200 0.2\n")
+                .find("from 1e-6 to 1e7 m"),
+            std::string::npos);
+  EXPECT_NE(error("\nvoid brightdata d\n5 boxcorr box.dat source.cal src_phi2 src_theta\n0\n4 1e300 0.6 0.3 0.2\n")
+                .find("is beyond 1e30: the light would overflow"),
+            std::string::npos);
   EXPECT_NE(error("\nvoid brightdata d\n6 boxcorr box.dat source.cal src_phi2 src_theta junk\n" + tail)
                 .find("'junk'"),
             std::string::npos);
