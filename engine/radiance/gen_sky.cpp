@@ -110,7 +110,9 @@ void parseGenskyTime(const Args& a, const std::string& text, SunRequest& s) {
     const std::string digits = text.substr(f, i - f);
     if (sep == ':') {
       if (digits.empty()) a.fail("bad time '" + text + "': minutes missing after ':'");
-      hours += std::atof(digits.c_str()) / 60.0;
+      const double minutes = std::atof(digits.c_str());
+      if (minutes >= 60.0) a.fail("impossible time '" + text + "': minutes run from 0 to 59");
+      hours += minutes / 60.0;
     } else if (!digits.empty()) {
       hours += std::atof(("0." + digits).c_str());
     }
@@ -307,7 +309,13 @@ void parseGenskyOptions(const Args& a, SunRequest& s, GenskyOptions& o) {
 
 }  // namespace
 
-std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext&) {
+// A sky command's suspicious input, kept as a warning (sky_input_out_of_range) when the reader
+// keeps warnings.
+void warnSky(const RadExpandContext& ctx, const RadCommand& cmd, const std::string& program, const std::string& what) {
+  if (ctx.warnings) ctx.warnings->push_back(Warning{"sky_input_out_of_range", program + ": " + what, cmd.loc});
+}
+
+std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandContext& ctx) {
   const Args a(cmd, "gensky");
   if (a.size() == 2 && a[1] == "-defaults") a.fail("-defaults prints gensky's defaults, it writes no sky");
   if (a.size() < 4) a.fail("needs month day time, or -ang altitude azimuth, then options");
@@ -317,6 +325,14 @@ std::vector<RadPrimitive> expandGensky(const RadCommand& cmd, const RadExpandCon
   GenskyOptions o;
   parseGenskyOptions(a, s, o);
   placeSun(a, s);
+  // Above the solar constant no horizontal irradiance occurs on Earth (gensky scales to it all
+  // the same).
+  if (o.zenith && o.zenithHorizontal && *o.zenith > 1367.0)
+    warnSky(ctx, cmd, "gensky", "-B " + compactNumber(*o.zenith) +
+                                    " W/m2 of diffuse horizontal irradiance is above the solar constant (1367 W/m2)");
+  if (o.solar && o.solarHorizontal && *o.solar > 1367.0)
+    warnSky(ctx, cmd, "gensky", "-R " + compactNumber(*o.solar) +
+                                    " W/m2 of direct horizontal irradiance is above the solar constant (1367 W/m2)");
 
   const bool overcast = o.sky == GenskySky::kOvercast || o.sky == GenskySky::kUniform;
   double altitude = degToRad(s.altitudeDeg);
@@ -628,7 +644,7 @@ std::vector<RadPrimitive> errorSky(const FileLoc& loc, const Vec3& sun) {
 
 }  // namespace
 
-std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext&) {
+std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpandContext& ctx) {
   const Args a(cmd, "gendaylit");
   if (a.size() == 2 && a[1] == "-defaults") a.fail("-defaults prints gendaylit's defaults, it writes no sky");
   if (a.size() < 4) a.fail("needs month day hour, or -ang altitude azimuth, then -P, -W, -L, -G or -E");
@@ -644,6 +660,10 @@ std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpand
   DaylitOptions o;
   parseDaylitOptions(a, s, o);
   placeSun(a, s);
+  // gendaylit reads negative irradiances and illuminances as 0: said so.
+  if (o.input != DaylitInput::kPerez && (o.first < 0.0 || o.second < 0.0))
+    warnSky(ctx, cmd, "gendaylit", "a negative irradiance or illuminance (" + compactNumber(std::min(o.first, o.second)) +
+                                       ") is read as 0");
 
   Daylit d;
   d.waterCm = std::exp(0.07 * o.dewPointC - 0.075);
@@ -690,6 +710,10 @@ std::vector<RadPrimitive> expandGendaylit(const RadCommand& cmd, const RadExpand
                             {diffNorm, ground, k.a, k.b, k.c, k.d, k.e, sun.x, sun.y, sun.z}));
     return out;
   } catch (const ErrorSky&) {
+    // gendaylit's error sky (no light), which it writes with a warning on stderr.
+    warnSky(ctx, cmd, "gendaylit", "these inputs make no sky (a direct component above the solar constant, 1367 W/m2 "
+                                   "or 127 500 lx, an impossible clearness, or no light with the sun up): the sky is "
+                                   "dark, as gendaylit's error sky");
     return errorSky(cmd.loc, sun);
   }
 }

@@ -3,6 +3,7 @@
 // never run. Any other command is refused; nothing in a scene file ever reaches a shell.
 #pragma once
 
+#include "base/warning.h"
 #include "engine/radiance/parse.h"
 
 #include <filesystem>
@@ -24,6 +25,9 @@ struct RadExpandContext {
   // --max-memory in bytes (0: none): what one command may make is bounded by it too
   // (engine/radiance/gen.h, generatedPrimitivesAllowed).
   uint64_t maxMemoryBytes = 0;
+  // Where a command's warnings go (suspicious but valid input, e.g. a sky's values out of range);
+  // null: none are kept.
+  std::vector<Warning>* warnings = nullptr;
 };
 
 // The generators candela expands, in the order the refusal message lists them.

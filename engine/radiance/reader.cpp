@@ -48,6 +48,7 @@ class SceneReader::Builder {
     RadExpandContext ctx;
     ctx.folder = folder;
     ctx.maxMemoryBytes = options_.maxMemoryBytes;
+    ctx.warnings = &scene_.inputWarnings;
     ctx.readFile = [this, depth](const std::filesystem::path& file, const FileLoc& from) {
       if (depth + 1 > kMaxIncludeDepth)
         throw InputError(from, "files include each other more than " + std::to_string(kMaxIncludeDepth) +

@@ -129,6 +129,40 @@ Vec3 spaSun(int month, int day, double hour, double latDeg, double lonWestDeg, d
 // ------------------------------------------------------------------------------------------
 // gensky
 
+// Sky inputs out of range are said, not silently clamped (issue 36): an impossible time is
+// refused; gensky's -B above the solar constant, gendaylit's negative input (read as 0) and its
+// error sky (-W 5000 5000: a direct normal irradiance above the solar constant) are warnings
+// (sky_input_out_of_range) at the command's line; a plausible sky gives none.
+TEST(Gensky, InputsOutOfRangeAreRefusedOrWarned) {
+  auto warningsOf = [](const std::string& command) {
+    Scene sc;
+    readRadianceText("\n" + command + "\n", "sky.rad", sc);
+    std::vector<Warning> out;
+    for (const Warning& w : sc.inputWarnings)
+      if (w.code == "sky_input_out_of_range") out.push_back(w);
+    return out;
+  };
+  try {
+    warningsOf("!gensky 3 21 12:99 -a 40 -o 105 -m 105");
+    ADD_FAILURE() << "12:99 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sky.rad:2: gensky: impossible time '12:99'"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(warningsOf("!gensky 3 21 12:30 -a 40 -o 105 -m 105 -c -B 100").empty());
+  const auto b = warningsOf("!gensky 3 21 12 -a 40 -o 105 -m 105 -c -B 1e30");
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].loc.line, 2);
+  EXPECT_NE(b[0].message.find("-B 1e+30 W/m2 of diffuse horizontal irradiance is above the solar constant"),
+            std::string::npos);
+  EXPECT_TRUE(warningsOf("!gendaylit 6 21 12 -a 40 -o 105 -m 105 -W 800 100").empty());
+  const auto neg = warningsOf("!gendaylit 6 21 12 -a 40 -o 105 -m 105 -W -5 100");
+  ASSERT_EQ(neg.size(), 1u);
+  EXPECT_NE(neg[0].message.find("a negative irradiance or illuminance (-5) is read as 0"), std::string::npos);
+  const auto error = warningsOf("!gendaylit 6 21 12 -a 40 -o 105 -m 105 -W 5000 5000");
+  ASSERT_EQ(error.size(), 1u);
+  EXPECT_NE(error[0].message.find("these inputs make no sky"), std::string::npos);
+}
+
 TEST(Gensky, OvercastFromHorizontalIrradiance) {
   // -B is the sky's horizontal diffuse irradiance: the CIE overcast sky L = Lz (1 + 2 sin h) / 3
   // gives E = (7 pi / 9) Lz, so Lz = 9 B / (7 pi); the ground is g E / pi (gensky(1)).
