@@ -333,10 +333,20 @@ class ObjReader {
     tris_.clear();
     if (idx_.size() == 3) {
       tris_.push_back({0, 1, 2});
-    } else if (!splitPolygon(pts_, n, tris_)) {
-      fail(line, "face of " + std::to_string(idx_.size()) +
-                     " vertices is too intricate to split into triangles (more than 10^8 point tests); split "
-                     "it in the modelling tool");
+    } else {
+      // 10^8 point tests a face, opt_.maxSplitTests a file.
+      const uint64_t left = opt_.maxSplitTests - std::min(splitTests_, opt_.maxSplitTests);
+      uint64_t used = 0;
+      const bool ok = splitPolygon(pts_, n, tris_, std::min<uint64_t>(100000000, left), &used);
+      splitTests_ += used;
+      if (!ok && left < 100000000)
+        fail(line, "the file's faces need more than " + std::to_string(opt_.maxSplitTests) +
+                       " point tests to split into triangles (10^9: about 3 s of work); split them in the "
+                       "modelling tool");
+      if (!ok)
+        fail(line, "face of " + std::to_string(idx_.size()) +
+                       " vertices is too intricate to split into triangles (more than 10^8 point tests); split "
+                       "it in the modelling tool");
     }
     const Material& m = scene_.materials[static_cast<size_t>(mat)];
     if (m.isEmitter() || familyOf(m).mirrorsSources()) return addShapes(mat, planar);
@@ -466,6 +476,7 @@ class ObjReader {
   const ObjReadOptions& opt_;
   uint32_t base_;  // this file's first vertex in Scene::mesh
   ObjReadStats stats_;
+  uint64_t splitTests_ = 0;  // ear-clipper tests so far in this file (ObjReadOptions::maxSplitTests)
   size_t vts_ = 0, vns_ = 0;
   long faceNo_ = 0;
   std::string matName_, mapName_, objName_;

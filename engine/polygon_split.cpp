@@ -24,8 +24,15 @@ void push(const std::vector<Vec3>& pts, uint32_t a, uint32_t b, uint32_t c, std:
 }  // namespace
 
 bool splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<std::array<uint32_t, 3>>& out,
-                  uint64_t maxTests) {
+                  uint64_t maxTests, uint64_t* used) {
   uint64_t tests = 0;
+  struct Report {  // the tests made, on every way out
+    uint64_t& tests;
+    uint64_t* used;
+    ~Report() {
+      if (used) *used = tests;
+    }
+  } report{tests, used};
   std::vector<uint32_t> idx(pts.size());
   for (uint32_t i = 0; i < idx.size(); ++i) idx[i] = i;
   size_t start = 0;  // where to look for the next ear: just after the last one (fans convex outlines)

@@ -18,9 +18,10 @@ namespace candela {
 // outline is not simple) is fanned from its first vertex. Appends triangles of indices into
 // `pts`; triangles of zero area are left out. O(n²) for convex outlines, O(n³) at worst: returns
 // false (with `out` partly filled) when more than `maxTests` point-in-triangle tests would be
-// needed, so that time stays bounded (10⁸ tests: about a third of a second).
+// needed, so that time stays bounded (10⁸ tests: about a third of a second). `used`, when given,
+// receives the tests made (a file's readers bound their sum).
 bool splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<std::array<uint32_t, 3>>& out,
-                  uint64_t maxTests = 100000000);
+                  uint64_t maxTests = 100000000, uint64_t* used = nullptr);
 
 // The largest distance of a vertex from the plane through the centroid with unit normal `n`
 // (m), and the vertex (0-based) where it occurs.

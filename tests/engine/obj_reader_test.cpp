@@ -207,6 +207,40 @@ TEST(ObjReader, TriangulatedPolygonsWarnOncePerFile) {
   EXPECT_NE(w.message.find("polygon 'q17' is not planar"), std::string::npos) << w.message;
 }
 
+// The ear clipper's work is bounded per file as well as per face: one comb of 200 teeth splits
+// within a bound of 2·10^5 point tests a file; three of them are refused at the face that passes
+// the bound.
+TEST(ObjReader, EarClippingWorkIsBoundedPerFile) {
+  std::string comb;
+  for (int i = 0; i < 200; ++i) comb += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i + 0.5) + " 1 0\n";
+  comb += "v 199.5 -1 0\nv 0 -1 0\n";
+  std::string face = "f";
+  for (int i = 1; i <= 402; ++i) face += " " + std::to_string(i);
+  auto read = [&](int faces) {
+    Scene sc;
+    Material m;
+    m.type = MaterialType::kPlastic;
+    m.name = "white";
+    m.color = Rgb(0.5);
+    sc.addMaterial(m);
+    ObjReadOptions opt;
+    opt.maxSplitTests = 200000;
+    opt.resolve = [](const std::string&, const std::string&, const FileLoc&) { return 0; };
+    std::string text = comb;
+    for (int k = 0; k < faces; ++k) text += face + "\n";
+    readObjText(text, "comb.obj", sc, opt);
+    return sc.mesh.triangles.size();
+  };
+  EXPECT_EQ(read(1), 400u);
+  try {
+    read(3);
+    ADD_FAILURE() << "three combs were split";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the file's faces need more than 200000 point tests"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ObjReader, ConcaveFaceSplitsInsideItsOutline) {
   // An L-shaped hexagon (concave at (1, 1)): area 3; a fan from vertex 1 would cover (2, 2).
   const std::vector<Vec3> l = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
