@@ -492,10 +492,42 @@ class SceneReader::Builder {
           << " m from its plane (tolerance 0.1 mm, or 0.1 % of its size: " << kPlanarTolerance * diameter << " m)";
       if (options_.nonplanar == NonplanarPolicy::kRefuse)
         fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
+      // A polygon that crosses itself (a bow tie) has no plane its deviation could be measured
+      // from and no triangles that mean what the file meant: refused, saying so.
+      if (const std::optional<std::pair<size_t, size_t>> cross = selfCrossing(pts, n))
+        fail(p, "polygon '" + p.name + "' crosses itself: its edges " + std::to_string(cross->first + 1) + "-" +
+                    std::to_string((cross->first + 1) % pts.size() + 1) + " and " + std::to_string(cross->second + 1) +
+                    "-" + std::to_string((cross->second + 1) % pts.size() + 1) +
+                    " cross, seen along its mean plane; it cannot be split into triangles that mean what the file "
+                    "meant: fix it in the modelling tool");
       return addTriangulated(p, pts, n, mat, target, msg.str(), off);
     }
     checkSpotAim(p, mat, n);
     target.addPolygon(pts, mat, p.name);
+  }
+
+  // The first two edges (by their first vertices) of the outline `pts` that cross each other seen
+  // along n (not neighbours; touching at a point counts), or none; outlines of more than 4096
+  // vertices are not checked (the pairs would cost more than the rest of the reading).
+  static std::optional<std::pair<size_t, size_t>> selfCrossing(const std::vector<Vec3>& pts, const Vec3& n) {
+    const size_t m = pts.size();
+    if (m < 4 || m > 4096) return std::nullopt;
+    const Frame f = Frame::fromNormal(n);
+    std::vector<glm::dvec2> q;
+    for (const Vec3& v : pts) q.emplace_back(glm::dot(v, f.t), glm::dot(v, f.b));
+    auto side = [](const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+      const double s = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+      return (s > 0.0) - (s < 0.0);
+    };
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = i + 2; j < m; ++j) {
+        if (i == 0 && j == m - 1) continue;  // neighbours through the closing edge
+        const glm::dvec2 &a = q[i], &b = q[(i + 1) % m], &c = q[j], &d = q[(j + 1) % m];
+        if (side(a, b, c) * side(a, b, d) <= 0 && side(c, d, a) * side(c, d, b) <= 0 &&
+            !(side(a, b, c) == 0 && side(a, b, d) == 0))  // collinear overlaps: not a crossing here
+          return std::make_pair(i, j);
+      }
+    return std::nullopt;
   }
 
   // A spotlight on a flat surface whose cone lies wholly behind the surface's front (the angle

@@ -241,6 +241,28 @@ TEST(ObjReader, EarClippingWorkIsBoundedPerFile) {
   }
 }
 
+// A bow tie (edges 1-2 and 3-4 cross) is refused under --nonplanar triangulate, saying so,
+// instead of triangles that cover another region; a quadrilateral as warped that does not cross
+// itself is split.
+TEST(ObjReader, SelfCrossingPolygonIsRefusedNotTriangulated) {
+  SceneReadOptions opt;
+  opt.nonplanar = NonplanarPolicy::kTriangulate;
+  Scene sc;
+  try {
+    SceneReader(sc, opt).readText("void plastic m 0 0 5 .5 .5 .5 0 0\nm polygon tie 0 0 12 0 0 0  3 1 0.1  3 0 0  0 2 0\n",
+                                  "tie.rad");
+    ADD_FAILURE() << "the bow tie was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tie.rad:2: polygon 'tie' crosses itself: its edges 1-2 and 3-4 cross"),
+              std::string::npos)
+        << e.what();
+  }
+  Scene ok;
+  SceneReader(ok, opt).readText("void plastic m 0 0 5 .5 .5 .5 0 0\nm polygon q 0 0 12 0 0 0  3 0 0  3 1 0.1  0 2 0\n",
+                                "quad.rad");
+  EXPECT_EQ(ok.shapes.size(), 2u);
+}
+
 TEST(ObjReader, ConcaveFaceSplitsInsideItsOutline) {
   // An L-shaped hexagon (concave at (1, 1)): area 3; a fan from vertex 1 would cover (2, 2).
   const std::vector<Vec3> l = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
