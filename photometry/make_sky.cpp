@@ -14,6 +14,11 @@ std::unique_ptr<SkyModel> makeSky(const SkyType& type, const SkyConditions& cond
   const bool needsLux = type.kind != SkyKind::kPerez;
   if (needsLux && !(cond.diffuseHorizontalLux >= 0.0 && std::isfinite(cond.diffuseHorizontalLux)))
     throw InputError(loc, "sky: diffuse_horizontal_illuminance must be >= 0 lux");
+  // No sky gives more than about 1.5·10^5 lux; 10^7 leaves room for any study and keeps the
+  // squares of the estimates finite (1e300 lux ended in a non-finite result, an internal error).
+  if (needsLux && cond.diffuseHorizontalLux > 1e7)
+    throw InputError(loc, "sky: diffuse_horizontal_illuminance must be at most 1e7 lux (skies give up to about "
+                          "1.5e5), got " + compactNumber(cond.diffuseHorizontalLux));
   switch (type.kind) {
     case SkyKind::kUniform: return std::make_unique<UniformSky>(cond.diffuseHorizontalLux);
     case SkyKind::kCieOvercast: return std::make_unique<CieOvercastSky>(cond.diffuseHorizontalLux);
