@@ -390,8 +390,10 @@ class SceneReader::Builder {
         fail(p, what + ": its " + role + " '" + name + "' is not a material defined before use");
       return it->second;
     };
+    // Its arguments first (their count checked), then the materials they name.
+    ScenePattern sp = readFunctionPattern(p, functionFiles_, folderOf(p), index, -1);
     const int fore = materialNamed(p.strings[0], "foreground"), back = materialNamed(p.strings[1], "background");
-    scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1));
+    scene_.patterns.push_back(std::move(sp));
     scene_.functions = functionFiles_.program();
     scene_.functionFiles = functionFiles_.files();
     Material m;
