@@ -198,7 +198,8 @@ void computeIrradianceInBlocks(const Tracer& tracer, const std::vector<SensorPoi
     throw std::invalid_argument("computeIrradianceInBlocks: the groups must end at the last point");
   const std::vector<double> scales =
       grids ? groupScales(tracer, points, settings, c, groupEnds, threads, distribution) : std::vector<double>{};
-  if (progress) progress(0);
+  // The setup (cache, pilot) is over: an observer's ETA counts from here (cli/progress.h).
+  if (progress && (c || grids)) progress(0);
   const auto goalOf = [&](size_t i) {
     if (!grids) return Goal{settings.targetRelativeError, 0.0};
     const size_t k = static_cast<size_t>(std::upper_bound(groupEnds.begin(), groupEnds.end(), i) - groupEnds.begin());
