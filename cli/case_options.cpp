@@ -21,7 +21,8 @@ void addCaseTraceOptions(CLI::App* cmd, CaseTraceOptions& o, const std::string& 
       ->check(parsedBy(parseMethod, "METHOD"));
   cmd->add_option("--target-error", o.targetErrorPct,
                   "sample each point until its standard error is below PCT percent of its value, 0 = one "
-                  "batch (default: the case's, else quality: normal and high 0.25, draft none)")
+                  "batch (default: the case's, else quality: normal and high 0.25 a point, and for run's grids 0.5 of the "
+                  "larger of the point's value and its grid's mean; draft none)")
       ->check(CLI::Range(0.0, 100.0));
   cmd->add_option("--threads", o.threads, "threads, 0 = all cores (default: the case's, else all)")
       ->check(CLI::Range(0, 4096));

@@ -24,11 +24,15 @@ double fractionOf(std::size_t done, std::size_t total) {
 }
 
 // ", ETA 0:23" from the rate so far; while nothing is done, the estimate stands in for it.
-// ", estimated 0:40" when there is an estimate.
-std::string timeLeft(std::size_t done, std::size_t total, double elapsedS, double expectedS) {
+// ", estimated 0:40" when there is an estimate. The rate is done / countingS, the seconds since
+// the step last reported nothing done: a step that first builds something (the irradiance
+// cache, reporting 0 done meanwhile) would otherwise charge that time to its first points, and
+// one point after a minute's cache read as an ETA of hours.
+std::string timeLeft(std::size_t done, std::size_t total, double elapsedS, double expectedS, double countingS) {
   std::string s;
+  if (countingS < 0.0 || countingS > elapsedS) countingS = elapsedS;
   if (done > 0 && done < total)
-    s += ", ETA " + clock(elapsedS * static_cast<double>(total - done) / static_cast<double>(done));
+    s += ", ETA " + clock(countingS * static_cast<double>(total - done) / static_cast<double>(done));
   else if (done == 0 && total > 0 && expectedS >= 0.0)
     s += ", ETA " + clock(std::max(0.0, expectedS - elapsedS));
   if (expectedS >= 0.0) s += ", estimated " + clock(expectedS);
@@ -69,27 +73,28 @@ ProgressMode ProgressBar::modeFor(bool quiet) {
 }
 
 std::string ProgressBar::format(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                                int width, double expectedS) {
+                                int width, double expectedS, double countingS) {
   const double fraction = fractionOf(done, total);
   const int filled = static_cast<int>(fraction * width);
   std::string bar = label + " [" + std::string(filled, '#') + std::string(width - filled, '.') + "]";
   char buf[160];
   std::snprintf(buf, sizeof buf, " %zu/%zu %3d%%  %s elapsed", done, total, static_cast<int>(fraction * 100.0),
                 clock(elapsedS).c_str());
-  return bar + buf + timeLeft(done, total, elapsedS, expectedS);
+  return bar + buf + timeLeft(done, total, elapsedS, expectedS, countingS);
 }
 
 std::string ProgressBar::formatLine(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                                    double expectedS) {
+                                    double expectedS, double countingS) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "%s: %zu/%zu (%d%%), %s elapsed", label.c_str(), done, total,
                 static_cast<int>(fractionOf(done, total) * 100.0), clock(elapsedS).c_str());
-  return buf + timeLeft(done, total, elapsedS, expectedS);
+  return buf + timeLeft(done, total, elapsedS, expectedS, countingS);
 }
 
 void ProgressBar::update(std::size_t done) {
   if (mode_ == ProgressMode::kOff) return;
   const int64_t now = static_cast<int64_t>(elapsed() * 1e9);
+  if (done == 0) countingFromNs_.store(now, std::memory_order_relaxed);
   int64_t next = nextDrawNs_.load(std::memory_order_relaxed);
   if (now < next) return;
   // One thread wins the right to draw this interval; the others return at once.
@@ -103,12 +108,13 @@ void ProgressBar::update(std::size_t done) {
 
 void ProgressBar::draw(std::size_t done) {
   const double t = elapsed();
+  const double counting = t - static_cast<double>(countingFromNs_.load(std::memory_order_relaxed)) * 1e-9;
   lastDrawn_ = done;
   if (mode_ == ProgressMode::kBar) {
     // "\r" returns to the line start; "\033[K" clears what a longer previous line left behind.
-    std::fprintf(out_, "\r%s\033[K", format(label_, done, total_, t, 30, expectedS_).c_str());
+    std::fprintf(out_, "\r%s\033[K", format(label_, done, total_, t, 30, expectedS_, counting).c_str());
   } else {
-    std::fprintf(out_, "%s\n", formatLine(label_, done, total_, t, expectedS_).c_str());
+    std::fprintf(out_, "%s\n", formatLine(label_, done, total_, t, expectedS_, counting).c_str());
   }
   std::fflush(out_);
 }

@@ -58,11 +58,14 @@ class ProgressBar {
   // The bar's text for `done` of `total` after `elapsedS` seconds (no carriage return), e.g.
   // "tracing [#########...........]  412/1200  34%  0:12 elapsed, ETA 0:23". With an estimate
   // (expectedS >= 0): ", estimated 0:40" follows, and stands for the ETA while nothing is done.
+  // The ETA is (total − done) × countingS / done, countingS the seconds since the step last
+  // reported 0 done (< 0 or more than elapsedS: elapsedS), so that a step's setup (the cache)
+  // is not charged to its first points.
   static std::string format(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                            int width = 30, double expectedS = -1.0);
+                            int width = 30, double expectedS = -1.0, double countingS = -1.0);
   // The plain line for logs, e.g. "tracing: 412/1200 (34%), 0:12 elapsed, ETA 0:23, estimated 0:40".
   static std::string formatLine(const std::string& label, std::size_t done, std::size_t total, double elapsedS,
-                                double expectedS = -1.0);
+                                double expectedS = -1.0, double countingS = -1.0);
 
   static constexpr std::chrono::milliseconds kRedrawInterval{200};
 
@@ -79,6 +82,7 @@ class ProgressBar {
   double expectedS_;
   double start_;
   std::atomic<int64_t> nextDrawNs_{0};  // time (ns since start_) of the next redraw or line
+  std::atomic<int64_t> countingFromNs_{0};  // time (ns since start_) of the last update(0)
   std::mutex drawMutex_;
   bool finished_ = false;
   std::size_t lastDrawn_ = static_cast<std::size_t>(-1);  // `done` of the last line or bar drawn

@@ -55,11 +55,15 @@ inline constexpr size_t kSensorBlockPoints = size_t{1} << 16;
 // increasing order, n ≤ blockPoints; the estimates are gone after the call. A study of 10⁶ points
 // holds one block of estimates, not 10⁶ (docs/distributed.md#memory-for-large-grids). The
 // numbers do not depend on blockPoints.
-// 8 parameters: computeIrradiance's six, the block consumer and the block size.
+// groupEnds: the points in groups of consecutive points (a study's grids), group k being
+// [groupEnds[k−1], groupEnds[k]) and the last end points.size(); with groups and
+// settings.gridTargetRelativeError > 0 the grids' target replaces the per-point one (each
+// point's goal set by its group's mean, docs/estimator.md#the-grids-error-target).
+// 9 parameters: computeIrradiance's six, the block consumer, the block size and the groups.
 void computeIrradianceInBlocks(const Tracer& tracer, const std::vector<SensorPoint>& points,
                                const TraceSettings& settings, int threads,
                                const std::function<void(size_t done)>& progress, const Distribution& distribution,
                                const std::function<void(size_t first, const IrradianceEstimate* estimates, size_t n)>& block,
-                               size_t blockPoints = kSensorBlockPoints);
+                               size_t blockPoints = kSensorBlockPoints, const std::vector<size_t>& groupEnds = {});
 
 }  // namespace candela

@@ -48,8 +48,10 @@ TraceSettings settingsForQuality(Quality q) {
       s.cache.accuracy = 0.2;
       s.cache.recordSamples = 256;
       // The office demo's median point has a standard error of 0.18 % at these counts; points
-      // above 0.25 % take more batches, at most kPresetMaxBatches (docs/accuracy.md).
+      // above 0.25 % take more batches, at most kPresetMaxBatches (docs/accuracy.md). A study's
+      // grids take the grids' target instead (docs/estimator.md#the-grids-error-target).
       s.targetRelativeError = 0.0025;
+      s.gridTargetRelativeError = kPresetGridTarget;
       s.maxBatches = kPresetMaxBatches;
       break;
     case Quality::kHigh:
@@ -61,6 +63,7 @@ TraceSettings settingsForQuality(Quality q) {
       // The same ceiling on any point's error as normal: high's four times the samples lower the
       // typical point's error (0.09 % on the office demo), the target only the outliers'.
       s.targetRelativeError = 0.0025;
+      s.gridTargetRelativeError = kPresetGridTarget;
       s.maxBatches = kPresetMaxBatches;
       break;
   }

@@ -45,6 +45,8 @@ inline constexpr int kUnlimitedBounces = 1000;
 // settings. The presets' own target stops at kPresetMaxBatches.
 inline constexpr int kExplicitTargetMaxBatches = 256;
 inline constexpr int kPresetMaxBatches = 16;
+// The normal and high presets' target for a study's grids (TraceSettings::gridTargetRelativeError).
+inline constexpr double kPresetGridTarget = 0.005;
 
 // Sample counts and limits of one run. Passed explicitly; no global options.
 struct TraceSettings {
@@ -62,6 +64,12 @@ struct TraceSettings {
   // with its first batch, so that only points far noisier than the rest (near contact, in a
   // shadow lit by interreflection) take more; --target-error sets another (docs/accuracy.md).
   double targetRelativeError = 0.0;
+  // The grids' target (docs/estimator.md#the-grids-error-target): when > 0 and the points come in
+  // groups (computeIrradianceInBlocks' groupEnds: a study's grids), it replaces the per-point
+  // target: a point takes further batches until its standard error is at most this fraction of
+  // the larger of its value and its group's mean, at most maxBatches. The normal and high presets
+  // set it; an explicit --target-error turns it off (study/trace_options.cpp).
+  double gridTargetRelativeError = 0.0;
   int maxBatches = kExplicitTargetMaxBatches;
 };
 

@@ -65,10 +65,15 @@ void describeSettings(ReportData& data, const CaseFile& c, const Scene& scene, c
       {"hemisphere samples per point", std::to_string(s.hemisphereSamples)},
       {"light samples per source", std::to_string(s.lightSamples)},
       {"first-bounce split", std::to_string(s.firstBounceSplit)},
-      {"per-point target error", s.targetRelativeError > 0.0
-                                     ? formatFixed(100.0 * s.targetRelativeError, 3) + " % (at most " +
-                                           std::to_string(s.maxBatches) + " batches)"
-                                     : "none (one batch)"},
+      {s.gridTargetRelativeError > 0.0 ? "grid target error" : "per-point target error",
+       s.gridTargetRelativeError > 0.0
+           ? formatFixed(100.0 * s.gridTargetRelativeError, 3) +
+                 " % of the larger of the point's value and its grid's mean (at most " +
+                 std::to_string(s.maxBatches) + " batches; docs/estimator.md)"
+       : s.targetRelativeError > 0.0
+           ? formatFixed(100.0 * s.targetRelativeError, 3) + " % (at most " + std::to_string(s.maxBatches) +
+                 " batches)"
+           : "none (one batch)"},
       {"threads", trace.threads > 0 ? std::to_string(trace.threads)
                                     : "all (" + std::to_string(threadsUsed(trace.threads)) + ")"},
       {"luminaires", std::to_string(c.luminaires.size())},
@@ -322,6 +327,10 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
     seg.errorLux->reserve(seg.count);
   }
   std::size_t withoutCache = 0;
+  // Each segment (a grid's points, a modelling grid's other sensors) is a group of the grids'
+  // target: its mean sets its points' goal.
+  std::vector<std::size_t> groupEnds;
+  for (const Segment& seg : segments) groupEnds.push_back((groupEnds.empty() ? 0 : groupEnds.back()) + seg.count);
   {
     const ObservedStep step(observer, "tracing", all.size());
     std::size_t si = 0;  // the segment of the block's next point
@@ -338,7 +347,8 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
             seg.errorLux->push_back(err);
             withoutCache += est[j].withoutCache;
           }
-        });
+        },
+        kSensorBlockPoints, groupEnds);
   }
   // A modelling grid whose own sensors are cylindrical or horizontal takes its values for them.
   for (std::size_t gi = 0; gi < grids.size(); ++gi) {
@@ -368,7 +378,8 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   describeSettings(data, c, *scene, trace, gridPoints);
   data.run.functionFiles = scene->functionFiles;
   data.run.settings.emplace_back("ranks", run.request.processes().describe());
-  if (trace.settings.method == Method::kCache && trace.settings.targetRelativeError > 0.0)
+  if (trace.settings.method == Method::kCache &&
+      (trace.settings.targetRelativeError > 0.0 || trace.settings.gridTargetRelativeError > 0.0))
     data.run.settings.emplace_back("points estimated without the cache (docs/accuracy.md)",
                                    std::to_string(withoutCache));
   data.warnings = warnings;

@@ -40,6 +40,13 @@ constexpr double kMeanReflectance = 0.5;
 // What a sensor ray's cache lookup costs in rays, the records' own rays shared out: calibrated
 // on cases/small-room's floor at draft (13 400 points) and normal (1 200 points) quality.
 constexpr double kCacheRaysPerLookup = 8.0;
+// Of those, the records' share (the rest: the lookup's visibility rays).
+constexpr double kRecordShareRaysPerLookup = 6.0;
+// A room's records at Ward's a = 0.2 per m² of the scene's bounding box: measured 46 (the sunlit
+// office, 14 500 records, 312 m²) and 78 (cases/small-room, 4 886, 63 m²) at normal quality; and
+// at most this share of the points' hemisphere rays (0.082 in the small room's 29 points).
+constexpr double kRecordsPerSquareMetre = 60.0;
+constexpr double kRecordsPerHemisphereRay = 0.08;
 // Views: the share of pixels traced (the rest interpolated) and the rays of one hemisphere sample
 // of a matte surface's irradiance estimate, measured on a 1024 × 1024 view of the small room
 // (36.7 µs of CPU per camera ray with 64 samples) and the test views.
@@ -215,6 +222,18 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
   return hemisphere * perRay + direct + selection;
 }
 
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2) {
+  if (s.method != Method::kCache || s.maxBounces <= 0) return 0.0;
+  const double a = std::max(1e-3, s.cache.accuracy);
+  const double hemisphereRays = points * static_cast<double>(s.hemisphereSamples);
+  const double records = std::min(kRecordsPerSquareMetre * boxSurfaceM2 * (0.2 / a) * (0.2 / a),
+                                  kRecordsPerHemisphereRay * hemisphereRays);
+  // A record sample is a path: its hit and shadow ray, then ρ/(1 − ρ) further vertices.
+  const double further = std::min<double>(s.maxBounces, kMeanReflectance / (1.0 - kMeanReflectance));
+  const double perRecord = s.cache.recordSamples * 2.0 * (1.0 + further) + s.cache.radiusSamples;
+  return std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup);
+}
+
 uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
                           int states) {
   const uint64_t coefficients = sensors * (patches + sunHours + suns) * sizeof(float);
@@ -309,7 +328,10 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
     points += static_cast<double>(gridPoints[i]) * estimates;
   }
   const double batches = expectedBatchesPerPoint(s);
-  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires)});
+  const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
+  const double boxSurfaceM2 = 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
+  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires) +
+                                   cacheRecordRays(s, points, boxSurfaceM2)});
   addLuminaires(e, c);
   // Views are rendered and written one at a time (study/grid_study.cpp): the largest one's pixels
   // and every view's pictures for the report.

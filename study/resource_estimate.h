@@ -85,6 +85,15 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c);
 // sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
 double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires);
 
+// The irradiance cache's records beyond what raysPerSensor's lookups already count (their share,
+// calibrated on dense grids): a room needs about the same records however few points look at it,
+// so a sparse grid pays for them alone (issue 37: the sunlit office's 242 points made 14 500
+// records, 60 a point). Records: kRecordsPerSquareMetre per m² of `boxSurfaceM2` (the scene's
+// bounding box) at Ward's a = 0.2, scaling as (0.2/a)², at most kRecordsPerHemisphereRay of the
+// points' hemisphere rays; each costs its record samples' paths and its radius samples. 0 for
+// the path method or without bounces. Formula in docs/reliability.md.
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2);
+
 // The annual study's float arrays for one block of `sensors` sensors over `hours` hours (the
 // study holds one block at a time, study/annual_study.h kAnnualSensorsPerBlock): while a block's
 // hours are multiplied out, its coefficients (sensors × (patches + sun hours + suns of the set))

@@ -26,6 +26,7 @@ ResolvedTrace resolveTrace(const Settings* caseSettings, const TraceOverrides& o
   r.settings.method = o.method.value_or(c.method.value_or(defaultMethod));
   if (const std::optional<double> t = o.targetRelativeError ? o.targetRelativeError : c.targetRelativeError) {
     r.settings.targetRelativeError = *t;
+    r.settings.gridTargetRelativeError = 0.0;  // the caller's target means per point, grids too
     r.settings.maxBatches = kExplicitTargetMaxBatches;
   }
   r.threads = o.threads.value_or(c.threads);

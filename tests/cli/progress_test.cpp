@@ -141,6 +141,38 @@ TEST(ProgressFormat, LineText) {
             "rendering desk: 0/5000 (0%), 0:03 elapsed, ETA 1:02:02, estimated 1:02:05");
 }
 
+// A step that reports 0 done while it builds its cache (60 s), then its points: the rate counts
+// from the last 0, so one point 0.4 s later leaves 569 × 0.4 s = 3:48, not 569 × 60.4 s (the
+// 9:32:48 a rate over the whole elapsed time gave).
+TEST(ProgressFormat, TheEtaCountsFromTheLastZero) {
+  EXPECT_EQ(ProgressBar::formatLine("tracing", 1, 570, 60.4, -1.0, 0.4), "tracing: 1/570 (0%), 1:00 elapsed, ETA 3:48");
+  // No count start given, or one beyond the elapsed time: the whole elapsed time.
+  EXPECT_EQ(ProgressBar::formatLine("tracing", 1, 570, 60.4), "tracing: 1/570 (0%), 1:00 elapsed, ETA 9:32:48");
+  EXPECT_EQ(ProgressBar::formatLine("tracing", 1, 570, 60.4, -1.0, 99.0),
+            "tracing: 1/570 (0%), 1:00 elapsed, ETA 9:32:48");
+}
+
+TEST(ProgressLines, TheEtaAfterASetupThatReportedZero) {
+  std::FILE* f = std::tmpfile();
+  FakeClock clock;
+  {
+    ProgressBar bar("tracing", 570, ProgressMode::kLines, clock.options(f, 1.0));
+    for (int i = 0; i < 60; ++i) {  // the cache: 0 done, once a second
+      clock.now += 1.0;
+      bar.update(0);
+    }
+    for (int i = 1; i <= 4; ++i) {  // then a point every 0.5 s
+      clock.now += 0.5;
+      bar.update(static_cast<std::size_t>(i));
+    }
+  }
+  const std::vector<std::string> lines = linesOf(f);
+  ASSERT_FALSE(lines.empty());
+  // The last line: 4 points in the 2 s since the last 0 → 566 × 0.5 s = 4:43.
+  EXPECT_EQ(lines.back(), "tracing: 4/570 (0%), 1:02 elapsed, ETA 4:43") << lines.back();
+  std::fclose(f);
+}
+
 TEST(ProgressFormat, BarShowsTheEstimateFromTheStart) {
   const std::string bar = ProgressBar::format("tracing", 0, 100, 0.0, 10, 90.0);
   EXPECT_EQ(bar, "tracing [..........] 0/100   0%  0:00 elapsed, ETA 1:30, estimated 1:30");

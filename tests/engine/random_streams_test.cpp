@@ -9,7 +9,7 @@ namespace candela {
 namespace {
 
 TEST(RandomStreams, TheCheckFindsAnOverlap) {
-  std::array<streams::Range, 12> all = streams::kAll;
+  auto all = streams::kAll;
   EXPECT_TRUE(streams::disjoint(all));
   all[3] = {streams::kCameraPixels.first + 5, 1};  // inside the camera's pixels
   EXPECT_FALSE(streams::disjoint(all));
@@ -20,6 +20,8 @@ TEST(RandomStreams, FamiliesHoldTheirUsersStreams) {
   const uint64_t lastPoint = streams::kWithoutCacheOffset - 1;
   const uint64_t last = lastPoint + streams::kWithoutCacheOffset + 255 * streams::kBatchStride;
   EXPECT_LT(last, streams::kSensorPoints.end());
+  // The grids' target's pilot of that point.
+  EXPECT_LT(streams::kGridPilot.first + lastPoint, streams::kGridPilot.end());
   // A derived stream of the largest top-level one stays in its family.
   for (const streams::Range& d : {streams::kSkyPatches, streams::kSuns, streams::kDirections})
     EXPECT_LE(d.first + streams::kTopLevelEnd - 1, d.end() - 1);

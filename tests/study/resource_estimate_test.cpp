@@ -159,6 +159,33 @@ TEST(ResourceEstimate, RaysPerSensor) {
   EXPECT_GT(raysPerSensor(s, 0, 1000000), 1e9);
 }
 
+// The cache's records beyond the lookups' share: a room's worth (60 per m² of the box at
+// a = 0.2), at most 0.08 of the hemisphere rays, each 256 paths of 2 × 2 rays and 128 radius rays,
+// less 6 rays a lookup already counted.
+TEST(ResourceEstimate, CacheRecordRays) {
+  TraceSettings s;
+  s.hemisphereSamples = 2048;
+  s.maxBounces = 1000;
+  s.method = Method::kCache;
+  s.cache.accuracy = 0.2;
+  s.cache.recordSamples = 256;
+  s.cache.radiusSamples = 128;
+  const double perRecord = 256.0 * 4.0 + 128.0;
+  // A sparse grid in a 312 m² box: the room's 18 720 records.
+  EXPECT_NEAR(cacheRecordRays(s, 242, 312.0), 18720.0 * perRecord - 242.0 * 2048.0 * 6.0, 1e-3);
+  // Few points: the hemisphere rays bound the records.
+  EXPECT_NEAR(cacheRecordRays(s, 5, 312.0), 0.08 * 5 * 2048 * perRecord - 5.0 * 2048.0 * 6.0, 1e-3);
+  // A dense grid: the lookups' share already counts more than the room's records.
+  EXPECT_EQ(cacheRecordRays(s, 20000, 312.0), 0.0);
+  // Half of a: four times the records (a 100 m² box: 4 × 6 000, below the hemisphere bound
+  // 0.08 × 242 × 2048 = 39 649).
+  s.cache.accuracy = 0.1;
+  EXPECT_NEAR(cacheRecordRays(s, 242, 100.0), 4.0 * 6000.0 * perRecord - 242.0 * 2048.0 * 6.0, 1e-3);
+  // The path method has no records.
+  s.method = Method::kPath;
+  EXPECT_EQ(cacheRecordRays(s, 242, 312.0), 0.0);
+}
+
 TEST(ResourceEstimate, Seconds) {
   ResourceEstimate e;
   e.threads = 2;

@@ -51,22 +51,31 @@ TEST(TraceOptions, DefaultMethodOnlyWhenNeitherNamesOne) {
 
 // The per-point target: the preset's (normal and high 0.25 %, at most 16 batches; draft none),
 // else the case's target_error, else the caller's --target-error, which may spend 256 batches.
+// The grids' target (0.5 % of the larger of a point's value and its grid's mean): the normal and
+// high presets', and none once a per-point target is given.
 TEST(TraceOptions, TargetErrorFromPresetCaseAndCaller) {
   const ResolvedTrace normal = resolveTrace(nullptr, {}, Method::kPath);
   EXPECT_DOUBLE_EQ(normal.settings.targetRelativeError, 0.0025);
+  EXPECT_DOUBLE_EQ(normal.settings.gridTargetRelativeError, 0.005);
   EXPECT_EQ(normal.settings.maxBatches, kPresetMaxBatches);
   TraceOverrides draft;
   draft.quality = Quality::kDraft;
   EXPECT_EQ(resolveTrace(nullptr, draft, Method::kPath).settings.targetRelativeError, 0.0);
+  EXPECT_EQ(resolveTrace(nullptr, draft, Method::kPath).settings.gridTargetRelativeError, 0.0);
+  TraceOverrides high;
+  high.quality = Quality::kHigh;
+  EXPECT_DOUBLE_EQ(resolveTrace(nullptr, high, Method::kPath).settings.gridTargetRelativeError, 0.005);
 
   Settings c;
   c.targetRelativeError = 0.01;
   const ResolvedTrace fromCase = resolveTrace(&c, {}, Method::kPath);
   EXPECT_DOUBLE_EQ(fromCase.settings.targetRelativeError, 0.01);
+  EXPECT_EQ(fromCase.settings.gridTargetRelativeError, 0.0);
   EXPECT_EQ(fromCase.settings.maxBatches, kExplicitTargetMaxBatches);
   TraceOverrides off;
   off.targetRelativeError = 0.0;
   EXPECT_EQ(resolveTrace(&c, off, Method::kPath).settings.targetRelativeError, 0.0);
+  EXPECT_EQ(resolveTrace(nullptr, off, Method::kPath).settings.gridTargetRelativeError, 0.0);
   EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(normal.settings), 1.25);
   EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(fromCase.settings), 4.0);
   EXPECT_DOUBLE_EQ(expectedBatchesPerPoint(resolveTrace(&c, off, Method::kPath).settings), 1.0);
