@@ -53,6 +53,9 @@ struct ScenePattern {
   // texfunc, texdata: the three values perturb the surface normal (in the function's
   // coordinates, turned to the world) instead of multiplying the colour.
   bool texture = false;
+  // spectrum, specfile: a constant colour (the spectrum reduced to RGB: engine/radiance/spectrum.h).
+  bool constant = false;
+  Rgb constantColour{1.0};
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;

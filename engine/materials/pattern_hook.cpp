@@ -61,7 +61,8 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   for (int i = index; i >= 0;) {
     const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
-    if (sp.texture) {  // perturbs the normal (perturbation), no colour
+    if (sp.texture || sp.constant) {  // a texture perturbs the normal (perturbation), no colour
+      if (sp.constant) c *= sp.constantColour;
       i = sp.next;
       continue;
     }

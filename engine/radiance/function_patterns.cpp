@@ -3,6 +3,7 @@
 #include "base/input_file.h"
 #include "engine/radiance/file_lookup.h"
 #include "engine/radiance/picture.h"
+#include "engine/radiance/spectrum.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -67,12 +68,53 @@ bool isDataPattern(const RadPrimitive& p) {
 bool isFunctionPattern(const RadPrimitive& p) {
   return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
          (p.type == "mixfunc" && p.strings.size() >= 4) || (p.type == "texfunc" && p.strings.size() >= 4) ||
-         isDataPattern(p);
+         p.type == "spectrum" || p.type == "specfile" || isDataPattern(p);
 }
 
 bool isMixture(const RadPrimitive& p) { return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict"; }
 
 namespace {
+
+// spectrum (`0 0 5+ nmA nmB s1 … sN`: values evenly spaced from nmA to nmB nm) and specfile (`1
+// file 0 0`: a one-dimensional data file over wavelength): the spectrum as an RGB colour.
+ScenePattern readSpectrumPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                                 ScenePattern sp) {
+  const std::string what = p.type + " '" + p.name + "'";
+  sp.constant = true;
+  sp.channels = 3;
+  if (p.type == "spectrum") {
+    if (!p.strings.empty() || p.reals.size() < 5)
+      throw InputError(p.loc, what + " needs no string and 5 or more real arguments (nmA nmB s1 s2 s3 ...), got " +
+                                  std::to_string(p.strings.size()) + " and " + std::to_string(p.reals.size()));
+    const double a = p.reals[0], b = p.reals[1];
+    if (!(std::isfinite(a) && std::isfinite(b) && a > 0.0 && b > 0.0 && a != b && a < 1e4 && b < 1e4))
+      throw InputError(p.loc, what + ": its wavelengths must be two different positive numbers of nm, got " +
+                                  compactNumber(a) + " and " + compactNumber(b));
+    const std::vector<double> v(p.reals.begin() + 2, p.reals.end());
+    for (double x : v)
+      if (!(x >= 0.0 && x <= 1e30)) throw InputError(p.loc, what + ": a value is negative or not a number");
+    const double step = (b - a) / static_cast<double>(v.size() - 1);
+    sp.constantColour = spectrumToRgb(
+        [&](double nm) {
+          const double t = std::clamp((nm - a) / step, 0.0, static_cast<double>(v.size() - 1));
+          const size_t i = std::min(static_cast<size_t>(t), v.size() - 2);
+          return v[i] + (t - static_cast<double>(i)) * (v[i + 1] - v[i]);
+        },
+        a, b);
+    return sp;
+  }
+  if (p.strings.size() != 1 || !p.reals.empty())
+    throw InputError(p.loc, what + " needs its data file as its one string argument and no real argument");
+  const std::shared_ptr<const RadDataArray> d = files.data(p.strings[0], p, folder);
+  if (d->dimensions() != 1)
+    throw InputError(p.loc, what + ": its data file '" + p.strings[0] + "' must have one dimension (wavelength), has " +
+                                std::to_string(d->dimensions()));
+  const RadDataArray::Axis& axis = d->axes[0];
+  const double a = axis.points.empty() ? axis.begin : axis.points.front();
+  const double b = axis.points.empty() ? axis.end : axis.points.back();
+  sp.constantColour = spectrumToRgb([&](double nm) { return std::max(0.0, d->value(&nm)); }, a, b);
+  return sp;
+}
 
 // brightdata, colordata, colorpict, mixdata, mixpict (Radiance's p_data.c and mx_data.c): the
 // functions called with the looked-up value(s), the data (files or a picture), the function file,
@@ -160,6 +202,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.args = p.reals;
   sp.next = next;
   if (isDataPattern(p)) return readDataPattern(p, files, folder, std::move(sp), index);
+  if (p.type == "spectrum" || p.type == "specfile") return readSpectrumPattern(p, files, folder, std::move(sp));
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
   // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.

@@ -439,6 +439,11 @@ class SceneReader::Builder {
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
                   scene_.patterns[static_cast<size_t>(m.pattern)].name +
                   "', which candela applies to light, illum and glow only");
+    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].constant && family.emits())
+      fail(p, p.type + " '" + p.name + "' is modified by the spectrum '" +
+                  scene_.patterns[static_cast<size_t>(m.pattern)].name +
+                  "': candela reduces spectra of reflectance and transmittance to RGB, not yet a light's spectrum "
+                  "(whose normalisation to the light's radiance it does not model); give the light its RGB radiance");
     m.name = p.name;
     m.loc = p.loc;
     // The functions of its own arguments (plastic2's u direction, BRTDfunc's specular parts).
