@@ -287,11 +287,8 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       st.skip = v.flatSkip;
       continue;
     }
-    v.ns = v.nf;
-    if (m->perturbation != Vec3(0.0)) {  // a texture turns the shading normal
-      v.ns = shadingNormal(v.nf, v.front ? m->perturbation : -m->perturbation);
-      v.textured = true;
-    }
+    v.ns = shadingNormal(*m, v.nf, v.front);  // a texture turns it
+    v.textured = m->perturbation != Vec3(0.0);
     const MaterialFamily& family = familyOf(*m);
     switch (family.role()) {
       case HitRole::kEmit:

@@ -220,8 +220,7 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   // plastic, metal, trans.
   if (cr.estimatesLeft < 2) return plainPath(cr, o, d, skip);
   cr.estimatesLeft -= 2;  // at most two estimates (front and back)
-  const Vec3 ns = m->perturbation != Vec3(0.0) ? shadingNormal(nf, front ? m->perturbation : -m->perturbation) : nf;
-  return surfaceRadiance(cr, *m, x, d, nf, ns, off, flatSkip, share, events);
+  return surfaceRadiance(cr, *m, x, d, nf, shadingNormal(*m, nf, front), off, flatSkip, share, events);
 }
 
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.

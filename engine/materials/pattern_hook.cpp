@@ -33,24 +33,17 @@ void PatternEvaluator::fill(const ScenePattern& sp, const PatternPoint& p, cal::
 
 double PatternEvaluator::function(const ScenePattern& sp, int k) {
   try {
-    return eval_->value(sp.functions[static_cast<size_t>(k)]);
-  } catch (const cal::EvalError& e) {
-    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
-  }
-}
-
-double PatternEvaluator::dataFunction(const ScenePattern& sp, int k) {
-  // The lookup point (a picture's: v then u, Radiance's y-major order), the values there, and the
-  // function of channel k called with them.
-  double pt[kMaxDataDimensions];
-  const size_t n = sp.coordinates.size();
-  try {
+    if (sp.coordinates.empty()) return eval_->value(sp.functions[static_cast<size_t>(k)]);
+    // A data pattern: the lookup point (a picture's: v then u, Radiance's y-major order), the
+    // values there, and the function of channel k called with them.
+    double pt[kMaxDataDimensions];
+    const size_t n = sp.coordinates.size();
     for (size_t i = 0; i < n; ++i) pt[sp.picture ? n - 1 - i : i] = eval_->value(sp.coordinates[i]);
     double values[3];
-    int count = 0;
+    size_t count = 0;
     for (const auto& d : sp.data)
       if (d) values[count++] = d->value(pt);
-    return eval_->call(sp.functions[static_cast<size_t>(k)], std::span<const double>(values, static_cast<size_t>(count)));
+    return eval_->call(sp.functions[static_cast<size_t>(k)], std::span<const double>(values, count));
   } catch (const cal::EvalError& e) {
     throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
   }
@@ -61,17 +54,15 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   for (int i = index; i >= 0;) {
     const ScenePattern& sp = scene_.patterns[static_cast<size_t>(i)];
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
-    if (sp.texture || sp.constant) {  // a texture perturbs the normal (perturbation), no colour
-      if (sp.constant) c *= sp.constantColour;
-      i = sp.next;
-      continue;
-    }
-    begin(sp, p);
-    const bool data = !sp.coordinates.empty();
-    if (sp.channels == 1) {
-      c *= data ? dataFunction(sp, 0) : function(sp, 0);
-    } else {
-      for (int k = 0; k < 3; ++k) c[k] *= data ? dataFunction(sp, k) : function(sp, k);
+    if (sp.constant) {
+      c *= sp.constantColour;
+    } else if (!sp.texture) {  // a texture perturbs the normal (perturbation), no colour
+      begin(sp, p);
+      if (sp.channels == 1) {
+        c *= function(sp, 0);
+      } else {
+        for (int k = 0; k < 3; ++k) c[k] *= function(sp, k);
+      }
     }
     i = sp.next;
   }
@@ -81,7 +72,7 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
 double PatternEvaluator::value(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
   begin(sp, p);
-  return sp.coordinates.empty() ? function(sp, 0) : dataFunction(sp, 0);
+  return function(sp, 0);
 }
 
 Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patternColour) {
@@ -109,7 +100,7 @@ Vec3 PatternEvaluator::perturbation(int index, const PatternPoint& p) {
     if (sp.texture) {
       begin(sp, p);
       Vec3 v(0.0);
-      for (int k = 0; k < 3; ++k) v[k] = sp.coordinates.empty() ? function(sp, k) : dataFunction(sp, k);
+      for (int k = 0; k < 3; ++k) v[k] = function(sp, k);
       // Radiance's t_func.c: the displacement turned to the world, its scale taken out.
       sum += sp.toWorld.direction(v) / sp.functionScale;
     }

@@ -41,10 +41,9 @@ class PatternEvaluator {
   void begin(const ScenePattern& sp, const PatternPoint& p);
   // The ray's variables of pattern sp at p (makes the evaluator on first use).
   void fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env);
-  // Function k of sp in the evaluation begun; a failure is an InputError at the pattern's line.
+  // Function k of sp in the evaluation begun (a data pattern's: called with its data at the point
+  // its coordinates give); a failure is an InputError at the pattern's line.
   double function(const ScenePattern& sp, int k);
-  // A data pattern's function k called with its data at the point its coordinates give.
-  double dataFunction(const ScenePattern& sp, int k);
 
   const Scene& scene_;
   std::unique_ptr<cal::Evaluator> eval_;
@@ -60,10 +59,12 @@ inline int functionPatternOf(const Scene& scene, const MaterialParameters& m) {
                                                                                                       : -1;
 }
 
-// The shading normal: nf turned by the perturbation pert (both on the side the ray met), as
-// Radiance's raynormal; nf itself when they cancel.
-inline Vec3 shadingNormal(const Vec3& nf, const Vec3& pert) {
-  const Vec3 n = nf + pert;
+// The shading normal of a surface of m met on its front (or back) side, nf the normal facing the
+// ray: nf turned by m's perturbation (turned to that side too), as Radiance's raynormal; nf
+// itself without a texture, or where the two cancel.
+inline Vec3 shadingNormal(const MaterialParameters& m, const Vec3& nf, bool front) {
+  if (m.perturbation == Vec3(0.0)) return nf;
+  const Vec3 n = nf + (front ? m.perturbation : -m.perturbation);
   const double l = glm::length(n);
   return l > 1e-9 ? n / l : nf;
 }

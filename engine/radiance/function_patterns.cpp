@@ -13,48 +13,43 @@ namespace candela {
 
 FunctionFiles::FunctionFiles() : program_(std::make_shared<cal::Program>()) {}
 
+const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const RadPrimitive& p,
+                                               const std::filesystem::path& folder, const std::string& role,
+                                               const std::function<Arrays(const std::filesystem::path&)>& read) {
+  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", role);
+  std::error_code ec;
+  const std::string key = role + ":" + std::filesystem::weakly_canonical(path, ec).string();
+  auto it = read_.find(key);
+  if (it == read_.end()) {
+    files_.push_back(path.string());
+    it = read_.emplace(key, Read{path.string(), read(path)}).first;
+  }
+  return it->second;
+}
+
 std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
   if (name == ".") return {};
-  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "function file");
-  std::error_code ec;
-  const std::string key = std::filesystem::weakly_canonical(path, ec).string();
-  if (!loaded_.count(key)) {
-    loaded_[key] = true;
-    files_.push_back(path.string());
-    program_->addText(readInputFile(path, "function file"), path.string());
-  }
-  return path.string();
+  return once(name, p, folder, "function file", [this](const std::filesystem::path& path) {
+           program_->addText(readInputFile(path, "function file"), path.string());
+           return Arrays{};
+         }).path;
 }
 
 std::shared_ptr<const RadDataArray> FunctionFiles::data(const std::string& name, const RadPrimitive& p,
                                                         const std::filesystem::path& folder) {
-  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "data file");
-  std::error_code ec;
-  const std::string key = std::filesystem::weakly_canonical(path, ec).string();
-  auto it = arrays_.find(key);
-  if (it == arrays_.end()) {
-    files_.push_back(path.string());
-    it = arrays_.emplace(key, std::array<std::shared_ptr<const RadDataArray>, 3>{
-                                  std::make_shared<const RadDataArray>(readRadDataFile(path, p.loc))}).first;
-  }
-  return it->second[0];
+  return once(name, p, folder, "data file", [&p](const std::filesystem::path& path) {
+           return Arrays{std::make_shared<const RadDataArray>(readRadDataFile(path, p.loc))};
+         }).arrays[0];
 }
 
-std::array<std::shared_ptr<const RadDataArray>, 3> FunctionFiles::picture(const std::string& name,
-                                                                          const RadPrimitive& p,
-                                                                          const std::filesystem::path& folder) {
-  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "picture");
-  std::error_code ec;
-  const std::string key = "picture:" + std::filesystem::weakly_canonical(path, ec).string();
-  auto it = arrays_.find(key);
-  if (it == arrays_.end()) {
-    files_.push_back(path.string());
-    std::array<RadDataArray, 3> rgb = readRadiancePicture(path);
-    std::array<std::shared_ptr<const RadDataArray>, 3> shared;
-    for (int c = 0; c < 3; ++c) shared[static_cast<size_t>(c)] = std::make_shared<const RadDataArray>(std::move(rgb[static_cast<size_t>(c)]));
-    it = arrays_.emplace(key, shared).first;
-  }
-  return it->second;
+FunctionFiles::Arrays FunctionFiles::picture(const std::string& name, const RadPrimitive& p,
+                                             const std::filesystem::path& folder) {
+  return once(name, p, folder, "picture", [](const std::filesystem::path& path) {
+           std::array<RadDataArray, 3> rgb = readRadiancePicture(path);
+           Arrays shared;
+           for (size_t c = 0; c < 3; ++c) shared[c] = std::make_shared<const RadDataArray>(std::move(rgb[c]));
+           return shared;
+         }).arrays;
 }
 
 namespace {

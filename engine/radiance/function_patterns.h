@@ -17,6 +17,7 @@
 #include "engine/scene.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -41,9 +42,19 @@ class FunctionFiles {
   const std::vector<std::string>& files() const { return files_; }
 
  private:
+  using Arrays = std::array<std::shared_ptr<const RadDataArray>, 3>;
+  struct Read {
+    std::string path;  // as found
+    Arrays arrays;     // what a data file or picture holds (none for a function file)
+  };
+  // Finds `name` (a `role`: "function file", "data file", "picture") as every file a scene names
+  // is found; the first time its canonical path is met in that role, `read` reads it and the file
+  // is listed in files(); later, what was read then.
+  const Read& once(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder,
+                   const std::string& role, const std::function<Arrays(const std::filesystem::path&)>& read);
+
   std::shared_ptr<cal::Program> program_;
-  std::map<std::string, bool> loaded_;
-  std::map<std::string, std::array<std::shared_ptr<const RadDataArray>, 3>> arrays_;
+  std::map<std::string, Read> read_;  // by role and canonical path
   std::vector<std::string> files_;
 };
 

@@ -32,6 +32,15 @@ bool mayExist(const std::filesystem::path& p);
 void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, size_t from, FunctionFiles& files,
                          bool* smooth);
 
+// Defines the generator's function `name(params)` (params: "t" or "s, t") as the command's
+// argument `expression` in program and checks it (every name it reaches defined, `arity`
+// arguments); an InputError at the command's line, "<generator>: <what> '<expression>' is not an
+// expression: …", otherwise. Returns its symbol.
+// 7 parameters: the program, the command, and the function's name, parameters, arity, text and label.
+cal::Symbol defineGeneratorFunction(cal::Program& program, const RadCommand& cmd, const std::string& name,
+                                    const std::string& params, int arity, const std::string& expression,
+                                    const std::string& what);
+
 // Refused above this many primitives from one command.
 inline constexpr double kMaxGeneratedPrimitives = 1e7;
 // What a generated primitive takes once read, through the reader, the scene and the accelerator

@@ -30,28 +30,22 @@ std::vector<RadPrimitive> expandGenrev(const RadCommand& cmd, const RadExpandCon
   cal::Program& program = *files.program();
   bool smooth = false;  // not evaluated (above)
   readFunctionOptions(cmd, ctx, 6, files, &smooth);
-  const FileLoc at = cmd.loc;
-  cal::Symbol nName = -1;
   // z and r as functions of t: each expression the body of a definition with the parameter t.
-  const char* const what[] = {"z(t)", "r(t)", "nseg"};
-  for (int k = 0; k < 3; ++k) {
-    try {
-      if (k < 2) program.addText(std::string(k == 0 ? "`genrev.zf" : "`genrev.rf") + "(t) = " + w[3 + k] + ";", "-");
-      else nName = program.addExpression(w[5], "`genrev.n", at);
-    } catch (const InputError& e) {
-      fail(std::string(what[k]) + " '" + w[3 + k] + "' is not an expression: " + e.message());
-    }
+  const cal::Symbol zf = defineGeneratorFunction(program, cmd, "`genrev.zf", "t", 1, w[3], "z(t)");
+  const cal::Symbol rf = defineGeneratorFunction(program, cmd, "`genrev.rf", "t", 1, w[4], "r(t)");
+  cal::Symbol nName = -1;
+  try {
+    nName = program.addExpression(w[5], "`genrev.n", cmd.loc);
+  } catch (const InputError& e) {
+    fail("nseg '" + w[5] + "' is not an expression: " + e.message());
   }
-  program.check("`genrev.zf", 1, at, w[3]);
-  program.check("`genrev.rf", 1, at, w[4]);
-  program.check("`genrev.n", -1, at, w[5]);
+  program.check("`genrev.n", -1, cmd.loc, w[5]);
   cal::Evaluator eval(program);
   eval.begin({});
   const double nsegValue = eval.value(nName) + 0.5;
   if (!(nsegValue >= 1.0 && nsegValue <= kMaxSegments))
     fail("the number of segments must be 1 to " + std::to_string(kMaxSegments) + ", got " + w[5]);
   const int nseg = static_cast<int>(nsegValue);
-  const cal::Symbol zf = program.find("`genrev.zf"), rf = program.find("`genrev.rf");
   auto at_t = [&](int i, double& z, double& r) {
     const double t[] = {static_cast<double>(i) / nseg};
     eval.begin({});

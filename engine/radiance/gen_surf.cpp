@@ -110,14 +110,9 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
   static const char* const kName[] = {"`gensurf.x", "`gensurf.y", "`gensurf.z"};
   static const char* const kWhat[] = {"x(s,t)", "y(s,t)", "z(s,t)"};
   const int functions = !data ? 3 : data->size == 3 ? 0 : 2;
-  for (int k = 0; k < functions; ++k) {
-    try {
-      program.addText(std::string(kName[k]) + "(s, t) = " + w[3 + static_cast<size_t>(k)] + ";", "-");
-    } catch (const InputError& e) {
-      fail(std::string(kWhat[k]) + " '" + w[3 + static_cast<size_t>(k)] + "' is not an expression: " + e.message());
-    }
-    program.check(kName[k], 2, cmd.loc, w[3 + static_cast<size_t>(k)]);
-  }
+  cal::Symbol f[3] = {-1, -1, -1};
+  for (int k = 0; k < functions; ++k)
+    f[k] = defineGeneratorFunction(program, cmd, kName[k], "s, t", 2, w[3 + static_cast<size_t>(k)], kWhat[k]);
   // valid(s, t), when the options define it as a function of two arguments.
   bool checkValid = false;
   if (program.find("valid") >= 0) {
@@ -129,8 +124,6 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
     }
   }
   cal::Evaluator eval(program);
-  cal::Symbol f[3] = {-1, -1, -1};
-  for (int k = 0; k < functions; ++k) f[k] = program.find(kName[k]);
   const cal::Symbol validF = checkValid ? program.find("valid") : -1;
   auto row = [&](long i, std::vector<Point>& out) {
     out.assign(static_cast<size_t>(n + 1), Point{});

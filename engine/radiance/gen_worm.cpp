@@ -28,14 +28,8 @@ std::vector<RadPrimitive> expandGenworm(const RadCommand& cmd, const RadExpandCo
   readFunctionOptions(cmd, ctx, 8, files, nullptr);
   static const char* const kName[] = {"`genworm.x", "`genworm.y", "`genworm.z", "`genworm.r"};
   static const char* const kWhat[] = {"x(t)", "y(t)", "z(t)", "r(t)"};
-  for (int k = 0; k < 4; ++k) {
-    try {
-      program.addText(std::string(kName[k]) + "(t) = " + w[3 + static_cast<size_t>(k)] + ";", "-");
-    } catch (const InputError& e) {
-      fail(std::string(kWhat[k]) + " '" + w[3 + static_cast<size_t>(k)] + "' is not an expression: " + e.message());
-    }
-    program.check(kName[k], 1, cmd.loc, w[3 + static_cast<size_t>(k)]);
-  }
+  cal::Symbol f[4];
+  for (size_t k = 0; k < 4; ++k) f[k] = defineGeneratorFunction(program, cmd, kName[k], "t", 1, w[3 + k], kWhat[k]);
   // nseg as genworm reads it (atoi): a whole number.
   char* end = nullptr;
   const long nseg = std::strtol(w[7].c_str(), &end, 10);
@@ -43,8 +37,6 @@ std::vector<RadPrimitive> expandGenworm(const RadCommand& cmd, const RadExpandCo
     fail("the number of segments must be a whole number from 1 to " + std::to_string(kMaxSegments) + ", got '" +
          w[7] + "'");
   cal::Evaluator eval(program);
-  cal::Symbol f[4];
-  for (int k = 0; k < 4; ++k) f[k] = program.find(kName[k]);
   std::vector<RadPrimitive> out;
   Vec3 lastp(0.0);
   double lastr = 0.0;

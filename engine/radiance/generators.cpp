@@ -76,6 +76,18 @@ void readFunctionOptions(const RadCommand& cmd, const RadExpandContext& ctx, siz
   }
 }
 
+cal::Symbol defineGeneratorFunction(cal::Program& program, const RadCommand& cmd, const std::string& name,
+                                    const std::string& params, int arity, const std::string& expression,
+                                    const std::string& what) {
+  try {
+    program.addText(name + "(" + params + ") = " + expression + ";", "-");
+  } catch (const InputError& e) {
+    throw InputError(cmd.loc, cmd.words[0] + ": " + what + " '" + expression + "' is not an expression: " + e.message());
+  }
+  program.check(name, arity, cmd.loc, expression);
+  return program.find(name);
+}
+
 double generatedPrimitivesAllowed(const RadExpandContext& ctx) {
   if (ctx.maxMemoryBytes == 0) return kMaxGeneratedPrimitives;
   return std::min(kMaxGeneratedPrimitives, std::floor(static_cast<double>(ctx.maxMemoryBytes) / kBytesPerGeneratedPrimitive));
