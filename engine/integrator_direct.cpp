@@ -157,7 +157,7 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     const Vec3 side = dp > 0.0 ? nm : -nm;
     // A response seen in the mirror: w at the real arrival direction, the image's reflected.
     const Response mirrored = at.response ? at.response->mirrored(nm) : Response{};
-    const Receiver image{pi, ni, skip, at.response ? &mirrored : nullptr};
+    const Receiver image{pi, ni, skip, at.response ? &mirrored : nullptr, nullptr};
     for (const Light& light : ctx.tracer.sources().lights) {
       // Glows are not sampled in mirrors: paths count them there (pathRadiance).
       if (light.glow || (light.kind == Light::Kind::kArea && light.shape == ms)) continue;
@@ -173,7 +173,8 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
         if (rest <= 0.0) return Rgb(0.0);
         const Rgb toMirror = ctx.transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms);
         if (photopic(toMirror) <= 0.0) return Rgb(0.0);
-        return toMirror * ctx.transmittance(x + Tracer::originOffset(x) * side, ls.dir, rest, ms, lightShape);
+        const Rgb weight = at.filter ? at.filter->source(dir, ls.solidAngleSr) : Rgb(1.0);
+        return weight * toMirror * ctx.transmittance(x + Tracer::originOffset(x) * side, ls.dir, rest, ms, lightShape);
       });
     }
   }
@@ -188,7 +189,8 @@ void tallySuns(TraceContext& ctx, const Receiver& at) {
   for (size_t j = 0; j < suns.size(); ++j) {
     const double cosI = glm::dot(at.n, suns[j]);
     if (cosI <= 0.0) continue;
-    tally.sunIndirect[j] += photopic(tally.outer * ctx.transmittance(at.p, suns[j], kInf, at.skip, kNoShape)) * cosI;
+    const Rgb weight = at.filter ? at.filter->source(suns[j], 0.0) : Rgb(1.0);
+    tally.sunIndirect[j] += photopic(tally.outer * weight * ctx.transmittance(at.p, suns[j], kInf, at.skip, kNoShape)) * cosI;
   }
 }
 
@@ -245,7 +247,8 @@ Rgb skyIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance
     const double wOverMp = throughPortal ? (t.pp > 0.0 ? t.portal * t.portal / denom / (kPortal * t.pp) : 0.0)
                                          : (t.ps > 0.0 ? t.sky * t.sky / denom / (kSky * t.ps) : 0.0);
     if (!(wOverMp > 0.0)) continue;
-    const Rgb v = ctx.transmittance(at.p, dir, kInf, at.skip, kNoShape);
+    Rgb v = ctx.transmittance(at.p, dir, kInf, at.skip, kNoShape);
+    if (at.filter) v *= at.filter->sky(dir);
     const Rgb g = v * (wOverMp * skyOrGroundLuminance(sky, dir) / kLumensPerWatt * cosI);
     if (tally && tally->patches && !(tally->directApart && !atPathVertex))
       tallySky(*tally, dir, v * (wOverMp * cosI), !atPathVertex);
@@ -277,8 +280,9 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
   const bool atPathVertex = variance == nullptr;
   if (atPathVertex) {
     total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf, ctx.patternsIfAny(),
-                                     [&](const Vec3& o, const Vec3& dir, double tMax, uint32_t lightShape) {
-                                       return ctx.transmittance(o, dir, tMax, at.skip, lightShape);
+                                     [&](const Vec3& o, const LightSample& ls, double tMax, uint32_t lightShape) {
+                                       const Rgb v = ctx.transmittance(o, ls.dir, tMax, at.skip, lightShape);
+                                       return at.filter ? v * at.filter->source(ls.dir, ls.solidAngleSr) : v;
                                      }, ctx.smallSin2, ctx.light.useGlowShare ? ctx.light.glowShare.data() : nullptr);
   }
   for (const Light& light : lights) {

@@ -16,11 +16,25 @@ namespace candela {
 // it lies on (skipped by its shadow rays), or kNoShape. A sensor of another quantity than planar
 // illuminance (engine/response.h) gives its response, n then its axis: the sources' light is
 // weighted by w(ω) instead of the cosine, the portals are seen from the axis.
+// A surface whose sampled sources' light depends on its direction (MaterialFamily::
+// directionalSources: Radiance's dirbrdf): the light L arriving along unit dir counts as
+// L cos ι · source(dir, omega) from a sampled source (omega its solid angle from the point), and
+// L cos ι · sky(dir) from the sky and ground, instead of L cos ι. Path vertices only.
+class LightFilter {
+ public:
+  virtual Rgb source(const Vec3& dir, double omegaSr) const = 0;
+  virtual Rgb sky(const Vec3& dir) const = 0;
+
+ protected:
+  ~LightFilter() = default;
+};
+
 struct Receiver {
   Vec3 p{0.0};
   Vec3 n{0.0, 0.0, 1.0};
   uint32_t skip = kNoShape;
   const Response* response = nullptr;  // a non-planar response, or none (planar on n)
+  const LightFilter* filter = nullptr;  // weights by direction (a path vertex), or none
 };
 
 // Direct irradiance at `at` from every sampled source with k stratified samples each; adds the

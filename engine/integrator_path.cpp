@@ -161,6 +161,27 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
   return result;
 }
 
+// The sampled sources' light at a vertex of a material whose sources' light depends on its
+// direction (MaterialFamily::sourceBrdf), on one side (transmitted: through from the other); the
+// sky's by the diffuse part the paths leaving the vertex carry.
+class SourceBrdfFilter final : public LightFilter {
+ public:
+  SourceBrdfFilter(TraceContext& ctx, const Material& m, const PatternPoint& at, bool transmitted)
+      : ctx_(ctx), m_(m), at_(at), transmitted_(transmitted),
+        sky_((transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * kInvPi) {}
+  Rgb source(const Vec3& dir, double omegaSr) const override {
+    return familyOf(m_).sourceBrdf(m_, at_, ctx_.patterns(), dir, omegaSr, transmitted_);
+  }
+  Rgb sky(const Vec3&) const override { return sky_; }
+
+ private:
+  TraceContext& ctx_;
+  const Material& m_;
+  const PatternPoint& at_;
+  bool transmitted_;
+  Rgb sky_;
+};
+
 // Light leaving a diffuse vertex v of material m towards the incoming ray. The incoming ray's
 // countSources, MIS density and ratio and flat mirrors met carry on through specular
 // transmission (trans), which keeps its direction.
@@ -174,12 +195,21 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   const uint32_t self = v.textured ? kNoShape : v.flatSkip;
   const int k = std::max(1, st.split);
   Rgb out(0.0);
-  // Light reflected (and diffusely transmitted) from the sampled sources.
-  if (photopic(rho) > 0.0) {
+  // Light reflected (and diffusely transmitted) from the sampled sources: by the BRDF of the
+  // sources' direction where the material has one (the sky by its diffuse parts).
+  if (familyOf(m).directionalSources(m)) {
+    const PatternPoint at{v.x, v.inDir, v.ng, v.t};
+    const SourceBrdfFilter front(ctx, m, at, false);
+    out += directIrradiance(ctx, {xf, nf, self, nullptr, &front}, k, nullptr, 1.0);
+    if (familyOf(m).transmitting()) {
+      const SourceBrdfFilter back(ctx, m, at, true);
+      out += directIrradiance(ctx, {xb, -nf, self, nullptr, &back}, k, nullptr, 1.0);
+    }
+  } else if (photopic(rho) > 0.0) {
     const TallyFactor tf(ctx.tally, rho * kInvPi);
     out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self}, k, nullptr, 1.0);
   }
-  if (photopic(tauD) > 0.0) {
+  if (photopic(tauD) > 0.0 && !familyOf(m).directionalSources(m)) {
     const TallyFactor tf(ctx.tally, tauD * kInvPi);
     out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self}, k, nullptr, 1.0);
   }

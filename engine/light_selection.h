@@ -22,7 +22,8 @@ namespace candela {
 // near the source. Zero only where the light certainly cannot reach: behind a one-sided source.
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
 
-// `visibility(p, dir, tMax, lightShape)` returns the RGB transmittance of a shadow ray; `cdf` is
+// `visibility(p, sample, tMax, lightShape)` returns the RGB transmittance of the shadow ray of a
+// LightSample (and any weight the receiver gives its direction: integrator_direct.h); `cdf` is
 // the caller's scratch (TraceContext), reused from call to call. A glow counts with the share
 // glowShare[l] of its light when given (a cache lookup: LightScratch::glowShare), else fully
 // where glowSampledFrom(smallSin2) samples it from p and not at all elsewhere.
@@ -75,7 +76,7 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
     const uint32_t lightShape = lights[l].ownShape;
     const double tMax = std::isinf(ls.distance) ? std::numeric_limits<double>::infinity()
                                                 : ls.distance * (1.0 - 1e-9);
-    sum += ls.weight * ls.pattern * (cosI * share(l) / pl) * visibility(p, ls.dir, tMax, lightShape);
+    sum += ls.weight * ls.pattern * (cosI * share(l) / pl) * visibility(p, ls, tMax, lightShape);
   }
   return sum / static_cast<double>(k);
 }

@@ -54,6 +54,7 @@ bool areaSample(const Vec3& y, const Vec3& ny, const Vec3& p, const Light& light
   const double cosL = -glm::dot(ny, out.dir);  // emission from the front only
   if (cosL <= 0.0) return false;
   out.weight = light.radiance * (cosL * areaM2 / dist2);
+  out.solidAngleSr = std::min(kTwoPi, cosL * areaM2 / dist2);
   if (light.distribution) out.weight *= light.distribution->factor(out.dir, cosL);
   if (light.spot) out.weight *= light.spot->spotFactor(-out.dir, dist);
   return true;
@@ -253,6 +254,7 @@ bool sampleUnpatterned(const Light& light, const Scene& scene, const Vec3& p, do
     out.dir = f.toWorld(sampleUniformCone(u1, u2, d.cosHalfAngle));
     out.distance = std::numeric_limits<double>::infinity();
     out.weight = light.radiance * d.solidAngleSr;
+    out.solidAngleSr = d.solidAngleSr;
     y = p + kDistantPointM * out.dir;
     ny = -out.dir;
     return true;
@@ -281,6 +283,7 @@ bool sampleUnpatterned(const Light& light, const Scene& scene, const Vec3& p, do
       out.dir = dir;
       out.distance = b - std::sqrt(disc);
       out.weight = light.radiance * (kTwoPi * (1.0 - cosMax));
+      out.solidAngleSr = kTwoPi * (1.0 - cosMax);
       y = p + out.distance * dir;
       ny = (y - s.a) / s.r0;
       if (light.distribution) out.weight *= light.distribution->factor(dir, -glm::dot(dir, ny));

@@ -99,6 +99,11 @@ struct LightSample {
   double distance = 0.0;
   Rgb weight{0.0};
   Rgb pattern{1.0};
+  // The solid angle (sr) the whole source subtends from p, as Radiance passes a source's to
+  // directional functions (its `omega`): a distant source's cone; a polygon, ring or cone its
+  // area times the cosine at the sample over the distance squared (at most 2π); a sphere its cap;
+  // 0 for a luminaire (a point, or its opening sampled as one).
+  double solidAngleSr = 0.0;
 };
 
 // Draws a sample of `light` from p for the stratified pair (u1, u2); false when the sample

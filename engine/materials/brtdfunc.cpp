@@ -6,9 +6,10 @@
 // evaluated at each hit with NxP NyP NzP and RdotP turned towards the ray and CrP CgP CbP the
 // pattern's colour (Radiance's setbrdfunc); the reals give the diffuse reflectance of the front
 // and the back side and the diffuse transmittance, each times the pattern's colour. The
-// directional functions rbrtd… (light-source contributions only, in Radiance) must be 0 (none):
-// other values are refused with the reason (docs/engine.md). The glaze script's coated glazings
-// are BRTDfuncs of this kind.
+// directional functions rbrtd gbrtd bbrtd (0: none) are functions of a light source's direction
+// (lx, ly, lz, omega), the BRDF of its light on either side beside the diffuse parts (Radiance's
+// dirbrdf: the sampled sources only; the sky and paths see the diffuse and specular parts). The
+// glaze script's coated glazings are BRTDfuncs without them.
 #include "engine/materials/normal.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
@@ -21,17 +22,13 @@ class BrtdFunc : public MaterialFamily {
   MaterialType type() const override { return MaterialType::kBrtdFunc; }
   const char* name() const override { return "BRTDfunc"; }
   HitRole role() const override { return HitRole::kScatter; }
-  int functionPatterns() const override { return 2; }
+  int functionPatterns() const override { return 3; }
   void read(const MaterialReadContext& ctx, Material& m) const override {
     const RadPrimitive& p = ctx.primitive;
     if (p.reals.size() < 9)
       ctx.fail(ctx.what() + " needs 9 or more real arguments (front, back diffuse reflectance, diffuse "
                             "transmittance), got " + std::to_string(p.reals.size()));
-    for (size_t k = 6; k < 9; ++k)
-      if (p.strings[k].empty() || p.strings[k][0] != '0')
-        ctx.fail(ctx.what() + ": its directional function '" + p.strings[k] +
-                 "' (rbrtd gbrtd bbrtd) is not implemented; candela reads BRTDfuncs whose directional "
-                 "functions are 0 (specular and diffuse parts only)");
+    m.directionalFunctions = p.strings[6] != "0" || p.strings[7] != "0" || p.strings[8] != "0";
     m.color = ctx.vec(0);
     m.backColor = ctx.vec(3);
     m.transmissionColor = ctx.vec(6);
@@ -54,6 +51,15 @@ class BrtdFunc : public MaterialFamily {
     out.specularReflectance = glm::max(eval.oriented(m.functions, p, patternColour), Rgb(0.0));
     out.specularTransmittance =
         m.specularTransmission ? glm::max(eval.oriented(m.functions + 1, p, patternColour), Rgb(0.0)) : Rgb(0.0);
+  }
+  bool directionalSources(const Material& m) const override { return m.directionalFunctions; }
+  Rgb sourceBrdf(const Material& m, const PatternPoint& at, PatternEvaluator& eval, const Vec3& ldir, double omegaSr,
+                 bool transmitted) const override {
+    const Rgb f = (transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * kInvPi;
+    // Radiance's dirbrdf: the three functions (CrP CgP CbP the pattern's colour); nothing when
+    // their brightness is not above 0.
+    const Rgb d = eval.directional(m.functions + 2, at, m.patternColour, ldir, omegaSr);
+    return photopic(d) > 0.0 ? f + glm::max(d, Rgb(0.0)) : f;
   }
   bool sampleLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
     return sampleWardLobe(m, inDir, nf, rng, out);  // roughness 0: the mirror direction

@@ -167,6 +167,20 @@ class MaterialFamily {
   virtual void atHit(const Material& /*m*/, const PatternPoint& /*p*/, const Rgb& /*patternColour*/,
                      PatternEvaluator& /*eval*/, MaterialParameters& /*out*/) const {}
 
+  // Light of the sampled sources that depends on its direction (Radiance's dirbrdf,
+  // src/rt/m_brdf.c: plasfunc, metfunc, transfunc, their data forms, BRTDfunc's directional
+  // functions): whether m has such a part. Its surfaces then take the sampled sources' light with
+  // sourceBrdf, and the rest (the sky, light met by paths) with the parts derived (diffuse
+  // reflectance and transmittance over π), as Radiance's ambient does.
+  virtual bool directionalSources(const Material& /*m*/) const { return false; }
+  // The BRDF (per sr) for light of a sampled source arriving along unit ldir, the source's solid
+  // angle from the hit omegaSr, at hit p of m (its parts as the hook left them): reflected on the
+  // side the ray met (transmitted false), or through from the other side.
+  virtual Rgb sourceBrdf(const Material& /*m*/, const PatternPoint& /*p*/, PatternEvaluator& /*eval*/,
+                         const Vec3& /*ldir*/, double /*omegaSr*/, bool /*transmitted*/) const {
+    return Rgb(0.0);
+  }
+
   // kSpecular: one sampled event (paths), or every part at once (the camera).
   virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,
                                         Rgb& /*beta*/) const {

@@ -14,9 +14,9 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kPlasFunc, kMetFunc, kTransFunc, kPlasData, kMetData, kTransData
 };
-inline constexpr int kMaterialTypeCount = 17;
+inline constexpr int kMaterialTypeCount = 23;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -29,7 +29,7 @@ struct MaterialParameters {
   MaterialType type = MaterialType::kVoid;
   Rgb color{0.0};        // plastic/metal/trans/mirror/glass colour, light/glow/illum radiance or
                          // dielectric transmission per metre of path inside (fraction, per channel)
-  double specularity = 0.0;   // plastic, metal, trans (fraction)
+  double specularity = 0.0;   // plastic, metal, trans, plasfunc… (fraction)
   double roughness = 0.0;     // plastic, metal, trans (rms slope); plastic2, metal2, trans2: along u
   // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u and the u direction at a
   // hit (world, set by engine/materials/pattern_hook.h; zero until then).
@@ -48,8 +48,13 @@ struct MaterialParameters {
   Rgb backColor{0.0};
   Rgb transmissionColor{0.0};
   bool specularTransmission = false;
-  double transmissivity = 0.0;  // trans: fraction of non-specular light transmitted
-  double transmittedSpecular = 0.0;  // trans: fraction of transmitted light that is specular
+  // BRTDfunc: whether its directional functions (rbrtd gbrtd bbrtd) are not all 0.
+  bool directionalFunctions = false;
+  // At a hit: the colour of the patterns modifying the material (1 elsewhere), set by
+  // engine/materials/pattern_hook.h (BRTDfunc's CrP CgP CbP).
+  Rgb patternColour{1.0};
+  double transmissivity = 0.0;  // trans, transfunc, transdata: fraction of non-specular light transmitted
+  double transmittedSpecular = 0.0;  // the same: fraction of transmitted light that is specular
   double refractiveIndex = 1.52;     // glass, dielectric (relative to the medium on the front side)
   double hartmannConstant = 0.0;     // dielectric: read, not used (no dispersion; docs/engine.md)
   // interface: the medium on the front side (the outside), its transmission per metre and index;

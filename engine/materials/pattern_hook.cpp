@@ -75,8 +75,7 @@ double PatternEvaluator::value(int index, const PatternPoint& p) {
   return function(sp, 0);
 }
 
-Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patternColour) {
-  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+void PatternEvaluator::beginOriented(const ScenePattern& sp, const PatternPoint& p, const Rgb& colourP) {
   cal::Environment env;
   fill(sp, p, env);
   // Radiance's m_brdf.c (setbrdfunc): the perturbed normal and RdotP turned towards the ray,
@@ -85,11 +84,41 @@ Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patt
   const Vec3 n = glm::normalize(sp.toFunction.direction(rdot < 0.0 ? -p.ng : p.ng));
   env.ray[cal::kNxP] = n.x, env.ray[cal::kNyP] = n.y, env.ray[cal::kNzP] = n.z;
   env.ray[cal::kRdotP] = std::min(1.0, std::abs(rdot));
-  env.ray[cal::kCrP] = patternColour.x, env.ray[cal::kCgP] = patternColour.y, env.ray[cal::kCbP] = patternColour.z;
+  env.ray[cal::kCrP] = colourP.x, env.ray[cal::kCgP] = colourP.y, env.ray[cal::kCbP] = colourP.z;
   eval_->begin(env);
+}
+
+Rgb PatternEvaluator::oriented(int index, const PatternPoint& p, const Rgb& patternColour) {
+  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  beginOriented(sp, p, patternColour);
   Rgb c(0.0);
   for (int k = 0; k < 3; ++k) c[k] = function(sp, k);
   return c;
+}
+
+Rgb PatternEvaluator::directional(int index, const PatternPoint& p, const Rgb& colourP, const Vec3& ldir,
+                                  double omegaSr) {
+  const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  beginOriented(sp, p, colourP);
+  // Radiance's dirbrdf: the light's direction through the function's transform, its scale taken
+  // out; then the source's solid angle. A data form's function gets the value looked up first.
+  const Vec3 l = glm::normalize(sp.toFunction.direction(ldir));
+  double args[5] = {0.0, l.x, l.y, l.z, omegaSr};
+  const std::span<const double> light(args + 1, 4);
+  try {
+    if (!sp.coordinates.empty()) {
+      double pt[kMaxDataDimensions];
+      for (size_t i = 0; i < sp.coordinates.size(); ++i) pt[i] = eval_->call(sp.coordinates[i], light);
+      args[0] = sp.data[0]->value(pt);
+      return Rgb(eval_->call(sp.functions[0], std::span<const double>(args, 5)));
+    }
+    Rgb c(0.0);
+    for (int k = 0; k < sp.channels; ++k)
+      if (sp.functions[static_cast<size_t>(k)] >= 0) c[k] = eval_->call(sp.functions[static_cast<size_t>(k)], light);
+    return sp.channels == 1 ? Rgb(c.x) : c;
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
 }
 
 Vec3 PatternEvaluator::perturbation(int index, const PatternPoint& p) {
@@ -129,6 +158,7 @@ const Material& patterned(const Scene& scene, const Material& m, const PatternPo
     deriveMaterial(out);
     out.perturbation = eval.perturbation(m.pattern, p);
   }
+  out.patternColour = pc;
   if (m.functions >= 0) familyOf(m).atHit(m, p, pc, eval, out);
   return out;
 }

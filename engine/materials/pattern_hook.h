@@ -35,10 +35,19 @@ class PatternEvaluator {
   // Pattern `index`'s three functions at p with the variables Radiance's BRTDfunc defines: NxP
   // NyP NzP and RdotP turned towards the ray, CrP CgP CbP the material's pattern colour.
   Rgb oriented(int index, const PatternPoint& p, const Rgb& patternColour);
+  // Pattern `index`'s directional functions (Radiance's dirbrdf: plasfunc's refl, plasdata's
+  // function of its data, BRTDfunc's rbrtd gbrtd bbrtd) at p for light arriving along unit ldir
+  // (world) from a source of solid angle omegaSr, with the variables of `oriented` (CrP CgP CbP:
+  // colourP): each called with the direction in the function's coordinates and omegaSr; a data
+  // form's coordinates called so, its function with the value looked up first. One value (grey)
+  // or three; a function given as 0 is 0.
+  Rgb directional(int index, const PatternPoint& p, const Rgb& colourP, const Vec3& ldir, double omegaSr);
 
  private:
   // Starts an evaluation of pattern sp at p (the ray's variables in its coordinates).
   void begin(const ScenePattern& sp, const PatternPoint& p);
+  // Starts one with the variables Radiance's BRTDfunc defines (oriented, directional).
+  void beginOriented(const ScenePattern& sp, const PatternPoint& p, const Rgb& colourP);
   // The ray's variables of pattern sp at p (makes the evaluator on first use).
   void fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env);
   // Function k of sp in the evaluation begun (a data pattern's: called with its data at the point

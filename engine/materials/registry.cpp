@@ -30,6 +30,12 @@ constexpr Entry kFamilies[] = {
     {trans2Family, {"trans2", nullptr}},
     {mistFamily, {"mist", nullptr}},
     {brtdFuncFamily, {"BRTDfunc", nullptr}},
+    {plasFuncFamily, {"plasfunc", nullptr}},
+    {metFuncFamily, {"metfunc", nullptr}},
+    {transFuncFamily, {"transfunc", nullptr}},
+    {plasDataFamily, {"plasdata", nullptr}},
+    {metDataFamily, {"metdata", nullptr}},
+    {transDataFamily, {"transdata", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -22,5 +22,12 @@ const MaterialFamily& metal2Family();
 const MaterialFamily& trans2Family();
 const MaterialFamily& mistFamily();
 const MaterialFamily& brtdFuncFamily();
+// plasfunc, metfunc, transfunc, plasdata, metdata, transdata (brdf_function.cpp).
+const MaterialFamily& plasFuncFamily();
+const MaterialFamily& metFuncFamily();
+const MaterialFamily& transFuncFamily();
+const MaterialFamily& plasDataFamily();
+const MaterialFamily& metDataFamily();
+const MaterialFamily& transDataFamily();
 
 }  // namespace candela

@@ -182,6 +182,64 @@ ScenePattern readDataPattern(const RadPrimitive& p, FunctionFiles& files, const 
   return sp;
 }
 
+// Names a function of the light's direction: a plain name defined with at least `args`
+// parameters (Radiance's funvalue calls it with them; extra arguments are unused).
+cal::Symbol directionalFunction(const RadPrimitive& p, FunctionFiles& files, const std::string& name, int args,
+                                const std::string& role) {
+  const std::string what = p.type + " '" + p.name + "'";
+  if (!cal::isName(name))
+    throw InputError(p.loc, what + ": its " + role + " '" + name + "' must name a function of " +
+                                (args == 4 ? "the light's direction (lx, ly, lz, omega)"
+                                           : "the value looked up and the light's direction (v, lx, ly, lz, omega)"));
+  files.program()->check(name, args, p.loc);
+  return files.program()->find(name);
+}
+
+// The functions of a light source's direction (Radiance's dirbrdf, src/rt/m_brdf.c):
+// plasfunc, metfunc, transfunc `2+ refl funcfile transform`; plasdata, metdata, transdata `4+ func
+// datafile funcfile x1 … xn transform` (each xi a function of the direction, func one of the value
+// looked up and the direction); BRTDfunc's rbrtd gbrtd bbrtd (0: none).
+ScenePattern readDirectionalPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                                    ScenePattern sp) {
+  const std::string what = p.type + " '" + p.name + "'";
+  const bool brtd = p.type == "BRTDfunc";
+  const bool data = p.type == "plasdata" || p.type == "metdata" || p.type == "transdata";
+  const size_t fileAt = brtd ? 9 : data ? 2 : 1;
+  if (p.strings.size() < fileAt + 1)
+    throw InputError(p.loc, what + " needs " + std::to_string(fileAt + 1) + " or more string arguments (" +
+                                (data ? "func datafile funcfile x1 .. xn [transform]" : "refl funcfile [transform]") +
+                                "), got " + std::to_string(p.strings.size()));
+  files.load(p.strings[fileAt], p, folder);
+  size_t next = fileAt + 1;
+  sp.channels = brtd ? 3 : 1;
+  if (brtd) {
+    for (size_t k = 0; k < 3; ++k)
+      if (p.strings[6 + k] != "0")
+        sp.functions[k] = directionalFunction(p, files, p.strings[6 + k], 4, "directional function");
+  } else if (data) {
+    sp.data[0] = files.data(p.strings[1], p, folder);
+    const size_t dims = static_cast<size_t>(sp.data[0]->dimensions());
+    if (p.strings.size() < next + dims)
+      throw InputError(p.loc, what + ": its data file '" + p.strings[1] + "' has " + std::to_string(dims) +
+                                  " dimensions: give as many coordinate functions after the function file");
+    for (size_t k = 0; k < dims; ++k)
+      sp.coordinates.push_back(directionalFunction(p, files, p.strings[next + k], 4, "coordinate"));
+    next += dims;
+    sp.functions[0] = directionalFunction(p, files, p.strings[0], 5, "function");
+  } else {
+    sp.functions[0] = directionalFunction(p, files, p.strings[0], 4, "function");
+  }
+  RadTransform toWorld;
+  const size_t end = parseRadTransform(p.strings, next, toWorld, p.loc, what);
+  if (end != p.strings.size())
+    throw InputError(p.loc, what + ": '" + p.strings[end] +
+                                "' is not a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
+  sp.toFunction = toWorld.inverse();
+  sp.toWorld = toWorld;
+  sp.functionScale = std::abs(toWorld.scale);
+  return sp;
+}
+
 }  // namespace
 
 ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
@@ -198,6 +256,9 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.next = next;
   if (isDataPattern(p)) return readDataPattern(p, files, folder, std::move(sp), index);
   if (p.type == "spectrum" || p.type == "specfile") return readSpectrumPattern(p, files, folder, std::move(sp));
+  if ((p.type == "BRTDfunc" && part == 2) || p.type == "plasfunc" || p.type == "metfunc" || p.type == "transfunc" ||
+      p.type == "plasdata" || p.type == "metdata" || p.type == "transdata")
+    return readDirectionalPattern(p, files, folder, std::move(sp));
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
   // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.

@@ -68,7 +68,8 @@ bool isMixture(const RadPrimitive& p);
 // The pattern p describes, its expressions added to files.program() and checked (every name they
 // reach defined, each used as it is defined): an InputError at p's line otherwise. `index` is the
 // pattern's index in Scene::patterns, `next` the pattern modifying it (-1: none); `part` which
-// of a material's patterns (BRTDfunc: 0 its specular reflectance, 1 its transmittance).
+// of a material's patterns (BRTDfunc: 0 its specular reflectance, 1 its transmittance, 2 its
+// directional functions).
 ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
                                  int index, int next, int part = 0);
 

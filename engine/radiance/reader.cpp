@@ -431,9 +431,35 @@ class SceneReader::Builder {
     patterns_.erase(p.name);
   }
 
+  // The functions of a material's own arguments (plastic2's u direction, BRTDfunc's specular
+  // parts, plasfunc's BRDF) into Scene::patterns, the first at m.functions.
+  void readOwnFunctions(const Primitive& p, const MaterialFamily& family, Material& m) {
+    for (int part = 0; part < family.functionPatterns(); ++part) {
+      const int index = static_cast<int>(scene_.patterns.size());
+      scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1, part));
+      scene_.functions = functionFiles_.program();
+      scene_.functionFiles = functionFiles_.files();
+      if (part == 0) m.functions = index;
+    }
+  }
+
   void addMaterial(const Primitive& p, const MaterialFamily& family) {
     Material m;
-    m.pattern = patternOf(p);
+    // What the material reaches that candela cannot read (a pattern kept refused, its own function
+    // files) refuses it only where a surface uses it (a library's plasfunc whose aniso.cal is not on
+    // this RAYPATH); its own arguments are checked here (family.read), an undefined modifier too.
+    try {
+      m.pattern = patternOf(p);
+      readOwnFunctions(p, family, m);
+    } catch (const InputError& e) {
+      if (p.modifier != "void" && !materials_.count(p.modifier) && !patterns_.count(p.modifier) &&
+          !deferred_.count(p.modifier))
+        throw;
+      deferred_.insert_or_assign(p.name, e);
+      materials_.erase(p.name);
+      patterns_.erase(p.name);
+      return;
+    }
     m.type = family.type();
     if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source && !family.emits())
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
@@ -446,14 +472,6 @@ class SceneReader::Builder {
                   "(whose normalisation to the light's radiance it does not model); give the light its RGB radiance");
     m.name = p.name;
     m.loc = p.loc;
-    // The functions of its own arguments (plastic2's u direction, BRTDfunc's specular parts).
-    for (int part = 0; part < family.functionPatterns(); ++part) {
-      const int index = static_cast<int>(scene_.patterns.size());
-      scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, -1, part));
-      scene_.functions = functionFiles_.program();
-      scene_.functionFiles = functionFiles_.files();
-      if (part == 0) m.functions = index;
-    }
     const MaterialReadContext ctx{p, [this, &p](const std::string& name) {
                                     refuseIfDeferred(name, userOf(p));
                                     const auto it = materials_.find(name);

@@ -427,7 +427,7 @@ TEST(SourceDistribution, LightSelectionAtPathVerticesIsUnbiased) {
   double sum = 0.0, sum2 = 0.0;
   for (int c = 0; c < calls; ++c) {
     Rng rng(7, static_cast<uint64_t>(c));
-    auto open = [](const Vec3&, const Vec3&, double, uint32_t) { return Rgb(1.0); };  // unoccluded
+    auto open = [](const Vec3&, const LightSample&, double, uint32_t) { return Rgb(1.0); };  // unoccluded
     const double e = photopic(sampleLightsByImportance(lights, sc, q.p, q.n, 16, rng, cdf, nullptr, open));
     sum += e;
     sum2 += e * e;

@@ -83,8 +83,8 @@ TEST(AnisotropicWard, DirectionFromTheFunctionFileThroughItsTransform) {
   EXPECT_NEAR(at.anisotropyU.x, 0.0, 1e-12);
   EXPECT_NEAR(at.anisotropyU.y, 1.0, 1e-12);
   EXPECT_EQ(at.diffuseReflectance, m.diffuseReflectance);  // no pattern: the colour unchanged
-  // Too few strings, a missing function: refused at the line.
-  std::ofstream(dir / "bad.rad") << "void metal2 m 2 ux u.cal 0 6 .5 .5 .5 .9 .1 .1\n";
+  // Too few strings, a missing function: refused at the line, where a surface uses it.
+  std::ofstream(dir / "bad.rad") << "void metal2 m 2 ux u.cal 0 6 .5 .5 .5 .9 .1 .1\nm polygon p 0 0 9 0 0 0 1 0 0 0 1 0\n";
   try {
     Scene bad;
     readRadianceFile(dir / "bad.rad", bad);
