@@ -14,6 +14,7 @@
 #include "photometry/sky_type.h"
 #include "study/points_study.h"
 #include "study/sensor_grid.h"
+#include "engine/irradiance_estimator.h"
 
 #include <cstdio>
 #include <iostream>

@@ -37,7 +37,7 @@ IrradianceCache buildIrradianceCache(const Tracer& tracer, const std::vector<Sen
                                      const std::function<void()>& checkpoint = {});
 
 // The first diffuse hits, on surfaces the cache serves, of the initial hemisphere cells that
-// Tracer::irradiance(p, n, pointIndex, s, cache) will trace (same directions), appended to out.
+// estimateIrradiance(tracer, p, n, pointIndex, s, {cache}) will trace (same directions), appended to out.
 // 6 parameters: the sensor estimate's own inputs plus the output list.
 void cacheQueries(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
                   std::vector<CacheQuery>& out);

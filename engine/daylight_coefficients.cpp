@@ -1,6 +1,8 @@
 #include "engine/daylight_coefficients.h"
 
 #include "engine/daylight.h"
+#include "engine/irradiance_estimator.h"
+#include "engine/sky_tally.h"
 #include "base/parallel.h"
 #include "engine/sampling.h"
 #include "photometry/site.h"
@@ -16,6 +18,71 @@
 #include <stdexcept>
 
 namespace candela {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The stream of a point's patch-by-patch direct sky samples (skyCoefficients).
+constexpr uint64_t kPatchStream = streams::kSkyPatches.first;
+
+// The settings of the coefficient estimates: path traced, and no adaptive supersampling (a
+// refined stratum's first sample would change weight in the tallies) nor target error.
+TraceSettings coefficientSettings(const TraceSettings& s) {
+  TraceSettings t = s;
+  t.method = Method::kPath;
+  t.adaptiveFraction = 0.0;
+  t.targetRelativeError = 0.0;
+  return t;
+}
+
+}  // namespace
+
+void skyCoefficients(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                     const SkyPatches& patches, double* direct, double* indirect, bool directByPatch) {
+  const Scene& scene = tracer.scene();
+  if (!scene.sky) throw std::logic_error("skyCoefficients needs a scene with a sky");
+  const TraceSettings t = coefficientSettings(s);
+  // The sky seen directly, patch by patch: s.lightSamples stratified directions in each (uniform
+  // in solid angle; the ground takes 4× as many, being 2π sr), each with its shadow ray through
+  // glass and trans as the point estimator's would. Every patch gets its own samples, so a
+  // small bright patch (the circumsolar sky) is known as well as a large dim one, which sky
+  // samples drawn over the whole hemisphere cannot give a patch seen through a window.
+  Rng rng(s.seed, kPatchStream + pointIndex);
+  uint64_t rays = 0;
+  for (int b = 0; directByPatch && b < patches.count(); ++b) {
+    const Strata2D strata(std::max(1, s.lightSamples) * (b == 0 ? 4 : 1));
+    double sum = 0.0;
+    for (int i = 0; i < strata.size(); ++i) {
+      const Vec2 u = strata.sample(i, rng);
+      const Vec3 d = trueToModel(patches.sample(b, u.x, u.y), scene.sky->northDeg);
+      const double c = glm::dot(n, d);
+      if (c <= 0.0) continue;
+      sum += c * photopic(tracer.transmittance(p, d, kInf, kNoShape, kNoShape, rays));
+    }
+    direct[b] += patches.solidAngle(b) * sum / strata.size();
+  }
+  tracer.addRays(rays);
+  SkyTally tally;
+  tally.patches = &patches;
+  tally.northDeg = scene.sky->northDeg;
+  tally.direct = direct;
+  tally.indirect = indirect;
+  tally.directApart = directByPatch;
+  EstimatorInputs in;
+  in.tally = &tally;
+  estimateIrradiance(tracer, p, n, pointIndex, t, in);
+}
+
+void sunCoefficients(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                     const std::vector<Vec3>& sunDirsModel, double* indirect) {
+  SkyTally tally;
+  tally.suns = &sunDirsModel;
+  tally.sunIndirect = indirect;
+  EstimatorInputs in;
+  in.tally = &tally;
+  estimateIrradiance(tracer, p, n, pointIndex, coefficientSettings(s), in);
+}
 
 PatchSky::PatchSky(const SkyPatches& patches, std::vector<double> luminanceCdM2)
     : patches_(patches), luminance_(std::move(luminanceCdM2)) {
@@ -77,7 +144,7 @@ DaylightCoefficients computeDaylightCoefficients(const Tracer& tracer, const Sen
   std::atomic<size_t> done{0};
   distributedRows(distribution, dc.total, np, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> direct(np, 0.0), indirect(np, 0.0);
-    tracer.skyCoefficients(positions[i], normals[i], block.firstIndex + i, settings, patches, direct.data(),
+    skyCoefficients(tracer, positions[i], normals[i], block.firstIndex + i, settings, patches, direct.data(),
                            indirect.data());
     for (size_t p = 0; p < np; ++p) dc.total[i * np + p] = static_cast<float>(direct[p] + indirect[p]);
     const size_t d = ++done;
@@ -147,7 +214,7 @@ std::vector<float> indirectSunCoefficients(const Tracer& tracer, const SensorBlo
   std::atomic<size_t> done{0};
   distributedRows(distribution, out, ns, ItemUse::kResult, threads, [&](size_t i) {
     std::vector<double> acc(ns, 0.0);
-    tracer.sunCoefficients(positions[i], normals[i], block.firstIndex + i, settings, sunDirsModel, acc.data());
+    sunCoefficients(tracer, positions[i], normals[i], block.firstIndex + i, settings, sunDirsModel, acc.data());
     for (size_t j = 0; j < ns; ++j) out[i * ns + j] = static_cast<float>(acc[j]);
     const size_t d = ++done;
     if (progress) progress(d);

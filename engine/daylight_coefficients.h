@@ -6,13 +6,13 @@
 //           + Σ_j w_j(h) I(s, j) E_sun,n(h)           the sun's interreflected light
 //
 // DC(s, p) is the illuminance at sensor s from a luminance of 1 cd/m² over patch p (lux per
-// cd/m²), traced with the point-study estimator (Tracer::skyCoefficients). The sun is not
+// cd/m²), traced with the point-study estimator (skyCoefficients). The sun is not
 // spread over a patch: S(s, h) is the cosine-weighted visible fraction of the 0.533° disc at the
 // hour's actual position, so sun patches and ASE have sharp edges; I(s, j) is the interreflected
 // illuminance per lux of direct normal illuminance from sun position j of a set that covers the
 // year's sun path (the mean position of the hours whose sun lies in each patch of Reinhart's MF:2),
 // interpolated between the positions nearest to the hour's sun, traced
-// with a shadow ray to every sun at every diffuse vertex (Tracer::sunCoefficients).
+// with a shadow ray to every sun at every diffuse vertex (sunCoefficients).
 #pragma once
 
 #include "base/distribution.h"
@@ -52,9 +52,32 @@ struct SunSet {
 // a floor enough for errors of 5–13 % in a side-lit room at a low sun (tests).
 SunSet indirectSunSet(const AnnualSky& sky, int subdivision = 2);
 
+// Daylight coefficients at a sensor (docs/annual.md): the illuminance in lux that a luminance
+// of 1 cd/m² over each patch of `patches` (index 0 the ground) gives at p, added to direct[]
+// (seen from p with no reflection between: straight through thin glass and trans) and
+// indirect[] (after any reflection), each patches.count() long. The same estimator as
+// estimateIrradiance — sky sampled by s.lightSamples importance samples (MIS) and by the stratified
+// hemisphere, interreflection path traced — with the method forced to path and no adaptive
+// supersampling. The scene needs a sky (its model only guides sampling; a uniform sky suits
+// every patch); its other sources add nothing to the tallies.
+// directByPatch: the direct part is sampled patch by patch (s.lightSamples stratified shadow
+// rays in each, 4× for the ground), so that every patch's share is known alike; false tallies
+// the point estimator's own sky samples instead (the same random numbers as estimateIrradiance, for
+// tests).
+// 9 parameters: the public daylight-coefficient entry point, each one a separate input.
+void skyCoefficients(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                   const SkyPatches& patches, double* direct, double* indirect, bool directByPatch = true);
+
+// Interreflected illuminance in lux at p from each sun direction (unit, model frame) per lux
+// of direct normal illuminance, added to indirect[] (one per sun): the light of the suns
+// reaching every diffuse vertex of the paths, one shadow ray per sun per vertex. The sun's
+// direct light at p is not included.
+void sunCoefficients(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
+                   const std::vector<Vec3>& sunDirsModel, double* indirect);
+
 // A sky whose luminance is constant over each patch of `patches` (cd/m², one per patch; index 0,
 // the ground, is not part of a sky). As the scene's sky of a coefficient run it guides the
-// sampling of the sky (Tracer::skyCoefficients); as a point run's sky it is what the
+// sampling of the sky (skyCoefficients); as a point run's sky it is what the
 // coefficients assume.
 class PatchSky : public SkyModel {
  public:
@@ -72,7 +95,7 @@ class PatchSky : public SkyModel {
 std::shared_ptr<const SkyModel> yearSamplingGuide(const AnnualSky& sky);
 
 // Coefficients of every sensor (point i uses random stream i: results do not depend on the
-// thread count). The tracer's scene must have a sky (see Tracer::skyCoefficients).
+// thread count). The tracer's scene must have a sky (see skyCoefficients).
 // progress(done) as for computeIrradiance (thread-safe, cheap), may be empty.
 // With a distribution, the sensors are shared between its processes (base/distribution.h) and
 // every process gets every row; progress counts this process's sensors.

@@ -181,7 +181,7 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
   return total;
 }
 
-// Sun coefficients (Tracer::sunCoefficients): each sun's light at a path vertex, one shadow ray
+// Sun coefficients (sunCoefficients): each sun's light at a path vertex, one shadow ray
 // (a point: its disc matters for the direct sun only).
 void tallySuns(TraceContext& ctx, const Receiver& at) {
   SkyTally& tally = *ctx.tally;

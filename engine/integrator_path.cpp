@@ -348,4 +348,16 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
   return result;
 }
 
+Rgb rayRadiance(const Tracer& tracer, const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources,
+                Rng& rng, const TraceSettings& s) {
+  TraceContext ctx(tracer, s, rng);
+  PathState st;
+  st.skip = skip;
+  st.countSources = countSources;
+  // Without sources counted the caller samples them at the origin: a ray carrying light.
+  st.litPoint = origin;
+  st.lighting = !countSources;
+  return pathRadiance(ctx, origin, direction, st);
+}
+
 }  // namespace candela

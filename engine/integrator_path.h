@@ -56,4 +56,11 @@ struct CacheUse {
 Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, PathState st,
                  CacheUse* cache = nullptr, double* firstHitT = nullptr);
 
+// Radiance arriving at o from direction -dir, i.e. along a ray leaving o in direction dir, as a
+// top-level call (its own context). Sampled sources are counted only when countSources is true
+// (after specular reflection or for camera rays); diffuse paths get them by explicit source
+// sampling instead.
+Rgb rayRadiance(const Tracer& tracer, const Vec3& o, const Vec3& dir, uint32_t skip, bool countSources, Rng& rng,
+                const TraceSettings& s);
+
 }  // namespace candela

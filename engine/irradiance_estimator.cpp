@@ -11,6 +11,11 @@
 #include <limits>
 
 namespace candela {
+
+double IrradianceEstimate::standardErrorLux() const {
+  return kLumensPerWatt * std::sqrt(std::max(0.0, variancePhotopic));
+}
+
 namespace {
 
 // Adaptive super-sampling splits a refined stratum into kSub × kSub sub-strata.

@@ -18,6 +18,19 @@ namespace candela {
 
 struct SkyTally;
 
+// Irradiance estimate at a point: RGB irradiance in W/m² and the variance of its photopic value
+// (from the estimator's own sample variance; stratification makes it an upper bound).
+struct IrradianceEstimate {
+  Rgb irradiance{0.0};
+  double variancePhotopic = 0.0;
+  // The part of variancePhotopic due to the irradiance cache's records (cache method): the
+  // cache is frozen, so every batch of a point shares it and more batches do not reduce it.
+  double varianceRecordsPhotopic = 0.0;
+  bool withoutCache = false;  // cache method: the point was estimated by the path method instead
+  double illuminanceLux() const { return illuminanceFromIrradiance(irradiance); }
+  double standardErrorLux() const;
+};
+
 // The stream of a point's hemisphere directions under the cache method, apart from its other
 // samples, so that phase A (cacheQueries) traces exactly the directions evaluation will.
 inline constexpr uint64_t kDirectionStream = streams::kDirections.first;
@@ -49,13 +62,17 @@ struct EstimatorInputs {
   SkyTally* tally = nullptr;
 };
 
-// Irradiance on the side of unit normal n at p from random stream pointIndex (Tracer::irradiance).
+// Irradiance on the side of unit normal n at p (W/m², and its variance) in the tracer's scene.
+// `pointIndex` selects the random stream, so the result depends only on (seed, pointIndex), never
+// on threads. With in.cache (Method::kCache) the indirect irradiance at the first diffuse hits
+// of the hemisphere rays is taken from that frozen cache, a hit no record covers path traced.
 IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Vec3& n, uint64_t pointIndex,
-                                      const TraceSettings& s, const EstimatorInputs& in);
-// The quantity of `response` at p (engine/response.h): the sources' light weighted by w(ω), the
-// M × N strata drawn with density w/W (docs/quantities.md); planar: the call above.
+                                      const TraceSettings& s, const EstimatorInputs& in = {});
+// The quantity of `response` at p (engine/response.h: cylindrical, semi-cylindrical,
+// hemispherical or planar illuminance), in the same units: the sources' light weighted by w(ω),
+// the M × N strata drawn with density w/W (docs/quantities.md); planar: the call above.
 IrradianceEstimate estimateIrradiance(const Tracer& tracer, const Vec3& p, const Response& response,
-                                      uint64_t pointIndex, const TraceSettings& s, const EstimatorInputs& in);
+                                      uint64_t pointIndex, const TraceSettings& s, const EstimatorInputs& in = {});
 
 // Variance of E = π/(MN) Σ y over M × N strata (y photopic radiance, cell j·N + k) from second
 // differences along φ (n ≥ 3) or collapsed pairs; cells refined by adaptive super-sampling

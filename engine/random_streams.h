@@ -3,7 +3,7 @@
 // stream number: each family is a range [first, first + size) and the check at the end of this
 // file proves at compile time that no two ranges overlap. A new family is one line here.
 //
-// Top-level streams (a sensor point, a pixel, an observer: what Tracer::irradiance and the
+// Top-level streams (a sensor point, a pixel, an observer: what estimateIrradiance and the
 // integrators get as `pointIndex`) lie below 2^60; the streams derived from one of them (its sky
 // patches, its sun, its hemisphere directions) add 2^60 and above to it, so each derived family
 // is as large as the top-level space it is derived from.
@@ -42,7 +42,7 @@ inline constexpr Range kAnnualGlare{(uint64_t{3} << 52) - 1, (uint64_t{1} << 32)
 inline constexpr Range kCameraIrradiance{uint64_t{1} << 56, uint64_t{1} << 56};
 
 // Derived from a top-level stream s: s + first.
-// Sky patches sampled patch by patch (Tracer::skyCoefficients).
+// Sky patches sampled patch by patch (skyCoefficients).
 inline constexpr Range kSkyPatches{uint64_t{1} << 60, kTopLevelEnd};
 // The suns of the annual study's direct sun (engine/daylight_coefficients.cpp), by sensor.
 inline constexpr Range kSuns{uint64_t{2} << 60, kTopLevelEnd};

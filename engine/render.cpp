@@ -11,6 +11,7 @@
 #include "engine/source_distribution.h"
 #include "engine/trace_context.h"
 #include "engine/random_streams.h"
+#include "engine/irradiance_estimator.h"
 
 #include <algorithm>
 #include <optional>
@@ -133,10 +134,10 @@ Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3&
   const Vec3 xf = x + off * nf, xb = x - off * nf;
   Rgb out(0.0);
   if (photopic(m.diffuseReflectance) > 0.0)
-    out += m.diffuseReflectance * kInvPi * tracer.irradiance(xf, ns, cr.nextStream++, cr.irradianceSettings).irradiance;
+    out += m.diffuseReflectance * kInvPi * estimateIrradiance(tracer, xf, ns, cr.nextStream++, cr.irradianceSettings).irradiance;
   if (photopic(m.diffuseTransmittance) > 0.0)
     out += m.diffuseTransmittance * kInvPi *
-           tracer.irradiance(xb, -ns, cr.nextStream++, cr.irradianceSettings).irradiance;
+           estimateIrradiance(tracer, xb, -ns, cr.nextStream++, cr.irradianceSettings).irradiance;
   const double pTs = photopic(m.specularTransmittance);
   if (pTs > 0.0) out += m.specularTransmittance * cameraRadiance(cr, xb, d, flatSkip, share * pTs, events + 1);
   if (photopic(m.specularReflectance) > 0.0) {
@@ -231,7 +232,7 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
                       std::atomic<std::size_t>& rays) {
   const uint64_t pixel = static_cast<uint64_t>(y) * cam.width() + x;
   Rng rng(s.seed, kCameraStreamBase + pixel);
-  // The pixel's camera rays share one context (its rays, scratch), as Tracer::radiance's own.
+  // The pixel's camera rays share one context (its rays, scratch), as rayRadiance's own.
   TraceContext ctx(tracer, s, rng);
   const int n = std::max(1, r.samplesPerPixel);
   const int m = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
@@ -614,7 +615,7 @@ EyeLight eyeLight(const Tracer& tracer, const View& view, const TraceSettings& s
     l.directionView = Vec3(glm::dot(d, cam.right()), glm::dot(d, cam.up()), glm::dot(d, cam.forward()));
     e.directLuminaireLux += l.illuminanceLux;
   }
-  e.verticalLux = tracer.irradiance(cam.position(), cam.forward(), stream, settings).illuminanceLux();
+  e.verticalLux = estimateIrradiance(tracer, cam.position(), cam.forward(), stream, settings).illuminanceLux();
   return e;
 }
 
@@ -630,7 +631,7 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
     const Vec3 ng = shapeNormal(shape, x);
     const Vec3 nf = glm::dot(d, ng) < 0.0 ? ng : -ng;
     const Vec3 p = x + Tracer::originOffset(x) * nf;
-    return luminanceFromRadiance(mat.diffuseReflectance * kInvPi * tracer.irradiance(p, nf, stream, settings).irradiance);
+    return luminanceFromRadiance(mat.diffuseReflectance * kInvPi * estimateIrradiance(tracer, p, nf, stream, settings).irradiance);
   }
   TraceSettings s = settings;
   s.maxBounces = settings.maxBounces + 1;  // as renderView: the surface seen is the first reflection

@@ -2,6 +2,7 @@
 
 #include "engine/cache_builder.h"
 #include "engine/random_streams.h"
+#include "engine/irradiance_estimator.h"
 
 #include <algorithm>
 #include <atomic>
@@ -86,8 +87,7 @@ bool sampleToTarget(const Tracer& tracer, const SensorPoint& pt, uint64_t base, 
     if (cache && b.recordsVariance() > 0.5 * goal * goal) return false;
     const int target = std::min<double>(maxBatches, std::max<double>(b.count() + 1, b.wanted(goal)));
     while (b.count() < target)
-      b.add(tracer.irradiance(pt.position, pt.response(), base + kBatchStride * static_cast<uint64_t>(b.count()), s,
-                              cache));
+      b.add(estimateIrradiance(tracer, pt.position, pt.response(), base + kBatchStride * static_cast<uint64_t>(b.count()), s, {cache}));
   }
   return true;
 }
@@ -97,14 +97,14 @@ bool sampleToTarget(const Tracer& tracer, const SensorPoint& pt, uint64_t base, 
 // path method (unbiased, and its batches do reduce every part of the error).
 IrradianceEstimate estimatePoint(const Tracer& tracer, const SensorPoint& pt, size_t i, const TraceSettings& s,
                                  const IrradianceCache* cache, const Goal& g) {
-  IrradianceEstimate first = tracer.irradiance(pt.position, pt.response(), i, s, cache);
+  IrradianceEstimate first = estimateIrradiance(tracer, pt.position, pt.response(), i, s, {cache});
   if (!g.any()) return first;
   Batches b(first);
   if (sampleToTarget(tracer, pt, i, s, cache, g, b)) return b.result(false);
   TraceSettings path = s;
   path.method = Method::kPath;
   const uint64_t base = i + kWithoutCacheStream;
-  Batches p(tracer.irradiance(pt.position, pt.response(), base, path, nullptr));
+  Batches p(estimateIrradiance(tracer, pt.position, pt.response(), base, path));
   sampleToTarget(tracer, pt, base, path, nullptr, g, p);
   return p.result(true);
 }
@@ -147,8 +147,7 @@ std::vector<double> groupScales(const Tracer& tracer, const std::vector<SensorPo
   std::vector<double> values(picks.size());
   distributedFill(distribution, values, ItemUse::kShared, threads, [&](size_t j, double& v) {
     const SensorPoint& pt = points[picks[j].point];
-    v = photopic(tracer.irradiance(pt.position, pt.response(), streams::kGridPilot.first + picks[j].point, pilot,
-                                   cache)
+    v = photopic(estimateIrradiance(tracer, pt.position, pt.response(), streams::kGridPilot.first + picks[j].point, pilot, {cache})
                      .irradiance);
   });
   std::vector<double> sum(ends.size(), 0.0), count(ends.size(), 0.0);

@@ -4,6 +4,7 @@
 #include "base/distribution.h"
 #include "engine/response.h"
 #include "engine/tracer.h"
+#include "engine/irradiance_estimator.h"
 
 #include <cstddef>
 #include <functional>

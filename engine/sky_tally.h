@@ -21,11 +21,11 @@ struct SkyTally {
   double northDeg = 0.0;
   double* direct = nullptr;    // seen from the sensor with no reflection on the way
   double* indirect = nullptr;  // everything else
-  // The direct part is computed patch by patch apart (Tracer::skyCoefficients), so the sensor's
+  // The direct part is computed patch by patch apart (skyCoefficients), so the sensor's
   // own sky samples and unreflected escapes are not tallied.
   bool directApart = false;
   // Suns (unit, model frame) whose light is tallied at path vertices by a shadow ray each, per
-  // unit normal illuminance (Tracer::sunCoefficients).
+  // unit normal illuminance (sunCoefficients).
   const std::vector<Vec3>* suns = nullptr;
   double* sunIndirect = nullptr;
   Rgb outer{1.0};

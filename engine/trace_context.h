@@ -1,5 +1,5 @@
 // The state of one top-level trace — a sensor point, a cache record, a camera pixel, one call of
-// Tracer::radiance — passed explicitly to every function below it: the tracer and settings, the
+// rayRadiance — passed explicitly to every function below it: the tracer and settings, the
 // random stream its paths draw from, the daylight-coefficient observer, the rays it cast and the
 // scratch its light samples reuse. No state lives in threads (docs/architecture.md).
 #pragma once

@@ -1,16 +1,8 @@
 #include "engine/tracer.h"
 
 #include "engine/embree_accelerator.h"
-#include "engine/fresnel.h"
-#include "engine/integrator_path.h"
-#include "engine/irradiance_estimator.h"
 #include "engine/materials/family.h"
 #include "engine/materials/pattern_hook.h"
-#include "engine/sampling.h"
-#include "engine/sky_tally.h"
-#include "engine/trace_context.h"
-#include "photometry/site.h"
-#include "engine/random_streams.h"
 
 #include <algorithm>
 #include <optional>
@@ -19,28 +11,6 @@
 #include <stdexcept>
 
 namespace candela {
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The stream of a point's patch-by-patch direct sky samples (skyCoefficients).
-constexpr uint64_t kPatchStream = streams::kSkyPatches.first;
-
-// The settings of the coefficient estimates: path traced, and no adaptive supersampling (a
-// refined stratum's first sample would change weight in the tallies) nor target error.
-TraceSettings coefficientSettings(const TraceSettings& s) {
-  TraceSettings t = s;
-  t.method = Method::kPath;
-  t.adaptiveFraction = 0.0;
-  t.targetRelativeError = 0.0;
-  return t;
-}
-
-}  // namespace
-
-double IrradianceEstimate::standardErrorLux() const {
-  return kLumensPerWatt * std::sqrt(std::max(0.0, variancePhotopic));
-}
 
 double Tracer::originOffset(const Vec3& p) {
   // Doubles locate a hit to ~1e-15 of its coordinates; 1e-7 of the larger of 1 m and the
@@ -126,84 +96,5 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
   }
   return t;
 }
-
-Rgb Tracer::radiance(const Vec3& origin, const Vec3& direction, uint32_t skip, bool countSources, Rng& rng,
-                     const TraceSettings& s) const {
-  TraceContext ctx(*this, s, rng);
-  PathState st;
-  st.skip = skip;
-  st.countSources = countSources;
-  // Without sources counted the caller samples them at the origin: a ray carrying light.
-  st.litPoint = origin;
-  st.lighting = !countSources;
-  return pathRadiance(ctx, origin, direction, st);
-}
-
-IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex,
-                                      const TraceSettings& s) const {
-  return estimateIrradiance(*this, p, n, pointIndex, s, {});
-}
-
-IrradianceEstimate Tracer::irradiance(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
-                                      const IrradianceCache* cache) const {
-  EstimatorInputs in;
-  in.cache = cache;
-  return estimateIrradiance(*this, p, n, pointIndex, s, in);
-}
-
-IrradianceEstimate Tracer::irradiance(const Vec3& p, const Response& response, uint64_t pointIndex,
-                                      const TraceSettings& s, const IrradianceCache* cache) const {
-  EstimatorInputs in;
-  in.cache = cache;
-  return estimateIrradiance(*this, p, response, pointIndex, s, in);
-}
-
-void Tracer::skyCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
-                             const SkyPatches& patches, double* direct, double* indirect,
-                             bool directByPatch) const {
-  if (!scene_.sky) throw std::logic_error("skyCoefficients needs a scene with a sky");
-  const TraceSettings t = coefficientSettings(s);
-  // The sky seen directly, patch by patch: s.lightSamples stratified directions in each (uniform
-  // in solid angle; the ground takes 4× as many, being 2π sr), each with its shadow ray through
-  // glass and trans as the point estimator's would. Every patch gets its own samples, so a
-  // small bright patch (the circumsolar sky) is known as well as a large dim one, which sky
-  // samples drawn over the whole hemisphere cannot give a patch seen through a window.
-  Rng rng(s.seed, kPatchStream + pointIndex);
-  uint64_t rays = 0;
-  for (int b = 0; directByPatch && b < patches.count(); ++b) {
-    const Strata2D strata(std::max(1, s.lightSamples) * (b == 0 ? 4 : 1));
-    double sum = 0.0;
-    for (int i = 0; i < strata.size(); ++i) {
-      const Vec2 u = strata.sample(i, rng);
-      const Vec3 d = trueToModel(patches.sample(b, u.x, u.y), scene_.sky->northDeg);
-      const double c = glm::dot(n, d);
-      if (c <= 0.0) continue;
-      sum += c * photopic(transmittance(p, d, kInf, kNoShape, kNoShape, rays));
-    }
-    direct[b] += patches.solidAngle(b) * sum / strata.size();
-  }
-  addRays(rays);
-  SkyTally tally;
-  tally.patches = &patches;
-  tally.northDeg = scene_.sky->northDeg;
-  tally.direct = direct;
-  tally.indirect = indirect;
-  tally.directApart = directByPatch;
-  EstimatorInputs in;
-  in.tally = &tally;
-  estimateIrradiance(*this, p, n, pointIndex, t, in);
-}
-
-void Tracer::sunCoefficients(const Vec3& p, const Vec3& n, uint64_t pointIndex, const TraceSettings& s,
-                             const std::vector<Vec3>& sunDirsModel, double* indirect) const {
-  SkyTally tally;
-  tally.suns = &sunDirsModel;
-  tally.sunIndirect = indirect;
-  EstimatorInputs in;
-  in.tally = &tally;
-  estimateIrradiance(*this, p, n, pointIndex, coefficientSettings(s), in);
-}
-
-bool Tracer::cacheable(const Material& m) { return familyOf(m).cacheable(m); }
 
 }  // namespace candela

@@ -193,7 +193,7 @@ ViewAnnualGlare imagelessAnnualGlare(const Tracer& tracer, const GlareView& view
   const auto t0 = std::chrono::steady_clock::now();
   // Ev: one sensor at the eye facing the line of sight, through the annual machinery.
   TraceSettings settings = job.settings;
-  settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
+  settings.method = Method::kPath;  // coefficients are path traced (skyCoefficients)
   const int factor = std::max(1, options.evSampleFactor);
   settings.hemisphereSamples *= factor;
   settings.lightSamples *= factor;

@@ -3,6 +3,7 @@
 #include "base/error.h"
 #include "engine/daylight.h"
 #include "engine/tracer.h"
+#include "engine/irradiance_estimator.h"
 
 #include <chrono>
 #include <cstdio>
@@ -64,7 +65,7 @@ RenderedGlare renderedGlare(const Tracer& tracer, const GlareView& view, const T
     pixels.push_back({img.luminance[i], omega, positionIndex(dir)});
   }
   out.dgpPerPixel = daylightGlareProbability(out.image.verticalIlluminanceLux, pixels, det.lowLightCorrection);
-  const IrradianceEstimate e = tracer.irradiance(view.eyeM, frame.forward, options.evStream, settings);
+  const IrradianceEstimate e = estimateIrradiance(tracer, view.eyeM, frame.forward, options.evStream, settings);
   out.sensorEvLux = e.illuminanceLux();
   out.sensorEvStandardErrorLux = e.standardErrorLux();
   out.dgpSensorEv = daylightGlareProbability(out.sensorEvLux, out.image.sources, det.lowLightCorrection);

@@ -47,7 +47,7 @@ struct RenderedGlareOptions {
 struct RenderedGlare {
   ImageGlare image;           // evaluateImageGlare: pixels above the threshold grouped (evalglare)
   double dgpPerPixel = 0.0;   // every pixel above the threshold its own source (as the imageless tally)
-  // Ev at the eye from the sensor estimator (the sun and sky sampled explicitly, Tracer::irradiance),
+  // Ev at the eye from the sensor estimator (the sun and sky sampled explicitly, estimateIrradiance),
   // and the image's DGP with it in place of the image's Ev (evalglare's -i): a sun smaller than a
   // pixel makes the image's own Ev noisy (docs/annual-glare.md).
   double sensorEvLux = 0.0, sensorEvStandardErrorLux = 0.0;

@@ -523,7 +523,7 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
                  AnnualTraces& t, StudyObserver& observer) {
   const AnnualSpec& a = c.annual;
   TraceSettings settings = trace.settings;
-  settings.method = Method::kPath;  // coefficients are path traced (Tracer::skyCoefficients)
+  settings.method = Method::kPath;  // coefficients are path traced (skyCoefficients)
   YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
               settings,       a.sunSamples, trace.threads, p.processes};
   if (p.compliance && p.compliance->needsHours()) job.overcast = &p.compliance->overcastPatches();

@@ -32,7 +32,7 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather = nullptr);
 
 // The scene of an annual daylight study ([sky] type = "annual", docs/annual.md): the [[scene]]
 // geometry under a uniform sky that only guides the sampling of the sky coefficients
-// (Tracer::skyCoefficients). Luminaires are left out: annual metrics are of daylight alone.
+// (skyCoefficients). Luminaires are left out: annual metrics are of daylight alone.
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg);
 
 

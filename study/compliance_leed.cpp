@@ -5,6 +5,7 @@
 #include "reports/report_data.h"
 #include "study/annual_glare.h"
 #include "study/case_scene.h"
+#include "engine/irradiance_estimator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "study/finite_results.h"
+#include "engine/irradiance_estimator.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/tracer.h"
+#include "engine/irradiance_estimator.h"
 
 #include <cstddef>
 #include <stdexcept>

@@ -23,6 +23,7 @@
 #include "study/view_glare.h"
 #include "study/view_study.h"
 #include "study/warnings.h"
+#include "engine/irradiance_estimator.h"
 
 #include <nlohmann/json.hpp>
 

@@ -6,6 +6,7 @@
 #include "study/case_scene.h"
 #include "study/finite_results.h"
 #include "study/warnings.h"
+#include "engine/irradiance_estimator.h"
 
 namespace candela {
 

@@ -11,6 +11,7 @@
 #include "study/observer.h"
 #include "study/resource_estimate.h"
 #include "study/trace_options.h"
+#include "engine/irradiance_estimator.h"
 
 #include <filesystem>
 #include <functional>

@@ -12,6 +12,7 @@
 #include "study/prepared_grid.h"
 #include "study/sensor_grid.h"
 #include "study/trace_options.h"
+#include "engine/irradiance_estimator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,7 @@
 #include "engine/sensors.h"
 #include "validation/analytic.h"
 #include "validation/case_registry.h"
+#include "engine/irradiance_estimator.h"
 
 #include <chrono>
 #include <cmath>

@@ -6,6 +6,7 @@
 #include "validation/analytic.h"
 #include "validation/case_registry.h"
 #include "validation/speed_accuracy.h"
+#include "engine/irradiance_estimator.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,6 +3,7 @@
 #include "engine/radiance/reader.h"
 #include "engine/sensors.h"
 #include "validation/analytic.h"
+#include "engine/irradiance_estimator.h"
 
 #include <algorithm>
 #include <chrono>

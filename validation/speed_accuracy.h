@@ -5,6 +5,7 @@
 
 #include "engine/sensors.h"
 #include "engine/tracer.h"
+#include "engine/irradiance_estimator.h"
 
 #include <string>
 #include <vector>

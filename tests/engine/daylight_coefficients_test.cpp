@@ -1,6 +1,6 @@
 // Daylight coefficients (engine/daylight_coefficients.h) against independent numbers:
 //  - the tally is the point-study estimator itself: with the same seed and settings, Σ DC·L over
-//    the patches of a uniform sky and ground reproduces Tracer::irradiance to rounding;
+//    the patches of a uniform sky and ground reproduces estimateIrradiance to rounding;
 //  - an open sensor's coefficients against the closed-form projected solid angles of the bands;
 //  - the site's north rotation puts a north-facing window's light into northern patches;
 //  - the acceptance check of docs/annual.md: for a few hours of a year, the daylight-coefficient
@@ -14,6 +14,7 @@
 #include "photometry/epw.h"
 #include "photometry/site.h"
 #include "photometry/make_sky.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -83,9 +84,9 @@ TEST(DaylightCoefficients, TallyIsThePointEstimatorItself) {
       {{2.0, 1.0, 0.8}, {0, 0, 1}}, {{1.0, 3.0, 0.8}, {0, 0, 1}}, {{2.0, 2.0, 1.5}, {0, -1, 0}}};
   for (size_t i = 0; i < sensors.size(); ++i) {
     const auto& [p, n] = sensors[i];
-    const double pointLux = tracer.irradiance(p, n, i, s).illuminanceLux();
+    const double pointLux = estimateIrradiance(tracer, p, n, i, s).illuminanceLux();
     std::vector<double> direct(patches.count(), 0.0), indirect(patches.count(), 0.0);
-    tracer.skyCoefficients(p, n, i, s, patches, direct.data(), indirect.data(), false);
+    skyCoefficients(tracer, p, n, i, s, patches, direct.data(), indirect.data(), false);
     double dcLux = 0.0, directLux = 0.0;
     for (int b = 0; b < patches.count(); ++b) {
       const double l = b == 0 ? ground : sky;
@@ -110,7 +111,7 @@ TEST(DaylightCoefficients, OpenSensorSeesTheProjectedSolidAngleOfEachBand) {
   const SkyPatches patches(1);
   const TraceSettings s = plainSettings(65536, 4096);
   std::vector<double> direct(patches.count(), 0.0), indirect(patches.count(), 0.0);
-  tracer.skyCoefficients(Vec3(0.0), Vec3(0, 0, 1), 0, s, patches, direct.data(), indirect.data());
+  skyCoefficients(tracer, Vec3(0.0), Vec3(0, 0, 1), 0, s, patches, direct.data(), indirect.data());
   double total = 0.0;
   for (double v : indirect) EXPECT_EQ(v, 0.0);
   for (double v : direct) total += v;
@@ -139,7 +140,7 @@ TEST(DaylightCoefficients, NorthRotationPutsNorthLightInNorthernPatches) {
   const SkyPatches patches(1);
   const TraceSettings s = plainSettings(4096, 256);
   std::vector<double> direct(patches.count(), 0.0), indirect(patches.count(), 0.0);
-  tracer.skyCoefficients(Vec3(0.0), Vec3(1, 0, 0), 0, s, patches, direct.data(), indirect.data());
+  skyCoefficients(tracer, Vec3(0.0), Vec3(1, 0, 0), 0, s, patches, direct.data(), indirect.data());
   Vec3 mean(0.0);
   for (int b = 1; b < patches.count(); ++b) mean += direct[b] * patches.centre(b);
   // Mean direction in the true frame: towards +Y (north), up, not east or west.
@@ -231,7 +232,7 @@ TEST_F(DaylightCoefficientsVsPointInTime, SkyAndSunWithinThreePercent) {
       // against the coefficients with the same ground.
       const Tracer tracer(pit);
       for (size_t i = 0; i < positions.size(); ++i) {
-        const IrradianceEstimate e = tracer.irradiance(positions[i], normals[i], 100 + i, s);
+        const IrradianceEstimate e = estimateIrradiance(tracer, positions[i], normals[i], 100 + i, s);
         double dcLux = 0.0;
         if (withSun) {
           dcLux = year.total[i * year.hours + h];

@@ -7,6 +7,7 @@
 #include "engine/tracer.h"
 #include "photometry/sky_model.h"
 #include "photometry/make_sky.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -166,7 +167,7 @@ TEST(Dielectric, SlabUnderTheSkyTransmitsItsHemisphericalTransmittance) {
     const Tracer tracer(sc);
     TraceSettings s;
     s.hemisphereSamples = 4096;
-    const IrradianceEstimate e = tracer.irradiance(Vec3(0, 0, 0), Vec3(0, 0, 1), dome ? 1 : 0, s);
+    const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0, 0, 0), Vec3(0, 0, 1), dome ? 1 : 0, s);
     const double want = open * th, got = e.illuminanceLux(), se = e.standardErrorLux();
     std::printf("[ measured ] slab under a %s: %.6g ± %.3g lux, reference %.6g lux (open sky %.6g)\n",
                 dome ? "sky dome" : "glow sky", got, se, want, open);
@@ -201,7 +202,7 @@ TEST(Dielectric, AbsorbsPerChannelAlongThePathInside) {
   const Tracer tracer(sc);
   TraceSettings s;
   s.hemisphereSamples = 8192;
-  const IrradianceEstimate e = tracer.irradiance(Vec3(0, 0, 0), Vec3(0, 0, 1), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0, 0, 0), Vec3(0, 0, 1), 0, s);
   // Over the 5° half-angle disk, the integral of T(θ) cos θ dω, by the slab function above
   // restricted to the disk: Simpson over [0, 5°].
   const double half = degToRad(0.5 * fullDeg);

@@ -17,6 +17,7 @@
 #include "tests/engine/ray_query_support.h"
 #include "engine/octree.h"
 #include "engine/tracer.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -407,9 +408,9 @@ TEST(EmbreeAccelerator, TracerAgreesWithOctreeInARoom) {
     TraceSettings s1 = s, s2 = s;
     s1.seed = 1;
     s2.seed = 2;
-    const IrradianceEstimate a = withOctree.irradiance(points[k], {0, 0, 1}, k, s1);
-    const IrradianceEstimate b = withEmbree.irradiance(points[k], {0, 0, 1}, k, s2);
-    const IrradianceEstimate bSame = withEmbree.irradiance(points[k], {0, 0, 1}, k, s1);
+    const IrradianceEstimate a = estimateIrradiance(withOctree, points[k], {0, 0, 1}, k, s1);
+    const IrradianceEstimate b = estimateIrradiance(withEmbree, points[k], {0, 0, 1}, k, s2);
+    const IrradianceEstimate bSame = estimateIrradiance(withEmbree, points[k], {0, 0, 1}, k, s1);
     const double se = std::hypot(a.standardErrorLux(), b.standardErrorLux());
     std::printf("[ measured ] point %zu: octree %.5g lux, Embree %.5g lux (same seed %.10g vs %.10g), se %.3g lux\n", k,
                 a.illuminanceLux(), b.illuminanceLux(), a.illuminanceLux(), bSame.illuminanceLux(), se);

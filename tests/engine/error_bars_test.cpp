@@ -17,6 +17,7 @@
 #include "validation/analytic.h"
 #include "tests/support/aperture_scenes.h"
 #include "tests/engine/test_materials.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -107,12 +108,12 @@ TEST(ErrorBars, PathTracerCoversItsShare) {
   const double a = coverage([&](uint64_t seed) {
     TraceSettings t = s;
     t.seed = seed;
-    return tg.irradiance(tilted.position, tilted.normal, 0, t);
+    return estimateIrradiance(tg, tilted.position, tilted.normal, 0, t);
   }, tiltedExact(), "path, tilted sensor over open ground");
   const double b = coverage([&](uint64_t seed) {
     TraceSettings t = s;
     t.seed = seed;
-    return ts.irradiance(Vec3(0.9, 0, 0), Vec3(-1, 0, 0), 0, t);
+    return estimateIrradiance(ts, Vec3(0.9, 0, 0), Vec3(-1, 0, 0), 0, t);
   }, sphereExact(0.5), "path, integrating sphere rho 0.5");
   EXPECT_GE(a, kLo);
   EXPECT_LE(a, kHi);
@@ -148,7 +149,7 @@ TEST(ErrorBars, QuantitiesCoverTheirShare) {
     const double a = coverage([&](uint64_t seed) {
       TraceSettings t = s;
       t.seed = seed;
-      return tg.irradiance(p, c.r, 0, t);
+      return estimateIrradiance(tg, p, c.r, 0, t);
     }, c.exact, c.what);
     EXPECT_GE(a, kLo) << c.what;
     EXPECT_LE(a, kHi) << c.what;
@@ -173,7 +174,7 @@ TEST(ErrorBars, PartlyHiddenPanelCoversItsShare) {
   const double a = coverage([&](uint64_t seed) {
     TraceSettings t = s;
     t.seed = seed;
-    return tracer.irradiance(Vec3(0.0), Vec3(0, 0, 1), 0, t);
+    return estimateIrradiance(tracer, Vec3(0.0), Vec3(0, 0, 1), 0, t);
   }, exact, "direct light, half-hidden panel (16 samples)");
   EXPECT_GE(a, kLo);
   EXPECT_LE(a, kHi);
@@ -318,7 +319,7 @@ TEST(ErrorBars, SmallSkyOpeningsCoverTheirShareAtNormalQuality) {
     return [&t, p, &s](uint64_t seed) {
       TraceSettings u = s;
       u.seed = seed;
-      return t.irradiance(p, Vec3(0, 0, 1), 0, u);
+      return estimateIrradiance(t, p, Vec3(0, 0, 1), 0, u);
     };
   };
   const double L = 10000.0 / kPi;  // a uniform sky of 10000 lux on the open horizontal plane

@@ -8,6 +8,7 @@
 #include "engine/tracer.h"
 #include "validation/analytic.h"
 #include "tests/engine/test_materials.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 

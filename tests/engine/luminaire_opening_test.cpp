@@ -6,6 +6,7 @@
 #include "validation/analytic.h"
 
 #include "tests/engine/lambertian_panel.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -67,7 +68,7 @@ TEST(LuminaireOpening, BlackOpeningHidesTheFloorFromTheCeilingBehindIt) {
     const Tracer tracer(sc);
     TraceSettings s;
     s.lightSamples = 4096;
-    const IrradianceEstimate e = tracer.irradiance(p, down, 0, s);
+    const IrradianceEstimate e = estimateIrradiance(tracer, p, down, 0, s);
     const double want = rho ? open - hidden : open;
     EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux() + 1e-9 * want)
         << (rho ? "black opening" : "no opening surface");
@@ -84,7 +85,7 @@ TEST(LuminaireOpening, OwnLightPassesTheOpeningSurface) {
   s.lightSamples = 4096;
   const double luminance = 1000.0 / 0.36;
   for (auto [x, h] : {std::pair{0.2, 0.5}, {0.0, 3.5}}) {
-    const IrradianceEstimate e = tracer.irradiance({x, 0.0, 2.5 - h}, {0, 0, 1}, 0, s);
+    const IrradianceEstimate e = estimateIrradiance(tracer, {x, 0.0, 2.5 - h}, {0, 0, 1}, 0, s);
     const double want = analytic::rectangleAbove(luminance, {-0.3, -0.3, 0.3, 0.3}, h, x, 0.0);
     EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux() + 1e-4 * want) << "h " << h;
   }

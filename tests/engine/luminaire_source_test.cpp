@@ -7,6 +7,7 @@
 #include "validation/analytic.h"
 
 #include "tests/engine/lambertian_panel.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,7 @@ Scene sceneWith(const std::string& file, const Vec3& pos, const Vec3& aim, doubl
   return sc;
 }
 
-double lux(const Tracer& t, const Vec3& p, const Vec3& n) { return t.irradiance(p, n, 0, TraceSettings{}).illuminanceLux(); }
+double lux(const Tracer& t, const Vec3& p, const Vec3& n) { return estimateIrradiance(t, p, n, 0, TraceSettings{}).illuminanceLux(); }
 
 // Directions on the file's (C, γ) grid, where bilinear interpolation is exact: E = I cos ι / d²
 // to the printing precision of the file (9 digits), far inside the 0.5 % a photometric web promises.
@@ -96,7 +97,7 @@ TEST(LuminaireSource, NearFieldPanelGivesTheAreaSourceAnswer) {
   const Tracer tracer(sc);
   TraceSettings s;
   s.lightSamples = 4096;
-  const IrradianceEstimate e = tracer.irradiance({0, 0, 0}, {0, 0, 1}, 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, {0, 0, 0}, {0, 0, 1}, 0, s);
   const double luminance = 1000.0 / 0.36;  // cd/m²
   const double area = analytic::rectangleAbove(luminance, {-0.3, -0.3, 0.3, 0.3}, 0.3, 0.0, 0.0);  // lux
   const double point = 1000.0 / (0.3 * 0.3);
@@ -142,7 +143,7 @@ TEST(LuminaireSource, FarPanelPartlyHiddenGivesThePenumbraOfItsVisiblePart) {
   const double want =
       luminance * polygonProjectedSolidAngle({{-0.3, -0.3, h}, {0.3, -0.3, h}, {0.3, edge, h}, {-0.3, edge, h}}, p, up);
   const double whole = luminance * polygonProjectedSolidAngle({{-0.3, -0.3, h}, {0.3, -0.3, h}, {0.3, 0.3, h}, {-0.3, 0.3, h}}, p, up);
-  const IrradianceEstimate e = tracer.irradiance(p, up, 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, p, up, 0, s);
   EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
   EXPECT_GT(e.standardErrorLux(), 0.0);  // the penumbra is sampled, and says so
   EXPECT_NEAR(want / whole, 0.42, 0.01);  // the geometry is what the comment says
@@ -190,7 +191,7 @@ TEST(LuminaireSource, FarUnoccludedOpeningGivesTheAreaAveragedPointLaw) {
   const Tracer tracer(sc);
   TraceSettings s;
   s.lightSamples = 4096;  // the point law is only 0.13 % off here: resolve it
-  const IrradianceEstimate est = tracer.irradiance(p, n, 0, s);
+  const IrradianceEstimate est = estimateIrradiance(tracer, p, n, 0, s);
   EXPECT_NEAR(est.illuminanceLux(), want, 4.0 * est.standardErrorLux() + 1e-6 * want);
   EXPECT_GT(std::abs(pointLaw - want), 4.0 * est.standardErrorLux());
   std::printf("[ measured ] far opening: %.5f ± %.5f lx, area average %.5f lx, point law %.5f lx\n",

@@ -10,6 +10,7 @@
 #include "photometry/sky_model.h"
 #include "tests/engine/test_materials.h"
 #include "photometry/make_sky.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -88,8 +89,8 @@ void expectFoldedEqualsUnfolded(bool sheetNearLamp, const char* what) {
       {{-0.5, 0.0, 0.01}, {0, 0, 1}}, {{0.3, 0.5, 0.01}, {0, 0, 1}}, {{0.0, 0.3, 2.0}, {0, 0, -1}},
       {{0.6, -0.2, 0.5}, {1, 0, 0}}};
   for (size_t i = 0; i < pts.size(); ++i) {
-    const IrradianceEstimate ea = ta.irradiance(pts[i].first, pts[i].second, i, s);
-    const IrradianceEstimate eb = tb.irradiance(pts[i].first, pts[i].second, i + 100, s);
+    const IrradianceEstimate ea = estimateIrradiance(ta, pts[i].first, pts[i].second, i, s);
+    const IrradianceEstimate eb = estimateIrradiance(tb, pts[i].first, pts[i].second, i + 100, s);
     // Where both are exact (direct light and images only: floor points facing up see nothing
     // else), a floor of 1e-9 relative for rounding (two closed forms by different routes).
     const double tol = 4.0 * std::hypot(ea.standardErrorLux(), eb.standardErrorLux()) + 1e-9 * eb.illuminanceLux();
@@ -127,7 +128,7 @@ TEST(MirrorTrans, SkyThroughASheetIsCountedOnce) {
   TraceSettings s;
   s.hemisphereSamples = 256;
   s.lightSamples = 256;
-  const IrradianceEstimate e = tracer.irradiance(Vec3(0, 0, 0), Vec3(0, 0, 1), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0, 0, 0), Vec3(0, 0, 1), 0, s);
   const double want = tau * cond.diffuseHorizontalLux;
   std::printf("[ measured ] sky through a clear sheet: %.6g ± %.2g lux, reference %.6g lux\n", e.illuminanceLux(),
               e.standardErrorLux(), want);

@@ -13,6 +13,7 @@
 #include "tests/engine/test_materials.h"
 #include "tests/support/peer_suite.h"
 #include "tests/support/temp_files.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -537,7 +538,7 @@ TEST(ObjReader, TessellatedRoomGivesTheIlluminanceOfItsPolygons) {
     uint64_t index = 0;
     for (const Vec2 xy : {Vec2(1.0, 1.0), Vec2(2.0, 1.5), Vec2(3.0, 2.5), Vec2(0.5, 2.8), Vec2(3.6, 0.3)}) {
       const Vec3 p(xy, 0.8), up(0, 0, 1);
-      const IrradianceEstimate a = tp.irradiance(p, up, index, s), b = tm.irradiance(p, up, index, s);
+      const IrradianceEstimate a = estimateIrradiance(tp, p, up, index, s), b = estimateIrradiance(tm, p, up, index, s);
       ++index;
       // Both estimates use the same random streams, so they are positively correlated and the
       // difference's standard error is at most the root sum of squares used here.

@@ -10,6 +10,7 @@
 #include "engine/tracer.h"
 #include "photometry/ies_lm63.h"
 #include "tests/engine/test_materials.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -73,7 +74,7 @@ TEST(Quantities, PointLuminaireGivesTheClosedFormsExactly) {
       const Geometry g = below(c, gamma);
       const double k = g.intensity / (g.d * g.d);
       auto check = [&](const Response& r, double want, const std::string& what) {
-        const IrradianceEstimate e = tracer.irradiance(g.p, r, 0, s);
+        const IrradianceEstimate e = estimateIrradiance(tracer, g.p, r, 0, s);
         EXPECT_NEAR(e.illuminanceLux(), want, 1e-7 * want) << what << " C " << c << " gamma " << gamma;
         EXPECT_EQ(e.standardErrorLux(), 0.0) << what;
         worst = std::max(worst, std::abs(e.illuminanceLux() / want - 1.0));
@@ -92,7 +93,7 @@ TEST(Quantities, PointLuminaireGivesTheClosedFormsExactly) {
   std::printf("[ measured ] point luminaire: largest relative error %.2g\n", worst);
   // Facing away (α = 180°) the half-cylinder receives nothing, exactly.
   const Geometry g = below(30.0, 45.0);
-  EXPECT_EQ(tracer.irradiance(g.p, Response{Quantity::kSemiCylindrical, kUp, planDir(g.towardsSourceDeg + 180.0)}, 0, s)
+  EXPECT_EQ(estimateIrradiance(tracer, g.p, Response{Quantity::kSemiCylindrical, kUp, planDir(g.towardsSourceDeg + 180.0)}, 0, s)
                 .illuminanceLux(),
             0.0);
 }
@@ -131,7 +132,7 @@ TEST(Quantities, SphereSourceWithinFourStandardErrorsOfQuadrature) {
                                  Response{Quantity::kSemiCylindrical, kUp, glm::normalize(-0.5 * plan + 0.866 * side)},
                                  Response{Quantity::kHemispherical, kUp, Vec3(1, 0, 0)}}) {
       const double want = kLumensPerWatt * radiance * capIntegral(resp, toC / dist, a);
-      const IrradianceEstimate e = tracer.irradiance(p, resp, 7, s);
+      const IrradianceEstimate e = estimateIrradiance(tracer, p, resp, 7, s);
       EXPECT_GT(e.standardErrorLux(), 0.0);
       EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux() + 1e-6 * want)
           << static_cast<int>(resp.kind) << " at " << p.x << " " << p.y;
@@ -184,7 +185,7 @@ TEST(Quantities, UniformSkyOverOpenGroundWithinFourStandardErrors) {
   for (const Expected& x : underSky(L, 0.2 * L))
     for (uint64_t seed : {1, 2, 3}) {
       s.seed = seed;
-      const IrradianceEstimate e = tracer.irradiance(Vec3(0.0, 0.0, kSensorM), x.response, 0, s);
+      const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0.0, 0.0, kSensorM), x.response, 0, s);
       EXPECT_NEAR(e.illuminanceLux(), x.lux, 4.0 * e.standardErrorLux() + 1e-9 * x.lux) << x.what;
       std::printf("[ measured ] uniform sky, %s seed %d: error %.3g %%, %.2f standard errors (%.3g %%)\n", x.what,
                   static_cast<int>(seed), 100.0 * (e.illuminanceLux() / x.lux - 1.0),

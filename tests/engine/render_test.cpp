@@ -13,6 +13,7 @@
 
 #include "tests/engine/lambertian_panel.h"
 #include "tests/support/test_views.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -419,7 +420,7 @@ TEST(Render, EyeLightSeparatesDirectFromIndirect) {
               want, e.verticalLux);
   EXPECT_NEAR(e.directLuminaireLux, want, 2e-3 * want);
   EXPECT_NEAR(e.luminaires[0].transmittance, 1.0, 1e-12);
-  const IrradianceEstimate est = tracer.irradiance(v.positionM, v.direction, 0, s);
+  const IrradianceEstimate est = estimateIrradiance(tracer, v.positionM, v.direction, 0, s);
   EXPECT_NEAR(e.verticalLux, e.directLuminaireLux, 4.0 * est.standardErrorLux() + 2e-3 * want);
   EXPECT_NEAR(e.backgroundLuminanceCdM2(), 0.0, (4.0 * est.standardErrorLux() + 2e-3 * want) / kPi);
   // The view-frame direction of the photometric centre.

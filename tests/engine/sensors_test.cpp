@@ -5,6 +5,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "tests/engine/test_materials.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 

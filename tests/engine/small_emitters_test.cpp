@@ -5,6 +5,8 @@
 #include "engine/tracer.h"
 #include "engine/trace_settings.h"
 #include "test_materials.h"
+#include "engine/integrator_path.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -265,8 +267,8 @@ TEST(SmallEmitters, NegativeRadiusLightsNothingButIsSeen) {
   const IrradianceEstimate e = computeIrradiance(tracer, {{Vec3(0.0), Vec3(0, 0, 1)}}, s, 1)[0];
   EXPECT_EQ(e.illuminanceLux(), 0.0);
   Rng rng(1, 0);
-  EXPECT_EQ(tracer.radiance(Vec3(0.0), Vec3(0, 0, 1), kNoShape, true, rng, s).x, 2.0);
-  EXPECT_EQ(tracer.radiance(Vec3(0.0), Vec3(0, 0, 1), kNoShape, false, rng, s).x, 0.0);
+  EXPECT_EQ(rayRadiance(tracer, Vec3(0.0), Vec3(0, 0, 1), kNoShape, true, rng, s).x, 2.0);
+  EXPECT_EQ(rayRadiance(tracer, Vec3(0.0), Vec3(0, 0, 1), kNoShape, false, rng, s).x, 0.0);
 }
 
 TEST(SmallEmitters, BulbSeenInAFlatMirrorCountsOnce) {

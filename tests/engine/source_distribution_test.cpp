@@ -11,6 +11,8 @@
 #include "tests/engine/ies2rad_tables.h"
 #include "tests/support/direct_only.h"
 #include "tests/support/peer_suite.h"
+#include "engine/integrator_path.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -292,7 +294,7 @@ TEST(SourceDistribution, Ies2radPanelWithMultiplierGivesTheIssuesClosedForm) {
           const double point = 0.8 * panelCd(q.u) * std::cos(i * kDeg) / (d * d);
           const double exact = areaIntegralLux(q.p, q.n, -s / 2, s / 2, -s / 2, s / 2, z, cdPerM2);
           EXPECT_NEAR(exact, point, (s / d) * (s / d) * point) << theta << " " << phi << " " << d;
-          const IrradianceEstimate e = tracer.irradiance(q.p, q.n, index++, directOnlySettings(1024));
+          const IrradianceEstimate e = estimateIrradiance(tracer, q.p, q.n, index++, directOnlySettings(1024));
           EXPECT_NEAR(e.illuminanceLux(), exact, 4.0 * e.standardErrorLux() + 1e-5 * exact)
               << "θ " << theta << " φ " << phi << " d " << d << " i " << i;
           worstFar = std::max(worstFar, std::abs(exact - point) / point / ((s / d) * (s / d)));
@@ -315,7 +317,7 @@ TEST(SourceDistribution, PanelNearFieldIsTheAreaIntegral) {
   for (const Vec3& p : {Vec3(0, 0, -0.3), Vec3(0.2, -0.1, -0.3), Vec3(0.5, 0.4, -0.2)}) {
     const Vec3 n(0, 0, 1);
     const double exact = areaIntegralLux(p, n, -s / 2, s / 2, -s / 2, s / 2, z, cdPerM2, 400);
-    const IrradianceEstimate e = tracer.irradiance(p, n, index++, directOnlySettings(1024));
+    const IrradianceEstimate e = estimateIrradiance(tracer, p, n, index++, directOnlySettings(1024));
     EXPECT_NEAR(e.illuminanceLux(), exact, 4.0 * e.standardErrorLux() + 1e-4 * exact) << p.x << " " << p.y;
     std::printf("[ measured ] panel near field at (%g, %g, %g): %.2f ± %.2f lx, area integral %.2f lx\n", p.x, p.y,
                 p.z, e.illuminanceLux(), e.standardErrorLux(), exact);
@@ -349,7 +351,7 @@ TEST(SourceDistribution, SphereBoxAndCylinderSendTheirCandelaTimesTheMultiplier)
       for (double phi : {20.0, 100.0, 250.0}) {
         const Probe q = probe({0, 0, 0}, theta, phi, d, 30.0);
         const double want = c.multiplier * c.cd(q.u) * std::cos(30.0 * kDeg) / (d * d);
-        const IrradianceEstimate e = tracer.irradiance(q.p, q.n, index++, directOnlySettings(c.samples));
+        const IrradianceEstimate e = estimateIrradiance(tracer, q.p, q.n, index++, directOnlySettings(c.samples));
         EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux() + 0.0025 * want)
             << c.file << " θ " << theta << " φ " << phi;
         worst = std::max(worst, std::abs(e.illuminanceLux() - want) / want);
@@ -374,7 +376,7 @@ TEST(SourceDistribution, PanelMovedByXformTurnsItsDistribution) {
   for (double phi : {0.0, 30.0, 90.0}) {
     const Probe q = probe({1, 2, z}, 45.0, phi, 4.0, 0.0);
     const double exact = areaIntegralLux(q.p, q.n, 1 - s / 2, 1 + s / 2, 2 - s / 2, 2 + s / 2, z, cdPerM2);
-    const IrradianceEstimate e = tracer.irradiance(q.p, q.n, index++, directOnlySettings(1024));
+    const IrradianceEstimate e = estimateIrradiance(tracer, q.p, q.n, index++, directOnlySettings(1024));
     EXPECT_NEAR(e.illuminanceLux(), exact, 4.0 * e.standardErrorLux() + 1e-5 * exact) << phi;
     const double unturned = 0.8 * panelCd(q.u) / 16.0;
     if (phi != 30.0) EXPECT_GT(std::abs(e.illuminanceLux() - unturned), 0.05 * unturned) << phi;
@@ -389,7 +391,7 @@ TEST(SourceDistribution, RaysThatMeetTheEmitterSeeTheDistribution) {
   for (double theta : {0.0, 30.0, 52.0, 80.0})
     for (double phi : {0.0, 20.0, 200.0}) {
       const Probe q = probe({0.05, -0.1, -0.00025}, theta, phi, 2.0, 0.0);
-      const Rgb l = tracer.radiance(q.p, -q.u, kNoShape, true, rng, directOnlySettings(1));
+      const Rgb l = rayRadiance(tracer, q.p, -q.u, kNoShape, true, rng, directOnlySettings(1));
       const double want = 2.25973 * panelCd(q.u) / 179.0 / std::cos(theta * kDeg);
       EXPECT_NEAR(l.y, want, 2e-5 * want + 1e-12) << theta << " " << phi;
     }
@@ -403,7 +405,7 @@ TEST(SourceDistribution, ReferenceSphereKeepsTheEmitterBlack) {
   const Scene ref = referenceSphereScene(sc, {0});
   const Tracer tracer(ref);
   Rng rng(1, 0);
-  const Rgb l = tracer.radiance({0, 0, -2}, {0, 0, 1}, kNoShape, true, rng, directOnlySettings(1));
+  const Rgb l = rayRadiance(tracer, {0, 0, -2}, {0, 0, 1}, kNoShape, true, rng, directOnlySettings(1));
   EXPECT_EQ(l, Rgb(0.0));
 }
 
@@ -464,7 +466,7 @@ TEST(SourceDistributionPeerSuite, RadianceRectFixtureMatchesTheAreaIntegral) {
     const Vec3 n(0, 0, 1);
     const double exact = areaIntegralLux(p, n, -4.57784968833, -3.42215031167, 2.22695014727, 2.77304985273, 2.999,
                                          cdPerM2, 300);
-    const IrradianceEstimate e = tracer.irradiance(p, n, index++, directOnlySettings(256));
+    const IrradianceEstimate e = estimateIrradiance(tracer, p, n, index++, directOnlySettings(256));
     EXPECT_GT(exact, 0.0);
     EXPECT_NEAR(e.illuminanceLux(), exact, 4.0 * e.standardErrorLux() + 1e-4 * exact) << p.x << " " << p.y;
     std::printf("[ measured ] rect_fixture at (%g, %g, %g): %.3f ± %.3f lx, area integral %.3f lx\n", p.x, p.y, p.z,

@@ -9,6 +9,7 @@
 #include "engine/source_distribution.h"
 #include "engine/tracer.h"
 #include "tests/support/direct_only.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -55,7 +56,7 @@ TEST(Spotlight, IlluminanceInsideTheConeFollowsTheFocalLawAndIsZeroOutside) {
       const double ratio = d / (d + focal);
       const double expected =
           inside * kLumensPerWatt * radiance * kPi * r * r * std::cos(t) / (d * d) * ratio * ratio;
-      const IrradianceEstimate e = tracer.irradiance(p, n, index++, test_support::directOnlySettings(256));
+      const IrradianceEstimate e = estimateIrradiance(tracer, p, n, index++, test_support::directOnlySettings(256));
       EXPECT_NEAR(e.illuminanceLux(), expected, 4.0 * e.standardErrorLux() + (r / d) * (r / d) * expected)
           << "d " << d << " θ " << thetaDeg;
     }

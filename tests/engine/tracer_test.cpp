@@ -1,4 +1,4 @@
-// Tracer::irradiance against the closed forms of validation/analytic (written independently of
+// estimateIrradiance against the closed forms of validation/analytic (written independently of
 // the engine). Where the engine's control variate makes the estimate exact (a wholly visible
 // source with a closed form and nothing else to see) the check is to 1e-9 relative; Monte Carlo
 // estimates are checked within 4 of their own standard errors (standardErrorLux(), which the
@@ -8,6 +8,7 @@
 #include "engine/tracer.h"
 #include "validation/analytic.h"
 #include "tests/engine/test_materials.h"
+#include "engine/irradiance_estimator.h"
 
 
 #include <gtest/gtest.h>
@@ -63,7 +64,7 @@ TEST(Tracer, SmallLightSphereIsExactAtSeveralAngles) {
     const uint32_t lamp = addLight(sc, L);
     sc.addSphere(p + d * f.toWorld(Vec3(std::sin(th), 0.0, std::cos(th))), r, lamp);
     const Tracer tracer(sc);
-    const IrradianceEstimate e = tracer.irradiance(p, n, 0, TraceSettings{});
+    const IrradianceEstimate e = estimateIrradiance(tracer, p, n, 0, TraceSettings{});
     const double want = kLumensPerWatt * analytic::sphereSource(L, r, d, std::cos(th));
     expectExact(e.illuminanceLux(), want, "sphere source");
     EXPECT_LE(e.standardErrorLux(), 1e-12 * want);
@@ -77,12 +78,12 @@ TEST(Tracer, LightRectangleAboveIsExact) {
   const Tracer tracer(sc);
   // Under the rectangle, under a corner, and beside it.
   for (const Vec2 xy : {Vec2(0, 0), Vec2(0.3, 0.6), Vec2(-1.0, -0.5), Vec2(2.5, 1.0), Vec2(-3.0, 0.2)}) {
-    const IrradianceEstimate e = tracer.irradiance(Vec3(xy, 0.0), Vec3(0, 0, 1), 7, TraceSettings{});
+    const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(xy, 0.0), Vec3(0, 0, 1), 7, TraceSettings{});
     const double want = kLumensPerWatt * analytic::rectangleAbove(L, {-1.0, -0.5, 1.5, 0.75}, h, xy.x, xy.y);
     expectExact(e.illuminanceLux(), want, "rectangle source");
   }
   // Behind the one-sided source nothing arrives.
-  EXPECT_EQ(tracer.irradiance(Vec3(0, 0, 3), Vec3(0, 0, -1), 0, TraceSettings{}).illuminanceLux(), 0.0);
+  EXPECT_EQ(estimateIrradiance(tracer, Vec3(0, 0, 3), Vec3(0, 0, -1), 0, TraceSettings{}).illuminanceLux(), 0.0);
 }
 
 // A distant `light` source (the sun): π L sin²α cos θ for a cap wholly above the horizon.
@@ -93,7 +94,7 @@ TEST(Tracer, SunIsExact) {
   sc.addDistant(dir, fullDeg, addLight(sc, L));
   const Tracer tracer(sc);
   const double sinA = std::sin(degToRad(fullDeg / 2));
-  const IrradianceEstimate e = tracer.irradiance({0, 0, 0}, {0, 0, 1}, 0, TraceSettings{});
+  const IrradianceEstimate e = estimateIrradiance(tracer, {0, 0, 0}, {0, 0, 1}, 0, TraceSettings{});
   expectExact(e.illuminanceLux(), kLumensPerWatt * kPi * L * sinA * sinA * dir.z, "sun");
 }
 
@@ -105,7 +106,7 @@ TEST(Tracer, UniformSkyOverOpenPlane) {
   sc.addDistant({0, 0, 1}, 360.0, addGlow(sc, L));
   const Tracer tracer(sc);
   for (double z : {0.01, 0.001, 1.0}) {
-    const IrradianceEstimate e = tracer.irradiance({0.3, 0.4, z}, {0, 0, 1}, 3, TraceSettings{});
+    const IrradianceEstimate e = estimateIrradiance(tracer, {0.3, 0.4, z}, {0, 0, 1}, 3, TraceSettings{});
     expectExact(e.illuminanceLux(), kLumensPerWatt * analytic::uniformSky(L), "uniform sky");
   }
 }
@@ -121,7 +122,7 @@ TEST(Tracer, CoaxialLightDisk) {
   const Tracer tracer(sc);
   const double want = kLumensPerWatt * analytic::coaxialDisk(L, R, h);
   for (uint64_t i = 0; i < 4; ++i) {
-    const IrradianceEstimate e = tracer.irradiance({0.2, 0.1, 0.0}, {0, 0, 1}, i, TraceSettings{});
+    const IrradianceEstimate e = estimateIrradiance(tracer, {0.2, 0.1, 0.0}, {0, 0, 1}, i, TraceSettings{});
     EXPECT_NEAR(e.illuminanceLux(), want, kExactRel * want);
   }
 }
@@ -147,7 +148,7 @@ TEST(Tracer, LightDiskAcrossTheHorizonIsMonteCarlo) {
   const double want = kLumensPerWatt * L * polygonProjectedSolidAngle(half, p, n);
   TraceSettings s;
   s.lightSamples = 1024;
-  const IrradianceEstimate e = tracer.irradiance(p, n, 3, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, p, n, 3, s);
   expectWithinStandardErrors(e, want, 0.01, "half disk");
 }
 
@@ -173,7 +174,7 @@ TEST(Tracer, PartiallyShadowedRectangle) {
     const double hidden = analytic::rectangleAbove(L, {qx0, qy0, qx1, qy1}, h, p.x, p.y);
     const double want = kLumensPerWatt * (full - hidden);
     ASSERT_GT(hidden, 0.01 * full);  // the shadow matters
-    const IrradianceEstimate e = tracer.irradiance(Vec3(p, 0.0), {0, 0, 1}, 11, s);
+    const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(p, 0.0), {0, 0, 1}, 11, s);
     expectWithinStandardErrors(e, want, 0.02, "partially shadowed rectangle");
   }
 }
@@ -190,7 +191,7 @@ TEST(Tracer, SphereOnBlackPlaneUnderUniformSky) {
     const Tracer tracer(sc);
     uint64_t index = 0;
     for (double x : {0.25, 0.5, 1.0, 2.0, 3.0}) {
-      const IrradianceEstimate e = tracer.irradiance({x, 0.0, h}, {0, 0, 1}, index++, TraceSettings{});
+      const IrradianceEstimate e = estimateIrradiance(tracer, {x, 0.0, h}, {0, 0, 1}, index++, TraceSettings{});
       const double want = kLumensPerWatt * analytic::sphereOnPlane(rho, L, R, x, h);
       std::printf("[ measured ] sphere on plane rho %.1f x %.2f m: %.6g lux, reference %.6g lux, standard error %.3g lux\n",
                   rho, x, e.illuminanceLux(), want, e.standardErrorLux());
@@ -248,7 +249,7 @@ TEST(Tracer, SensorsJustAboveAFloorSeeNoSelfIntersection) {
   const Tracer tracer(sc);
   for (double gap : {0.01, 0.001}) {
     for (const Vec2 xy : {Vec2(0, 0), Vec2(1.0, -0.4)}) {
-      const IrradianceEstimate e = tracer.irradiance(Vec3(xy, zFloor + gap), {0, 0, 1}, 0, TraceSettings{});
+      const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(xy, zFloor + gap), {0, 0, 1}, 0, TraceSettings{});
       const double want =
           kLumensPerWatt * analytic::rectangleAbove(L, {-0.6, -0.6, 0.6, 0.6}, zLight - zFloor - gap, xy.x, xy.y);
       expectExact(e.illuminanceLux(), want, "sensor above floor");
@@ -270,7 +271,7 @@ TEST(Tracer, SensorsNearASphereSeeNoSelfIntersection) {
     sc.addSphere(c, R, addPlastic(sc, 0.5));
     sc.addSphere(p + d * f.toWorld(Vec3(std::sin(th), 0.0, std::cos(th))), r, addLight(sc, L));
     const Tracer tracer(sc);
-    const IrradianceEstimate e = tracer.irradiance(p, u, 0, TraceSettings{});
+    const IrradianceEstimate e = estimateIrradiance(tracer, p, u, 0, TraceSettings{});
     expectExact(e.illuminanceLux(), kLumensPerWatt * analytic::sphereSource(L, r, d, std::cos(th)),
                 "sensor near sphere");
   }
@@ -309,7 +310,7 @@ TEST(Tracer, LightTightBoxIsDarkInside) {
   };
   uint64_t i = 0;
   for (const Probe& pr : probes) {
-    const IrradianceEstimate est = tracer.irradiance(pr.p, pr.n, i++, settingsForQuality(Quality::kDraft));
+    const IrradianceEstimate est = estimateIrradiance(tracer, pr.p, pr.n, i++, settingsForQuality(Quality::kDraft));
     EXPECT_EQ(est.illuminanceLux(), 0.0) << "at (" << pr.p.x << ", " << pr.p.y << ", " << pr.p.z << ") facing ("
                                          << pr.n.x << ", " << pr.n.y << ", " << pr.n.z << ")";
   }
@@ -399,7 +400,7 @@ TEST(Tracer, SmallLampSeenInAMirrorIsExact) {
   TraceSettings s;
   s.maxBounces = 0;
   const Vec3 p(0.0, 0.0, 0.0);
-  const IrradianceEstimate e = tracer.irradiance(p, Vec3(0, 0, 1), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, p, Vec3(0, 0, 1), 0, s);
   const double d1 = std::hypot(0.5, 1.0), d2 = std::hypot(1.5, 1.0);
   const double want = kLumensPerWatt * (analytic::sphereSource(2e4, 0.01, d1, 1.0 / d1) +
                                         analytic::sphereSource(2e4, 0.01, d2, 1.0 / d2));
@@ -418,8 +419,8 @@ TEST(Tracer, MirrorEqualsTheUnfoldedScene) {
       {{-0.5, 0.0, 0.01}, {0, 0, 1}}, {{0.9, 0.5, 0.01}, {0, 0, 1}}, {{0.0, 0.3, 2.0}, {0, 0, -1}},
       {{0.8, -0.2, 0.5}, {1, 0, 0}}};
   for (size_t i = 0; i < pts.size(); ++i) {
-    const IrradianceEstimate ea = ta.irradiance(pts[i].first, pts[i].second, i, s);
-    const IrradianceEstimate eb = tb.irradiance(pts[i].first, pts[i].second, i + 100, s);
+    const IrradianceEstimate ea = estimateIrradiance(ta, pts[i].first, pts[i].second, i, s);
+    const IrradianceEstimate eb = estimateIrradiance(tb, pts[i].first, pts[i].second, i + 100, s);
     const double tol = 4.0 * std::hypot(ea.standardErrorLux(), eb.standardErrorLux());
     std::printf("[ measured ] mirror %.5g ± %.2g lux, unfolded %.5g ± %.2g lux\n", ea.illuminanceLux(),
                 ea.standardErrorLux(), eb.illuminanceLux(), eb.standardErrorLux());
@@ -449,7 +450,7 @@ TEST(Tracer, GlossyPlasticReflectsItsSpecularEnergy) {
     addUpRect(sc, -1e4, -1e4, 1e4, 1e4, 0.0, gloss);
     const Tracer tracer(sc);
     TraceSettings s;
-    const IrradianceEstimate e = tracer.irradiance(Vec3(0, 0, 1), Vec3(0, 0, -1), 0, s);
+    const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0, 0, 1), Vec3(0, 0, -1), 0, s);
     const double want = kLumensPerWatt * kPi * (0.4 * 0.9 + 0.1);
     expectWithinStandardErrors(e, want, 0.01, roughness == 0.0 ? "mirror-like plastic" : "glossy plastic");
   }

@@ -1,5 +1,6 @@
 // NaN or infinity is never written as a result.
 #include "study/finite_results.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 

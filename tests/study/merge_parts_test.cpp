@@ -7,6 +7,7 @@
 #include "base/error.h"
 #include "base/input_file.h"
 #include "study/finite_results.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

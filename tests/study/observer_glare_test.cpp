@@ -5,6 +5,7 @@
 #include "engine/luminaire_source.h"
 #include "engine/tracer.h"
 #include "tests/engine/lambertian_panel.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -61,7 +62,7 @@ TEST(ObserverGlare, SingleLuminaireAgainstAHandCalculation) {
   // Lb: the eye's vertical illuminance (estimated) less the panel's direct share (integrated over
   // its opening), over π. Its error: 4 standard errors of the estimate and the direct share's
   // 2e-3 (Render.EyeLightSeparatesDirectFromIndirect).
-  const IrradianceEstimate est = tracer.irradiance(o.eyeM(), Vec3(0.0, 1.0, 0.0), kObserverStreamBase, s);
+  const IrradianceEstimate est = estimateIrradiance(tracer, o.eyeM(), Vec3(0.0, 1.0, 0.0), kObserverStreamBase, s);
   const double direct = g.verticalLux - kPi * lg;
   const double lbTolerance = (4.0 * est.standardErrorLux() + 2e-3 * direct) / kPi;
   EXPECT_NEAR(g.backgroundCdM2, lg, lbTolerance);

@@ -3,6 +3,7 @@
 #include "study/points_study.h"
 
 #include "study/sensor_grid.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 

@@ -10,6 +10,7 @@
 #include "study/prepared_grid.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
+#include "engine/irradiance_estimator.h"
 
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>

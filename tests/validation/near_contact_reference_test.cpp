@@ -3,6 +3,7 @@
 // estimate (docs/accuracy.md#near-contact-cache-bias-cause-and-fix).
 #include "engine/sensors.h"
 #include "validation/speed_accuracy.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 

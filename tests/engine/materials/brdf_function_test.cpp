@@ -13,6 +13,7 @@
 #include "photometry/sky_type.h"
 #include "tests/support/temp_files.h"
 #include "tests/support/test_views.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -77,7 +78,7 @@ IrradianceEstimate measure(const Scene& sc, double z, const Vec3& n) {
   s.seed = 3;
   s.hemisphereSamples = 4096;
   s.maxBounces = 2;
-  return Tracer(sc).irradiance(Vec3(0.3, 0.2, z), Response::planar(n), 0, s);
+  return estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, z), Response::planar(n), 0, s);
 }
 
 // The illuminance a sensor facing a plane of radiance `radiance` (W/sr/m², RGB) reads: π L, lux.

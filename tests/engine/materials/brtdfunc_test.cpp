@@ -8,6 +8,7 @@
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
 #include "tests/support/temp_files.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -47,7 +48,7 @@ void expectLux(const Scene& sc, double z, const Vec3& n, double want, const std:
   s.seed = 2;
   s.hemisphereSamples = 4096;
   s.maxBounces = 2;
-  const IrradianceEstimate e = Tracer(sc).irradiance(Vec3(0.3, 0.2, z), Response::planar(n), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, z), Response::planar(n), 0, s);
   EXPECT_NEAR(e.illuminanceLux(), want, std::max(4.0 * e.standardErrorLux(), 1e-9 * kSkyLux)) << what;
   EXPECT_LT(e.standardErrorLux(), 0.02 * kSkyLux) << what;
 }

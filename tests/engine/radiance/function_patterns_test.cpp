@@ -9,6 +9,7 @@
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
 #include "tests/support/temp_files.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -48,7 +49,7 @@ void expectDownward(const Scene& sc, double want, const char* what, int samples 
   s.seed = 1;
   s.hemisphereSamples = samples;
   s.maxBounces = 1;
-  const IrradianceEstimate e = tracer.irradiance(Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
   EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux()) << what;
   EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;  // the test can tell a wrong factor apart
 }
@@ -190,7 +191,7 @@ TEST(FunctionPatterns, TexturesTurnTheShadingNormal) {
     s.seed = 4;
     s.hemisphereSamples = 1024;
     s.maxBounces = 1;
-    return Tracer(sc).irradiance(Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+    return estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
   };
   auto expectNear = [&](const IrradianceEstimate& e, double cosG, const char* what) {
     const double want = 0.5 * en * cosG;
@@ -316,7 +317,7 @@ void expectLux(const Scene& sc, const Vec3& at, const Vec3& n, double want, cons
   s.hemisphereSamples = 1024;
   s.lightSamples = 1024;
   s.maxBounces = maxBounces;
-  const IrradianceEstimate e = tracer.irradiance(at, Response::planar(n), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, at, Response::planar(n), 0, s);
   // A constant pattern is exact (the ratio estimator): then the quadrature's error, 1e-5.
   EXPECT_NEAR(e.illuminanceLux(), want, std::max(4.0 * e.standardErrorLux(), 1e-5 * want)) << what;
   EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;  // the test tells a wrong factor apart
@@ -344,7 +345,7 @@ TEST(FunctionPatterns, PatternsOnAreaLightsWeighTheirSamples) {
     s.seed = 5;
     s.hemisphereSamples = 256;
     s.maxBounces = 1;
-    return Tracer(sc).irradiance(Vec3(0.3, -0.2, 0.5), Response::planar(-up), 0, s).illuminanceLux();
+    return estimateIrradiance(Tracer(sc), Vec3(0.3, -0.2, 0.5), Response::planar(-up), 0, s).illuminanceLux();
   };
   const double patterned = reflected("void brightfunc p 2 .4 . 0 0\n" + lamp + kCeiling + floor);
   const double unpatterned = reflected("void light lamp 0 0 3 10 10 10\n" + std::string(kCeiling) + floor);

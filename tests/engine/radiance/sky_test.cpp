@@ -15,6 +15,7 @@
 #include "photometry/site.h"
 #include "photometry/sky_cie.h"
 #include "photometry/sun_spa.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -550,7 +551,7 @@ TEST(SceneSky, OpenPointUnderGenskyOvercastReadsItsIlluminance) {
   const RadPrimitive f = skyfunc(expand("gensky 3 21 12 -c -B 55.866"));
   const double ref = kLumensPerWatt * hemisphere([&](const Vec3& d) { return skybrRef(f.reals, d); });
   const Tracer tracer(scene);
-  const IrradianceEstimate e = tracer.irradiance(Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
+  const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
   EXPECT_NEAR(e.illuminanceLux(), ref, 4.0 * e.standardErrorLux() + 1e-9);
   // candela's own CIE overcast sky of 10 000 lx at the same point.
   Scene own;
@@ -558,7 +559,7 @@ TEST(SceneSky, OpenPointUnderGenskyOvercastReadsItsIlluminance) {
   d.skyType = parseSkyType("cie-overcast").value();
   d.diffuseHorizontalLux = 10000.0;
   addDaylight(own, d);
-  const IrradianceEstimate o = Tracer(own).irradiance(Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
+  const IrradianceEstimate o = estimateIrradiance(Tracer(own), Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
   EXPECT_NEAR(o.illuminanceLux(), 10000.0, 4.0 * o.standardErrorLux() + 1e-9);
   const double se = std::hypot(e.standardErrorLux(), o.standardErrorLux());
   EXPECT_NEAR(e.illuminanceLux() - o.illuminanceLux(), ref - 10000.0, 4.0 * se + 1e-9);
@@ -569,7 +570,7 @@ TEST(SceneSky, OpenPointUnderSunnySkyCountsSkyAndSunOnce) {
   const Scene scene = readSky(cmd);
   const RadPrimitive f = skyfunc(expand(cmd));
   const double skyRef = kLumensPerWatt * hemisphere([&](const Vec3& d) { return skybrRef(f.reals, d); });
-  const IrradianceEstimate e = Tracer(scene).irradiance(Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
+  const IrradianceEstimate e = estimateIrradiance(Tracer(scene), Vec3(0.0), Vec3(0, 0, 1), 0, openSkySettings());
   const double ref = skyRef + scene.sky->horizontalSunLux;
   EXPECT_NEAR(e.illuminanceLux(), ref, 4.0 * e.standardErrorLux() + 1e-6 * ref);
 }
@@ -593,7 +594,7 @@ TEST(SceneSky, SkylitRoomWithAHoneybeeSkyFileMatchesTheHandWrittenCase) {
   TraceSettings s = openSkySettings();
   s.maxBounces = 8;
   const Vec3 p(2.0, 2.0, 0.8), n(0, 0, 1);
-  const IrradianceEstimate a = Tracer(hb).irradiance(p, n, 0, s), b = Tracer(own).irradiance(p, n, 0, s);
+  const IrradianceEstimate a = estimateIrradiance(Tracer(hb), p, n, 0, s), b = estimateIrradiance(Tracer(own), p, n, 0, s);
   EXPECT_GT(a.illuminanceLux(), 100.0);
   EXPECT_NEAR(a.illuminanceLux(), b.illuminanceLux(), 4.0 * std::hypot(a.standardErrorLux(), b.standardErrorLux()));
   // Reports' outside illuminance: within 0.14 % (the blend near the horizon).
@@ -748,7 +749,7 @@ TEST(SceneSky, GroundHemisphereBlendsIntoTheSkyNearTheHorizon) {
   s.seed = 2;
   s.hemisphereSamples = 4096;
   s.maxBounces = 0;
-  const IrradianceEstimate e = tracer.irradiance(Vec3(0.0, 0.0, 10.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(tracer, Vec3(0.0, 0.0, 10.0), Response::planar(Vec3(0, 0, -1)), 0, s);
   EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
   EXPECT_GT(std::abs(want - uniform), 8.0 * e.standardErrorLux());
 }

@@ -10,6 +10,7 @@
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
 #include "tests/support/temp_files.h"
+#include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
@@ -56,7 +57,7 @@ void expectFloor(const Scene& sc, double want, const char* what) {
   s.seed = 1;
   s.hemisphereSamples = 1024;
   s.maxBounces = 1;
-  const IrradianceEstimate e = Tracer(sc).irradiance(Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  const IrradianceEstimate e = estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
   EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux()) << what;
   EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;
 }
