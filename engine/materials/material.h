@@ -14,9 +14,9 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kAshik2
 };
-inline constexpr int kMaterialTypeCount = 17;
+inline constexpr int kMaterialTypeCount = 18;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -68,6 +68,10 @@ struct MaterialParameters {
   double spotFocalM = 0.0;
   // mixfunc: the two materials mixed (-1: void), the coefficient being pattern's function.
   int foreground = -1, background = -1;
+  // ashik2 (Ashikhmin-Shirley): the specular colour as given (color is the diffuse one) and the
+  // lobe's Phong exponents along u and across it.
+  Rgb specularColor{0.0};
+  double exponentU = 0.0, exponentV = 0.0;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):

@@ -30,6 +30,7 @@ constexpr Entry kFamilies[] = {
     {trans2Family, {"trans2", nullptr}},
     {mistFamily, {"mist", nullptr}},
     {brtdFuncFamily, {"BRTDfunc", nullptr}},
+    {ashik2Family, {"ashik2", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

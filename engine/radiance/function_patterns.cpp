@@ -199,10 +199,10 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   if (isDataPattern(p)) return readDataPattern(p, files, folder, std::move(sp), index);
   if (p.type == "spectrum" || p.type == "specfile") return readSpectrumPattern(p, files, folder, std::move(sp));
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
-  // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
+  // file; plastic2, metal2, trans2, ashik2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.
   const bool mixture = p.type == "mixfunc";
-  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2";
+  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2" || p.type == "ashik2";
   sp.texture = p.type == "texfunc";  // xpert ypert zpert funcfile
   const bool brtd = p.type == "BRTDfunc";
   if (vector && p.strings.size() < 4)
