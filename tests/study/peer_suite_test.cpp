@@ -48,7 +48,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"patterns", {"colortext 'textpat' (helvet.fnt)", "disagrees: point 1"}},
       {"prism1", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
       {"prism2", {"colorpict 'vase_pat': function file 'climit.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
-      {"spectra", {"specfunc 'rainbow_spec' (rainbow.cal)", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
+      {"spectra", {"specfunc 'rainbow_spec': function file 'rainbow.cal'", "mesh 'vase' names a Radiance compiled mesh (vase.rtm)"}},
       {"tfunc", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "primitive type 'transfunc' is not supported"}},
       {"trans", {"mixtext 'plas2_text' (helvet.fnt)", "primitive type 'plasfunc' is not supported"}},
       {"trans2", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
