@@ -14,9 +14,9 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kAshik2
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kAshik2, kWgmdFunc
 };
-inline constexpr int kMaterialTypeCount = 18;
+inline constexpr int kMaterialTypeCount = 19;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -72,6 +72,10 @@ struct MaterialParameters {
   // lobe's Phong exponents along u and across it.
   Rgb specularColor{0.0};
   double exponentU = 0.0, exponentV = 0.0;
+  // WGMDfunc: which of its specular reflection (1), specular transmission (2) and diffuse
+  // transmission (4) take the material's own pattern colour (their modifier `inherit` or the
+  // material's modifier; `void` leaves them white).
+  int inheritsPattern = 0;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):

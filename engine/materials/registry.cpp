@@ -31,6 +31,7 @@ constexpr Entry kFamilies[] = {
     {mistFamily, {"mist", nullptr}},
     {brtdFuncFamily, {"BRTDfunc", nullptr}},
     {ashik2Family, {"ashik2", nullptr}},
+    {wgmdFuncFamily, {"WGMDfunc", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -23,5 +23,6 @@ const MaterialFamily& trans2Family();
 const MaterialFamily& mistFamily();
 const MaterialFamily& brtdFuncFamily();
 const MaterialFamily& ashik2Family();
+const MaterialFamily& wgmdFuncFamily();
 
 }  // namespace candela

@@ -292,15 +292,22 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2" || p.type == "ashik2";
   sp.texture = p.type == "texfunc";  // xpert ypert zpert funcfile
   const bool brtd = p.type == "BRTDfunc";
+  // WGMDfunc: rs rs_urough rs_vrough (part 0), ts ts_urough ts_vrough (part 1), ux uy uz (part 2)
+  // of rs_mod rs rs_urough rs_vrough ts_mod ts ts_urough ts_vrough td_mod ux uy uz file.
+  const bool wgmd = p.type == "WGMDfunc";
+  if (wgmd && p.strings.size() < 13)
+    throw InputError(p.loc, what + " needs 13 or more string arguments (rs_mod rs rs_urough rs_vrough ts_mod ts "
+                                   "ts_urough ts_vrough td_mod ux uy uz funcfile [transform]), got " +
+                                std::to_string(p.strings.size()));
   if (vector && p.strings.size() < 4)
     throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
                                 std::to_string(p.strings.size()));
   if (brtd && p.strings.size() < 10)
     throw InputError(p.loc, what + " needs 10 or more string arguments (rrefl grefl brefl rtrns gtrns btrns rbrtd "
                                    "gbrtd bbrtd funcfile [transform]), got " + std::to_string(p.strings.size()));
-  sp.channels = p.type == "colorfunc" || vector || brtd || sp.texture ? 3 : 1;
-  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : 0;
-  const size_t fileAt = brtd ? 9 : firstFunction + static_cast<size_t>(sp.channels);
+  sp.channels = p.type == "colorfunc" || vector || brtd || wgmd || sp.texture ? 3 : 1;
+  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : wgmd ? 4 * static_cast<size_t>(part) + 1 : 0;
+  const size_t fileAt = brtd ? 9 : wgmd ? 12 : firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
   RadTransform toWorld;
   const size_t end = parseRadTransform(p.strings, fileAt + 1, toWorld, p.loc, what);
@@ -315,6 +322,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   static const char* const kAxis[] = {"ux", "uy", "uz"};
   static const char* const kPert[] = {"xpert", "ypert", "zpert"};
   static const char* const kBrtd[] = {"rrefl", "grefl", "brefl", "rtrns", "gtrns", "btrns"};
+  static const char* const kWgmd[] = {"rs", "rs_urough", "rs_vrough", "ts", "ts_urough", "ts_vrough", "ux", "uy", "uz"};
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
     const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
@@ -324,6 +332,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
       throw InputError(p.loc, what + ": " +
                                   (sp.channels == 1 ? "its function"
                                    : brtd           ? std::string("its ") + kBrtd[firstFunction + static_cast<size_t>(k)]
+                                   : wgmd           ? std::string("its ") + kWgmd[3 * static_cast<size_t>(part) + static_cast<size_t>(k)]
                                                     : std::string(vector ? kAxis[k] : sp.texture ? kPert[k] : kChannel[k]) +
                                                           " function") +
                                   " '" + expression + "' is not an expression: " + e.message());
