@@ -52,7 +52,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"tfunc", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "primitive type 'transfunc' is not supported"}},
       {"trans", {"mixtext 'plas2_text' (helvet.fnt)", "primitive type 'plasfunc' is not supported"}},
       {"trans2", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
-      {"wgmdf", {"primitive type 'WGMDfunc' is not supported", ""}},
+      {"wgmdf", {"WGMDfunc 'wgmd_mat1': function file 'cylmods.cal'", ""}},
   };
   return table;
 }
