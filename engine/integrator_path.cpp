@@ -103,21 +103,23 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
   return false;
 }
 
-// One sample of the glossy (Ward) lobe of m leaving v: its reflected radiance estimate. As
-// Radiance's sampled specular rays do, a sample carries the specular reflectance ρ_s; sources met
-// are counted (the light sampled at the vertex is the diffuse part's only); glossy reflections
-// count as bounces.
+// One sample of the glossy lobe of m leaving v: its reflected radiance estimate. As Radiance's
+// sampled specular rays do, a sample carries the family's lobe weight (the specular reflectance
+// ρ_s for the Ward lobes); sources met are counted (the light sampled at the vertex is the diffuse
+// part's only); glossy reflections count as bounces.
 Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
   Vec3 out(0.0);
-  if (!familyOf(m).sampleLobe(m, v.inDir, v.ns, ctx.rng, out)) return Rgb(0.0);
+  const MaterialFamily& family = familyOf(m);
+  if (!family.sampleLobe(m, v.inDir, v.ns, ctx.rng, out)) return Rgb(0.0);
   if (v.textured && glm::dot(out, v.nf) <= 0.0) return Rgb(0.0);  // turned below the surface
-  const TallyFactor tf(ctx.tally, m.specularReflectance);
+  const Rgb weight = family.lobeWeight(m, v.inDir, v.ns, out);
+  const TallyFactor tf(ctx.tally, weight);
   PathState next;
   next.skip = v.flatSkip;
   next.countSources = true;
   next.diffuse = diffuse + 1;
   next.lighting = true;
-  return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
+  return weight * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
 // Ward's cache at a diffuse vertex: direct light sampled here, indirect irradiance interpolated;

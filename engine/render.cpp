@@ -141,7 +141,8 @@ Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3&
   const double pTs = photopic(m.specularTransmittance);
   if (pTs > 0.0) out += m.specularTransmittance * cameraRadiance(cr, xb, d, flatSkip, share * pTs, events + 1);
   if (photopic(m.specularReflectance) > 0.0) {
-    // As the path tracer's glossyBounce: a sample carries ρ_s, counts sources and is a bounce.
+    // As the path tracer's glossyBounce: a sample carries the lobe's weight (ρ_s for the Ward
+    // lobes), counts sources and is a bounce.
     const int n = m.roughness > 0.0 ? std::max(1, cr.render.glossySamples) : 1;
     PathState next;
     next.skip = flatSkip;
@@ -151,9 +152,9 @@ Rgb surfaceRadiance(CameraRay& cr, const Material& m, const Vec3& x, const Vec3&
     for (int k = 0; k < n; ++k) {
       Vec3 dir(0.0);
       if (familyOf(m).sampleLobe(m, d, ns, cr.ctx.rng, dir) && !(textured && glm::dot(dir, nf) <= 0.0))
-        sum += pathRadiance(cr.ctx, xf, dir, next);
+        sum += familyOf(m).lobeWeight(m, d, ns, dir) * pathRadiance(cr.ctx, xf, dir, next);
     }
-    out += m.specularReflectance * sum / static_cast<double>(n);
+    out += sum / static_cast<double>(n);
   }
   return out;
 }

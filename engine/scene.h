@@ -56,6 +56,12 @@ struct ScenePattern {
   // spectrum, specfile: a constant colour (the spectrum reduced to RGB: engine/radiance/spectrum.h).
   bool constant = false;
   Rgb constantColour{1.0};
+  // specfunc, specdata (spectra of the ray, reduced to RGB at each hit): the wavelengths (nm) its
+  // function is evaluated at, increasing, and the RGB a unit value at each contributes
+  // (spectrumNodeWeights, engine/radiance/spectrum.h); empty for the other patterns.
+  std::vector<double> spectralNodesNm;
+  std::vector<Rgb> spectralWeights;
+  bool spectral() const { return !spectralNodesNm.empty(); }
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;

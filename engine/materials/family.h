@@ -157,6 +157,13 @@ class MaterialFamily {
                           Vec3& /*out*/) const {
     return false;
   }
+  // kScatter: the weight a direction `out` drawn by sampleLobe carries (its BRDF times the cosine
+  // over the density it was drawn with), at most m.specularReflectance, by which paths choose the
+  // lobe. Radiance's Ward lobes carry the specular reflectance itself (the default); ashik2's
+  // carries less where its BRDF's max(cos θi, cos θo) falls short of the density's.
+  virtual Rgb lobeWeight(const Material& m, const Vec3& /*inDir*/, const Vec3& /*nf*/, const Vec3& /*out*/) const {
+    return m.specularReflectance;
+  }
   // The number of patterns of functions the family's primitive names (plastic2's u direction: 1;
   // BRTDfunc's specular reflectance and transmittance: 2): the reader reads them into
   // Scene::patterns, the first at Material::functions, before read().

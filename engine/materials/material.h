@@ -14,9 +14,10 @@ namespace candela {
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kPlasFunc, kMetFunc, kTransFunc, kPlasData, kMetData, kTransData
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kPlasFunc, kMetFunc, kTransFunc, kPlasData, kMetData, kTransData,
+  kAshik2, kWgmdFunc
 };
-inline constexpr int kMaterialTypeCount = 23;
+inline constexpr int kMaterialTypeCount = 25;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -73,6 +74,14 @@ struct MaterialParameters {
   double spotFocalM = 0.0;
   // mixfunc: the two materials mixed (-1: void), the coefficient being pattern's function.
   int foreground = -1, background = -1;
+  // ashik2 (Ashikhmin-Shirley): the specular colour as given (color is the diffuse one) and the
+  // lobe's Phong exponents along u and across it.
+  Rgb specularColor{0.0};
+  double exponentU = 0.0, exponentV = 0.0;
+  // WGMDfunc: which of its specular reflection (1), specular transmission (2) and diffuse
+  // transmission (4) take the material's own pattern colour (their modifier `inherit` or the
+  // material's modifier; `void` leaves them white).
+  int inheritsPattern = 0;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):

@@ -100,19 +100,39 @@ bool sampleAnisotropicWardLobe(const Material& m, const Vec3& inDir, const Vec3&
   const double len = glm::length(u);
   u = len > 1e-9 ? u / len : Frame::fromNormal(nf).toWorld(Vec3(1, 0, 0));
   const Vec3 v = glm::cross(nf, u);
-  const double sx = std::max(ax, 1e-9), sy = std::max(ay, 1e-9);
   bool ok = false;
   for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
     const double u1 = rng.uniform(), u2 = rng.uniform();
-    const double phi = std::atan2(sy * std::sin(kTwoPi * u2), sx * std::cos(kTwoPi * u2));
-    const double c = std::cos(phi), s = std::sin(phi);
-    const double tan2 = -std::log(std::max(1e-300, 1.0 - u1)) / (c * c / (sx * sx) + s * s / (sy * sy));
-    const double cosD = 1.0 / std::sqrt(1.0 + tan2), sinD = std::sqrt(std::max(0.0, 1.0 - cosD * cosD));
-    const Vec3 h = sinD * c * u + sinD * s * v + cosD * nf;
+    const Vec3 h = wardHalfVector(u, v, nf, ax, ay, u1, u2);
     out = 2.0 * glm::dot(wi, h) * h - wi;
     ok = glm::dot(out, nf) > 0.0;
   }
   return ok;
+}
+
+Vec3 wardHalfVector(const Vec3& u, const Vec3& v, const Vec3& n, double ax, double ay, double u1, double u2) {
+  const double sx = std::max(ax, 1e-9), sy = std::max(ay, 1e-9);
+  const double phi = std::atan2(sy * std::sin(kTwoPi * u2), sx * std::cos(kTwoPi * u2));
+  const double c = std::cos(phi), s = std::sin(phi);
+  const double tan2 = -std::log(std::max(1e-300, 1.0 - u1)) / (c * c / (sx * sx) + s * s / (sy * sy));
+  const double cosD = 1.0 / std::sqrt(1.0 + tan2), sinD = std::sqrt(std::max(0.0, 1.0 - cosD * cosD));
+  return sinD * c * u + sinD * s * v + cosD * n;
+}
+
+bool sampleWgmdLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) {
+  const Vec3 wi = -inDir;
+  if (glm::dot(wi, nf) <= 0.0) return false;
+  if (m.roughness <= 0.0 && m.roughnessV <= 0.0) {
+    out = inDir - 2.0 * glm::dot(inDir, nf) * nf;
+    return true;
+  }
+  Vec3 u = m.anisotropyU - glm::dot(m.anisotropyU, nf) * nf;
+  const double len = glm::length(u);
+  u = len > 1e-9 ? u / len : Frame::fromNormal(nf).toWorld(Vec3(1, 0, 0));
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const Vec3 h = wardHalfVector(u, glm::cross(nf, u), nf, m.roughness, m.roughnessV, u1, u2);
+  out = 2.0 * glm::dot(wi, h) * h - wi;
+  return glm::dot(out, nf) > 0.0;
 }
 
 }  // namespace candela

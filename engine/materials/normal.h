@@ -38,6 +38,15 @@ class NormalFamily : public MaterialFamily {
 // (projected on the surface) and roughnessV across it.
 bool sampleAnisotropicWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
 
+// A half vector of Ward's anisotropic lobe (1992, eq. 5a–b) about unit n, of roughness ax along
+// unit u and ay along unit v (u, v, n orthonormal), from (u1, u2) in [0, 1)².
+Vec3 wardHalfVector(const Vec3& u, const Vec3& v, const Vec3& n, double ax, double ay, double u1, double u2);
+
+// WGMDfunc's lobe: one draw of the same half vector (u projected on the surface), lost when the
+// reflection falls below the surface (no redraw: its weight, the BRDF over the density, then
+// keeps the estimate unbiased); roughness 0 is the mirror direction.
+bool sampleWgmdLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
+
 // One direction of the glossy (Ward) lobe of m for a ray arriving along inDir on the side of nf;
 // false when the sample is lost (arrival from behind, or eight draws below the surface).
 bool sampleWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);

@@ -49,6 +49,29 @@ double PatternEvaluator::function(const ScenePattern& sp, int k) {
   }
 }
 
+Rgb PatternEvaluator::spectral(const ScenePattern& sp) {
+  // Radiance's p_specfunc and p_specdata: the function of the wavelength (specdata: of the data's
+  // value there too, at the point the coordinates give) at each node, reduced to RGB.
+  try {
+    double pt[kMaxDataDimensions];
+    const size_t n = sp.coordinates.size();
+    for (size_t i = 0; i < n; ++i) pt[i] = eval_->value(sp.coordinates[i]);
+    Rgb c(0.0);
+    for (size_t k = 0; k < sp.spectralNodesNm.size(); ++k) {
+      const double nm = sp.spectralNodesNm[k];
+      double args[2] = {nm, nm};
+      if (sp.data[0]) {
+        pt[n] = nm;
+        args[0] = sp.data[0]->value(pt);
+      }
+      c += eval_->call(sp.functions[0], std::span<const double>(args, sp.data[0] ? 2 : 1)) * sp.spectralWeights[k];
+    }
+    return c;
+  } catch (const cal::EvalError& e) {
+    throw InputError(sp.loc, sp.type + " '" + sp.name + "': " + e.what());
+  }
+}
+
 Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
   Rgb c(1.0);
   for (int i = index; i >= 0;) {
@@ -58,7 +81,9 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
       c *= sp.constantColour;
     } else if (!sp.texture) {  // a texture perturbs the normal (perturbation), no colour
       begin(sp, p);
-      if (sp.channels == 1) {
+      if (sp.spectral()) {
+        c *= spectral(sp);
+      } else if (sp.channels == 1) {
         c *= function(sp, 0);
       } else {
         for (int k = 0; k < 3; ++k) c[k] *= function(sp, k);

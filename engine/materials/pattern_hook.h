@@ -50,6 +50,8 @@ class PatternEvaluator {
   void beginOriented(const ScenePattern& sp, const PatternPoint& p, const Rgb& colourP);
   // The ray's variables of pattern sp at p (makes the evaluator on first use).
   void fill(const ScenePattern& sp, const PatternPoint& p, cal::Environment& env);
+  // A spectral pattern's colour (specfunc, specdata) in the evaluation begun.
+  Rgb spectral(const ScenePattern& sp);
   // Function k of sp in the evaluation begun (a data pattern's: called with its data at the point
   // its coordinates give); a failure is an InputError at the pattern's line.
   double function(const ScenePattern& sp, int k);

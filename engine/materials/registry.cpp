@@ -36,6 +36,8 @@ constexpr Entry kFamilies[] = {
     {plasDataFamily, {"plasdata", nullptr}},
     {metDataFamily, {"metdata", nullptr}},
     {transDataFamily, {"transdata", nullptr}},
+    {ashik2Family, {"ashik2", nullptr}},
+    {wgmdFuncFamily, {"WGMDfunc", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

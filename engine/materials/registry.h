@@ -29,5 +29,7 @@ const MaterialFamily& transFuncFamily();
 const MaterialFamily& plasDataFamily();
 const MaterialFamily& metDataFamily();
 const MaterialFamily& transDataFamily();
+const MaterialFamily& ashik2Family();
+const MaterialFamily& wgmdFuncFamily();
 
 }  // namespace candela

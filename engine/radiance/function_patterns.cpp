@@ -6,6 +6,7 @@
 #include "engine/radiance/spectrum.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <system_error>
 
@@ -63,7 +64,8 @@ bool isDataPattern(const RadPrimitive& p) {
 bool isFunctionPattern(const RadPrimitive& p) {
   return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
          (p.type == "mixfunc" && p.strings.size() >= 4) || (p.type == "texfunc" && p.strings.size() >= 4) ||
-         p.type == "spectrum" || p.type == "specfile" || isDataPattern(p);
+         p.type == "spectrum" || p.type == "specfile" || p.type == "specfunc" || p.type == "specdata" ||
+         p.type == "specpict" || isDataPattern(p);
 }
 
 bool isMixture(const RadPrimitive& p) { return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict"; }
@@ -108,6 +110,89 @@ ScenePattern readSpectrumPattern(const RadPrimitive& p, FunctionFiles& files, co
   const double a = axis.points.empty() ? axis.begin : axis.points.front();
   const double b = axis.points.empty() ? axis.end : axis.points.back();
   sp.constantColour = spectrumToRgb([&](double nm) { return std::max(0.0, d->value(&nm)); }, a, b);
+  return sp;
+}
+
+// The wavelengths at which specfunc evaluates its function: evenly spaced at most this far apart
+// (nm), CIE 15's interval for colorimetric sums; the reduction's error against 1 nm steps is
+// bounded in tests/engine/radiance/spectral_patterns_test.cpp.
+constexpr double kSpecfuncStepNm = 5.0;
+
+// specfunc (`2+ sfunc funcfile transform 0 2+ nmA nmB A3 …`, Radiance's p_func.c p_specfunc) and
+// specdata (`4+ sfunc datafile funcfile x1 … xn transform`, its data over n coordinates and then
+// wavelength, p_data.c p_specdata): a spectrum of the ray, sfunc(nm) or sfunc(value, nm), reduced
+// to RGB at each hit as a spectrum of those values at the nodes (spectrumNodeWeights). specpict
+// (a hyperspectral picture) is refused with the reason.
+ScenePattern readSpectralPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
+                                 ScenePattern sp, int index) {
+  const std::string what = p.type + " '" + p.name + "'";
+  if (p.type == "specpict")
+    throw InputError(p.loc, what + ": its picture" + (p.strings.size() > 1 ? " '" + p.strings[1] + "'" : "") +
+                                " is a Radiance 6 hyperspectral picture (NCOMP channels under one exponent, "
+                                "WAVELENGTH_SPLITS), a format candela does not read");
+  const bool data = p.type == "specdata";
+  const size_t fileAt = data ? 2 : 1;
+  if (p.strings.size() < fileAt + 1)
+    throw InputError(p.loc, what + " needs " + std::to_string(fileAt + 1) + " or more string arguments (" +
+                                (data ? "sfunc datafile funcfile x1 .. xn [transform]" : "sfunc funcfile [transform]") +
+                                "), got " + std::to_string(p.strings.size()));
+  files.load(p.strings[fileAt], p, folder);
+  size_t at = fileAt + 1;
+  if (data) {
+    sp.data[0] = files.data(p.strings[1], p, folder);
+    const RadDataArray& d = *sp.data[0];
+    if (d.dimensions() < 2)
+      throw InputError(p.loc, what + ": its data file '" + p.strings[1] + "' needs 2 or more dimensions (the last "
+                                  "wavelength), has " + std::to_string(d.dimensions()));
+    const size_t dims = static_cast<size_t>(d.dimensions()) - 1;
+    if (p.strings.size() < at + dims)
+      throw InputError(p.loc, what + " needs a coordinate for each of its data's " + std::to_string(dims) +
+                                  " dimensions before wavelength, got " + std::to_string(p.strings.size() - at));
+    for (size_t k = 0; k < dims; ++k, ++at) {
+      const std::string label = "`pattern" + std::to_string(index) + ".x" + std::to_string(k);
+      try {
+        sp.coordinates.push_back(files.program()->addExpression(p.strings[at], label, p.loc));
+      } catch (const InputError& e) {
+        throw InputError(p.loc, what + ": its coordinate '" + p.strings[at] + "' is not an expression: " + e.message());
+      }
+      files.program()->check(label, -1, p.loc, p.strings[at]);
+    }
+    const RadDataArray::Axis& axis = d.axes.back();
+    for (int k = 0; k < axis.count; ++k)
+      sp.spectralNodesNm.push_back(axis.points.empty() ? axis.begin + (axis.end - axis.begin) * k / (axis.count - 1)
+                                                       : axis.points[static_cast<size_t>(k)]);
+    if (sp.spectralNodesNm.front() > sp.spectralNodesNm.back())
+      std::reverse(sp.spectralNodesNm.begin(), sp.spectralNodesNm.end());
+  } else {
+    if (p.reals.size() < 2)
+      throw InputError(p.loc, what + " needs 2 or more real arguments (nmA nmB A3 ..), got " +
+                                  std::to_string(p.reals.size()));
+    // Radiance's range of wavelengths, 380–780 nm (WLPART), outside which nothing is seen.
+    const double lo = std::max(380.0, std::min(p.reals[0], p.reals[1]));
+    const double hi = std::min(780.0, std::max(p.reals[0], p.reals[1]));
+    if (!(lo < hi))
+      throw InputError(p.loc, what + ": its wavelengths " + compactNumber(p.reals[0]) + " to " +
+                                  compactNumber(p.reals[1]) + " nm leave nothing of 380-780 nm");
+    const int steps = static_cast<int>(std::ceil((hi - lo) / kSpecfuncStepNm - 1e-9));
+    for (int k = 0; k <= steps; ++k) sp.spectralNodesNm.push_back(lo + (hi - lo) * k / steps);
+  }
+  RadTransform toWorld;
+  const size_t end = parseRadTransform(p.strings, at, toWorld, p.loc, what);
+  if (end != p.strings.size())
+    throw InputError(p.loc, what + ": '" + p.strings[end] + "' is not " + (data ? "a coordinate or " : "") +
+                                "a transform option (-t x y z, -rx/-ry/-rz deg, -s f, -mx/-my/-mz, -i N)");
+  sp.toFunction = toWorld.inverse();
+  sp.toWorld = toWorld;
+  sp.functionScale = std::abs(toWorld.scale);
+  const std::string& name = p.strings[0];
+  const int args = data ? 2 : 1;
+  if (!cal::isName(name))
+    throw InputError(p.loc, what + ": '" + name + "' must name a function of " +
+                                (data ? "the value and the wavelength (nm)" : "the wavelength (nm)"));
+  files.program()->check(name, args, p.loc);
+  sp.functions[0] = files.program()->find(name);
+  sp.channels = 3;
+  sp.spectralWeights = spectrumNodeWeights(sp.spectralNodesNm);
   return sp;
 }
 
@@ -259,22 +344,31 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   if ((p.type == "BRTDfunc" && part == 2) || p.type == "plasfunc" || p.type == "metfunc" || p.type == "transfunc" ||
       p.type == "plasdata" || p.type == "metdata" || p.type == "transdata")
     return readDirectionalPattern(p, files, folder, std::move(sp));
+  if (p.type == "specfunc" || p.type == "specdata" || p.type == "specpict")
+    return readSpectralPattern(p, files, folder, std::move(sp), index);
   // brightfunc: refl file; colorfunc: red green blue file; mixfunc: foreground background vname
-  // file; plastic2, metal2, trans2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
+  // file; plastic2, metal2, trans2, ashik2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.
   const bool mixture = p.type == "mixfunc";
-  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2";
+  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2" || p.type == "ashik2";
   sp.texture = p.type == "texfunc";  // xpert ypert zpert funcfile
   const bool brtd = p.type == "BRTDfunc";
+  // WGMDfunc: rs rs_urough rs_vrough (part 0), ts ts_urough ts_vrough (part 1), ux uy uz (part 2)
+  // of rs_mod rs rs_urough rs_vrough ts_mod ts ts_urough ts_vrough td_mod ux uy uz file.
+  const bool wgmd = p.type == "WGMDfunc";
+  if (wgmd && p.strings.size() < 13)
+    throw InputError(p.loc, what + " needs 13 or more string arguments (rs_mod rs rs_urough rs_vrough ts_mod ts "
+                                   "ts_urough ts_vrough td_mod ux uy uz funcfile [transform]), got " +
+                                std::to_string(p.strings.size()));
   if (vector && p.strings.size() < 4)
     throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
                                 std::to_string(p.strings.size()));
   if (brtd && p.strings.size() < 10)
     throw InputError(p.loc, what + " needs 10 or more string arguments (rrefl grefl brefl rtrns gtrns btrns rbrtd "
                                    "gbrtd bbrtd funcfile [transform]), got " + std::to_string(p.strings.size()));
-  sp.channels = p.type == "colorfunc" || vector || brtd || sp.texture ? 3 : 1;
-  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : 0;
-  const size_t fileAt = brtd ? 9 : firstFunction + static_cast<size_t>(sp.channels);
+  sp.channels = p.type == "colorfunc" || vector || brtd || wgmd || sp.texture ? 3 : 1;
+  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : wgmd ? 4 * static_cast<size_t>(part) + 1 : 0;
+  const size_t fileAt = brtd ? 9 : wgmd ? 12 : firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
   RadTransform toWorld;
   const size_t end = parseRadTransform(p.strings, fileAt + 1, toWorld, p.loc, what);
@@ -289,6 +383,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   static const char* const kAxis[] = {"ux", "uy", "uz"};
   static const char* const kPert[] = {"xpert", "ypert", "zpert"};
   static const char* const kBrtd[] = {"rrefl", "grefl", "brefl", "rtrns", "gtrns", "btrns"};
+  static const char* const kWgmd[] = {"rs", "rs_urough", "rs_vrough", "ts", "ts_urough", "ts_vrough", "ux", "uy", "uz"};
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
     const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
@@ -298,6 +393,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
       throw InputError(p.loc, what + ": " +
                                   (sp.channels == 1 ? "its function"
                                    : brtd           ? std::string("its ") + kBrtd[firstFunction + static_cast<size_t>(k)]
+                                   : wgmd           ? std::string("its ") + kWgmd[3 * static_cast<size_t>(part) + static_cast<size_t>(k)]
                                                     : std::string(vector ? kAxis[k] : sp.texture ? kPert[k] : kChannel[k]) +
                                                           " function") +
                                   " '" + expression + "' is not an expression: " + e.message());

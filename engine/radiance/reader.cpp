@@ -465,9 +465,13 @@ class SceneReader::Builder {
       fail(p, p.type + " '" + p.name + "' is modified by the source.cal distribution '" +
                   scene_.patterns[static_cast<size_t>(m.pattern)].name +
                   "', which candela applies to light, illum and glow only");
-    if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].constant && family.emits())
+    int spectrum = -1;  // a spectrum along the chain of patterns (spectrum, specfile, specfunc, specdata)
+    for (int i = m.pattern; i >= 0 && spectrum < 0; i = scene_.patterns[static_cast<size_t>(i)].next)
+      if (scene_.patterns[static_cast<size_t>(i)].constant || scene_.patterns[static_cast<size_t>(i)].spectral())
+        spectrum = i;
+    if (spectrum >= 0 && family.emits())
       fail(p, p.type + " '" + p.name + "' is modified by the spectrum '" +
-                  scene_.patterns[static_cast<size_t>(m.pattern)].name +
+                  scene_.patterns[static_cast<size_t>(spectrum)].name +
                   "': candela reduces spectra of reflectance and transmittance to RGB, not yet a light's spectrum "
                   "(whose normalisation to the light's radiance it does not model); give the light its RGB radiance");
     m.name = p.name;

@@ -45,4 +45,20 @@ Rgb spectrumToRgb(const std::function<double(double nm)>& s, double nmA, double 
   return m * (sum / norm);
 }
 
+std::vector<Rgb> spectrumNodeWeights(const std::vector<double>& nodesNm) {
+  const std::vector<double>& x = nodesNm;
+  std::vector<Rgb> w(x.size(), Rgb(0.0));
+  const size_t n = x.size();
+  for (size_t k = 0; k < n; ++k) {
+    // The hat of node k: 1 at x_k, 0 at its neighbours and beyond.
+    const auto hat = [&](double nm) {
+      if (k > 0 && nm >= x[k - 1] && nm <= x[k]) return (nm - x[k - 1]) / (x[k] - x[k - 1]);
+      if (k + 1 < n && nm >= x[k] && nm <= x[k + 1]) return (x[k + 1] - nm) / (x[k + 1] - x[k]);
+      return nm == x[k] ? 1.0 : 0.0;
+    };
+    w[k] = spectrumToRgb(hat, x.front(), x.back());
+  }
+  return w;
+}
+
 }  // namespace candela

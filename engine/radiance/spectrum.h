@@ -12,6 +12,7 @@
 #include "base/units.h"
 
 #include <functional>
+#include <vector>
 
 namespace candela {
 
@@ -21,5 +22,11 @@ Vec3 cieColourMatching(double nm);
 // The RGB of the spectrum s(λ) given from nmA to nmB (0 outside), integrated in 1 nm steps over
 // 380–780 nm.
 Rgb spectrumToRgb(const std::function<double(double nm)>& s, double nmA, double nmB);
+
+// The RGB per unit value at each node of a spectrum given at increasing wavelengths nodesNm (≥ 2)
+// and linearly interpolated between them (0 outside), reduced as spectrumToRgb: a spectrum of
+// values s_k there has the RGB Σ s_k W_k (the W_k are spectrumToRgb of the nodes' hat functions).
+// The spectral patterns evaluated at each hit (specfunc, specdata) reduce their values with them.
+std::vector<Rgb> spectrumNodeWeights(const std::vector<double>& nodesNm);
 
 }  // namespace candela

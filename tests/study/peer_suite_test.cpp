@@ -52,7 +52,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"tfunc", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "transfunc 'tfunc_mat': function file 'aniso.cal'"}},
       {"trans", {"mixtext 'plas2_text' (helvet.fnt)", "plasfunc 'plasfunc_mat': function file 'aniso.cal'"}},
       {"trans2", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
-      {"wgmdf", {"primitive type 'WGMDfunc' is not supported", ""}},
+      {"wgmdf", {"WGMDfunc 'wgmd_mat2': its specular reflection modifier 'pyramid2' is a pattern of its own", ""}},
   };
   return table;
 }

@@ -26,7 +26,8 @@ TEST(MaterialRegistry, OneFamilyForEveryTypeInItsOrder) {
 TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
        {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
-        "metal2", "trans2", "mist", "BRTDfunc", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata"}) {
+        "metal2", "trans2", "mist", "BRTDfunc", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
+        "ashik2", "WGMDfunc"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -35,13 +36,13 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("spotlight")->type(), MaterialType::kLight);
   // A modifier "void" is no material; the types no family reads yet are refused by the reader.
   EXPECT_EQ(familyNamed("void"), nullptr);
-  EXPECT_EQ(familyNamed("WGMDfunc"), nullptr);
+  EXPECT_EQ(familyNamed("BSDF"), nullptr);
   EXPECT_EQ(familyNamed("Plastic"), nullptr);
   // A mixture (mixfunc) is read with the patterns, not by its family.
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
             "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
-            "metal2, trans2, mist, BRTDfunc, plasfunc, metfunc, transfunc, plasdata, metdata, transdata");
+            "metal2, trans2, mist, BRTDfunc, plasfunc, metfunc, transfunc, plasdata, metdata, transdata, ashik2, WGMDfunc");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {
