@@ -28,6 +28,8 @@ class SourceDistribution;
 // engine/materials/pattern_hook.h).
 enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution, kFunction };
 
+class RadText;
+
 // One such pattern as read (its arguments as written, transform arguments included).
 struct ScenePattern {
   PatternKind kind = PatternKind::kSkyBright;
@@ -56,6 +58,9 @@ struct ScenePattern {
   // spectrum, specfile: a constant colour (the spectrum reduced to RGB: engine/radiance/spectrum.h).
   bool constant = false;
   Rgb constantColour{1.0};
+  // brighttext, colortext, mixtext (kFunction too): the laid-out text whose glyphs give the
+  // foreground (engine/radiance/text_pattern.h); none for other patterns.
+  std::shared_ptr<const RadText> text;
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;
