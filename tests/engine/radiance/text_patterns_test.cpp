@@ -204,6 +204,10 @@ TEST(TextPatterns, InlineTextJoinsItsWordsWithSpaces) {
   EXPECT_DOUBLE_EQ(brightnessAt(sc, "m", Vec3(1.2, -0.9, 0)), 0.0);  // the space
   EXPECT_DOUBLE_EQ(brightnessAt(sc, "m", Vec3(2.2, -0.9, 0)), 1.0);  // B
   EXPECT_EQ(sc.functionFiles.size(), 1u);  // the font only
+  // Reals after the spacing are ignored, as by Radiance.
+  const Scene more = readIn(dir, "void brighttext t 4 font.fnt . A B 0 14  0 0 0  1 0 0  0 -1 0  1 0  0 7 8\n"
+                                 "t plastic m 0 0 5 1 1 1 0 0\n");
+  EXPECT_DOUBLE_EQ(brightnessAt(more, "m", Vec3(0.1, -0.5, 0)), 1.0);
 }
 
 // With a spacing s the layout is proportional and R is (mwidth + 255 s) units. Here mwidth is
@@ -366,6 +370,14 @@ TEST(TextPatterns, RefusalsNameTheirLine) {
             std::string::npos);
   EXPECT_NE(errorOf(dir, "void brighttext t 3 big.fnt . A 0 11 0 0 0 1 0 0 0 -1 0 1 0\n" + uses)
                 .find("more than the 4194304 candela reads"),
+            std::string::npos);
+  // A text file beyond 1 MiB likewise.
+  std::ofstream(dir / "long.txt") << std::string((1 << 20) + 1, 'A');
+  EXPECT_NE(errorOf(dir, "void brighttext t 2 font.fnt long.txt 0 11 0 0 0 1 0 0 0 -1 0 1 0\n" + uses)
+                .find("scene.rad:1: brighttext 't': text file '"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dir, "void brighttext t 2 font.fnt long.txt 0 11 0 0 0 1 0 0 0 -1 0 1 0\n" + uses)
+                .find("more than the 1048576 candela reads"),
             std::string::npos);
 }
 
