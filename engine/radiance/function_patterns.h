@@ -10,6 +10,9 @@
 // an absolute name or one with a '..' is refused (nothing outside those places is opened). Each
 // file is read once; a later definition of a name replaces an earlier one (as in Radiance).
 // rayinit.cal's definitions are built in (engine/radiance/cal/cal_library.cpp).
+// The data patterns (brightdata, colordata, colorpict, mixdata, mixpict, texdata), spectra and
+// the text patterns (brighttext, colortext, mixtext: engine/radiance/text_pattern.h) are read
+// here too, their files (data, pictures, fonts, texts) through the same FunctionFiles.
 #pragma once
 
 #include "engine/radiance/parse.h"
