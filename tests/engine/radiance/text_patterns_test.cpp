@@ -224,6 +224,7 @@ TEST(TextPatterns, ProportionalSpacingMovesTheGlyphs) {
   ASSERT_TRUE(pp.text);
   EXPECT_EQ(pp.text->lines()[0].offsets, (std::vector<int64_t>{50, 297, 298, 323}));
   EXPECT_NEAR(pp.text->unitsPerCharacter(), 306.0, 1e-9);
+  EXPECT_EQ(sc.functionFiles.size(), 1u);  // one font for both patterns, read and listed once
   auto at = [&](const char* m, double u) { return brightnessAt(sc, m, Vec3(u, -0.5, 0)); };
   EXPECT_DOUBLE_EQ(at("mp", 0.1), 0.0);  // before A's box
   EXPECT_DOUBLE_EQ(at("mp", 0.2), 1.0);  // in A
