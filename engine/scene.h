@@ -28,6 +28,8 @@ class SourceDistribution;
 // engine/materials/pattern_hook.h).
 enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution, kFunction };
 
+class RadText;
+
 // One such pattern as read (its arguments as written, transform arguments included).
 struct ScenePattern {
   PatternKind kind = PatternKind::kSkyBright;
@@ -62,6 +64,9 @@ struct ScenePattern {
   std::vector<double> spectralNodesNm;
   std::vector<Rgb> spectralWeights;
   bool spectral() const { return !spectralNodesNm.empty(); }
+  // brighttext, colortext, mixtext (kFunction too): the laid-out text whose glyphs give the
+  // foreground (engine/radiance/text_pattern.h); none for other patterns.
+  std::shared_ptr<const RadText> text;
   std::vector<double> args;
   RadTransform toFunction, toWorld;
   double functionScale = 1.0;

@@ -1,5 +1,7 @@
 #include "engine/materials/pattern_hook.h"
 
+#include "engine/radiance/text_pattern.h"
+
 #include <algorithm>
 
 namespace candela {
@@ -79,6 +81,8 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
     if (sp.kind != PatternKind::kFunction) break;  // native patterns act elsewhere (sources, skies)
     if (sp.constant) {
       c *= sp.constantColour;
+    } else if (sp.text) {  // brighttext, colortext: foreground in a glyph, background elsewhere
+      c *= sp.text->colour(p.x);
     } else if (!sp.texture) {  // a texture perturbs the normal (perturbation), no colour
       begin(sp, p);
       if (sp.spectral()) {
@@ -96,6 +100,7 @@ Rgb PatternEvaluator::colour(int index, const PatternPoint& p) {
 
 double PatternEvaluator::value(int index, const PatternPoint& p) {
   const ScenePattern& sp = scene_.patterns[static_cast<size_t>(index)];
+  if (sp.text) return sp.text->inside(p.x) ? 1.0 : 0.0;  // mixtext: the foreground in a glyph
   begin(sp, p);
   return function(sp, 0);
 }

@@ -1,6 +1,6 @@
 // The one hook where patterns meet materials, as Radiance's raytexture: before a material is
-// evaluated at a hit, the patterns that modify it (brightfunc, colorfunc) are evaluated there and
-// multiply its colour; the material's family then derives its parts from the patterned colour.
+// evaluated at a hit, the patterns that modify it (brightfunc, colorfunc, their data kin,
+// brighttext, colortext) are evaluated there and multiply its colour; the material's family then derives its parts from the patterned colour.
 // Every user of a hit's material (paths, the camera, shadow rays) goes through it.
 #pragma once
 
@@ -26,7 +26,8 @@ class PatternEvaluator {
   explicit PatternEvaluator(const Scene& scene) : scene_(scene) {}
   // The product of the colours of pattern `index` and the patterns modifying it, at p.
   Rgb colour(int index, const PatternPoint& p);
-  // The value of pattern `index`'s (first) function at p: a mixture's coefficient.
+  // The value of pattern `index`'s (first) function at p: a mixture's coefficient (mixtext's: 1
+  // inside a glyph, 0 outside).
   double value(int index, const PatternPoint& p);
   // Pattern `index`'s three functions at p as a direction in the world (plastic2's u).
   Vec3 direction(int index, const PatternPoint& p);

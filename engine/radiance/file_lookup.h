@@ -2,7 +2,8 @@
 // RAYPATH): the name relative to the working directory, then to each folder of RAYPATH
 // (':'-separated), then to the folder of the file that names it. An absolute name, one with a
 // '..', or an empty one is refused: nothing outside those places is opened, whatever the scene
-// says. Used for every file a scene file names: function files (.cal), data files (.dat), the
+// says. Used for every file a scene file names: function files (.cal), data files (.dat),
+// pictures, the text patterns' fonts (.fnt) and text files, the
 // files and argument files of !xform, genprism's vertex files, the OBJ files of `mesh`.
 #pragma once
 

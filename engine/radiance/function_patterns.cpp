@@ -4,6 +4,7 @@
 #include "engine/radiance/file_lookup.h"
 #include "engine/radiance/picture.h"
 #include "engine/radiance/spectrum.h"
+#include "engine/radiance/text_pattern.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,41 +17,73 @@ FunctionFiles::FunctionFiles() : program_(std::make_shared<cal::Program>()) {}
 
 const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const RadPrimitive& p,
                                                const std::filesystem::path& folder, const std::string& role,
-                                               const std::function<Arrays(const std::filesystem::path&)>& read) {
+                                               const std::function<void(const std::filesystem::path&, Read&)>& read) {
   const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", role);
   std::error_code ec;
   const std::string key = role + ":" + std::filesystem::weakly_canonical(path, ec).string();
   auto it = read_.find(key);
   if (it == read_.end()) {
+    Read r{path.string(), {}, nullptr, nullptr};
+    read(path, r);
     files_.push_back(path.string());
-    it = read_.emplace(key, Read{path.string(), read(path)}).first;
+    it = read_.emplace(key, std::move(r)).first;
   }
   return it->second;
 }
 
 std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
   if (name == ".") return {};
-  return once(name, p, folder, "function file", [this](const std::filesystem::path& path) {
+  return once(name, p, folder, "function file", [this](const std::filesystem::path& path, Read&) {
            program_->addText(readInputFile(path, "function file"), path.string());
-           return Arrays{};
          }).path;
 }
 
 std::shared_ptr<const RadDataArray> FunctionFiles::data(const std::string& name, const RadPrimitive& p,
                                                         const std::filesystem::path& folder) {
-  return once(name, p, folder, "data file", [&p](const std::filesystem::path& path) {
-           return Arrays{std::make_shared<const RadDataArray>(readRadDataFile(path, p.loc))};
+  return once(name, p, folder, "data file", [&p](const std::filesystem::path& path, Read& r) {
+           r.arrays = Arrays{std::make_shared<const RadDataArray>(readRadDataFile(path, p.loc))};
          }).arrays[0];
 }
 
 FunctionFiles::Arrays FunctionFiles::picture(const std::string& name, const RadPrimitive& p,
                                              const std::filesystem::path& folder) {
-  return once(name, p, folder, "picture", [](const std::filesystem::path& path) {
+  return once(name, p, folder, "picture", [](const std::filesystem::path& path, Read& r) {
            std::array<RadDataArray, 3> rgb = readRadiancePicture(path);
-           Arrays shared;
-           for (size_t c = 0; c < 3; ++c) shared[c] = std::make_shared<const RadDataArray>(std::move(rgb[c]));
-           return shared;
+           for (size_t c = 0; c < 3; ++c) r.arrays[c] = std::make_shared<const RadDataArray>(std::move(rgb[c]));
          }).arrays;
+}
+
+namespace {
+// What a text pattern's file holds is read whole into memory; beyond these sizes it is refused
+// (Radiance's own fonts are below 100 kB, its texts a few lines).
+constexpr std::uintmax_t kMaxTextFileBytes = std::uintmax_t(1) << 20;
+
+// readInputFile's refusal (too large, unreadable) at the pattern's line, naming the file.
+std::string readPatternFile(const std::filesystem::path& path, const RadPrimitive& p, const std::string& role,
+                            std::uintmax_t maxBytes) {
+  try {
+    return readInputFile(path, role, maxBytes);
+  } catch (const InputError& e) {
+    throw InputError(p.loc, p.type + " '" + p.name + "': " + role + " '" + path.string() + "': " + e.message());
+  }
+}
+}  // namespace
+
+std::shared_ptr<const RadFont> FunctionFiles::font(const std::string& name, const RadPrimitive& p,
+                                                   const std::filesystem::path& folder) {
+  return once(name, p, folder, "font file", [&p](const std::filesystem::path& path, Read& r) {
+           const std::string text = readPatternFile(path, p, "font file", kMaxFontFileBytes);
+           r.font = std::make_shared<const RadFont>(parseRadianceFont(text, path.string()));
+         }).font;
+}
+
+std::shared_ptr<const std::vector<std::string>> FunctionFiles::textLines(const std::string& name,
+                                                                         const RadPrimitive& p,
+                                                                         const std::filesystem::path& folder) {
+  return once(name, p, folder, "text file", [&p](const std::filesystem::path& path, Read& r) {
+           const std::string text = readPatternFile(path, p, "text file", kMaxTextFileBytes);
+           r.lines = std::make_shared<const std::vector<std::string>>(textFileLines(text));
+         }).lines;
 }
 
 namespace {
@@ -62,13 +95,15 @@ bool isDataPattern(const RadPrimitive& p) {
 }  // namespace
 
 bool isFunctionPattern(const RadPrimitive& p) {
-  return (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
+  return isTextPattern(p) || (p.type == "brightfunc" && p.strings.size() >= 2) || (p.type == "colorfunc" && p.strings.size() >= 4) ||
          (p.type == "mixfunc" && p.strings.size() >= 4) || (p.type == "texfunc" && p.strings.size() >= 4) ||
          p.type == "spectrum" || p.type == "specfile" || p.type == "specfunc" || p.type == "specdata" ||
          p.type == "specpict" || isDataPattern(p);
 }
 
-bool isMixture(const RadPrimitive& p) { return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict"; }
+bool isMixture(const RadPrimitive& p) {
+  return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict" || p.type == "mixtext";
+}
 
 namespace {
 
@@ -340,6 +375,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   sp.args = p.reals;
   sp.next = next;
   if (isDataPattern(p)) return readDataPattern(p, files, folder, std::move(sp), index);
+  if (isTextPattern(p)) return readTextPattern(p, files, folder, std::move(sp));
   if (p.type == "spectrum" || p.type == "specfile") return readSpectrumPattern(p, files, folder, std::move(sp));
   if ((p.type == "BRTDfunc" && part == 2) || p.type == "plasfunc" || p.type == "metfunc" || p.type == "transfunc" ||
       p.type == "plasdata" || p.type == "metdata" || p.type == "transdata")

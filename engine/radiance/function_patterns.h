@@ -10,10 +10,14 @@
 // an absolute name or one with a '..' is refused (nothing outside those places is opened). Each
 // file is read once; a later definition of a name replaces an earlier one (as in Radiance).
 // rayinit.cal's definitions are built in (engine/radiance/cal/cal_library.cpp).
+// The data patterns (brightdata, colordata, colorpict, mixdata, mixpict, texdata), spectra and
+// the text patterns (brighttext, colortext, mixtext: engine/radiance/text_pattern.h) are read
+// here too, their files (data, pictures, fonts, texts) through the same FunctionFiles.
 #pragma once
 
 #include "engine/radiance/parse.h"
 #include "engine/radiance/cal/cal.h"
+#include "engine/radiance/font.h"
 #include "engine/scene.h"
 
 #include <filesystem>
@@ -38,6 +42,11 @@ class FunctionFiles {
                                            const std::filesystem::path& folder);
   std::array<std::shared_ptr<const RadDataArray>, 3> picture(const std::string& name, const RadPrimitive& p,
                                                              const std::filesystem::path& folder);
+  // A text pattern's font (engine/radiance/font.h) and text file (its lines), read once.
+  std::shared_ptr<const RadFont> font(const std::string& name, const RadPrimitive& p,
+                                      const std::filesystem::path& folder);
+  std::shared_ptr<const std::vector<std::string>> textLines(const std::string& name, const RadPrimitive& p,
+                                                            const std::filesystem::path& folder);
   // The files read, in order (for summary.json).
   const std::vector<std::string>& files() const { return files_; }
 
@@ -46,23 +55,26 @@ class FunctionFiles {
   struct Read {
     std::string path;  // as found
     Arrays arrays;     // what a data file or picture holds (none for a function file)
+    std::shared_ptr<const RadFont> font;                    // a font file's glyphs
+    std::shared_ptr<const std::vector<std::string>> lines;  // a text file's lines
   };
-  // Finds `name` (a `role`: "function file", "data file", "picture") as every file a scene names
-  // is found; the first time its canonical path is met in that role, `read` reads it and the file
-  // is listed in files(); later, what was read then.
+  // Finds `name` (a `role`: "function file", "data file", "picture", "font file", "text file") as
+  // every file a scene names is found; the first time its canonical path is met in that role,
+  // `read` reads it into the Read and the file is listed in files(); later, what was read then.
   const Read& once(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder,
-                   const std::string& role, const std::function<Arrays(const std::filesystem::path&)>& read);
+                   const std::string& role, const std::function<void(const std::filesystem::path&, Read&)>& read);
 
   std::shared_ptr<cal::Program> program_;
   std::map<std::string, Read> read_;  // by role and canonical path
   std::vector<std::string> files_;
 };
 
-// Whether p is a pattern or mixture candela evaluates with the function language: brightfunc,
-// colorfunc, mixfunc, and the data types brightdata (but source.cal's: engine/source_distribution.h),
-// colordata, colorpict, mixdata, mixpict.
+// Whether p is a pattern or mixture candela evaluates at the pattern hook: brightfunc, colorfunc,
+// mixfunc, and the data types brightdata (but source.cal's: engine/source_distribution.h),
+// colordata, colorpict, mixdata, mixpict (with the function language); the text types
+// brighttext, colortext, mixtext (engine/radiance/text_pattern.h).
 bool isFunctionPattern(const RadPrimitive& p);
-// Whether p is a mixture of two materials (mixfunc, mixdata, mixpict).
+// Whether p is a mixture of two materials (mixfunc, mixdata, mixpict, mixtext).
 bool isMixture(const RadPrimitive& p);
 
 // The pattern p describes, its expressions added to files.program() and checked (every name they

@@ -55,13 +55,14 @@ candela_cli_test(points.endless_stdin 2 "<stdin>:1: a sensor point line is longe
                  points points/room.rad)
 set_tests_properties(cli.points.endless_stdin PROPERTIES ENVIRONMENT "STDIN_FILE=/dev/zero")
 
-# Patterns candela does not implement: refused with how to proceed; --patterns base uses the
-# material unmodified (room.rad's exact value) and says so in a warning naming the pattern's line.
+# Patterns candela cannot use (here: its function file is absent): refused with how to proceed;
+# --patterns base uses the material unmodified (room.rad's exact value) and says so in a warning
+# naming the pattern's line.
 candela_cli_test(points.pattern_refused 2
-                 "points/patterned.rad:4: colortext 'dimmer' (helvet.fnt) is a pattern, texture or mixture candela does not implement; run with --patterns base"
+                 "points/patterned.rad:4: specfunc 'dimmer': function file 'rainbow.cal' is not in the working directory, in RAYPATH or in points; run with --patterns base"
                  ${PTS} points/patterned.rad)
 candela_cli_test(points.pattern_base 0 "1,1,0.75,0,0,1,11218.5,0" ${PTS} points/patterned.rad --patterns base --error)
-candela_cli_test(points.pattern_base_warning 0 "warning: points/patterned.rad:4: colortext 'dimmer' (helvet.fnt) is not implemented"
+candela_cli_test(points.pattern_base_warning 0 "warning: points/patterned.rad:4: specfunc 'dimmer' (rainbow.cal) cannot be read"
                  ${PTS} points/patterned.rad --patterns base)
 candela_cli_test(points.pattern_bad_policy 2 "unknown pattern policy 'ignore' (expected refuse or base)"
                  ${PTS} points/patterned.rad --patterns ignore)

@@ -46,7 +46,7 @@ candela_run_test(annual_report_sensor 2 "annual_bad_sensor/case.toml:9: report_s
 
 # Patterns: refused at their line by default; [settings] patterns = "base" (or --patterns base)
 # runs with the material unmodified and the replacement in summary.json and the report.
-candela_run_test(pattern_refused 2 "pattern_base/room.rad:8: colortext 'dimmer' (helvet.fnt) is a pattern, texture or mixture candela does not implement"
+candela_run_test(pattern_refused 2 "pattern_base/room.rad:8: specfunc 'dimmer': function file 'rainbow.cal' is not in the working directory"
                  pattern_base/refused.toml)
 # A function pattern read from its .cal file beside the scene; summary.json names the file.
 candela_run_test(function_pattern 0 "function_pattern/checker.cal" function_pattern/case.toml --quality draft)

@@ -306,7 +306,7 @@ TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
 // A pattern is refused by default with a message that says how to proceed; with the base policy
 // the material is used unmodified and the replacement is a warning naming the pattern's line.
 TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
-  expectError("pattern.rad", 2, "colortext 'dimmer' (helvet.fnt) is a pattern, texture or mixture candela does not implement");
+  expectError("pattern.rad", 2, "specfunc 'dimmer': function file 'rainbow.cal' is not in the working directory");
   expectError("pattern.rad", 2, "--patterns base");
   Scene sc;
   SceneReadOptions options;
@@ -315,7 +315,7 @@ TEST(RadReader, PatternRefusedByDefaultAndReplacedByItsBaseOnRequest) {
   ASSERT_EQ(sc.inputWarnings.size(), 1u);
   EXPECT_EQ(sc.inputWarnings[0].code, "pattern_replaced");
   EXPECT_EQ(sc.inputWarnings[0].loc.line, 2);
-  EXPECT_NE(sc.inputWarnings[0].message.find("colortext 'dimmer'"), std::string::npos);
+  EXPECT_NE(sc.inputWarnings[0].message.find("specfunc 'dimmer'"), std::string::npos);
   ASSERT_EQ(sc.shapes.size(), 1u);
   const Material& grey = material(sc, "grey");
   EXPECT_EQ(grey.pattern, -1);
