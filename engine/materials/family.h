@@ -80,6 +80,10 @@ struct MaterialReadContext {
   const RadPrimitive& primitive;
   // The index of the material named so far (-1: not defined): illum's alternate.
   std::function<int(const std::string&)> findMaterial;
+  // The function pattern a modifier name stands for (an index into Scene::patterns; -1: void, a
+  // material, or a pattern replaced by its base); a name not defined, or one whose refusal is kept,
+  // is refused: WGMDfunc's parts' modifiers.
+  std::function<int(const std::string&)> findPattern;
 
   [[noreturn]] void fail(const std::string& message) const;
   // "TYPE 'NAME'", the start of every message about the primitive.

@@ -7,6 +7,7 @@
 #include "base/math.h"
 #include "base/units.h"
 
+#include <array>
 #include <string>
 
 namespace candela {
@@ -82,6 +83,9 @@ struct MaterialParameters {
   // transmission (4) take the material's own pattern colour (their modifier `inherit` or the
   // material's modifier; `void` leaves them white).
   int inheritsPattern = 0;
+  // WGMDfunc: the pattern of each part's own modifier (rs_mod, ts_mod, td_mod; an index into
+  // Scene::patterns), -1 where the part inherits the material's or has none.
+  std::array<int, 3> partPatterns{-1, -1, -1};
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Derived (Radiance's definitions of plastic, metal and trans):

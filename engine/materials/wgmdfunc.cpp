@@ -15,9 +15,10 @@
 //   sample carrying ρs · 2 cos θo / (cos θi + cos θo): the W-G-M-D BRDF over the half vector's
 //   density (m_wgmdf's multi-sample weighting);
 // - specular transmission: ts times ts_mod's colour, straight through (shadow rays too).
-// What candela cannot do is refused at the definition's line with the reason: a component
-// modifier other than `void`, `inherit` or the material's own (a pattern of its own for one part),
-// and a rough specular transmission (the paths send specular transmission straight on only).
+// Each part's modifier: `void` (white), `inherit` or the material's own modifier (its pattern
+// colour), or a pattern of its own (its colour at the hit). What candela cannot do is refused at
+// the definition's line with the reason: a rough specular transmission (the paths send specular
+// transmission straight on only).
 // Radiance weighs the sampled sources' light on the diffuse parts by a second Fresnel factor of
 // the light's angle (dirwgmdf); candela takes every light as Radiance's ambient does.
 #include "engine/materials/normal.h"
@@ -61,14 +62,16 @@ class WgmdFunc : public MaterialFamily {
     } parts[] = {{0, p.strings[1] != "0", kRsInherits, "specular reflection"},
                  {4, p.strings[5] != "0", kTsInherits, "specular transmission"},
                  {8, photopic(m.transmissionColor) > 0.0, kTdInherits, "diffuse transmission"}};
-    for (const auto& part : parts) {
+    for (size_t k = 0; k < std::size(parts); ++k) {
+      const auto& part = parts[k];
       const std::string& mod = p.strings[part.at];
       if (!part.used || mod == "void") continue;
-      if (mod != "inherit" && mod != p.modifier)
-        ctx.fail(ctx.what() + ": its " + part.part + " modifier '" + mod +
-                 "' is a pattern of its own; candela gives each part the material's own modifier ('inherit' or '" +
-                 p.modifier + "') or none ('void')");
-      m.inheritsPattern |= part.bit;
+      if (mod == "inherit" || mod == p.modifier) {
+        m.inheritsPattern |= part.bit;
+        continue;
+      }
+      // A pattern of its own for this part (m_wgmdf's part modifiers): its colour at each hit.
+      m.partPatterns[k] = ctx.findPattern(mod);
     }
     // Radiance's transmission is straight through where a roughness is 0 (m_wgmdf's SP_TPURE).
     m.specularTransmission = p.strings[5] != "0";
@@ -88,7 +91,11 @@ class WgmdFunc : public MaterialFamily {
              MaterialParameters& out) const override {
     const bool front = glm::dot(p.d, p.ng) < 0.0;
     const Vec3 ns = shadingNormal(out, front ? p.ng : -p.ng, front);
-    auto colourOf = [&](int bit) { return (m.inheritsPattern & bit) ? patternColour : Rgb(1.0); };
+    auto colourOf = [&](int bit) {
+      const int own = m.partPatterns[bit == kRsInherits ? 0 : bit == kTsInherits ? 1 : 2];
+      if (own >= 0) return glm::max(eval.colour(own, p), Rgb(0.0));
+      return (m.inheritsPattern & bit) ? patternColour : Rgb(1.0);
+    };
     Rgb rd = (front ? m.color : m.backColor) * patternColour;
     Rgb td = m.transmissionColor * colourOf(kTdInherits);
     // rs, its roughnesses; ts (its roughness 0: straight through).

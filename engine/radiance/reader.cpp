@@ -476,12 +476,31 @@ class SceneReader::Builder {
                   "(whose normalisation to the light's radiance it does not model); give the light its RGB radiance");
     m.name = p.name;
     m.loc = p.loc;
-    const MaterialReadContext ctx{p, [this, &p](const std::string& name) {
+    // A name the material reads whose refusal is kept (an illum's alternate, a WGMDfunc part's
+    // pattern) refuses the material where a surface uses it, as above.
+    bool reachesKept = false;
+    const MaterialReadContext ctx{p,
+                                  [this, &p, &reachesKept](const std::string& name) {
+                                    reachesKept = deferred_.count(name) != 0;
                                     refuseIfDeferred(name, userOf(p));
                                     const auto it = materials_.find(name);
                                     return it == materials_.end() ? -1 : it->second;
+                                  },
+                                  [this, &p, &reachesKept](const std::string& name) {
+                                    reachesKept = deferred_.count(name) != 0;
+                                    Primitive named = p;
+                                    named.modifier = name;
+                                    return patternOf(named);
                                   }};
-    family.read(ctx, m);
+    try {
+      family.read(ctx, m);
+    } catch (const InputError& e) {
+      if (!reachesKept) throw;
+      deferred_.insert_or_assign(p.name, e);
+      materials_.erase(p.name);
+      patterns_.erase(p.name);
+      return;
+    }
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     patterns_.erase(p.name);
   }

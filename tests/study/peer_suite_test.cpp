@@ -52,7 +52,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"tfunc", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "transfunc 'tfunc_mat': function file 'aniso.cal'"}},
       {"trans", {"mixtext 'plas2_text': font file 'helvet.fnt' is not in", "plasfunc 'plasfunc_mat': function file 'aniso.cal'"}},
       {"trans2", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
-      {"wgmdf", {"WGMDfunc 'wgmd_mat2': its specular reflection modifier 'pyramid2' is a pattern of its own", ""}},
+      {"wgmdf", {"WGMDfunc 'wgmd_mat1': function file 'cylmods.cal'", ""}},
   };
   return table;
 }

@@ -85,6 +85,10 @@ TEST(WgmdFunc, MirrorRaisedByRadiancesFresnelEstimate) {
   expectLux(readIn("inherit", "void brightfunc half 2 .5 . 0 0\n" +
                                   wgmd("inherit .4 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0", "half") + plane(0.0, true)),
             2.0, kDown, mirrorLux(0.2), "rs inherits");
+  // A pattern of its own (.25) for rs, whatever the material's (.5): s = .1.
+  expectLux(readIn("own", "void brightfunc half 2 .5 . 0 0\nvoid brightfunc quarter 2 .25 . 0 0\n" +
+                              wgmd("quarter .4 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0", "half") + plane(0.0, true)),
+            2.0, kDown, mirrorLux(0.1), "rs its own pattern");
   // A void modifier keeps rs white whatever the material's pattern.
   expectLux(readIn("void", "void brightfunc half 2 .5 . 0 0\n" +
                                wgmd("void .4 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0", "half") + plane(0.0, true)),
@@ -137,6 +141,13 @@ TEST(WgmdFunc, RoughLobeReflectsItsQuadrature) {
 TEST(WgmdFunc, StraightTransmissionByTs) {
   expectLux(readIn("pane", wgmd("void 0 0 0 void .6 0 0 void", "0 0 0 0 0 0 0 0 0") + plane(1.0, true)), 0.0, kUp,
             0.6 * kSkyLux, "ts .6");
+  // ts and td through patterns of their own (.5 and .25), the material's none.
+  expectLux(readIn("own_ts", "void brightfunc half 2 .5 . 0 0\n" +
+                                 wgmd("void 0 0 0 half .6 0 0 void", "0 0 0 0 0 0 0 0 0") + plane(1.0, true)),
+            0.0, kUp, 0.3 * kSkyLux, "ts .6 × .5");
+  expectLux(readIn("own_td", "void brightfunc quarter 2 .25 . 0 0\n" +
+                                 wgmd("void 0 0 0 void 0 0 0 quarter", "0 0 0 0 0 0 .4 .4 .4") + plane(1.0, true)),
+            0.0, kUp, 0.1 * kSkyLux, "td .4 × .25");
   // Diffuse transmission, ts_mod void: .3 of the sky's light.
   expectLux(readIn("diffuse", wgmd("void 0 0 0 void 0 0 0 void", "0 0 0 0 0 0 .3 .3 .3") + plane(1.0, true)), 0.0,
             kUp, 0.3 * kSkyLux, "td .3");
@@ -152,8 +163,15 @@ std::string errorOf(const std::string& name, const std::string& text) {
 }
 
 TEST(WgmdFunc, RefusalsNameTheirLineAndReason) {
-  EXPECT_NE(errorOf("mod", "void colorfunc c 4 1 1 1 . 0 0\n" + wgmd("c .1 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0"))
-                .find("scene.rad:2: WGMDfunc 'w': its specular reflection modifier 'c' is a pattern of its own"),
+  // A part's modifier not defined; one whose pattern is refused (kept until a surface uses it).
+  EXPECT_NE(errorOf("mod", wgmd("c .1 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0"))
+                .find("scene.rad:1: modifier 'c' of WGMDfunc 'w' is not defined before use"),
+            std::string::npos);
+  EXPECT_NO_THROW(readIn("kept", "void brightfunc c 2 f absent.cal 0 0\n" +
+                                     wgmd("c .1 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0")));
+  EXPECT_NE(errorOf("kept_used", "void brightfunc c 2 f absent.cal 0 0\n" +
+                                     wgmd("c .1 0 0 void 0 0 0 void", "0 0 0 0 0 0 0 0 0"))
+                .find("scene.rad:1: brightfunc 'c': function file 'absent.cal' is not in the working directory"),
             std::string::npos);
   EXPECT_NE(errorOf("rough", wgmd("void 0 0 0 void .2 .02 .02 void", "0 0 0 0 0 0 0 0 0"))
                 .find("scene.rad:1: WGMDfunc 'w': its specular transmission is rough"),
