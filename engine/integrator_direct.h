@@ -21,6 +21,9 @@ struct Receiver {
   Vec3 n{0.0, 0.0, 1.0};
   uint32_t skip = kNoShape;
   const Response* response = nullptr;  // a non-planar response, or none (planar on n)
+  // The antimatter clip set of the point (engine/antimatter.h), which its shadow rays start
+  // with; nullptr: empty (sensors).
+  const ClipState* clip = nullptr;
 };
 
 // Direct irradiance at `at` from every sampled source with k stratified samples each; adds the

@@ -31,6 +31,12 @@ struct Hit {
   uint32_t flatSkip = kNoShape;  // the shape when flat (rays leaving it skip it), or kNoShape
   uint32_t shape = kNoShape;
   double t = 0.0;    // distance travelled to it, m
+  // The antimatter clip set the ray arrived with (the path's; engine/antimatter.h), and whether
+  // the surface is an antimatter hole's side seen as the clipped material (then a ray going on
+  // straight through takes the set clipBeyond).
+  const ClipState* clip = nullptr;
+  bool holeSide = false;
+  uint16_t clipBeyond = 0;
 };
 
 // The ray being followed through specular and pass-through events.
@@ -82,6 +88,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       // same glass already carried them from a diffuse vertex).
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide) st.clip.clipped = v.clipBeyond;
       return true;
     case SpecularSample::Kind::kReflected:
       ray.reflected = true;
@@ -95,6 +102,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       ray.d = e.dir;
       ray.o = e.transmitted ? v.x - v.off * v.nf : v.x + v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide && e.transmitted) st.clip.clipped = v.clipBeyond;
       st.misCosPdf = 0.0;
       st.countSources = true;
       ray.reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
@@ -117,6 +125,7 @@ Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse
   next.countSources = true;
   next.diffuse = diffuse + 1;
   next.lighting = true;
+  next.clip = *v.clip;
   return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
@@ -144,7 +153,7 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
     }
     sc.useGlowShare = true;
   }
-  const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
+  const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip, nullptr, v.clip}, std::max(1, ctx.settings.cache.lightSamples),
                                       nullptr, 1.0);
   ctx.light.useGlowShare = false;
   const Rgb f = beta * m.diffuseReflectance * kInvPi;
@@ -177,11 +186,11 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   // Light reflected (and diffusely transmitted) from the sampled sources.
   if (photopic(rho) > 0.0) {
     const TallyFactor tf(ctx.tally, rho * kInvPi);
-    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self}, k, nullptr, 1.0);
+    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self, nullptr, v.clip}, k, nullptr, 1.0);
   }
   if (photopic(tauD) > 0.0) {
     const TallyFactor tf(ctx.tally, tauD * kInvPi);
-    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self}, k, nullptr, 1.0);
+    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self, nullptr, v.clip}, k, nullptr, 1.0);
   }
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
@@ -195,6 +204,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   bounce.skip = self;
   bounce.diffuse = st.diffuse + 1;
   bounce.lighting = true;
+  bounce.clip = st.clip;
   Rgb acc(0.0);
   for (int j = 0; j < k; ++j) {
     const Vec2 u12 = strata.sample(j, ctx.rng);
@@ -226,6 +236,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       PathState through = st;
       through.skip = v.flatSkip;
       through.split = 1;
+      if (v.holeSide) through.clip.clipped = v.clipBeyond;
       acc += tauS * (norm / pTs) * pathRadiance(ctx, xb, v.inDir, through);
     } else if (u < pRho + pTd + pTs + pSp) {
       const TallyFactor tf(ctx.tally, norm / pSp / k);
@@ -280,6 +291,24 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
+    v.clip = &st.clip;
+    if (ctx.tracer.hasAntimatter()) {
+      // Clipped surfaces and antimatter boundaries are passed (the state updated); a hole's side
+      // is the clipped material, turned to face the ray (nf unchanged).
+      const ClipResult c = clipStep(*m, ray.d, v.ng, st.clip);
+      if (c.action == ClipAction::kPass) {
+        ray.o = v.x - v.off * v.nf;
+        st.skip = v.flatSkip;
+        continue;
+      }
+      if (c.action == ClipAction::kShown) {
+        m = &scene.materials[static_cast<size_t>(c.shown)];
+        v.ng = -v.ng;
+        v.front = !v.front;
+        v.holeSide = true;
+        v.clipBeyond = c.beyond;
+      }
+    }
     std::optional<Material> patternedHere;  // the hook's copy when patterns modify m
     m = materialAt(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patternEval, ctx.rng, patternedHere);
     if (!m) {  // an illum with no alternate or a void in a mixture: pass straight through
@@ -306,7 +335,10 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
-    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured) {
+    // The cache's records hold light gathered with an empty clip set: vertices in another, and
+    // a hole's sides, are traced.
+    const bool clipFree = !ctx.tracer.hasAntimatter() || (!v.holeSide && isEmpty(st.clip));
+    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured && clipFree) {
       if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
       PathState miss = st;
       miss.split = 1;

@@ -38,6 +38,9 @@ struct PathState {
   // The ray carries light to a receiver (sensor, record, diffuse or glossy vertex) rather than
   // to an eye: a glow of negative radius sends nothing along it (Radiance's ray.1 "Glow").
   bool lighting = false;
+  // The antimatter clip set the ray carries (engine/antimatter.h): empty from sensors and the
+  // camera, as Radiance's primary rays; reflected, scattered and straight-on rays inherit it.
+  ClipState clip;
 };
 
 // A frozen cache serving the diffuse vertex at diffuse count `depth`, and what the lookups used

@@ -69,6 +69,7 @@ Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
   if (scene.sky) portals_ = PortalSet(scene);
   for (const Material& m : scene.materials)
     if (familyOf(m).mayPassShadowRays(m)) hasTransmitters_ = true;
+  hasAntimatter_ = candela::hasAntimatter(scene.materials);
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
@@ -85,7 +86,8 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
-                          uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns) const {
+                          uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns,
+                          const ClipState* clip) const {
   firstGlass = kNoShape;
   ++rays;
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
@@ -93,13 +95,29 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
   Rgb t(1.0);
   double tMin = 0.0;
   std::optional<PatternEvaluator> own;  // made when a patterned surface is met without the caller's
+  ClipState clipped = clip ? *clip : ClipState{};  // the ray's antimatter state (hasAntimatter_)
   for (int i = 0; i < 64; ++i) {
     RayHit h;
     if (i > 0) ++rays;
     if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
     const Shape s = scene_.surface(h.shape);  // a shape or a mesh triangle
     const Vec3 x = o + h.t * dir;
-    const Material& m = scene_.materials[s.material];
+    const Material* seen = &scene_.materials[s.material];
+    Vec3 ng = shapeNormal(s, x);
+    ClipResult step;
+    if (hasAntimatter_) {
+      // Clipped surfaces and antimatter boundaries are passed; a hole's side is its material.
+      step = clipStep(*seen, dir, ng, clipped);
+      if (step.action == ClipAction::kPass) {
+        tMin = h.t + originOffset(x);
+        continue;
+      }
+      if (step.action == ClipAction::kShown) {
+        seen = &scene_.materials[static_cast<size_t>(step.shown)];
+        ng = -ng;
+      }
+    }
+    const Material& m = *seen;
     const MaterialFamily& family = familyOf(m);
     // Glass and trans let their straight part through; an illum with no alternate is invisible
     // to all but its own rays; all else is opaque (a dielectric too: it bends light, so no
@@ -108,9 +126,9 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     std::optional<Rgb> through;
     if (hasPatterns()) {
       if (!patterns) patterns = &own.emplace(scene_);
-      through = straightThrough(scene_, m, {x, dir, shapeNormal(s, x), h.t}, *patterns);
+      through = straightThrough(scene_, m, {x, dir, ng, h.t}, *patterns);
     } else {
-      through = family.straightTransmittance(m, dir, shapeNormal(s, x));
+      through = family.straightTransmittance(m, dir, ng);
     }
     if (!through) {
       firstGlass = kNoShape;
@@ -122,6 +140,7 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
       firstGlass = kNoShape;
       return Rgb(0.0);
     }
+    if (step.action == ClipAction::kShown) clipped.clipped = step.beyond;  // on through: newcset
     tMin = h.t + originOffset(x);
   }
   return t;

@@ -7,16 +7,18 @@
 #include "base/math.h"
 #include "base/units.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace candela {
 
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
-  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc
+  kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kAntimatter
 };
-inline constexpr int kMaterialTypeCount = 17;
+inline constexpr int kMaterialTypeCount = 18;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -70,6 +72,13 @@ struct MaterialParameters {
   int foreground = -1, background = -1;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
+  // Antimatter (engine/antimatter.h): clipBit, this material's bit in the rays' clip sets when an
+  // antimatter lists it (-1: none does); an antimatter's clipMask (the bits of the materials it
+  // lists) and shownMaterial (its first modifier, what its surface is seen as from inside a
+  // clipped object; -1: void).
+  int clipBit = -1;
+  uint16_t clipMask = 0;
+  int shownMaterial = -1;
   // Derived (Radiance's definitions of plastic, metal and trans):
   Rgb diffuseReflectance{0.0};
   Rgb diffuseTransmittance{0.0};
@@ -97,6 +106,9 @@ struct MaterialParameters {
 struct Material : MaterialParameters {
   std::string name;
   FileLoc loc;
+  // antimatter: the materials it lists, in order (void left out, each once); the reader gives
+  // them their clip bits.
+  std::vector<int> clipList;
 };
 
 // Fills a material's derived reflectances from its type and parameters (its family's derive).

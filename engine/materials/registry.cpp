@@ -30,6 +30,7 @@ constexpr Entry kFamilies[] = {
     {trans2Family, {"trans2", nullptr}},
     {mistFamily, {"mist", nullptr}},
     {brtdFuncFamily, {"BRTDfunc", nullptr}},
+    {antimatterFamily, {"antimatter", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -22,5 +22,6 @@ const MaterialFamily& metal2Family();
 const MaterialFamily& trans2Family();
 const MaterialFamily& mistFamily();
 const MaterialFamily& brtdFuncFamily();
+const MaterialFamily& antimatterFamily();
 
 }  // namespace candela

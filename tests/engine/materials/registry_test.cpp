@@ -26,7 +26,7 @@ TEST(MaterialRegistry, OneFamilyForEveryTypeInItsOrder) {
 TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
        {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
-        "metal2", "trans2", "mist", "BRTDfunc"}) {
+        "metal2", "trans2", "mist", "BRTDfunc", "antimatter"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -41,7 +41,7 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
             "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
-            "metal2, trans2, mist, BRTDfunc");
+            "metal2, trans2, mist, BRTDfunc, antimatter");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {
