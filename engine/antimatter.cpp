@@ -13,8 +13,7 @@ ClipResult clipStep(const Material& m, const Vec3& d, const Vec3& ng, ClipState&
   // anything, so an antimatter listed by another is passed too). Its crossing is what m_clip's
   // walk up the ray tree counts: front +1, back −1 (saturated: a path crosses far fewer).
   if (m.clipBit >= 0 && (st.clipped >> m.clipBit & 1u)) {
-    int8_t& c = st.crossings[static_cast<size_t>(m.clipBit)];
-    c = static_cast<int8_t>(std::clamp(c + (front ? 1 : -1), -127, 127));
+    st.cross(m.clipBit, front ? 1 : -1);
     return {ClipAction::kPass, -1, st.clipped};
   }
   if (m.type != MaterialType::kAntimatter) return {};
@@ -26,7 +25,7 @@ ClipResult clipStep(const Material& m, const Vec3& d, const Vec3& ng, ClipState&
     // antimatter surface is that object's inside, seen as the first listed material.
     int inside = 0;
     for (int b = 0; b < kMaxClippedMaterials; ++b)
-      if (m.clipMask >> b & 1u) inside += st.crossings[static_cast<size_t>(b)];
+      if (m.clipMask >> b & 1u) inside += st.crossings(b);
     if (inside > 0) return {ClipAction::kShown, m.shownMaterial, beyond};
   }
   st.clipped = beyond;

@@ -16,6 +16,7 @@
 #include "engine/accelerator.h"
 #include "engine/materials/material.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -29,17 +30,31 @@ inline constexpr int kMaxClippedMaterials = 16;
 
 // A ray's antimatter state: the set of clipped materials (bit b: the material whose clipBit is b)
 // and, per material, the signed count of its surfaces the ray's path passed while clipped (front
-// +1, back −1): Radiance's walk up the ray tree in m_clip.c, kept as a running sum.
+// +1, back −1): Radiance's walk up the ray tree in m_clip.c, kept as a running sum, in 4 bits
+// (saturated at −8 and +7: a path passes far fewer). 10 bytes, so that it fits in the padding of
+// a path's state (engine/integrator_path.h): scenes without antimatter copy no more bytes.
 struct ClipState {
   uint16_t clipped = 0;
-  std::array<int8_t, kMaxClippedMaterials> crossings{};
+  std::array<uint8_t, kMaxClippedMaterials / 2> counts{};  // two 4-bit counts a byte
+
+  int crossings(int b) const {
+    const int nibble = (counts[static_cast<size_t>(b / 2)] >> (4 * (b % 2))) & 0xF;
+    return nibble >= 8 ? nibble - 16 : nibble;
+  }
+  void cross(int b, int delta) {
+    const int c = std::clamp(crossings(b) + delta, -8, 7);
+    uint8_t& byte = counts[static_cast<size_t>(b / 2)];
+    const int shift = 4 * (b % 2);
+    byte = static_cast<uint8_t>((byte & ~(0xF << shift)) | ((c & 0xF) << shift));
+  }
 };
 static_assert(kMaxClippedMaterials <= 16, "ClipState::clipped holds one bit per clipped material");
+static_assert(sizeof(ClipState) == 10 && alignof(ClipState) == 2, "fits the padding of PathState");
 
 // A ray's state as it starts: nothing clipped, nothing crossed.
 inline bool isEmpty(const ClipState& st) {
   if (st.clipped != 0) return false;
-  for (int8_t c : st.crossings)
+  for (uint8_t c : st.counts)
     if (c != 0) return false;
   return true;
 }

@@ -31,12 +31,10 @@ struct Hit {
   uint32_t flatSkip = kNoShape;  // the shape when flat (rays leaving it skip it), or kNoShape
   uint32_t shape = kNoShape;
   double t = 0.0;    // distance travelled to it, m
-  // The antimatter clip set the ray arrived with (the path's; engine/antimatter.h), and whether
-  // the surface is an antimatter hole's side seen as the clipped material (then a ray going on
-  // straight through takes the set clipBeyond).
-  const ClipState* clip = nullptr;
-  bool holeSide = false;
-  uint16_t clipBeyond = 0;
+  // An antimatter hole's side seen as the clipped material (engine/antimatter.h): the clip set a
+  // ray going on straight through it takes; -1 for every other surface.
+  int32_t clipBeyond = -1;
+  bool holeSide() const { return clipBeyond >= 0; }
 };
 
 // The ray being followed through specular and pass-through events.
@@ -88,7 +86,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       // same glass already carried them from a diffuse vertex).
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
-      if (v.holeSide) st.clip.clipped = v.clipBeyond;
+      if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       return true;
     case SpecularSample::Kind::kReflected:
       ray.reflected = true;
@@ -102,7 +100,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       ray.d = e.dir;
       ray.o = e.transmitted ? v.x - v.off * v.nf : v.x + v.off * v.nf;
       st.skip = v.flatSkip;
-      if (v.holeSide && e.transmitted) st.clip.clipped = v.clipBeyond;
+      if (v.holeSide() && e.transmitted) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       st.misCosPdf = 0.0;
       st.countSources = true;
       ray.reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
@@ -114,8 +112,8 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
 // One sample of the glossy (Ward) lobe of m leaving v: its reflected radiance estimate. As
 // Radiance's sampled specular rays do, a sample carries the specular reflectance ρ_s; sources met
 // are counted (the light sampled at the vertex is the diffuse part's only); glossy reflections
-// count as bounces.
-Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
+// count as bounces. clip: the set of the ray that arrived, which the sample keeps.
+Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse, const ClipState& clip) {
   Vec3 out(0.0);
   if (!familyOf(m).sampleLobe(m, v.inDir, v.ns, ctx.rng, out)) return Rgb(0.0);
   if (v.textured && glm::dot(out, v.nf) <= 0.0) return Rgb(0.0);  // turned below the surface
@@ -125,7 +123,7 @@ Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse
   next.countSources = true;
   next.diffuse = diffuse + 1;
   next.lighting = true;
-  next.clip = *v.clip;
+  next.clip = clip;
   return m.specularReflectance * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
@@ -153,7 +151,8 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
     }
     sc.useGlowShare = true;
   }
-  const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip, nullptr, v.clip}, std::max(1, ctx.settings.cache.lightSamples),
+  // The cache serves vertices reached with an empty clip set only (pathRadiance): the receiver's.
+  const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
                                       nullptr, 1.0);
   ctx.light.useGlowShare = false;
   const Rgb f = beta * m.diffuseReflectance * kInvPi;
@@ -166,7 +165,7 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
   cache.tally.addCachedValue(photopic(f * e));
   Rgb result(0.0);
   result += f * (direct + e);
-  if (photopic(m.specularReflectance) > 0.0) result += beta * glossyBounce(ctx, v, m, diffuse);
+  if (photopic(m.specularReflectance) > 0.0) result += beta * glossyBounce(ctx, v, m, diffuse, ClipState{});
   return result;
 }
 
@@ -186,11 +185,11 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   // Light reflected (and diffusely transmitted) from the sampled sources.
   if (photopic(rho) > 0.0) {
     const TallyFactor tf(ctx.tally, rho * kInvPi);
-    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self, nullptr, v.clip}, k, nullptr, 1.0);
+    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self, nullptr, &st.clip}, k, nullptr, 1.0);
   }
   if (photopic(tauD) > 0.0) {
     const TallyFactor tf(ctx.tally, tauD * kInvPi);
-    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self, nullptr, v.clip}, k, nullptr, 1.0);
+    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self, nullptr, &st.clip}, k, nullptr, 1.0);
   }
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
@@ -236,11 +235,11 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       PathState through = st;
       through.skip = v.flatSkip;
       through.split = 1;
-      if (v.holeSide) through.clip.clipped = v.clipBeyond;
+      if (v.holeSide()) through.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       acc += tauS * (norm / pTs) * pathRadiance(ctx, xb, v.inDir, through);
     } else if (u < pRho + pTd + pTs + pSp) {
       const TallyFactor tf(ctx.tally, norm / pSp / k);
-      acc += (norm / pSp) * glossyBounce(ctx, v, m, st.diffuse);
+      acc += (norm / pSp) * glossyBounce(ctx, v, m, st.diffuse, st.clip);
     }
   }
   return out + acc / static_cast<double>(k);
@@ -291,7 +290,6 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
-    v.clip = &st.clip;
     if (ctx.tracer.hasAntimatter()) {
       // Clipped surfaces and antimatter boundaries are passed (the state updated); a hole's side
       // is the clipped material, turned to face the ray (nf unchanged).
@@ -305,7 +303,6 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
         m = &scene.materials[static_cast<size_t>(c.shown)];
         v.ng = -v.ng;
         v.front = !v.front;
-        v.holeSide = true;
         v.clipBeyond = c.beyond;
       }
     }
@@ -337,7 +334,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
     // The cache's records hold light gathered with an empty clip set: vertices in another, and
     // a hole's sides, are traced.
-    const bool clipFree = !ctx.tracer.hasAntimatter() || (!v.holeSide && isEmpty(st.clip));
+    const bool clipFree = !ctx.tracer.hasAntimatter() || (!v.holeSide() && isEmpty(st.clip));
     if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured && clipFree) {
       if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
       PathState miss = st;

@@ -36,6 +36,64 @@ TraceSettings coefficientSettings(const TraceSettings& s) {
   return t;
 }
 
+// A shadow ray's geometry (Tracer::transmittance).
+struct ShadowRay {
+  Vec3 o, dir;
+  double tMax;
+  uint32_t skipA, skipB;
+};
+
+// Tracer::transmittance's walk in a scene with antimatter: the same walk along the one ray, past
+// each transmitting surface, through the clip steps too (engine/antimatter.h), from state clip
+// (nullptr: empty). Scenes without antimatter keep the walk without them.
+Rgb clippedShadowRay(const Tracer& tracer, const ShadowRay& r, uint64_t& rays, uint32_t& firstGlass,
+                     PatternEvaluator* patterns, const ClipState* clip) {
+  const Scene& scene = tracer.scene();
+  Rgb t(1.0);
+  double tMin = 0.0;
+  std::optional<PatternEvaluator> own;  // made when a patterned surface is met without the caller's
+  ClipState clipped = clip ? *clip : ClipState{};
+  for (int i = 0; i < 64; ++i) {
+    RayHit h;
+    if (i > 0) ++rays;
+    if (!tracer.accelerator().intersect(r.o, r.dir, tMin, r.tMax, h, r.skipA, r.skipB)) return t;
+    const Shape s = scene.surface(h.shape);  // a shape or a mesh triangle
+    const Vec3 x = r.o + h.t * r.dir;
+    const Material* seen = &scene.materials[s.material];
+    Vec3 ng = shapeNormal(s, x);
+    // Clipped surfaces and antimatter boundaries are passed; a hole's side is its material.
+    const ClipResult step = clipStep(*seen, r.dir, ng, clipped);
+    if (step.action == ClipAction::kPass) {
+      tMin = h.t + Tracer::originOffset(x);
+      continue;
+    }
+    if (step.action == ClipAction::kShown) {
+      seen = &scene.materials[static_cast<size_t>(step.shown)];
+      ng = -ng;
+    }
+    std::optional<Rgb> through;
+    if (tracer.hasPatterns()) {
+      if (!patterns) patterns = &own.emplace(scene);
+      through = straightThrough(scene, *seen, {x, r.dir, ng, h.t}, *patterns);
+    } else {
+      through = familyOf(*seen).straightTransmittance(*seen, r.dir, ng);
+    }
+    if (!through) {
+      firstGlass = kNoShape;
+      return Rgb(0.0);
+    }
+    t *= *through;
+    if (familyOf(*seen).isGlazing() && firstGlass == kNoShape) firstGlass = h.shape;
+    if (photopic(t) <= 0.0) {
+      firstGlass = kNoShape;
+      return Rgb(0.0);
+    }
+    if (step.action == ClipAction::kShown) clipped.clipped = step.beyond;  // on through: newcset
+    tMin = h.t + Tracer::originOffset(x);
+  }
+  return t;
+}
+
 }  // namespace
 
 double IrradianceEstimate::standardErrorLux() const {
@@ -91,33 +149,18 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
   firstGlass = kNoShape;
   ++rays;
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
+  if (hasAntimatter_) return clippedShadowRay(*this, {o, dir, tMax, skipA, skipB}, rays, firstGlass, patterns, clip);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
   Rgb t(1.0);
   double tMin = 0.0;
   std::optional<PatternEvaluator> own;  // made when a patterned surface is met without the caller's
-  ClipState clipped = clip ? *clip : ClipState{};  // the ray's antimatter state (hasAntimatter_)
   for (int i = 0; i < 64; ++i) {
     RayHit h;
     if (i > 0) ++rays;
     if (!accel_->intersect(o, dir, tMin, tMax, h, skipA, skipB)) return t;
     const Shape s = scene_.surface(h.shape);  // a shape or a mesh triangle
     const Vec3 x = o + h.t * dir;
-    const Material* seen = &scene_.materials[s.material];
-    Vec3 ng = shapeNormal(s, x);
-    ClipResult step;
-    if (hasAntimatter_) {
-      // Clipped surfaces and antimatter boundaries are passed; a hole's side is its material.
-      step = clipStep(*seen, dir, ng, clipped);
-      if (step.action == ClipAction::kPass) {
-        tMin = h.t + originOffset(x);
-        continue;
-      }
-      if (step.action == ClipAction::kShown) {
-        seen = &scene_.materials[static_cast<size_t>(step.shown)];
-        ng = -ng;
-      }
-    }
-    const Material& m = *seen;
+    const Material& m = scene_.materials[s.material];
     const MaterialFamily& family = familyOf(m);
     // Glass and trans let their straight part through; an illum with no alternate is invisible
     // to all but its own rays; all else is opaque (a dielectric too: it bends light, so no
@@ -126,9 +169,9 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
     std::optional<Rgb> through;
     if (hasPatterns()) {
       if (!patterns) patterns = &own.emplace(scene_);
-      through = straightThrough(scene_, m, {x, dir, ng, h.t}, *patterns);
+      through = straightThrough(scene_, m, {x, dir, shapeNormal(s, x), h.t}, *patterns);
     } else {
-      through = family.straightTransmittance(m, dir, ng);
+      through = family.straightTransmittance(m, dir, shapeNormal(s, x));
     }
     if (!through) {
       firstGlass = kNoShape;
@@ -140,7 +183,6 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
       firstGlass = kNoShape;
       return Rgb(0.0);
     }
-    if (step.action == ClipAction::kShown) clipped.clipped = step.beyond;  // on through: newcset
     tMin = h.t + originOffset(x);
   }
   return t;
