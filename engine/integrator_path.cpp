@@ -311,6 +311,7 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     if (!m) {  // an illum with no alternate or a void in a mixture: pass straight through
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);  // on through: newcset
       continue;
     }
     v.ns = shadingNormal(*m, v.nf, v.front);  // a texture turns it

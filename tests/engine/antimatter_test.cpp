@@ -196,6 +196,27 @@ TEST(Antimatter, NestedVolumesOfOneMaterialFollowRadiancesSet) {
   }
 }
 
+// The clip state's crossing counts: 4 bits each, signed, saturated at -8 and +7, independent.
+TEST(Antimatter, CrossingCountsAreSignedNibbles) {
+  ClipState st;
+  EXPECT_TRUE(isEmpty(st));
+  st.cross(0, 1);
+  st.cross(1, -1);
+  st.cross(15, -1);
+  st.cross(15, -1);
+  EXPECT_EQ(st.crossings(0), 1);
+  EXPECT_EQ(st.crossings(1), -1);
+  EXPECT_EQ(st.crossings(14), 0);
+  EXPECT_EQ(st.crossings(15), -2);
+  for (int i = 0; i < 20; ++i) st.cross(2, 1), st.cross(3, -1);
+  EXPECT_EQ(st.crossings(2), 7);
+  EXPECT_EQ(st.crossings(3), -8);
+  EXPECT_EQ(st.crossings(1), -1);
+  EXPECT_FALSE(isEmpty(st));
+  st.cross(0, -1);
+  EXPECT_EQ(st.crossings(0), 0);
+}
+
 std::string refusal(const std::string& text) {
   Scene sc;
   try {
