@@ -54,8 +54,17 @@ void hemisphereCacheQueries(const Tracer& tracer, const Vec3& o, const Direction
     const double u2 = (k + dirRng.uniform()) / nPhi;
     const Vec3 dir = dirOf(u1, u2);
     RayHit h;
-    ++rays;
-    if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
+    if (tracer.hasAntimatter()) {
+      // Past clipped surfaces; no record where the listed surfaces are clipped or on a hole's
+      // side (paths trace those vertices: engine/integrator_path.cpp).
+      ClipState st;
+      ClipResult step;
+      if (!firstSeen(tracer.accelerator(), scene, o, dir, skip, st, h, step, rays)) continue;
+      if (step.action == ClipAction::kShown || !isEmpty(st)) continue;
+    } else {
+      ++rays;
+      if (!tracer.accelerator().intersect(o, dir, 0.0, kInf, h, skip)) continue;
+    }
     const Shape shape = scene.surface(h.shape);  // a shape or a mesh triangle
     const Material* m = seenMaterial(scene.materials, scene.materials[shape.material]);
     if (!m || !familyOf(*m).cacheable(*m)) continue;

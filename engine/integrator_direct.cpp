@@ -157,7 +157,7 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     const Vec3 side = dp > 0.0 ? nm : -nm;
     // A response seen in the mirror: w at the real arrival direction, the image's reflected.
     const Response mirrored = at.response ? at.response->mirrored(nm) : Response{};
-    const Receiver image{pi, ni, skip, at.response ? &mirrored : nullptr, nullptr};
+    const Receiver image{pi, ni, skip, at.response ? &mirrored : nullptr, nullptr, at.clip};
     for (const Light& light : ctx.tracer.sources().lights) {
       // Glows are not sampled in mirrors: paths count them there (pathRadiance).
       if (light.glow || (light.kind == Light::Kind::kArea && light.shape == ms)) continue;
@@ -171,10 +171,11 @@ Rgb mirrorIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
         const Vec3 x = p + tm * dir;
         const double rest = std::isinf(ls.distance) ? kInf : (ls.distance - tm) * (1.0 - 1e-9);
         if (rest <= 0.0) return Rgb(0.0);
-        const Rgb toMirror = ctx.transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms);
+        const Rgb toMirror = ctx.transmittance(p, dir, tm * (1.0 - 1e-9), skip, ms, at.clip);
         if (photopic(toMirror) <= 0.0) return Rgb(0.0);
         const Rgb weight = at.filter ? at.filter->source(dir, ls.solidAngleSr) : Rgb(1.0);
-        return weight * toMirror * ctx.transmittance(x + Tracer::originOffset(x) * side, ls.dir, rest, ms, lightShape);
+        return weight * toMirror *
+               ctx.transmittance(x + Tracer::originOffset(x) * side, ls.dir, rest, ms, lightShape, at.clip);
       });
     }
   }
@@ -190,7 +191,8 @@ void tallySuns(TraceContext& ctx, const Receiver& at) {
     const double cosI = glm::dot(at.n, suns[j]);
     if (cosI <= 0.0) continue;
     const Rgb weight = at.filter ? at.filter->source(suns[j], 0.0) : Rgb(1.0);
-    tally.sunIndirect[j] += photopic(tally.outer * weight * ctx.transmittance(at.p, suns[j], kInf, at.skip, kNoShape)) * cosI;
+    tally.sunIndirect[j] +=
+        photopic(tally.outer * weight * ctx.transmittance(at.p, suns[j], kInf, at.skip, kNoShape, at.clip)) * cosI;
   }
 }
 
@@ -247,7 +249,7 @@ Rgb skyIrradiance(TraceContext& ctx, const Receiver& at, int k, double* variance
     const double wOverMp = throughPortal ? (t.pp > 0.0 ? t.portal * t.portal / denom / (kPortal * t.pp) : 0.0)
                                          : (t.ps > 0.0 ? t.sky * t.sky / denom / (kSky * t.ps) : 0.0);
     if (!(wOverMp > 0.0)) continue;
-    Rgb v = ctx.transmittance(at.p, dir, kInf, at.skip, kNoShape);
+    Rgb v = ctx.transmittance(at.p, dir, kInf, at.skip, kNoShape, at.clip);
     if (at.filter) v *= at.filter->sky(dir);
     const Rgb g = v * (wOverMp * skyOrGroundLuminance(sky, dir) / kLumensPerWatt * cosI);
     if (tally && tally->patches && !(tally->directApart && !atPathVertex))
@@ -281,7 +283,7 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
   if (atPathVertex) {
     total = sampleLightsByImportance(lights, scene, at.p, at.n, k, ctx.rng, ctx.light.cdf, ctx.patternsIfAny(),
                                      [&](const Vec3& o, const LightSample& ls, double tMax, uint32_t lightShape) {
-                                       const Rgb v = ctx.transmittance(o, ls.dir, tMax, at.skip, lightShape);
+                                       const Rgb v = ctx.transmittance(o, ls.dir, tMax, at.skip, lightShape, at.clip);
                                        return at.filter ? v * at.filter->source(ls.dir, ls.solidAngleSr) : v;
                                      }, ctx.smallSin2, ctx.light.useGlowShare ? ctx.light.glowShare.data() : nullptr);
   }
@@ -290,7 +292,7 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
     if (!glowSampledFrom(light, at.p, ctx.smallSin2)) continue;
     total += lightEstimate(ctx, light, at, k, variance, [&](const LightSample& ls, uint32_t lightShape) {
       const double tMax = std::isinf(ls.distance) ? kInf : ls.distance * (1.0 - 1e-9);
-      return ctx.transmittance(at.p, ls.dir, tMax, at.skip, lightShape);
+      return ctx.transmittance(at.p, ls.dir, tMax, at.skip, lightShape, at.clip);
     });
   }
   // Sources seen in flat mirrors, as virtual sources.

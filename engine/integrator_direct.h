@@ -35,6 +35,9 @@ struct Receiver {
   uint32_t skip = kNoShape;
   const Response* response = nullptr;  // a non-planar response, or none (planar on n)
   const LightFilter* filter = nullptr;  // weights by direction (a path vertex), or none
+  // The antimatter clip set of the point (engine/antimatter.h), which its shadow rays start
+  // with; nullptr: empty (sensors).
+  const ClipState* clip = nullptr;
 };
 
 // Direct irradiance at `at` from every sampled source with k stratified samples each; adds the

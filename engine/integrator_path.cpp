@@ -31,6 +31,10 @@ struct Hit {
   uint32_t flatSkip = kNoShape;  // the shape when flat (rays leaving it skip it), or kNoShape
   uint32_t shape = kNoShape;
   double t = 0.0;    // distance travelled to it, m
+  // An antimatter hole's side seen as the clipped material (engine/antimatter.h): the clip set a
+  // ray going on straight through it takes; -1 for every other surface.
+  int32_t clipBeyond = -1;
+  bool holeSide() const { return clipBeyond >= 0; }
 };
 
 // The ray being followed through specular and pass-through events.
@@ -82,6 +86,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       // same glass already carried them from a diffuse vertex).
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       return true;
     case SpecularSample::Kind::kReflected:
       ray.reflected = true;
@@ -95,6 +100,7 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
       ray.d = e.dir;
       ray.o = e.transmitted ? v.x - v.off * v.nf : v.x + v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide() && e.transmitted) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       st.misCosPdf = 0.0;
       st.countSources = true;
       ray.reflected = true;  // bent: the sky tally's patch-by-patch shadow rays cannot see through it
@@ -106,8 +112,9 @@ bool followSpecular(TraceContext& ctx, const Material& m, const Hit& v, Ray& ray
 // One sample of the glossy lobe of m leaving v: its reflected radiance estimate. As Radiance's
 // sampled specular rays do, a sample carries the family's lobe weight (the specular reflectance
 // ρ_s for the Ward lobes); sources met are counted (the light sampled at the vertex is the diffuse
-// part's only); glossy reflections count as bounces.
-Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse) {
+// part's only); glossy reflections count as bounces. clip: the set of the ray that arrived, which
+// the sample keeps.
+Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse, const ClipState& clip) {
   Vec3 out(0.0);
   const MaterialFamily& family = familyOf(m);
   if (!family.sampleLobe(m, v.inDir, v.ns, ctx.rng, out)) return Rgb(0.0);
@@ -119,6 +126,7 @@ Rgb glossyBounce(TraceContext& ctx, const Hit& v, const Material& m, int diffuse
   next.countSources = true;
   next.diffuse = diffuse + 1;
   next.lighting = true;
+  next.clip = clip;
   return weight * pathRadiance(ctx, v.x + v.off * v.nf, out, next);
 }
 
@@ -146,6 +154,7 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
     }
     sc.useGlowShare = true;
   }
+  // The cache serves vertices reached with an empty clip set only (pathRadiance): the receiver's.
   const Rgb direct = directIrradiance(ctx, {xf, v.nf, v.flatSkip}, std::max(1, ctx.settings.cache.lightSamples),
                                       nullptr, 1.0);
   ctx.light.useGlowShare = false;
@@ -159,7 +168,7 @@ std::optional<Rgb> cachedVertex(TraceContext& ctx, const Hit& v, const Material&
   cache.tally.addCachedValue(photopic(f * e));
   Rgb result(0.0);
   result += f * (direct + e);
-  if (photopic(m.specularReflectance) > 0.0) result += beta * glossyBounce(ctx, v, m, diffuse);
+  if (photopic(m.specularReflectance) > 0.0) result += beta * glossyBounce(ctx, v, m, diffuse, ClipState{});
   return result;
 }
 
@@ -202,18 +211,18 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   if (familyOf(m).directionalSources(m)) {
     const PatternPoint at{v.x, v.inDir, v.ng, v.t};
     const SourceBrdfFilter front(ctx, m, at, false);
-    out += directIrradiance(ctx, {xf, nf, self, nullptr, &front}, k, nullptr, 1.0);
+    out += directIrradiance(ctx, {xf, nf, self, nullptr, &front, &st.clip}, k, nullptr, 1.0);
     if (familyOf(m).transmitting()) {
       const SourceBrdfFilter back(ctx, m, at, true);
-      out += directIrradiance(ctx, {xb, -nf, self, nullptr, &back}, k, nullptr, 1.0);
+      out += directIrradiance(ctx, {xb, -nf, self, nullptr, &back, &st.clip}, k, nullptr, 1.0);
     }
   } else if (photopic(rho) > 0.0) {
     const TallyFactor tf(ctx.tally, rho * kInvPi);
-    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self}, k, nullptr, 1.0);
+    out += rho * kInvPi * directIrradiance(ctx, {xf, nf, self, nullptr, nullptr, &st.clip}, k, nullptr, 1.0);
   }
   if (photopic(tauD) > 0.0 && !familyOf(m).directionalSources(m)) {
     const TallyFactor tf(ctx.tally, tauD * kInvPi);
-    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self}, k, nullptr, 1.0);
+    out += tauD * kInvPi * directIrradiance(ctx, {xb, -nf, self, nullptr, nullptr, &st.clip}, k, nullptr, 1.0);
   }
   // Indirect light: k continuations (stratified when k > 1), each one event chosen with
   // probability equal to its photopic albedo (Russian roulette by albedo: unbiased, a path ends
@@ -227,6 +236,7 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   bounce.skip = self;
   bounce.diffuse = st.diffuse + 1;
   bounce.lighting = true;
+  bounce.clip = st.clip;
   Rgb acc(0.0);
   for (int j = 0; j < k; ++j) {
     const Vec2 u12 = strata.sample(j, ctx.rng);
@@ -258,10 +268,11 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       PathState through = st;
       through.skip = v.flatSkip;
       through.split = 1;
+      if (v.holeSide()) through.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
       acc += tauS * (norm / pTs) * pathRadiance(ctx, xb, v.inDir, through);
     } else if (u < pRho + pTd + pTs + pSp) {
       const TallyFactor tf(ctx.tally, norm / pSp / k);
-      acc += (norm / pSp) * glossyBounce(ctx, v, m, st.diffuse);
+      acc += (norm / pSp) * glossyBounce(ctx, v, m, st.diffuse, st.clip);
     }
   }
   return out + acc / static_cast<double>(k);
@@ -312,11 +323,28 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     v.nf = v.front ? v.ng : -v.ng;
     v.off = Tracer::originOffset(v.x);
     v.flatSkip = isFlat(shape) ? h.shape : kNoShape;
+    if (ctx.tracer.hasAntimatter()) {
+      // Clipped surfaces and antimatter boundaries are passed (the state updated); a hole's side
+      // is the clipped material, turned to face the ray (nf unchanged).
+      const ClipResult c = clipStep(*m, ray.d, v.ng, st.clip);
+      if (c.action == ClipAction::kPass) {
+        ray.o = v.x - v.off * v.nf;
+        st.skip = v.flatSkip;
+        continue;
+      }
+      if (c.action == ClipAction::kShown) {
+        m = &scene.materials[static_cast<size_t>(c.shown)];
+        v.ng = -v.ng;
+        v.front = !v.front;
+        v.clipBeyond = c.beyond;
+      }
+    }
     std::optional<Material> patternedHere;  // the hook's copy when patterns modify m
     m = materialAt(scene, *m, {v.x, ray.d, v.ng, v.t}, ctx.patternEval, ctx.rng, patternedHere);
     if (!m) {  // an illum with no alternate or a void in a mixture: pass straight through
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
+      if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);  // on through: newcset
       continue;
     }
     v.ns = shadingNormal(*m, v.nf, v.front);  // a texture turns it
@@ -338,7 +366,10 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     }
     // plastic, metal, trans: their diffuse parts (specular lobes: see docs/engine.md).
     if (st.diffuse + 1 > ctx.settings.maxBounces) return result;
-    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured) {
+    // The cache's records hold light gathered with an empty clip set: vertices in another, and
+    // a hole's sides, are traced.
+    const bool clipFree = !ctx.tracer.hasAntimatter() || (!v.holeSide() && isEmpty(st.clip));
+    if (cache && cache->cache && st.diffuse == cache->depth && family.cacheable(*m) && !v.textured && clipFree) {
       if (const std::optional<Rgb> cached = cachedVertex(ctx, v, *m, st.diffuse, ray.beta, *cache)) return *cached;
       PathState miss = st;
       miss.split = 1;

@@ -14,11 +14,21 @@ namespace candela {
 // A path's state as a ray leaves a vertex (or the sensor, the camera).
 struct PathState {
   uint32_t skip = kNoShape;   // the flat shape the ray leaves (not to be hit again), or kNoShape
+  int diffuse = 0;      // diffuse reflections so far
+  int split = 1;        // continuations the next diffuse vertex takes (stratified)
+  // Flat mirrors met since the last diffuse vertex, carried through a trans surface's specular
+  // transmission (which keeps the direction).
+  int mirrorsMet = 0;
   // Whether sampled sources met count: true after specular reflection and for camera rays; a
   // diffuse vertex samples them itself, so its continuations do not count them.
   bool countSources = false;
-  int diffuse = 0;      // diffuse reflections so far
-  int split = 1;        // continuations the next diffuse vertex takes (stratified)
+  // The ray carries light to a receiver (sensor, record, diffuse or glossy vertex) rather than
+  // to an eye: a glow of negative radius sends nothing along it (Radiance's ray.1 "Glow").
+  bool lighting = false;
+  // The antimatter clip set the ray carries (engine/antimatter.h): empty from sensors and the
+  // camera, as Radiance's primary rays; reflected, scattered and straight-on rays inherit it.
+  // Beside the flags, in what was padding: the state is no larger than without it.
+  ClipState clip;
   // Density (per sr) of the cosine sampling that drew the ray, for the sky's MIS weight
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
   double misCosPdf = 0.0;
@@ -28,17 +38,12 @@ struct PathState {
   // MIS weight depends on it (engine/portals.h).
   Vec3 misOrigin{0.0};
   Vec3 misNormal{0.0, 0.0, 1.0};
-  // Flat mirrors met since the last diffuse vertex, carried through a trans surface's specular
-  // transmission (which keeps the direction).
-  int mirrorsMet = 0;
   // Where the sources were sampled that this ray must not count again (while countSources is
   // false): the receiver point of the last diffuse vertex or sensor, exactly as passed to
   // directIrradiance, so that a glow met is left out exactly when glowSampledFrom sampled it.
   Vec3 litPoint{0.0};
-  // The ray carries light to a receiver (sensor, record, diffuse or glossy vertex) rather than
-  // to an eye: a glow of negative radius sends nothing along it (Radiance's ray.1 "Glow").
-  bool lighting = false;
 };
+static_assert(sizeof(PathState) == 128, "a path's state stays two cache lines (ClipState in the padding)");
 
 // A frozen cache serving the diffuse vertex at diffuse count `depth`, and what the lookups used
 // (for error bars): each record's share of each cell's radiance (beta·ρ/π·normalised

@@ -254,7 +254,9 @@ PixelValue tracePixel(const Tracer& tracer, const Camera& cam, int x, int y, con
                  kIrradianceStreamBase + (pixel * static_cast<uint64_t>(n) + k) * kMaxEstimates,
                  r.irradianceSamples > 0 ? kMaxEstimates : 0};
     Rgb value(0.0);
-    if (r.irradianceSamples > 0) {
+    // With antimatter the camera ray is a path (engine/antimatter.h: the clip set is carried by
+    // paths; the seen surfaces' irradiance estimates would start without it).
+    if (r.irradianceSamples > 0 && !tracer.hasAntimatter()) {
       value = cameraRadiance(cr, cam.position(), *dir, kNoShape, 1.0, 0);
     } else {
       // Plain paths: one per camera ray (the luminaires' openings drawn where the ray meets them).
@@ -627,7 +629,7 @@ double luminanceToward(const Tracer& tracer, const Vec3& eye, const Vec3& target
   if (!tracer.accelerator().intersect(eye, d, 0.0, 1e300, h)) return 0.0;
   const Shape shape = tracer.scene().surface(h.shape);  // a shape or a mesh triangle
   const Material& mat = tracer.scene().materials[shape.material];
-  if (isMatteOpaque(mat)) {
+  if (isMatteOpaque(mat) && !tracer.hasAntimatter()) {  // with antimatter: a path (below)
     const Vec3 x = eye + h.t * d;
     const Vec3 ng = shapeNormal(shape, x);
     const Vec3 nf = glm::dot(d, ng) < 0.0 ? ng : -ng;

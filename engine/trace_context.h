@@ -47,10 +47,11 @@ struct TraceContext {
     return tracer.accelerator().intersect(o, d, tMin, tMax, h, skip);
   }
   // Tracer::transmittance, its rays counted here (patterned glass and trans evaluated by this
-  // call's evaluator).
-  Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) {
+  // call's evaluator), from a point in antimatter clip state `clip` (nullptr: empty).
+  Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
+                    const ClipState* clip = nullptr) {
     uint32_t firstGlass = kNoShape;
-    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass, patternsIfAny());
+    return tracer.transmittance(o, dir, tMax, skipA, skipB, rays, firstGlass, patternsIfAny(), clip);
   }
   // The function patterns' evaluator of this call, made on first use.
   PatternEvaluator& patterns() {

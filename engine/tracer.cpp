@@ -11,6 +11,68 @@
 #include <stdexcept>
 
 namespace candela {
+namespace {
+
+// A shadow ray's geometry (Tracer::transmittance).
+struct ShadowRay {
+  Vec3 o, dir;
+  double tMax;
+  uint32_t skipA, skipB;
+};
+
+// Tracer::transmittance's walk in a scene with antimatter: the same walk along the one ray, past
+// each transmitting surface, through the clip steps too (engine/antimatter.h), from state clip
+// (nullptr: empty). Scenes without antimatter keep the walk without them.
+Rgb clippedShadowRay(const Tracer& tracer, const ShadowRay& r, uint64_t& rays, uint32_t& firstGlass,
+                     PatternEvaluator* patterns, const ClipState* clip) {
+  const Scene& scene = tracer.scene();
+  Rgb t(1.0);
+  double tMin = 0.0;
+  std::optional<PatternEvaluator> own;  // made when a patterned surface is met without the caller's
+  ClipState clipped = clip ? *clip : ClipState{};
+  for (int i = 0; i < 64; ++i) {
+    RayHit h;
+    if (i > 0) ++rays;
+    if (!tracer.accelerator().intersect(r.o, r.dir, tMin, r.tMax, h, r.skipA, r.skipB)) return t;
+    const Shape s = scene.surface(h.shape);  // a shape or a mesh triangle
+    const Vec3 x = r.o + h.t * r.dir;
+    const Material* seen = &scene.materials[s.material];
+    Vec3 ng = shapeNormal(s, x);
+    // Clipped surfaces and antimatter boundaries are passed; a hole's side is its material.
+    const ClipResult step = clipStep(*seen, r.dir, ng, clipped);
+    if (step.action == ClipAction::kPass) {
+      tMin = h.t + Tracer::originOffset(x);
+      continue;
+    }
+    if (step.action == ClipAction::kShown) {
+      seen = &scene.materials[static_cast<size_t>(step.shown)];
+      ng = -ng;
+    }
+    std::optional<Rgb> through;
+    if (tracer.hasPatterns()) {
+      if (!patterns) patterns = &own.emplace(scene);
+      through = straightThrough(scene, *seen, {x, r.dir, ng, h.t}, *patterns);
+    } else {
+      through = familyOf(*seen).straightTransmittance(*seen, r.dir, ng);
+    }
+    if (!through) {
+      firstGlass = kNoShape;
+      return Rgb(0.0);
+    }
+    t *= *through;
+    if (familyOf(*seen).isGlazing() && firstGlass == kNoShape) firstGlass = h.shape;
+    if (photopic(t) <= 0.0) {
+      firstGlass = kNoShape;
+      return Rgb(0.0);
+    }
+    if (step.action == ClipAction::kShown) clipped.clipped = step.beyond;  // on through: newcset
+    tMin = h.t + Tracer::originOffset(x);
+  }
+  return t;
+}
+
+}  // namespace
+
 
 double Tracer::originOffset(const Vec3& p) {
   // Doubles locate a hit to ~1e-15 of its coordinates; 1e-7 of the larger of 1 m and the
@@ -39,6 +101,7 @@ Tracer::Tracer(const Scene& scene, std::unique_ptr<RayAccelerator> accelerator)
   if (scene.sky) portals_ = PortalSet(scene);
   for (const Material& m : scene.materials)
     if (familyOf(m).mayPassShadowRays(m)) hasTransmitters_ = true;
+  hasAntimatter_ = candela::hasAntimatter(scene.materials);
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB) const {
@@ -55,10 +118,12 @@ Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t 
 }
 
 Rgb Tracer::transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
-                          uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns) const {
+                          uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns,
+                          const ClipState* clip) const {
   firstGlass = kNoShape;
   ++rays;
   if (!hasTransmitters_) return accel_->occluded(o, dir, 0.0, tMax, skipA, skipB) ? Rgb(0.0) : Rgb(1.0);
+  if (hasAntimatter_) return clippedShadowRay(*this, {o, dir, tMax, skipA, skipB}, rays, firstGlass, patterns, clip);
   // Walk the hits along the one ray, past each transmitting surface (same origin, growing tMin).
   Rgb t(1.0);
   double tMin = 0.0;

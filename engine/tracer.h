@@ -8,6 +8,7 @@
 #pragma once
 
 #include "base/rng.h"
+#include "engine/antimatter.h"
 #include "engine/lights.h"
 #include "engine/octree.h"
 #include "engine/portals.h"
@@ -55,10 +56,17 @@ class Tracer {
   // study's window groups, docs/annual.md). The transmittance is the other overloads', bit for bit.
   // Glass and trans modified by function patterns are evaluated by `patterns` (the caller's
   // evaluator; nullptr: one of the call's own, made when needed).
+  // clip: the antimatter clip set of the point the ray leaves (engine/antimatter.h; nullptr:
+  // empty, a sensor's).
+  // 9 parameters: the ray, its interval, its two skipped shapes, its count and first glass, and
+  // the state it carries (patterns' evaluator, clip set).
   Rgb transmittance(const Vec3& o, const Vec3& dir, double tMax, uint32_t skipA, uint32_t skipB,
-                    uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns = nullptr) const;
+                    uint64_t& rays, uint32_t& firstGlass, PatternEvaluator* patterns = nullptr,
+                    const ClipState* clip = nullptr) const;
   // The scene has function patterns (engine/materials/pattern_hook.h).
   bool hasPatterns() const { return scene_.functions != nullptr; }
+  // The scene has antimatter: rays are walked through the clip steps (engine/antimatter.h).
+  bool hasAntimatter() const { return hasAntimatter_; }
 
   // Rays cast so far (nearest-hit and shadow rays, each query of the accelerator counted once;
   // a shadow ray walked through glass counts each surface met). Complete after the calls that
@@ -85,6 +93,7 @@ class Tracer {
   SampledSources sources_;
   PortalSet portals_;
   bool hasTransmitters_ = false;
+  bool hasAntimatter_ = false;
 };
 
 }  // namespace candela

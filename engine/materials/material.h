@@ -8,7 +8,9 @@
 #include "base/units.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace candela {
 
@@ -16,9 +18,9 @@ namespace candela {
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
   kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kPlasFunc, kMetFunc, kTransFunc, kPlasData, kMetData, kTransData,
-  kAshik2, kWgmdFunc
+  kAshik2, kWgmdFunc, kAntimatter
 };
-inline constexpr int kMaterialTypeCount = 25;
+inline constexpr int kMaterialTypeCount = 26;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -88,6 +90,13 @@ struct MaterialParameters {
   std::array<int, 3> partPatterns{-1, -1, -1};
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
+  // Antimatter (engine/antimatter.h): clipBit, this material's bit in the rays' clip sets when an
+  // antimatter lists it (-1: none does); an antimatter's clipMask (the bits of the materials it
+  // lists) and shownMaterial (its first modifier, what its surface is seen as from inside a
+  // clipped object; -1: void).
+  int clipBit = -1;
+  uint16_t clipMask = 0;
+  int shownMaterial = -1;
   // Derived (Radiance's definitions of plastic, metal and trans):
   Rgb diffuseReflectance{0.0};
   Rgb diffuseTransmittance{0.0};
@@ -115,6 +124,9 @@ struct MaterialParameters {
 struct Material : MaterialParameters {
   std::string name;
   FileLoc loc;
+  // antimatter: the materials it lists, in order (void left out, each once); the reader gives
+  // them their clip bits.
+  std::vector<int> clipList;
 };
 
 // Fills a material's derived reflectances from its type and parameters (its family's derive).

@@ -38,6 +38,7 @@ constexpr Entry kFamilies[] = {
     {transDataFamily, {"transdata", nullptr}},
     {ashik2Family, {"ashik2", nullptr}},
     {wgmdFuncFamily, {"WGMDfunc", nullptr}},
+    {antimatterFamily, {"antimatter", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -31,5 +31,6 @@ const MaterialFamily& metDataFamily();
 const MaterialFamily& transDataFamily();
 const MaterialFamily& ashik2Family();
 const MaterialFamily& wgmdFuncFamily();
+const MaterialFamily& antimatterFamily();
 
 }  // namespace candela

@@ -2,6 +2,7 @@
 
 #include "base/input_file.h"
 #include "base/units.h"
+#include "engine/antimatter.h"
 #include "engine/obj_reader.h"
 #include "engine/materials/family.h"
 #include "engine/polygon_split.h"
@@ -426,6 +427,7 @@ class SceneReader::Builder {
     } else {
       m.name = p.name;
       m.loc = p.loc;
+      m.clipBit = -1;  // an object of its own: not clipped by what lists the material it copies
       materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     }
     patterns_.erase(p.name);
@@ -494,8 +496,10 @@ class SceneReader::Builder {
                                   }};
     try {
       family.read(ctx, m);
+      if (m.type == MaterialType::kAntimatter) giveClipBits(p, m);
     } catch (const InputError& e) {
-      if (!reachesKept) throw;
+      // An antimatter is refused only when a surface uses it (the reader's rule).
+      if (!reachesKept && m.type != MaterialType::kAntimatter) throw;
       deferred_.insert_or_assign(p.name, e);
       materials_.erase(p.name);
       patterns_.erase(p.name);
@@ -503,6 +507,27 @@ class SceneReader::Builder {
     }
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     patterns_.erase(p.name);
+  }
+
+  // An antimatter's materials get their bits in the rays' clip sets (engine/antimatter.h), numbered
+  // over all the scene's antimatter, at most kMaxClippedMaterials of them; its mask is theirs.
+  void giveClipBits(const Primitive& p, Material& m) {
+    if (m.shownMaterial >= 0 && scene_.materials[static_cast<size_t>(m.shownMaterial)].type == MaterialType::kAntimatter)
+      fail(p, "antimatter '" + p.name + "': its first modifier '" + p.strings[0] +
+                  "' is an antimatter; the first modifier is the material its surface is seen as (void: none)");
+    int used = 0;
+    for (const Material& other : scene_.materials) used = std::max(used, other.clipBit + 1);
+    for (int index : m.clipList) {
+      Material& clipped = scene_.materials[static_cast<size_t>(index)];
+      if (clipped.clipBit < 0) {
+        if (used >= kMaxClippedMaterials)
+          fail(p, "antimatter '" + p.name + "' clips '" + clipped.name + "', one more than the " +
+                      std::to_string(kMaxClippedMaterials) +
+                      " materials candela's clip sets hold for all the antimatter of a scene");
+        clipped.clipBit = used++;
+      }
+      m.clipMask = static_cast<uint16_t>(m.clipMask | (1u << clipped.clipBit));
+    }
   }
 
   // Geometry within 10 000 km of the origin: beyond, ray offsets and the accelerators' single

@@ -6,7 +6,10 @@
 // that starts (or stops) loading fails the test until the table and docs/engine.md say so.
 #include "study/points_study.h"
 #include "study/sensor_grid.h"
+#include "engine/irradiance_estimator.h"
 #include "engine/radiance/parse.h"
+#include "engine/radiance/reader.h"
+#include "engine/tracer.h"
 #include "tests/support/peer_suite.h"
 #include "tests/support/temp_files.h"
 
@@ -42,7 +45,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"glass", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
       {"inst", {"instance 'porsche #1' places a Radiance octree (porsche.octf)", ""}},
       {"mesh", {"mesh 'plainclothes.0.woman' names a Radiance compiled mesh (woman.rtm)", ""}},
-      {"mirror", {"primitive type 'antimatter' is not supported", ""}},
+      {"mirror", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
       {"mist", {"loads; no reference", ""}},
       {"mixtex", {"texdata 'bumpy_pat': function file 'bumpypat.cal'", "primitive type 'aBSDF' is not supported"}},
       {"patterns", {"colortext 'textpat': font file 'helvet.fnt' is not in", "disagrees: point 1"}},
@@ -204,6 +207,35 @@ TEST(PeerSuite, PatternsSetWithIdentityPatternsAgreesWithRadianceOnTheSameScene)
               << ref[i] << " (" << 100.0 * (e - ref[i]) / ref[i] << " %)\n";
     EXPECT_LE(r.estimates[i].standardErrorLux(), 0.01 * ref[i]) << "point " << i + 1;
     EXPECT_LE(std::abs(e - ref[i]), kTolerance * ref[i]) << "point " << i + 1;
+  }
+}
+
+// Radiance's own antimatter_portal.rad (the mirror and combined sets' round, bevelled portal: an
+// antimatter ring of radius 1 on the outside, a cone widening to 1.1, a ring of 1.1 inside)
+// through closed_end.rad's wall (wall_mat of basic.mat, x from -8.2 to -8). Under a sun along the
+// portal's axis a sensor behind the wall facing the sun gets the sun's whole normal illuminance
+// (the same scene without the wall) within the portal's outer radius, none beyond it: 0.95 m off
+// the axis lit, 1.05 m (inside the bevel, the wall's outer face stops the beam) and 1.3 m dark.
+TEST(PeerSuite, AntimatterPortalCutsTheClosedEndWall) {
+  CANDELA_PEER_SUITE_DIR(suite);
+  const fs::path dir = test_support::scratchDir("peer_suite", "antimatter_portal");
+  std::ofstream(dir / "sun.rad") << "void light solar 0 0 3 1e6 1e6 1e6\nsolar source sun 0 0 4 -1 0 0 0.533\n";
+  Scene free, cut;
+  readSceneFiles({suite / "basic.mat", dir / "sun.rad"}, free);
+  readSceneFiles({suite / "basic.mat", suite / "closed_end.rad", suite / "antimatter_portal.rad", dir / "sun.rad"}, cut);
+  TraceSettings s;
+  s.lightSamples = 16;
+  s.hemisphereSamples = 16;
+  s.maxBounces = 0;
+  s.adaptiveFraction = 0.0;
+  const Tracer freeTracer(free), cutTracer(cut);
+  const Vec3 n(-1, 0, 0);
+  const double sun = estimateIrradiance(freeTracer, Vec3(-7, 2.5, 1.5), n, 0, s).illuminanceLux();
+  ASSERT_GT(sun, 0.0);
+  for (const auto& [offset, lit] : {std::pair{0.0, true}, std::pair{0.95, true}, std::pair{-0.95, true},
+                                    std::pair{1.05, false}, std::pair{1.3, false}}) {
+    const IrradianceEstimate e = estimateIrradiance(cutTracer, Vec3(-7, 2.5, 1.5 + offset), n, 1, s);
+    EXPECT_NEAR(e.illuminanceLux(), lit ? sun : 0.0, 4.0 * e.standardErrorLux() + 1e-9 * sun) << "offset " << offset;
   }
 }
 

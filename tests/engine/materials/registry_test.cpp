@@ -27,7 +27,7 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
        {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
         "metal2", "trans2", "mist", "BRTDfunc", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-        "ashik2", "WGMDfunc"}) {
+        "ashik2", "WGMDfunc", "antimatter"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -42,7 +42,8 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
             "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
-            "metal2, trans2, mist, BRTDfunc, plasfunc, metfunc, transfunc, plasdata, metdata, transdata, ashik2, WGMDfunc");
+            "metal2, trans2, mist, BRTDfunc, plasfunc, metfunc, transfunc, plasdata, metdata, transdata, ashik2, WGMDfunc, "
+            "antimatter");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {

@@ -249,7 +249,7 @@ TEST(FunctionPatterns, FilesAreFoundAsRadianceFindsThemAndNowhereElse) {
 TEST(FunctionPatterns, UnusedPatternsAreNotRefused) {
   const fs::path dir = test_support::scratchDir("function_patterns", "unused");
   const Scene sc = readIn(dir, "void brightfunc p 2 v nofile.cal 0 0\nvoid colorpict pic 7 r g b x.hdr p.cal u v 0 0\n"
-                               "void antimatter am 1 void 0 0\n");
+                               "void BSDF am 1 void 0 0\n");
   EXPECT_TRUE(sc.inputWarnings.empty());
   // Used by a material a surface uses, it is refused at its own line, saying what used it.
   const std::string used = errorOf(dir, "void colorpict pic 7 r g b x.hdr p.cal u v 0 0\n", PatternPolicy::kRefuse,
@@ -258,7 +258,7 @@ TEST(FunctionPatterns, UnusedPatternsAreNotRefused) {
             std::string::npos)
       << used;
   EXPECT_NE(used.find("(used by plastic 'used' at line 2)"), std::string::npos) << used;
-  EXPECT_NE(errorOf(dir, "void antimatter am 1 void 0 0\nvoid alias p am\n")
+  EXPECT_NE(errorOf(dir, "void BSDF am 1 void 0 0\nvoid alias p am\n")
                 .find("(used by alias 'p' at line 2)"),
             std::string::npos);
 }
