@@ -518,6 +518,21 @@ void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob&
   }
 }
 
+// The year's trace settings: the case's and the command line's, except that at the normal
+// preset the coefficients' hemisphere takes kAnnualNormalHemisphereSamples rays unless the case
+// or the command line gives a count. The annual metrics sum each sensor's coefficients over 3650
+// occupied hours, where the hemisphere's noise averages out: on the annual office demo 1024 rays
+// give DA300, sDA300/50 and ASE1000/250 within 0.3 points of the converged figures at half the
+// cost of 2048; 512 rays put sDA 1.8 points low (docs/performance.md#annual-daylight).
+constexpr int kAnnualNormalHemisphereSamples = 1024;
+
+ResolvedTrace annualTrace(const CaseFile& c, const TraceOverrides& o) {
+  ResolvedTrace r = resolveTrace(&c.settings, o, Method::kPath);
+  if (r.quality == Quality::kNormal && !o.samples && !c.settings.samples)
+    r.settings.hemisphereSamples = kAnnualNormalHemisphereSamples;
+  return r;
+}
+
 // Both states of the year, block by block, into the grids' files and metrics.
 void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace& trace, const AnnualPass& p,
                  AnnualTraces& t, StudyObserver& observer) {
@@ -647,7 +662,7 @@ RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver
                          const AnnualStudyOptions& options) {
   // 1. Input: weather, site, scene, grids — every error before any tracing.
   AnnualInputs in = readAnnualInputs(c);
-  const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kPath);
+  const ResolvedTrace trace = annualTrace(c, run.request.trace);
   Warnings warnings = annualInputWarnings(c, in.epw.location, *in.scene, in.grids);
   checkWeatherGaps(in.epw, c.sky.weather.string(), warnings);
   throwIfStrict(warnings, run.request.strict);
