@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <system_error>
+#include <unordered_map>
 
 namespace candela {
 
@@ -103,6 +104,39 @@ bool isFunctionPattern(const RadPrimitive& p) {
 
 bool isMixture(const RadPrimitive& p) {
   return p.type == "mixfunc" || p.type == "mixdata" || p.type == "mixpict" || p.type == "mixtext";
+}
+
+bool isPatternType(const std::string& t) {
+  static const char* const kTypes[] = {"brightfunc", "brightdata", "brighttext", "colorfunc", "colordata",
+                                       "colorpict", "colortext",  "texfunc",    "texdata",   "mixfunc",
+                                       "mixdata",   "mixpict",    "mixtext",    "specfunc",  "specdata",
+                                       "specpict",  "spectrum",   "specfile"};
+  return std::any_of(std::begin(kTypes), std::end(kTypes), [&](const char* k) { return t == k; });
+}
+
+std::optional<PatternKind> implementedPattern(const RadPrimitive& p) {
+  if (p.type == "brightfunc" && p.strings.size() >= 2) {
+    if (p.strings[0] == "skyfunc" || p.strings[1] == "skybright.cal") {
+      if (p.strings[1] == "skybright.cal") return PatternKind::kSkyBright;
+    }
+    if (p.strings[1] == "perezlum.cal") return PatternKind::kPerezLum;
+  }
+  if (p.type == "brightdata" && p.strings.size() >= 3 && p.strings[2] == "source.cal") {
+    const std::string& f = p.strings[0];
+    if (f == "corr" || f == "flatcorr" || f == "boxcorr" || f == "cylcorr") return PatternKind::kSourceDistribution;
+  }
+  return std::nullopt;
+}
+
+std::string patternFile(const RadPrimitive& p) {
+  static const std::unordered_map<std::string, size_t> kIndex = {
+      {"brightfunc", 1}, {"colorfunc", 3}, {"texfunc", 3},   {"mixfunc", 3},   {"specfunc", 1},
+      {"brightdata", 1}, {"colordata", 3}, {"texdata", 3},   {"mixdata", 3},   {"specdata", 1},
+      {"colorpict", 3},  {"mixpict", 3},   {"specpict", 1},  {"brighttext", 0}, {"colortext", 0},
+      {"mixtext", 2},    {"specfile", 0}};
+  const auto it = kIndex.find(p.type);
+  if (it == kIndex.end() || p.strings.size() <= it->second) return {};
+  return p.strings[it->second];
 }
 
 namespace {

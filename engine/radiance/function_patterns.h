@@ -24,6 +24,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,15 @@ class FunctionFiles {
 bool isFunctionPattern(const RadPrimitive& p);
 // Whether p is a mixture of two materials (mixfunc, mixdata, mixpict, mixtext).
 bool isMixture(const RadPrimitive& p);
+// Whether type t modifies a material's colour, brightness or normal, or mixes two materials.
+bool isPatternType(const std::string& t);
+// The patterns candela evaluates natively, by the function file they name (gensky's and
+// gendaylit's sky functions, ies2rad's source.cal; docs/engine.md), else nullopt.
+std::optional<PatternKind> implementedPattern(const RadPrimitive& p);
+// The file a pattern needs, for messages: the picture of *pict types, the data file of *data
+// types, the font of *text types, else the function file (Radiance reference manual, argument
+// order of each type). "." is a function written inline.
+std::string patternFile(const RadPrimitive& p);
 
 // The pattern p describes, its expressions added to files.program() and checked (every name they
 // reach defined, each used as it is defined): an InputError at p's line otherwise. `index` is the

@@ -100,11 +100,12 @@ class SceneReader::Builder {
 
   // A material or pattern candela cannot use is refused only when something uses it (shared
   // material libraries define dozens): its refusal is kept under its name until then.
-  void defer(const Primitive& p, const std::string& message) {
-    deferred_.insert_or_assign(p.name, InputError(p.loc, message));
-    materials_.erase(p.name);
-    patterns_.erase(p.name);
+  void defer(const std::string& name, const InputError& refusal) {
+    deferred_.insert_or_assign(name, refusal);
+    materials_.erase(name);
+    patterns_.erase(name);
   }
+  void defer(const Primitive& p, const std::string& message) { defer(p.name, InputError(p.loc, message)); }
   // Throws the kept refusal of `name`, saying what uses it, if it has one.
   void refuseIfDeferred(const std::string& name, const std::string& user) const {
     const auto d = deferred_.find(name);
@@ -230,44 +231,6 @@ class SceneReader::Builder {
     }
   }
 
-  // Types that modify a material's colour, brightness or normal, or mix two materials.
-  static bool isPatternType(const std::string& t) {
-    static const char* const kTypes[] = {"brightfunc", "brightdata", "brighttext", "colorfunc", "colordata",
-                                         "colorpict", "colortext",  "texfunc",    "texdata",   "mixfunc",
-                                         "mixdata",   "mixpict",    "mixtext",    "specfunc",  "specdata",
-                                         "specpict",  "spectrum",   "specfile"};
-    return std::any_of(std::begin(kTypes), std::end(kTypes), [&](const char* k) { return t == k; });
-  }
-
-  // The patterns candela implements, by the function file they name (docs/engine.md).
-  static std::optional<PatternKind> implementedPattern(const Primitive& p) {
-    if (p.type == "brightfunc" && p.strings.size() >= 2) {
-      if (p.strings[0] == "skyfunc" || p.strings[1] == "skybright.cal") {
-        if (p.strings[1] == "skybright.cal") return PatternKind::kSkyBright;
-      }
-      if (p.strings[1] == "perezlum.cal") return PatternKind::kPerezLum;
-    }
-    if (p.type == "brightdata" && p.strings.size() >= 3 && p.strings[2] == "source.cal") {
-      const std::string& f = p.strings[0];
-      if (f == "corr" || f == "flatcorr" || f == "boxcorr" || f == "cylcorr") return PatternKind::kSourceDistribution;
-    }
-    return std::nullopt;
-  }
-
-  // The file a pattern needs, for messages: the picture of *pict types, the data file of *data
-  // types, the font of *text types, else the function file (Radiance reference manual, argument
-  // order of each type). "." is a function written inline.
-  static std::string patternFile(const Primitive& p) {
-    static const std::unordered_map<std::string, size_t> kIndex = {
-        {"brightfunc", 1}, {"colorfunc", 3}, {"texfunc", 3},   {"mixfunc", 3},   {"specfunc", 1},
-        {"brightdata", 1}, {"colordata", 3}, {"texdata", 3},   {"mixdata", 3},   {"specdata", 1},
-        {"colorpict", 3},  {"mixpict", 3},   {"specpict", 1},  {"brighttext", 0}, {"colortext", 0},
-        {"mixtext", 2},    {"specfile", 0}};
-    const auto it = kIndex.find(p.type);
-    if (it == kIndex.end() || p.strings.size() <= it->second) return {};
-    return p.strings[it->second];
-  }
-
   // A `source` modified by a pattern with no material under it (`skyfunc source skydome`): in
   // Radiance it is invisible and emits nothing, here too, with a warning.
   bool sourceOfAPattern(const Primitive& p) {
@@ -322,11 +285,8 @@ class SceneReader::Builder {
       } catch (const InputError& e) {
         if (options_.patterns == PatternPolicy::kRefuse) {
           // Kept until something uses the pattern (the message names the file that failed).
-          deferred_.insert_or_assign(p.name, InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
-                                                               (isMixture(p) ? "s it mixes" : " it modifies") +
-                                                               " unmodified, with a warning"));
-          materials_.erase(p.name);
-          patterns_.erase(p.name);
+          defer(p.name, InputError(e.loc(), e.message() + "; run with --patterns base to use the material" +
+                                                (isMixture(p) ? "s it mixes" : " it modifies") + " unmodified, with a warning"));
           return;
         }
         unreadable = " (" + e.message() + ")";
@@ -457,10 +417,7 @@ class SceneReader::Builder {
       if (p.modifier != "void" && !materials_.count(p.modifier) && !patterns_.count(p.modifier) &&
           !deferred_.count(p.modifier))
         throw;
-      deferred_.insert_or_assign(p.name, e);
-      materials_.erase(p.name);
-      patterns_.erase(p.name);
-      return;
+      return defer(p.name, e);
     }
     m.type = family.type();
     if (m.pattern >= 0 && scene_.patterns[static_cast<size_t>(m.pattern)].source && !family.emits())
@@ -500,10 +457,7 @@ class SceneReader::Builder {
     } catch (const InputError& e) {
       // An antimatter is refused only when a surface uses it (the reader's rule).
       if (!reachesKept && m.type != MaterialType::kAntimatter) throw;
-      deferred_.insert_or_assign(p.name, e);
-      materials_.erase(p.name);
-      patterns_.erase(p.name);
-      return;
+      return defer(p.name, e);
     }
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     patterns_.erase(p.name);
