@@ -11,6 +11,7 @@
 #pragma once
 
 #include "base/math.h"
+#include "base/units.h"
 
 #include <memory>
 #include <string>

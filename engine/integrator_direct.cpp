@@ -298,7 +298,8 @@ Rgb directIrradiance(TraceContext& ctx, const Receiver& at, int k, double* varia
   // Sources seen in flat mirrors, as virtual sources.
   if (!tracer.sources().mirrors.empty()) total += mirrorIrradiance(ctx, at, k, variance);
   if (ctx.tally && ctx.tally->suns && atPathVertex) tallySuns(ctx, at);
-  if (scene.sky && !(ctx.tally && !ctx.tally->patches)) total += skyIrradiance(ctx, at, k, variance, misRatio);
+  if (scene.sky && !(ctx.tally && !ctx.tally->patches) && !(at.filter && !at.filter->takesSky()))
+    total += skyIrradiance(ctx, at, k, variance, misRatio);
   return total;
 }
 

@@ -24,6 +24,8 @@ class LightFilter {
  public:
   virtual Rgb source(const Vec3& dir, double omegaSr) const = 0;
   virtual Rgb sky(const Vec3& dir) const = 0;
+  // Whether the sky is sampled here at all (false: it arrives by the paths leaving the point).
+  virtual bool takesSky() const { return true; }
 
  protected:
   ~LightFilter() = default;

@@ -179,11 +179,13 @@ class SourceBrdfFilter final : public LightFilter {
  public:
   SourceBrdfFilter(TraceContext& ctx, const Material& m, const PatternPoint& at, bool transmitted)
       : ctx_(ctx), m_(m), at_(at), transmitted_(transmitted),
-        sky_((transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * kInvPi) {}
+        sky_((transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * kInvPi),
+        takesSky_(!familyOf(m).samplesScattering(m)) {}
   Rgb source(const Vec3& dir, double omegaSr) const override {
     return familyOf(m_).sourceBrdf(m_, at_, ctx_.patterns(), dir, omegaSr, transmitted_);
   }
   Rgb sky(const Vec3&) const override { return sky_; }
+  bool takesSky() const override { return takesSky_; }
 
  private:
   TraceContext& ctx_;
@@ -191,12 +193,55 @@ class SourceBrdfFilter final : public LightFilter {
   const PatternPoint& at_;
   bool transmitted_;
   Rgb sky_;
+  bool takesSky_;  // false: the sky arrives by the drawn paths (sampleScattering)
 };
+
+// Light leaving a vertex v of a material whose paths go on by its scattering function (BSDF,
+// aBSDF: MaterialFamily::sampleScattering): the sampled sources on both sides by the function in
+// their direction, everything else (the sky included, counted in full) along k drawn
+// continuations, which do not count the sources sampled here; a straight (direct) part goes on
+// as the ray that arrived, counting what it counted.
+Rgb scatterVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st) {
+  const MaterialFamily& family = familyOf(m);
+  const Vec3 nf = v.ns;
+  const Vec3 xf = v.x + v.off * v.nf, xb = v.x - v.off * v.nf;
+  const uint32_t self = v.textured ? kNoShape : v.flatSkip;
+  const int k = std::max(1, st.split);
+  const PatternPoint at{v.x, v.inDir, v.ng, v.t};
+  const SourceBrdfFilter front(ctx, m, at, false), back(ctx, m, at, true);
+  Rgb out = directIrradiance(ctx, {xf, nf, self, nullptr, &front, &st.clip}, k, nullptr, 1.0);
+  out += directIrradiance(ctx, {xb, -nf, self, nullptr, &back, &st.clip}, k, nullptr, 1.0);
+  const Vec3 beyond = xb + family.transmittedOffset(m, v.ng);
+  const Strata2D strata(k, 1.0 / kPi);
+  Rgb acc(0.0);
+  for (int j = 0; j < k; ++j) {
+    ScatterSample s;
+    if (!family.sampleScattering(m, at, strata.sample(j, ctx.rng), ctx.rng, s)) continue;
+    const TallyFactor tf(ctx.tally, s.weight / static_cast<double>(k));
+    if (s.straight) {
+      PathState through = st;
+      through.skip = v.flatSkip;
+      through.split = 1;
+      if (v.holeSide()) through.clip.clipped = static_cast<uint16_t>(v.clipBeyond);
+      acc += s.weight * pathRadiance(ctx, xb, v.inDir, through);
+      continue;
+    }
+    PathState bounce;
+    bounce.skip = self;
+    bounce.diffuse = st.diffuse + 1;
+    bounce.lighting = true;
+    bounce.clip = st.clip;
+    bounce.litPoint = s.transmitted ? xb : xf;
+    acc += s.weight * pathRadiance(ctx, s.transmitted ? beyond : xf, s.dir, bounce);
+  }
+  return out + acc / static_cast<double>(k);
+}
 
 // Light leaving a diffuse vertex v of material m towards the incoming ray. The incoming ray's
 // countSources, MIS density and ratio and flat mirrors met carry on through specular
 // transmission (trans), which keeps its direction.
 Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const PathState& st) {
+  if (familyOf(m).samplesScattering(m)) return scatterVertex(ctx, v, m, st);
   const Rgb rho = m.diffuseReflectance, tauD = m.diffuseTransmittance, tauS = m.specularTransmittance;
   // Directions by the shading normal (a texture turns it, as Radiance's raynormal); the points
   // off the surface by the geometric one. A textured surface is no skip for its own rays: what
@@ -345,6 +390,11 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
       if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);  // on through: newcset
+      continue;
+    }
+    if (familyOf(*m).hidesSide(*m, v.front)) {  // a proxy's hidden side: straight on
+      ray.o = v.x - v.off * v.nf;
+      st.skip = v.flatSkip;
       continue;
     }
     v.ns = shadingNormal(*m, v.nf, v.front);  // a texture turns it

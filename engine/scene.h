@@ -29,6 +29,7 @@ class SourceDistribution;
 enum class PatternKind { kSkyBright, kPerezLum, kSourceDistribution, kFunction };
 
 class RadText;
+class Bsdf;
 
 // One such pattern as read (its arguments as written, transform arguments included).
 struct ScenePattern {
@@ -151,6 +152,8 @@ struct Scene {
   // the paths of the function files read, in order (summary.json's function_files).
   std::shared_ptr<const cal::Program> functions;
   std::vector<std::string> functionFiles;
+  // The window systems' scattering the BSDF and aBSDF materials name (engine/bsdf.h), each file once.
+  std::vector<std::shared_ptr<const Bsdf>> bsdfs;
   std::vector<Shape> shapes;
   std::vector<std::string> shapeNames;
   TriangleMesh mesh;

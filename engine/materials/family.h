@@ -66,6 +66,17 @@ struct SpecularSplit {
   Part parts[2];
 };
 
+// One continuation drawn from a scattering function (MaterialFamily::sampleScattering): the
+// direction the light is sought in, its weight (value over density, the part's choice included),
+// whether it leaves on the far side, and whether it goes straight on (a direct part: sources
+// count as for the ray that arrived).
+struct ScatterSample {
+  Vec3 dir{0.0};
+  Rgb weight{0.0};
+  bool transmitted = false;
+  bool straight = false;
+};
+
 // Mirror direction of d about unit normal n.
 inline Vec3 mirrorDirection(const Vec3& d, const Vec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
@@ -84,6 +95,9 @@ struct MaterialReadContext {
   // material, or a pattern replaced by its base); a name not defined, or one whose refusal is kept,
   // is refused: WGMDfunc's parts' modifiers.
   std::function<int(const std::string&)> findPattern;
+  // The window system's scattering of a BSDF file the primitive names (engine/bsdf.h), read once
+  // per file and owned by the scene; InputError at the primitive when it cannot be found or read.
+  std::function<const Bsdf*(const std::string&)> findBsdf;
 
   [[noreturn]] void fail(const std::string& message) const;
   // "TYPE 'NAME'", the start of every message about the primitive.
@@ -191,6 +205,23 @@ class MaterialFamily {
                          const Vec3& /*ldir*/, double /*omegaSr*/, bool /*transmitted*/) const {
     return Rgb(0.0);
   }
+
+  // kScatter families whose paths go on in directions drawn from a scattering function (BSDF,
+  // aBSDF) instead of the diffuse, lobe and straight parts; their sampled sources' light is
+  // sourceBrdf's (directionalSources), the sky's arrives along the drawn paths only.
+  virtual bool samplesScattering(const Material& /*m*/) const { return false; }
+  // One continuation for the ray met at p (its direction p.d, the material's parts as the hook
+  // left them), u two stratified uniform numbers; false when the path ends there.
+  virtual bool sampleScattering(const Material& /*m*/, const PatternPoint& /*p*/, const Vec2& /*u*/, Rng& /*rng*/,
+                                ScatterSample& /*s*/) const {
+    return false;
+  }
+  // Where a transmitted continuation starts, from the hit (BSDF's thickness: beyond a proxy's
+  // detail geometry); geometric normal ng.
+  virtual Vec3 transmittedOffset(const Material& /*m*/, const Vec3& /*ng*/) const { return Vec3(0.0); }
+  // Whether rays arriving on that side (front: the normal's) pass straight on (a BSDF proxy's
+  // hidden side).
+  virtual bool hidesSide(const Material& /*m*/, bool /*front*/) const { return false; }
 
   // kSpecular: one sampled event (paths), or every part at once (the camera).
   virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,

@@ -14,13 +14,15 @@
 
 namespace candela {
 
+class Bsdf;
+
 // The material families, one a file in engine/materials/ (registry.cpp: the table, in this order).
 enum class MaterialType {
   kVoid, kPlastic, kMetal, kTrans, kMirror, kGlass, kDielectric, kLight, kIllum, kGlow, kMixture, kInterface,
   kPlastic2, kMetal2, kTrans2, kMist, kBrtdFunc, kPlasFunc, kMetFunc, kTransFunc, kPlasData, kMetData, kTransData,
-  kAshik2, kWgmdFunc, kAntimatter
+  kAshik2, kWgmdFunc, kAntimatter, kBsdf, kABsdf
 };
-inline constexpr int kMaterialTypeCount = 26;
+inline constexpr int kMaterialTypeCount = 28;
 
 // Radiance's name of the type ("plastic", ...): the family's (engine/materials/registry.cpp).
 const char* materialTypeName(MaterialType t);
@@ -38,7 +40,7 @@ struct MaterialParameters {
   // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u and the u direction at a
   // hit (world, set by engine/materials/pattern_hook.h; zero until then).
   double roughnessV = 0.0;
-  Vec3 anisotropyU{0.0};
+  Vec3 anisotropyU{0.0};  // BSDF, aBSDF: the up vector at a hit (world)
   // At a hit: the perturbation of the front normal by the textures modifying the material
   // (texfunc, texdata: Radiance's r->pert, world), set by engine/materials/pattern_hook.h; zero
   // elsewhere.
@@ -88,6 +90,11 @@ struct MaterialParameters {
   // WGMDfunc: the pattern of each part's own modifier (rs_mod, ts_mod, td_mod; an index into
   // Scene::patterns), -1 where the part inherits the material's or has none.
   std::array<int, 3> partPatterns{-1, -1, -1};
+  // BSDF, aBSDF (engine/materials/bsdf.cpp): the window system's scattering (Scene::bsdfs owns
+  // it) and BSDF's thickness (m; 0 for aBSDF). color, backColor and transmissionColor
+  // hold the diffuse parts added to it (front reflection, back reflection, transmission).
+  const Bsdf* bsdf = nullptr;  // owned by the scene
+  double thicknessM = 0.0;
   int pattern = -1;                  // the pattern modifying it that candela implements
                                      // (index into Scene::patterns; -1: none)
   // Antimatter (engine/antimatter.h): clipBit, this material's bit in the rays' clip sets when an

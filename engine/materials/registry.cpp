@@ -39,6 +39,8 @@ constexpr Entry kFamilies[] = {
     {ashik2Family, {"ashik2", nullptr}},
     {wgmdFuncFamily, {"WGMDfunc", nullptr}},
     {antimatterFamily, {"antimatter", nullptr}},
+    {bsdfFamily, {"BSDF", nullptr}},
+    {aBsdfFamily, {"aBSDF", nullptr}},
 };
 static_assert(std::size(kFamilies) == kMaterialTypeCount, "one family for every MaterialType, in its order");
 

@@ -32,5 +32,7 @@ const MaterialFamily& transDataFamily();
 const MaterialFamily& ashik2Family();
 const MaterialFamily& wgmdFuncFamily();
 const MaterialFamily& antimatterFamily();
+const MaterialFamily& bsdfFamily();
+const MaterialFamily& aBsdfFamily();
 
 }  // namespace candela

@@ -1,6 +1,7 @@
 #include "engine/radiance/function_patterns.h"
 
 #include "base/input_file.h"
+#include "engine/radiance/bsdf_xml.h"
 #include "engine/radiance/file_lookup.h"
 #include "engine/radiance/picture.h"
 #include "engine/radiance/spectrum.h"
@@ -24,7 +25,7 @@ const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const Ra
   const std::string key = role + ":" + std::filesystem::weakly_canonical(path, ec).string();
   auto it = read_.find(key);
   if (it == read_.end()) {
-    Read r{path.string(), {}, nullptr, nullptr};
+    Read r{path.string(), {}, nullptr, nullptr, nullptr};
     read(path, r);
     files_.push_back(path.string());
     it = read_.emplace(key, std::move(r)).first;
@@ -85,6 +86,13 @@ std::shared_ptr<const std::vector<std::string>> FunctionFiles::textLines(const s
            const std::string text = readPatternFile(path, p, "text file", kMaxTextFileBytes);
            r.lines = std::make_shared<const std::vector<std::string>>(textFileLines(text));
          }).lines;
+}
+
+std::shared_ptr<const Bsdf> FunctionFiles::bsdf(const std::string& name, const RadPrimitive& p,
+                                                const std::filesystem::path& folder) {
+  return once(name, p, folder, "BSDF file", [](const std::filesystem::path& path, Read& r) {
+           r.bsdf = readBsdfXml(path);  // its errors at the XML's line
+         }).bsdf;
 }
 
 namespace {
@@ -420,7 +428,9 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   // file; plastic2, metal2, trans2, ashik2: ux uy uz file; BRTDfunc: its specular reflectance (part 0)
   // and transmittance (part 1) of rrefl grefl brefl rtrns gtrns btrns rbrtd gbrtd bbrtd file.
   const bool mixture = p.type == "mixfunc";
-  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2" || p.type == "ashik2";
+  // BSDF: thick file ux uy uz funcfile; aBSDF: file ux uy uz funcfile (the up vector).
+  const size_t vectorAt = p.type == "BSDF" ? 2 : p.type == "aBSDF" ? 1 : 0;
+  const bool vector = p.type == "plastic2" || p.type == "metal2" || p.type == "trans2" || p.type == "ashik2" || vectorAt > 0;
   sp.texture = p.type == "texfunc";  // xpert ypert zpert funcfile
   const bool brtd = p.type == "BRTDfunc";
   // WGMDfunc: rs rs_urough rs_vrough (part 0), ts ts_urough ts_vrough (part 1), ux uy uz (part 2)
@@ -430,14 +440,16 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
     throw InputError(p.loc, what + " needs 13 or more string arguments (rs_mod rs rs_urough rs_vrough ts_mod ts "
                                    "ts_urough ts_vrough td_mod ux uy uz funcfile [transform]), got " +
                                 std::to_string(p.strings.size()));
-  if (vector && p.strings.size() < 4)
-    throw InputError(p.loc, what + " needs 4 or more string arguments (ux uy uz funcfile [transform]), got " +
-                                std::to_string(p.strings.size()));
+  if (vector && p.strings.size() < 4 + vectorAt)
+    throw InputError(p.loc, what + " needs " + std::to_string(4 + vectorAt) + " or more string arguments (" +
+                                (p.type == "BSDF" ? "thick BSDFfile " : vectorAt ? "BSDFfile " : "") +
+                                "ux uy uz funcfile [transform]), got " + std::to_string(p.strings.size()));
   if (brtd && p.strings.size() < 10)
     throw InputError(p.loc, what + " needs 10 or more string arguments (rrefl grefl brefl rtrns gtrns btrns rbrtd "
                                    "gbrtd bbrtd funcfile [transform]), got " + std::to_string(p.strings.size()));
   sp.channels = p.type == "colorfunc" || vector || brtd || wgmd || sp.texture ? 3 : 1;
-  const size_t firstFunction = mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : wgmd ? 4 * static_cast<size_t>(part) + 1 : 0;
+  const size_t firstFunction =
+      mixture ? 2 : brtd ? 3 * static_cast<size_t>(part) : wgmd ? 4 * static_cast<size_t>(part) + 1 : vectorAt;
   const size_t fileAt = brtd ? 9 : wgmd ? 12 : firstFunction + static_cast<size_t>(sp.channels);
   files.load(p.strings[fileAt], p, folder);
   RadTransform toWorld;

@@ -48,6 +48,8 @@ class FunctionFiles {
                                       const std::filesystem::path& folder);
   std::shared_ptr<const std::vector<std::string>> textLines(const std::string& name, const RadPrimitive& p,
                                                             const std::filesystem::path& folder);
+  // A window system's scattering (LBNL BSDF XML: engine/radiance/bsdf_xml.h) named by p, read once.
+  std::shared_ptr<const Bsdf> bsdf(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder);
   // The files read, in order (for summary.json).
   const std::vector<std::string>& files() const { return files_; }
 
@@ -58,6 +60,7 @@ class FunctionFiles {
     Arrays arrays;     // what a data file or picture holds (none for a function file)
     std::shared_ptr<const RadFont> font;                    // a font file's glyphs
     std::shared_ptr<const std::vector<std::string>> lines;  // a text file's lines
+    std::shared_ptr<const Bsdf> bsdf;                       // a BSDF file's scattering
   };
   // Finds `name` (a `role`: "function file", "data file", "picture", "font file", "text file") as
   // every file a scene names is found; the first time its canonical path is met in that role,

@@ -450,6 +450,14 @@ class SceneReader::Builder {
                                     Primitive named = p;
                                     named.modifier = name;
                                     return patternOf(named);
+                                  },
+                                  // A BSDF file that cannot be read refuses the material where a
+                                  // surface uses it, as its function files do.
+                                  [this, &p, &reachesKept](const std::string& name) {
+                                    reachesKept = true;
+                                    const Bsdf* b = bsdfOf(p, name);
+                                    reachesKept = false;
+                                    return b;
                                   }};
     try {
       family.read(ctx, m);
@@ -461,6 +469,16 @@ class SceneReader::Builder {
     }
     materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
     patterns_.erase(p.name);
+  }
+
+  // The scattering of BSDF file `name` named by p, each file once in Scene::bsdfs.
+  const Bsdf* bsdfOf(const Primitive& p, const std::string& name) {
+    const std::shared_ptr<const Bsdf> b = functionFiles_.bsdf(name, p, folderOf(p));
+    scene_.functionFiles = functionFiles_.files();
+    for (const auto& known : scene_.bsdfs)
+      if (known == b) return known.get();
+    scene_.bsdfs.push_back(b);
+    return b.get();
   }
 
   // An antimatter's materials get their bits in the rays' clip sets (engine/antimatter.h), numbered

@@ -1,0 +1,229 @@
+// The BSDF and aBSDF materials (engine/materials/bsdf.cpp) against closed forms, with scattering
+// functions defined here (the XML files' reader has tests of its own): a horizontal window of
+// infinite extent at height 1 under a uniform sky or a sun, a sensor below it.
+//   - A Lambertian transmitter f = τ/π: the window's luminance is τ E_v/π everywhere, so a sensor
+//     facing it reads τ E_v (the sun: exact, every path sees the same; the sky: within 4 standard
+//     errors), and a vertical sensor τ E_v/2.
+//   - f = k cos θ_out (k = 3τ/2π, hemispherical τ): the same horizontal reading, a vertical one of
+//     τ E_v/π instead of τ E_v/2: the direction of the light leaving is the function's.
+//   - A transmitter sampled with a density far from its value stays unbiased.
+//   - A Lambertian reflector ρ/π facing up as a floor: a sensor facing it reads ρ E_v.
+//   - aBSDF with a direct part of 0.6: the sun and the sky straight through, 0.6 E.
+// The window's edge is 1e4 m away: what it leaves of the hemisphere changes readings by < 1e-7.
+#include "engine/bsdf.h"
+#include "engine/daylight.h"
+#include "engine/irradiance_estimator.h"
+#include "engine/radiance/reader.h"
+#include "engine/tracer.h"
+#include "photometry/sky_type.h"
+#include "tests/support/temp_files.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+namespace candela {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A scattering function given by f(in, out) in local coordinates, drawn cosine-weighted on the
+// side `drawOn` asks (so that a draw's density differs from f's shape), with an optional direct
+// part.
+class TestBsdf final : public Bsdf {
+ public:
+  using F = std::function<double(const Vec3& in, const Vec3& out)>;
+  // albedo(out, transmitted): ∫ f |cos in| d(in) over the side, in closed form (each test checks
+  // it against quadrature, albedoByQuadrature).
+  using A = std::function<double(const Vec3& out, bool transmitted)>;
+  TestBsdf(F f, A albedo, double peak = 0.0) : f_(std::move(f)), albedo_(std::move(albedo)), peak_(peak) {}
+  Rgb eval(const Vec3& in, const Vec3& out, bool) const override { return Rgb(f_(in, out)); }
+  bool sampleIn(const Vec3& out, const Vec2& u, double pick, Sample& s, bool) const override {
+    // Each side with probability 1/2, cosine-weighted on it.
+    const double side = pick < 0.5 ? 1.0 : -1.0;
+    const double r = std::sqrt(u.x), phi = kTwoPi * u.y;
+    s.in = Vec3(r * std::cos(phi), r * std::sin(phi), side * std::sqrt(std::max(0.0, 1.0 - u.x)));
+    s.pdf = 0.5 * std::abs(s.in.z) * kInvPi;
+    if (!(s.pdf > 0.0)) return false;
+    s.weight = Rgb(f_(s.in, out) * std::abs(s.in.z) / s.pdf);
+    return true;
+  }
+  double pdfIn(const Vec3& in, const Vec3&, bool) const override { return 0.5 * std::abs(in.z) * kInvPi; }
+  Rgb albedoToward(const Vec3& out, bool transmitted, bool) const override { return Rgb(albedo_(out, transmitted)); }
+  Rgb hemispherical(const Vec3& in, bool transmitted) const override { return Rgb(albedo_(in, transmitted)); }
+  Rgb peakThrough(const Vec3&) const override { return Rgb(peak_); }
+  bool reflects(bool) const override { return true; }
+  bool transmits() const override { return true; }
+  std::string kind() const override { return "test"; }
+
+  // ∫ f |cos in| d(in) over the side by a midpoint rule in (cos θ, φ), 200 × 200 cells.
+  double albedoByQuadrature(const Vec3& out, bool transmitted) const {
+    double sum = 0.0;
+    const int n = 200;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double mu = (i + 0.5) / n, phi = kTwoPi * (j + 0.5) / n, st = std::sqrt(1.0 - mu * mu);
+        const double z = ((out.z > 0.0) != transmitted) ? mu : -mu;
+        sum += f_(Vec3(st * std::cos(phi), st * std::sin(phi), z), out) * mu;
+      }
+    return sum * kTwoPi / (n * n);
+  }
+  void expectAlbedoAsQuadrature() const {
+    for (const Vec3& out : {Vec3(0, 0, 1), Vec3(0.6, 0, 0.8), Vec3(0, -0.8, -0.6)})
+      for (bool t : {false, true}) EXPECT_NEAR(albedo_(out, t), albedoByQuadrature(out, t), 1e-4);
+  }
+
+ private:
+  F f_;
+  A albedo_;
+  double peak_;
+};
+
+constexpr double kSunL = 1e5;  // W/sr/m²
+constexpr double kSunDeg = 0.5;
+constexpr double kSkyLux = 10000.0;
+
+double sunSolidAngle() { return kTwoPi * (1.0 - std::cos(degToRad(kSunDeg / 2))); }
+double sunLux(double zenithDeg) { return kLumensPerWatt * kSunL * sunSolidAngle() * std::cos(degToRad(zenithDeg)); }
+
+std::string sun(double zenithDeg) {
+  const double t = degToRad(zenithDeg);
+  return "void light sunl 0 0 3 " + std::to_string(kSunL) + " " + std::to_string(kSunL) + " " + std::to_string(kSunL) +
+         "\nsunl source sun 0 0 4 0 " + std::to_string(std::sin(t)) + " " + std::to_string(std::cos(t)) + " " +
+         std::to_string(kSunDeg) + "\n";
+}
+
+// A plane at height z of material `material` (a trans stand-in the test turns into the BSDF),
+// its normal down (the room below: Radiance's BSDF normal points into the room) or up.
+std::string plane(double z, bool up) {
+  const std::string h = std::to_string(z);
+  return "stand polygon window 0 0 12 -1e4 -1e4 " + h + (up ? "  1e4 -1e4 " : "  -1e4 1e4 ") + h + "  1e4 1e4 " + h +
+         (up ? "  -1e4 1e4 " : "  1e4 -1e4 ") + h + "\n";
+}
+
+// The scene with the stand-in turned into `type` (BSDF or aBSDF) with scattering b.
+Scene window(const std::string& name, const std::string& text, const Bsdf& b, MaterialType type, bool sky) {
+  const fs::path dir = test_support::scratchDir("bsdf_material", name);
+  std::ofstream(dir / "scene.rad") << "void trans stand 0 0 7 .5 .5 .5 0 0 .5 0\n" << text;
+  Scene sc;
+  readRadianceFile(dir / "scene.rad", sc);
+  for (Material& m : sc.materials)
+    if (m.name == "stand") {
+      m.type = type;
+      m.bsdf = &b;
+      m.color = m.backColor = m.transmissionColor = Rgb(0.0);
+      deriveMaterial(m);
+      m.anisotropyU = Vec3(0.0, 1.0, 0.0);
+    }
+  if (sky) {
+    DaylightSpec d;
+    d.skyType = parseSkyType("uniform").value();
+    d.diffuseHorizontalLux = kSkyLux;
+    d.groundReflectance = 0.0;
+    addDaylight(sc, d);
+  }
+  return sc;
+}
+
+IrradianceEstimate measure(const Scene& sc, const Vec3& at, const Vec3& n, int samples = 4096) {
+  TraceSettings s;
+  s.seed = 5;
+  s.hemisphereSamples = samples;
+  s.maxBounces = 3;
+  return estimateIrradiance(Tracer(sc), at, Response::planar(n), 0, s);
+}
+
+void expectWithin4Se(const IrradianceEstimate& e, double want, const std::string& what) {
+  EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux() + 1e-6 * want) << what;
+  EXPECT_LT(e.standardErrorLux(), 0.02 * want) << what;  // the test can fail: the error is small
+}
+
+const Vec3 kUp(0, 0, 1), kDown(0, 0, -1), kEast(1, 0, 0);
+const Vec3 kBelow(0.3, 0.2, 0.0), kAbove(0.3, 0.2, 2.0);
+
+// Transmission only, on opposite sides.
+double lambertT(const Vec3& in, const Vec3& out, double tau) { return (in.z > 0.0) != (out.z > 0.0) ? tau * kInvPi : 0.0; }
+const TestBsdf kLambert([](const Vec3& in, const Vec3& out) { return lambertT(in, out, 0.5); },
+                        [](const Vec3&, bool t) { return t ? 0.5 : 0.0; });
+
+TEST(BsdfMaterial, TheTestFunctionsAlbedosAreTheirIntegrals) { kLambert.expectAlbedoAsQuadrature(); }
+
+TEST(BsdfMaterial, LambertianTransmitterUnderTheSunGivesTauEExactly) {
+  const TestBsdf& b = kLambert;
+  for (double zen : {0.0, 35.0}) {
+    const Scene sc = window("sun" + std::to_string(int(zen)), sun(zen) + plane(1.0, false), b, MaterialType::kBsdf, false);
+    const double e = measure(sc, kBelow, kUp).illuminanceLux();
+    EXPECT_NEAR(e, 0.5 * sunLux(zen), 1e-4 * sunLux(zen)) << zen;
+    // A vertical sensor sees the window's uniform luminance τE/π over a quarter sphere: τE/2.
+    const IrradianceEstimate v = measure(sc, kBelow, kEast);
+    EXPECT_NEAR(v.illuminanceLux(), 0.25 * sunLux(zen), 4.0 * v.standardErrorLux() + 1e-4 * sunLux(zen)) << zen;
+  }
+}
+
+TEST(BsdfMaterial, LambertianTransmitterUnderAUniformSkyGivesTauE) {
+  const TestBsdf& b = kLambert;
+  const Scene sc = window("sky", plane(1.0, false), b, MaterialType::kBsdf, true);
+  expectWithin4Se(measure(sc, kBelow, kUp), 0.5 * kSkyLux, "horizontal");
+  expectWithin4Se(measure(sc, kBelow, kEast), 0.25 * kSkyLux, "vertical");
+}
+
+TEST(BsdfMaterial, TheLightLeavesInTheFunctionsDirections) {
+  // f = k cos θ_out towards the room, k = 3τ/2π: hemispherical τ; a horizontal sensor reads τE,
+  // a vertical one τE/π (a Lambertian window: τE/2).
+  const double tau = 0.5, k = 3.0 * tau / kTwoPi;
+  const TestBsdf b([k](const Vec3& in, const Vec3& out) { return (in.z > 0.0) != (out.z > 0.0) ? k * std::abs(out.z) : 0.0; },
+                   [k](const Vec3& out, bool t) { return t ? k * std::abs(out.z) * kPi : 0.0; });
+  b.expectAlbedoAsQuadrature();
+  const Scene sun0 = window("cosout", sun(0.0) + plane(1.0, false), b, MaterialType::kBsdf, false);
+  EXPECT_NEAR(measure(sun0, kBelow, kUp).illuminanceLux(), tau * sunLux(0.0), 1e-4 * sunLux(0.0));
+  const IrradianceEstimate v = measure(sun0, kBelow, kEast);
+  EXPECT_NEAR(v.illuminanceLux(), tau * sunLux(0.0) / kPi, 4.0 * v.standardErrorLux() + 1e-6 * sunLux(0.0));
+  EXPECT_LT(v.standardErrorLux(), 0.01 * sunLux(0.0));
+  // Under the sky the same, the sky's light arriving only by the paths drawn from the function.
+  const Scene sky = window("cosout-sky", plane(1.0, false), b, MaterialType::kBsdf, true);
+  expectWithin4Se(measure(sky, kBelow, kUp), tau * kSkyLux, "sky horizontal");
+  expectWithin4Se(measure(sky, kBelow, kEast), tau * kSkyLux / kPi, "sky vertical");
+}
+
+TEST(BsdfMaterial, AFunctionOfTheIncomingDirectionIsTakenAtTheSourcesDirection) {
+  // f = c (cos θ_in)² transmitted: the sun at zenith angle θ gives the window the luminance
+  // c cos² θ E_sun,n cos θ … and a horizontal sensor π times it.
+  const double c = 0.3;
+  const TestBsdf b([c](const Vec3& in, const Vec3& out) { return (in.z > 0.0) != (out.z > 0.0) ? c * in.z * in.z : 0.0; },
+                   [c](const Vec3&, bool t) { return t ? c * kPi / 2.0 : 0.0; });
+  b.expectAlbedoAsQuadrature();
+  for (double zen : {0.0, 50.0}) {
+    const Scene sc = window("cosin" + std::to_string(int(zen)), sun(zen) + plane(1.0, false), b, MaterialType::kBsdf, false);
+    const double cz = std::cos(degToRad(zen));
+    EXPECT_NEAR(measure(sc, kBelow, kUp).illuminanceLux(), kPi * c * cz * cz * sunLux(zen), 1e-4 * sunLux(zen)) << zen;
+  }
+}
+
+TEST(BsdfMaterial, LambertianReflectorGivesRhoE) {
+  const TestBsdf b([](const Vec3& in, const Vec3& out) { return (in.z > 0.0) == (out.z > 0.0) ? 0.4 * kInvPi : 0.0; },
+                   [](const Vec3&, bool t) { return t ? 0.0 : 0.4; });
+  b.expectAlbedoAsQuadrature();
+  // A floor at 0 facing up; the sensor at 2 m facing it.
+  const Scene sunny = window("floor-sun", sun(30.0) + plane(0.0, true), b, MaterialType::kBsdf, false);
+  EXPECT_NEAR(measure(sunny, kAbove, kDown).illuminanceLux(), 0.4 * sunLux(30.0), 1e-4 * sunLux(30.0));
+  const Scene sky = window("floor-sky", plane(0.0, true), b, MaterialType::kBsdf, true);
+  expectWithin4Se(measure(sky, kAbove, kDown), 0.4 * kSkyLux, "sky");
+}
+
+TEST(BsdfMaterial, ABsdfLetsItsDirectPartStraightThrough) {
+  // Nothing scattered, 0.6 straight through: the sun and the sky at 0.6 of their light.
+  const TestBsdf b([](const Vec3&, const Vec3&) { return 0.0; }, [](const Vec3&, bool) { return 0.0; }, 0.6);
+  const Scene sunny = window("absdf-sun", sun(35.0) + plane(1.0, false), b, MaterialType::kABsdf, false);
+  EXPECT_NEAR(measure(sunny, kBelow, kUp).illuminanceLux(), 0.6 * sunLux(35.0), 1e-4 * sunLux(35.0));
+  const Scene sky = window("absdf-sky", plane(1.0, false), b, MaterialType::kABsdf, true);
+  expectWithin4Se(measure(sky, kBelow, kUp), 0.6 * kSkyLux, "sky");
+  // BSDF stops shadow rays: the same function as a BSDF lets nothing through.
+  const Scene stopped = window("bsdf-stops", sun(35.0) + plane(1.0, false), b, MaterialType::kBsdf, false);
+  EXPECT_EQ(measure(stopped, kBelow, kUp).illuminanceLux(), 0.0);
+}
+
+}  // namespace
+}  // namespace candela
