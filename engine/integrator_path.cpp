@@ -304,6 +304,19 @@ Rgb diffuseVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
       bounce.misOrigin = xb;
       bounce.misNormal = -nf;
       acc += tauD * (norm / pTd) * pathRadiance(ctx, xb, dir, bounce);
+    } else if (u < pRho + pTd + pTs && familyOf(m).roughTransmission(m)) {
+      // A rough specular transmission (WGMDfunc): a draw of its lobe, counting the sources it
+      // meets (none are sampled for it), a bounce as glossy reflections are.
+      Vec3 dir(0.0);
+      if (!familyOf(m).sampleTransmittedLobe(m, v.inDir, nf, ctx.rng, dir)) continue;
+      const TallyFactor tf(ctx.tally, tauS * (norm / pTs / k));
+      PathState lobe;
+      lobe.skip = self;
+      lobe.countSources = true;
+      lobe.diffuse = st.diffuse + 1;
+      lobe.lighting = true;
+      lobe.clip = st.clip;
+      acc += tauS * (norm / pTs) * pathRadiance(ctx, xb, dir, lobe);
     } else if (u < pRho + pTd + pTs) {
       // Specular transmission (trans): straight on, as Radiance's trans does with roughness 0.
       // Straight on, so sources count as they did for the incoming ray (shadow rays through the

@@ -221,7 +221,9 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   }
   // plastic, metal, trans. A material whose sources' light depends on its direction (plasfunc,
   // BRTDfunc's directional functions) has no irradiance to stand for it: the path tracer's answer.
-  if (cr.estimatesLeft < 2 || family.directionalSources(*m)) return plainPath(cr, o, d, skip);
+  // A rough transmission's lobe (WGMDfunc) is the path tracer's too.
+  if (cr.estimatesLeft < 2 || family.directionalSources(*m) || family.roughTransmission(*m))
+    return plainPath(cr, o, d, skip);
   cr.estimatesLeft -= 2;  // at most two estimates (front and back)
   return surfaceRadiance(cr, *m, x, d, nf, shadingNormal(*m, nf, front), off, flatSkip, share, events);
 }

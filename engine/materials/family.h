@@ -182,6 +182,14 @@ class MaterialFamily {
   virtual Rgb lobeWeight(const Material& m, const Vec3& /*inDir*/, const Vec3& /*nf*/, const Vec3& /*out*/) const {
     return m.specularReflectance;
   }
+  // kScatter: whether m's specular transmission is a rough lobe about the straight-through
+  // direction (WGMDfunc with ts roughness) rather than straight through; then one direction of it
+  // for a ray arriving along inDir, nf the normal facing that ray (false: the draw was lost).
+  virtual bool roughTransmission(const Material& /*m*/) const { return false; }
+  virtual bool sampleTransmittedLobe(const Material& /*m*/, const Vec3& /*inDir*/, const Vec3& /*nf*/, Rng& /*rng*/,
+                                     Vec3& /*out*/) const {
+    return false;
+  }
   // The number of patterns of functions the family's primitive names (plastic2's u direction: 1;
   // BRTDfunc's specular reflectance and transmittance: 2): the reader reads them into
   // Scene::patterns, the first at Material::functions, before read().

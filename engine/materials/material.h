@@ -40,6 +40,9 @@ struct MaterialParameters {
   // plastic2, metal2, trans2 (anisotropic Ward): the rms slope across u and the u direction at a
   // hit (world, set by engine/materials/pattern_hook.h; zero until then).
   double roughnessV = 0.0;
+  // WGMDfunc at a hit: its specular transmission's rms slopes along u and across it (0: straight
+  // through, Radiance's SP_TPURE).
+  double transmissionRoughnessU = 0.0, transmissionRoughnessV = 0.0;
   Vec3 anisotropyU{0.0};  // BSDF, aBSDF: the up vector at a hit (world)
   // At a hit: the perturbation of the front normal by the textures modifying the material
   // (texfunc, texdata: Radiance's r->pert, world), set by engine/materials/pattern_hook.h; zero

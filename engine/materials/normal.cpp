@@ -119,6 +119,28 @@ Vec3 wardHalfVector(const Vec3& u, const Vec3& v, const Vec3& n, double ax, doub
   return sinD * c * u + sinD * s * v + cosD * n;
 }
 
+bool sampleWgmdTransmission(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) {
+  Vec3 u = m.anisotropyU - glm::dot(m.anisotropyU, nf) * nf;
+  const double len = glm::length(u);
+  u = len > 1e-9 ? u / len : Frame::fromNormal(nf).toWorld(Vec3(1, 0, 0));
+  const Vec3 v = glm::cross(nf, u);
+  const double au = m.transmissionRoughnessU, av = m.transmissionRoughnessV;
+  for (int trial = 0; trial < 10; ++trial) {
+    const double phi = kTwoPi * rng.uniform();
+    double c = std::cos(phi) * au, s = std::sin(phi) * av;
+    const double norm = 1.0 / std::sqrt(c * c + s * s);
+    c *= norm;
+    s *= norm;
+    const double r = std::max(1e-300, 1.0 - rng.uniform());  // in (0, 1]
+    const double d = std::sqrt(-std::log(r) / (c * c / (au * au) + s * s / (av * av)));
+    out = inDir + d * (c * u + s * v);
+    if (glm::dot(out, nf) >= 0.0) continue;  // back on the side the ray came from
+    out = glm::normalize(out);
+    return true;
+  }
+  return false;
+}
+
 bool sampleWgmdLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) {
   const Vec3 wi = -inDir;
   if (glm::dot(wi, nf) <= 0.0) return false;

@@ -47,6 +47,13 @@ Vec3 wardHalfVector(const Vec3& u, const Vec3& v, const Vec3& n, double ax, doub
 // keeps the estimate unbiased); roughness 0 is the mirror direction.
 bool sampleWgmdLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
 
+// WGMDfunc's rough specular transmission (src/rt/m_wgmdf.c, agaussamp): the straight-through
+// direction inDir displaced in the surface's plane by Ward's anisotropic Gaussian of rms slopes
+// m.transmissionRoughnessU along u (m.anisotropyU projected) and …V across it, normalised; a
+// draw on the side the ray arrived from is drawn again, at most 10 times as Radiance's MAXITER
+// (false: all were).
+bool sampleWgmdTransmission(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);
+
 // One direction of the glossy (Ward) lobe of m for a ray arriving along inDir on the side of nf;
 // false when the sample is lost (arrival from behind, or eight draws below the surface).
 bool sampleWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out);

@@ -14,11 +14,13 @@
 //   by as much), else the anisotropic lobe sampled by its half vector (Ward 1992, eq. 5), each
 //   sample carrying ρs · 2 cos θo / (cos θi + cos θo): the W-G-M-D BRDF over the half vector's
 //   density (m_wgmdf's multi-sample weighting);
-// - specular transmission: ts times ts_mod's colour, straight through (shadow rays too).
+// - specular transmission: ts times ts_mod's colour, straight through (shadow rays too) where a
+//   roughness is 0, else a lobe about the straight-through direction drawn as m_wgmdf's
+//   agaussamp (engine/materials/normal.h), each draw carrying ts and counting the sources it
+//   meets (Radiance takes the sources' light on that lobe with dirwgmdf's Gaussian instead: the
+//   same light, another estimator); shadow rays stop there.
 // Each part's modifier: `void` (white), `inherit` or the material's own modifier (its pattern
-// colour), or a pattern of its own (its colour at the hit). What candela cannot do is refused at
-// the definition's line with the reason: a rough specular transmission (the paths send specular
-// transmission straight on only).
+// colour), or a pattern of its own (its colour at the hit).
 // Radiance weighs the sampled sources' light on the diffuse parts by a second Fresnel factor of
 // the light's angle (dirwgmdf); candela takes every light as Radiance's ambient does.
 #include "engine/materials/normal.h"
@@ -73,12 +75,7 @@ class WgmdFunc : public MaterialFamily {
       // A pattern of its own for this part (m_wgmdf's part modifiers): its colour at each hit.
       m.partPatterns[k] = ctx.findPattern(mod);
     }
-    // Radiance's transmission is straight through where a roughness is 0 (m_wgmdf's SP_TPURE).
     m.specularTransmission = p.strings[5] != "0";
-    if (m.specularTransmission && p.strings[6] != "0" && p.strings[7] != "0")
-      ctx.fail(ctx.what() + ": its specular transmission is rough (ts_urough '" + p.strings[6] + "', ts_vrough '" +
-               p.strings[7] + "'); candela's paths pass specular transmission straight through only: give 0 for "
-                              "either roughness");
   }
   // Without a hit: the front's diffuse parts (the report's table); specular parts at hits only.
   void derive(MaterialParameters& m) const override {
@@ -105,14 +102,24 @@ class WgmdFunc : public MaterialFamily {
     out.roughnessV = out.roughness > 0.0 ? std::max(0.0, rs.z) : 0.0;
     if (out.roughnessV <= kTiny) out.roughness = out.roughnessV = 0.0;  // a mirror
     Rgb ts(0.0);
+    out.transmissionRoughnessU = out.transmissionRoughnessV = 0.0;
     if (m.specularTransmission) {
-      const double t = eval.oriented(m.functions + 1, p, patternColour).x;
-      if (t > kTiny) ts = t * colourOf(kTsInherits);
+      const Rgb t = eval.oriented(m.functions + 1, p, patternColour);
+      if (t.x > kTiny) {
+        ts = t.x * colourOf(kTsInherits);
+        // Straight through where a roughness is 0 (m_wgmdf's SP_TPURE), else a rough lobe.
+        if (t.y > kTiny && t.z > kTiny) {
+          out.transmissionRoughnessU = t.y;
+          out.transmissionRoughnessV = t.z;
+        }
+      }
     }
     out.anisotropyU = eval.direction(m.functions + 2, p);
-    if (out.roughness > 0.0 && glm::length(glm::cross(ns, out.anisotropyU)) <= 1e-12) {
-      // u along the normal: the isotropic lobe of the mean square roughness (m_wgmdf's punt).
-      out.roughness = out.roughnessV = std::sqrt(0.5 * (out.roughness * out.roughness + out.roughnessV * out.roughnessV));
+    if (glm::length(glm::cross(ns, out.anisotropyU)) <= 1e-12) {
+      // u along the normal: the isotropic lobes of the mean square roughness (m_wgmdf's punt).
+      auto punt = [](double& a, double& b) { a = b = std::sqrt(0.5 * (a * a + b * b)); };
+      if (out.roughness > 0.0) punt(out.roughness, out.roughnessV);
+      if (out.transmissionRoughnessU > 0.0) punt(out.transmissionRoughnessU, out.transmissionRoughnessV);
     }
     if (out.roughness <= 0.0 && photopic(spec) >= kFresnelThreshold) {
       const double f = fresnelEstimate(std::abs(glm::dot(p.d, ns)));
@@ -135,10 +142,17 @@ class WgmdFunc : public MaterialFamily {
     if (co <= 0.0 || ci <= 0.0) return Rgb(0.0);
     return m.specularReflectance * (2.0 * co / (ci + co));
   }
+  bool roughTransmission(const Material& m) const override { return m.transmissionRoughnessU > 0.0; }
+  bool sampleTransmittedLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
+    return sampleWgmdTransmission(m, inDir, nf, rng, out);
+  }
   bool mayPassShadowRays(const Material& m) const override { return m.specularTransmission; }
   std::optional<Rgb> straightTransmittance(const Material& m, const Vec3&, const Vec3&) const override {
+    // At a hit (evaluated by the hook, pattern_hook.h): a rough transmission stops shadow rays
+    // (its light arrives by the lobe's draws, which count the sources they meet).
     if (!m.specularTransmission) return std::nullopt;
-    return m.specularTransmittance;  // at a hit: evaluated by the hook (pattern_hook.h)
+    if (m.transmissionRoughnessU > 0.0) return Rgb(0.0);
+    return m.specularTransmittance;
   }
   bool seeThrough(const Material& m) const override { return m.specularTransmission; }
   bool transmitting() const override { return true; }
