@@ -237,3 +237,14 @@ double KlemsBsdf::pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec
 }
 
 }  // namespace candela
+
+namespace candela {
+
+long KlemsBsdf::freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const {
+  const Part& p = *parts_[part];
+  const int k = fixedIsIn ? outIndex(p, free) : inIndex(p, free);
+  projSA = k < 0 ? 0.0 : (fixedIsIn ? p.m.out->projSA(k) : p.m.in->projSA(k));
+  return k;
+}
+
+}  // namespace candela

@@ -71,6 +71,7 @@ class KlemsBsdf final : public TabulatedBsdf {
   bool sampleFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec2& u, double pick, Vec3& free,
                   double& pdf) const override;
   double pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free) const override;
+  long freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const override;
 
  private:
   struct Part {

@@ -13,10 +13,6 @@ int sideOf(const Vec3& v) { return v.z > 0.0 ? 1 : (v.z < 0.0 ? -1 : 0); }
 // (src/common/bsdf_m.c, subtract_min: Y ≤ 0.01/π).
 double diffuseOfMin(double minY) { return minY > 0.01 * kInvPi ? minY : 0.0; }
 
-// Rings × azimuths of the quadrature over the peak's disc (albedoToward without the peak).
-constexpr int kDiscRings = 16;
-constexpr int kDiscAzimuths = 32;
-
 }  // namespace
 
 BsdfLookup TabulatedBsdf::lookup(const Vec3& in, const Vec3& out) const {
@@ -52,18 +48,18 @@ Rgb TabulatedBsdf::evalFull(const Vec3& in, const Vec3& out) const {
   return l.reversed ? partValue(l.part, out, in) : partValue(l.part, in, out);
 }
 
-double TabulatedBsdf::peakRadius2(const Vec3& out) const {
-  const BsdfLookup l = lookupToward(out, true);
-  if (l.part < 0) return 0.0;
-  return 2.5 * 4.0 * kInvPi * minProjSA(l.part);
-}
-
+// Without the peak, the BTDF in the peak's cells is its surround. (Radiance, sampling light
+// sources, uses the surround inside a disc around the peak, m_bsdf.c; here the cells
+// themselves, so that the albedo without the peak is exact and the draws' weights average to it.)
 Rgb TabulatedBsdf::eval(const Vec3& in, const Vec3& out, bool withoutPeak) const {
   if (withoutPeak && sideOf(in) * sideOf(out) < 0) {
-    const double dx = in.x + out.x, dy = in.y + out.y;
-    if (dx * dx + dy * dy <= peakRadius2(out)) {
-      const BsdfPeak p = peakFor(-out);
-      if (p.found) return p.surround;
+    const BsdfPeak p = peakFor(-out);
+    if (p.found) {
+      const BsdfLookup l = lookup(in, out);
+      double psa = 0.0;
+      const long c = freeCell(l.part, l.reversed, out, in, psa);
+      for (int k = 0; k < p.cells; ++k)
+        if (p.cell[k] == c) return p.surround;
     }
   }
   return evalFull(in, out);
@@ -114,23 +110,7 @@ Rgb TabulatedBsdf::albedoToward(const Vec3& out, bool transmitted, bool withoutP
   if (!withoutPeak || !transmitted) return a;
   const BsdfPeak p = peakFor(-out);
   if (!p.found) return a;
-  // Without the peak, the BTDF inside the disc around -out is the surround: subtract
-  // ∫_disc (f − surround) |cos in| d(in), by the midpoint rule over equal-area cells of the
-  // disc in the projected plane (there |cos in| dω is the area element).
-  const double r2 = peakRadius2(out);
-  const double cellArea = kPi * r2 / (kDiscRings * kDiscAzimuths);
-  const double sideIn = out.z > 0.0 ? -1.0 : 1.0;
-  for (int i = 0; i < kDiscRings; ++i) {
-    const double r = std::sqrt(r2 * (i + 0.5) / kDiscRings);
-    for (int j = 0; j < kDiscAzimuths; ++j) {
-      const double phi = kTwoPi * (j + 0.5) / kDiscAzimuths;
-      const double x = -out.x + r * std::cos(phi), y = -out.y + r * std::sin(phi);
-      const double rho2 = x * x + y * y;
-      if (rho2 >= 1.0) continue;
-      const Vec3 in(x, y, sideIn * std::sqrt(1.0 - rho2));
-      a -= (evalFull(in, out) - p.surround) * cellArea;
-    }
-  }
+  for (int k = 0; k < p.cells; ++k) a -= (p.cellValue[k] - p.surround) * p.cellProjSA[k];
   return a;
 }
 
@@ -143,8 +123,9 @@ Rgb TabulatedBsdf::hemispherical(const Vec3& in, bool transmitted) const {
   return integrateFree(l.part, !l.reversed, in);
 }
 
-// Radiance's aBSDF peak search (src/rt/m_bsdf.c, compute_through): the BTDF is evaluated at 29
-// directions around the straight-through one, spaced by √Ω_min in the projected plane; in
+// Radiance's aBSDF peak search (src/rt/m_bsdf.c, compute_through): for a viewer along −in, the
+// BTDF is evaluated for light from 29 directions around in, spaced by √Ω_min in the projected
+// plane; in
 // descending order of Y, the distinct values whose cells are not larger than 1.5·Ω_min and not
 // far below the mean of those before (8×) form the peak, the rest its surround. No peak when the
 // brightest fails, when nothing surrounds it, or when it passes less than 0.05 % above the
@@ -158,7 +139,8 @@ BsdfPeak TabulatedBsdf::peakFor(const Vec3& in) const {
       {1.8, -1.8},  {-2.4, 0},    {0, 2.4},    {0, -2.4},   {2.4, 0}};
   BsdfPeak peak;
   if (sideOf(in) == 0) return peak;
-  const BsdfLookup l = lookup(in, -in);
+  const Vec3 out = -in;
+  const BsdfLookup l = lookup(in, out);
   if (l.part < 0) return peak;
   const double minPsa = minProjSA(l.part);
   const double search = std::sqrt(minPsa);
@@ -169,8 +151,8 @@ BsdfPeak TabulatedBsdf::peakFor(const Vec3& in) const {
   };
   std::array<Probe, kN> probes;
   for (int i = 0; i < kN; ++i) {
-    const Vec3 t = glm::normalize(Vec3(-in.x + kOffsets[i][0] * search, -in.y + kOffsets[i][1] * search, -in.z));
-    const Rgb v = evalFull(in, t);
+    const Vec3 t = glm::normalize(Vec3(in.x + kOffsets[i][0] * search, in.y + kOffsets[i][1] * search, in.z));
+    const Rgb v = evalFull(t, out);
     probes[i] = {photopic(v), t, v};
   }
   std::stable_sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& b) { return a.y > b.y; });
@@ -180,21 +162,31 @@ BsdfPeak TabulatedBsdf::peakFor(const Vec3& in) const {
   int n = 0;
   for (int i = 0; i < kN; ++i) {
     if (i > 0 && probes[i].y == probes[i - 1].y) continue;  // the same cell again
-    const double omega = l.reversed ? pairProjSA(l.part, probes[i].dir, in) : pairProjSA(l.part, in, probes[i].dir);
+    const double omega = l.reversed ? pairProjSA(l.part, out, probes[i].dir) : pairProjSA(l.part, probes[i].dir, out);
     const Rgb v = probes[i].value * omega;
     if (omega > 1.5 * minPsa || yPeak > 8.0 * probes[i].y * n) {
-      if (i == 0) return peak;
+      if (i == 0) return BsdfPeak{};
       surround += v;
       omegaSurround += omega;
       continue;
+    }
+    double cellPsa = 0.0;
+    const long c = freeCell(l.part, l.reversed, out, probes[i].dir, cellPsa);
+    bool seen = false;
+    for (int k = 0; k < peak.cells; ++k) seen = seen || peak.cell[k] == c;
+    if (!seen && c >= 0) {
+      peak.cell[peak.cells] = c;
+      peak.cellProjSA[peak.cells] = cellPsa;
+      peak.cellValue[peak.cells] = probes[i].value;
+      ++peak.cells;
     }
     sum += v;
     omegaPeak += omega;
     yPeak += probes[i].y;
     ++n;
   }
-  if (omegaSurround <= 1e-9) return peak;
-  if ((yPeak / n - diffuseOfMin(minValueY(l.part))) * omegaPeak < 0.0005) return peak;
+  if (omegaSurround <= 1e-9) return BsdfPeak{};
+  if ((yPeak / n - diffuseOfMin(minValueY(l.part))) * omegaPeak < 0.0005) return BsdfPeak{};
   peak.found = true;
   peak.through = sum;
   peak.surround = surround / omegaSurround;

@@ -7,6 +7,8 @@
 #include "base/units.h"
 #include "engine/bsdf.h"
 
+#include <array>
+
 namespace candela {
 
 // The four scattering components in the local frame (+z: the XML's back, Radiance's front).
@@ -24,11 +26,17 @@ struct BsdfLookup {
   bool reversed = false;
 };
 
-// The peak of the direct ("through") component for light arriving from one direction.
+// The peak of the direct ("through") component for light arriving from one direction, as the
+// viewer on the other side sees it: the cells of the incident direction that make it.
 struct BsdfPeak {
+  static constexpr int kMaxCells = 29;  // Radiance's probes (m_bsdf.c, NDIR2CHECK)
   bool found = false;
   Rgb through{0.0};   // Σ f·Ω over the peak's cells: the fraction passing straight through
   Rgb surround{0.0};  // the mean BTDF (per sr) of the cells around it
+  int cells = 0;      // the peak's cells (incident directions for the fixed viewer)
+  std::array<long, kMaxCells> cell{};
+  std::array<double, kMaxCells> cellProjSA{};
+  std::array<Rgb, kMaxCells> cellValue{};
 };
 
 class TabulatedBsdf : public Bsdf {
@@ -42,11 +50,9 @@ class TabulatedBsdf : public Bsdf {
   bool reflects(bool plusZSide) const override;
   bool transmits() const override;
 
-  // Radiance's peak search for light from `in` (compute_through), public for the tests.
+  // Radiance's peak search for light from `in` seen from −in (compute_through), public for
+  // the tests.
   BsdfPeak peakFor(const Vec3& in) const;
-  // The radius² (in the projected x, y plane) around -out inside which the "without peak"
-  // queries replace the BTDF by the peak's surround (m_bsdf.c: (2.5·4/π)·Ω_min).
-  double peakRadius2(const Vec3& out) const;
 
  protected:
   // Which components the file gives (after dropping the insignificant ones).
@@ -70,6 +76,9 @@ class TabulatedBsdf : public Bsdf {
   virtual bool sampleFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec2& u, double pick, Vec3& free,
                           double& pdf) const = 0;
   virtual double pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free) const = 0;
+  // The cell the free direction falls in for that fixed one: an identifier (-1: none) and its
+  // projected solid angle.
+  virtual long freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const = 0;
 
   // Radiance's rule for a pair of directions: reflection on the side both are on, transmission
   // from in's side, else the other transmission by reciprocity.

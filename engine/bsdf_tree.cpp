@@ -117,7 +117,7 @@ Vec2 diskToSquare(const Vec2& d) {
   return Vec2(clampUnit(0.5 * a + 0.5), clampUnit(0.5 * b + 0.5));
 }
 
-double TensorTree::lookup(const double* posIn, double* cellSide) const {
+size_t TensorTree::locate(const double* posIn, double* cellSide) const {
   double pos[4];
   for (int d = 0; d < dims; ++d) pos[d] = clampUnit(posIn[d]);
   double side = 1.0;
@@ -139,7 +139,7 @@ double TensorTree::lookup(const double* posIn, double* cellSide) const {
   for (int d = 0; d < dims; ++d)
     k = (k << n.log2Grid) | static_cast<size_t>(std::min(g - 1, static_cast<int>(g * pos[d])));
   if (cellSide) *cellSide = side / g;
-  return values[n.first + k];
+  return n.first + k;
 }
 
 TreeBsdf::TreeBsdf(std::array<std::optional<TensorTree>, kBsdfParts> parts, std::string kind) : kind_(std::move(kind)) {
@@ -279,6 +279,25 @@ double TreeBsdf::pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec3
   pos[s.freeDim] = q.x;
   pos[s.freeDim + 1] = q.y;
   return p.tree.lookup(pos) * std::abs(free.z) / total;
+}
+
+}  // namespace candela
+
+namespace candela {
+
+long TreeBsdf::freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const {
+  const Part& p = *parts_[part];
+  const Slice s = slice(p, fixedIsIn, fixed);
+  projSA = 0.0;
+  if (free.z * s.freeSide <= 0.0) return -1;
+  const Vec2 q = freeSquare(s, free);
+  double pos[4] = {s.pos[0], s.pos[1], s.pos[2], s.pos[3]};
+  pos[s.freeDim] = q.x;
+  pos[s.freeDim + 1] = q.y;
+  double side = 0.0;
+  const size_t k = p.tree.locate(pos, &side);
+  projSA = kPi * side * side;
+  return static_cast<long>(k);
 }
 
 }  // namespace candela

@@ -30,7 +30,9 @@ struct TensorTree {
   std::vector<double> values;  // 1/sr
 
   // The value at `pos` (each coordinate in [0, 1)) and the side of its cell.
-  double lookup(const double* pos, double* cellSide = nullptr) const;
+  double lookup(const double* pos, double* cellSide = nullptr) const { return values[locate(pos, cellSide)]; }
+  // The index in `values` of the cell holding `pos`.
+  size_t locate(const double* pos, double* cellSide = nullptr) const;
 };
 
 // Shirley and Chiu's maps between the unit square [0,1]² and the unit disc.
@@ -53,6 +55,7 @@ class TreeBsdf final : public TabulatedBsdf {
   bool sampleFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec2& u, double pick, Vec3& free,
                   double& pdf) const override;
   double pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free) const override;
+  long freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const override;
 
  private:
   struct Part {
