@@ -155,7 +155,9 @@ BsdfPeak TabulatedBsdf::peakFor(const Vec3& in) const {
     const Rgb v = evalFull(t, out);
     probes[i] = {photopic(v), t, v};
   }
-  std::stable_sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& b) { return a.y > b.y; });
+  // Descending Y, by insertion (stable, and no buffer as std::stable_sort may take).
+  for (int i = 1; i < kN; ++i)
+    for (int j = i; j > 0 && probes[j - 1].y < probes[j].y; --j) std::swap(probes[j - 1], probes[j]);
   if (probes[0].y <= 1e-9) return peak;
   Rgb sum(0.0), surround(0.0);
   double yPeak = 0.0, omegaPeak = 0.0, omegaSurround = 0.0;

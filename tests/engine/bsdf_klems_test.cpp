@@ -126,6 +126,33 @@ TEST(KlemsBsdf, ClearGlassDiagonalAndItsPeak) {
   }
 }
 
+// A glass with a diffusing coat: 0.5 straight through plus a Lambertian 0.1. Without the peak
+// only the 0.1 is left, and the draws without it average to that.
+TEST(KlemsBsdf, SamplingWithoutThePeak) {
+  std::vector<double> m(kFull * kFull, 0.1 / kPi);
+  for (int k = 0; k < kFull; ++k) m[k * kFull + k] += 0.5 / klemsFullLambda(k);
+  const auto b = parseBsdfXml(bsdfXml({{"Transmission Front", m}}), "coat.xml");
+  for (int k : {0, 30}) {
+    const Vec3 out = klemsFullCentre(k);
+    EXPECT_NEAR(b->albedoToward(out, true).y, 0.6, 1e-9);
+    EXPECT_NEAR(b->peakThrough(-out).y, 0.5 + 0.1 / kPi * klemsFullLambda(k), 1e-9);
+    EXPECT_NEAR(b->albedoToward(out, true, true).y, 0.1, 1e-9);
+    EXPECT_NEAR(b->eval(-out, out, true).y, 0.1 / kPi, 1e-12);
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int n = 50000;
+    double sum = 0.0, sum2 = 0.0;
+    for (int t = 0; t < n; ++t) {
+      Bsdf::Sample s;
+      ASSERT_TRUE(b->sampleIn(out, Vec2(u(rng), u(rng)), u(rng), s, true));
+      const double w = photopic(s.weight);
+      sum += w, sum2 += w * w;
+    }
+    const double mean = sum / n, se = std::sqrt((sum2 / n - mean * mean) / n);
+    EXPECT_NEAR(mean, 0.1, 4.0 * se);
+  }
+}
+
 TEST(KlemsBsdf, HemisphericalIsTheMatrixSum) {
   const std::vector<double> m = randomMatrix(11, 0.3);
   const auto b = parseBsdfXml(bsdfXml({{"Transmission Front", m}}), "r.xml");
