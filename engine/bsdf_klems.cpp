@@ -75,6 +75,7 @@ int KlemsBasis::index(const Vec3& v) const {
     if (thetaDeg >= r.thetaHiDeg) continue;
     if (thetaDeg < r.thetaLoDeg) return -1;
     double azDeg = radToDeg(std::atan2(v.y, v.x));
+    if (!std::isfinite(azDeg)) return -1;
     if (azDeg < 0.0) azDeg += 360.0;
     int k = static_cast<int>(azDeg / 360.0 * r.nPhis + 0.5);
     if (k >= r.nPhis) k = 0;

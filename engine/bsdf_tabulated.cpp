@@ -54,8 +54,8 @@ Rgb TabulatedBsdf::evalFull(const Vec3& in, const Vec3& out) const {
 Rgb TabulatedBsdf::eval(const Vec3& in, const Vec3& out, bool withoutPeak) const {
   if (withoutPeak && sideOf(in) * sideOf(out) < 0) {
     const BsdfPeak p = peakFor(-out);
-    if (p.found) {
-      const BsdfLookup l = lookup(in, out);
+    const BsdfLookup l = lookup(in, out);
+    if (p.found && l.part >= 0) {
       double psa = 0.0;
       const long c = freeCell(l.part, l.reversed, out, in, psa);
       for (int k = 0; k < p.cells; ++k)

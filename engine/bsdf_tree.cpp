@@ -11,7 +11,8 @@ constexpr double kBelowOne = 1.0 - 1e-12;
 // Radiance's offset of the 3-D trees' first coordinate below ½ (bsdf_t.c: .5 − FTINY).
 constexpr double kTiny = 1e-6;
 
-double clampUnit(double x) { return std::clamp(x, 0.0, kBelowOne); }
+// Into [0, 1); NaN (a direction that is none) to 0.
+double clampUnit(double x) { return x > 0.0 ? std::min(x, kBelowOne) : 0.0; }
 
 Vec2 rotate(const Vec2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -43,7 +44,7 @@ bool visitSlice(const TensorTree& t, int node, const double* pos, int freeDim, d
         if (d == freeDim || d == freeDim + 1) continue;
         const int want = pos[d] >= 0.5 ? 1 : 0;
         if (bit != want) match = false;
-        sub[d] = 2.0 * pos[d] - bit;
+        sub[d] = clampUnit(2.0 * pos[d] - bit);
       }
       if (!match) continue;
       if (!visitSlice(t, n.child + c, sub, freeDim, x0 + ((c >> freeDim) & 1) * half,
@@ -205,7 +206,7 @@ TreeBsdf::Slice TreeBsdf::slice(const Part& p, bool fixedIsIn, const Vec3& fixed
     }
     return s;
   }
-  s.pos[0] = (0.5 - kTiny) - 0.5 * std::sqrt(fixed.x * fixed.x + fixed.y * fixed.y);
+  s.pos[0] = clampUnit((0.5 - kTiny) - 0.5 * std::sqrt(fixed.x * fixed.x + fixed.y * fixed.y));
   s.spin = std::atan2(-fixed.y, -fixed.x);
   s.freeDim = 1;
   s.freeIsIncident = false;
