@@ -237,10 +237,6 @@ double KlemsBsdf::pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec
   return p.weight[static_cast<size_t>(o) * ni + i] * std::abs(free.z) / total;
 }
 
-}  // namespace candela
-
-namespace candela {
-
 long KlemsBsdf::freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const {
   const Part& p = *parts_[part];
   const int k = fixedIsIn ? outIndex(p, free) : inIndex(p, free);

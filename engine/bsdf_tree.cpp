@@ -282,10 +282,6 @@ double TreeBsdf::pdfFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec3
   return p.tree.lookup(pos) * std::abs(free.z) / total;
 }
 
-}  // namespace candela
-
-namespace candela {
-
 long TreeBsdf::freeCell(int part, bool fixedIsIn, const Vec3& fixed, const Vec3& free, double& projSA) const {
   const Part& p = *parts_[part];
   const Slice s = slice(p, fixedIsIn, fixed);
