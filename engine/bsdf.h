@@ -10,8 +10,7 @@
 // Same hemisphere: reflection; opposite hemispheres: transmission.
 #pragma once
 
-#include "base/math.h"
-#include "base/units.h"
+#include "base/units.h"  // Rgb (and base/math.h)
 
 #include <memory>
 #include <string>

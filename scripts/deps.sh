@@ -7,7 +7,7 @@
 set -euo pipefail
 packages=(g++ cmake make pkg-config libglm-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   libopenexr-dev libgeographiclib-dev libtomlplusplus-dev libpng-dev libeigen3-dev
-  libgtest-dev libbenchmark-dev libembree-dev libopenmpi-dev openmpi-bin
+  libgtest-dev libbenchmark-dev libembree-dev libexpat1-dev libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3-numpy python3-pytest)
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang-14 libclang-rt-14-dev)

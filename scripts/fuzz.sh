@@ -27,7 +27,7 @@ if [ "${CANDELA_SKIP_FUZZ:-0}" = "1" ]; then
 fi
 seconds="${FUZZ_SECONDS:-30}"
 jobs="${FUZZ_JOBS:-2}"
-readers=(${FUZZ_READERS:-rad_reader obj_reader sensor_points ies eulumdat epw case_file part picture data_file font generators})
+readers=(${FUZZ_READERS:-rad_reader obj_reader sensor_points ies eulumdat epw case_file part picture data_file font generators bsdf_xml})
 # Longest first (engine_test's shards, then study_test), so that no long job starts last.
 unit_tests=(engine_test study_test photometry_test base_test metrics_test reports_test)
 # The longest binaries run as gtest shards (GTEST_TOTAL_SHARDS), so that the two cores stay busy
@@ -124,6 +124,7 @@ seed_pattern() {
     part) echo '*.part' ;;  # none in the fixtures: its seeds are tests/fuzz/part/
     picture) echo '*.hdr' ;; data_file) echo '*.dat' ;; generators) echo '*.rad' ;;
     font) echo '*.fnt' ;;  # none in the fixtures: its seeds are tests/fuzz/font/
+    bsdf_xml) echo '*.xml' ;;
   esac
 }
 fuzz_one() {  # reader -> 0 when the pass found nothing

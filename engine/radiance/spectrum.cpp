@@ -25,6 +25,11 @@ glm::dmat3 xyzToRgb() {
 
 }  // namespace
 
+Rgb xyzToRadianceRgb(const Vec3& xyz) {
+  static const glm::dmat3 m = xyzToRgb();
+  return m * xyz;
+}
+
 Vec3 cieColourMatching(double nm) {
   const double x = 1.056 * lobe(nm, 599.8, 0.0264, 0.0323) + 0.362 * lobe(nm, 442.0, 0.0624, 0.0374) -
                    0.065 * lobe(nm, 501.1, 0.0490, 0.0382);

@@ -16,6 +16,10 @@
 
 namespace candela {
 
+// CIE XYZ to Radiance's RGB (the primaries and white above; Radiance's xyz2rgbmat,
+// src/common/spec_rgb.c): Y is kept, photopic(rgb) = Y.
+Rgb xyzToRadianceRgb(const Vec3& xyz);
+
 // x̄, ȳ, z̄ at `nm` (the fit; 0 far outside the visible).
 Vec3 cieColourMatching(double nm);
 
