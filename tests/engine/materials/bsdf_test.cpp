@@ -9,6 +9,9 @@
 //   - A transmitter sampled with a density far from its value stays unbiased.
 //   - A Lambertian reflector ρ/π facing up as a floor: a sensor facing it reads ρ E_v.
 //   - aBSDF with a direct part of 0.6: the sun and the sky straight through, 0.6 E.
+// And read from LBNL XML files written by the test (tests/engine/bsdf_test_xml.h): a Lambertian
+// Klems transmitter (τE exactly), clear glass as a diagonal Klems matrix (aBSDF: its peak straight
+// through, τE exactly; BSDF: the sun spread over its patch, τE within 4 standard errors).
 // The window's edge is 1e4 m away: what it leaves of the hemisphere changes readings by < 1e-7.
 #include "engine/bsdf.h"
 #include "engine/daylight.h"
@@ -16,6 +19,7 @@
 #include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
+#include "tests/engine/bsdf_test_xml.h"
 #include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -223,6 +227,56 @@ TEST(BsdfMaterial, ABsdfLetsItsDirectPartStraightThrough) {
   // BSDF stops shadow rays: the same function as a BSDF lets nothing through.
   const Scene stopped = window("bsdf-stops", sun(35.0) + plane(1.0, false), b, MaterialType::kBsdf, false);
   EXPECT_EQ(measure(stopped, kBelow, kUp).illuminanceLux(), 0.0);
+}
+
+// A window of material `material` (a BSDF or aBSDF line naming w.xml) at height 1, normal down
+// (into the room below), with w.xml holding `xml`.
+Scene xmlWindow(const std::string& name, const std::string& xml, const std::string& material, const std::string& text,
+                bool sky) {
+  const fs::path dir = test_support::scratchDir("bsdf_xml_window", name);
+  std::ofstream(dir / "w.xml") << xml;
+  std::ofstream(dir / "scene.rad") << material << "\n" << text
+                                   << "stand polygon window 0 0 12 -1e4 -1e4 1  -1e4 1e4 1  1e4 1e4 1  1e4 -1e4 1\n";
+  Scene sc;
+  readRadianceFile(dir / "scene.rad", sc);
+  if (sky) {
+    DaylightSpec d;
+    d.skyType = parseSkyType("uniform").value();
+    d.diffuseHorizontalLux = kSkyLux;
+    d.groundReflectance = 0.0;
+    addDaylight(sc, d);
+  }
+  return sc;
+}
+
+constexpr int kFull = 145;
+
+TEST(BsdfMaterial, LambertianKlemsFileGivesTauE) {
+  using test_support::bsdfXml;
+  const std::string xml = bsdfXml({{"Transmission Front", std::vector<double>(kFull * kFull, 0.5 / kPi)}});
+  const std::string bsdf = "void BSDF stand 6 0 w.xml 0 1 0 . 0 0";
+  const Scene sunny = xmlWindow("lambert-sun", xml, bsdf, sun(35.0), false);
+  EXPECT_NEAR(measure(sunny, kBelow, kUp).illuminanceLux(), 0.5 * sunLux(35.0), 1e-4 * sunLux(35.0));
+  expectWithin4Se(measure(xmlWindow("lambert-sky", xml, bsdf, "", true), kBelow, kUp), 0.5 * kSkyLux, "sky");
+  // The file is listed with the files the scene read.
+  ASSERT_EQ(sunny.functionFiles.size(), 1u);
+  EXPECT_NE(sunny.functionFiles[0].find("w.xml"), std::string::npos);
+}
+
+TEST(BsdfMaterial, ClearGlassKlemsFile) {
+  using test_support::bsdfXml;
+  using test_support::klemsFullLambda;
+  std::vector<double> m(kFull * kFull, 0.0);
+  for (int k = 0; k < kFull; ++k) m[static_cast<size_t>(k * kFull + k)] = 0.8 / klemsFullLambda(k);
+  const std::string xml = bsdfXml({{"Transmission Front", m}});
+  // aBSDF: the whole 0.8 is the direct part, the sun straight through.
+  const Scene peak = xmlWindow("clear-absdf", xml, "void aBSDF stand 5 w.xml 0 1 0 . 0 0", sun(35.0), false);
+  EXPECT_NEAR(measure(peak, kBelow, kUp).illuminanceLux(), 0.8 * sunLux(35.0), 1e-4 * sunLux(35.0));
+  // BSDF: the sun's light leaves over the patch the matrix sends it to, 0.8 of it in all.
+  const Scene spread = xmlWindow("clear-bsdf", xml, "void BSDF stand 6 0 w.xml 0 1 0 . 0 0", sun(35.0), false);
+  const IrradianceEstimate e = measure(spread, kBelow, kUp, 65536);
+  EXPECT_NEAR(e.illuminanceLux(), 0.8 * sunLux(35.0), 4.0 * e.standardErrorLux());
+  EXPECT_LT(e.standardErrorLux(), 0.05 * sunLux(35.0));
 }
 
 }  // namespace
