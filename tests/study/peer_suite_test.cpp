@@ -47,7 +47,7 @@ const std::map<std::string, Outcome>& expectedOutcomes() {
       {"mesh", {"mesh 'plainclothes.0.woman' names a Radiance compiled mesh (woman.rtm)", ""}},
       {"mirror", {"colorpict 'sunset_pat': function file 'fisheye.cal'", "loads; no reference"}},
       {"mist", {"loads; no reference", ""}},
-      {"mixtex", {"texdata 'bumpy_pat': function file 'bumpypat.cal'", "primitive type 'aBSDF' is not supported"}},
+      {"mixtex", {"texdata 'bumpy_pat': function file 'bumpypat.cal'", "aBSDF 'mat1': BSDF file 'blinds20c.xml' is not in"}},
       {"patterns", {"colortext 'textpat': font file 'helvet.fnt' is not in", "disagrees: point 1"}},
       {"prism1", {"mesh 'vase' names a Radiance compiled mesh (vase.rtm)", ""}},
       {"prism2", {"mesh 'vase' names a Radiance compiled mesh (vase.rtm)", ""}},

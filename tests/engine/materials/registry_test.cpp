@@ -27,7 +27,7 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   for (const char* name :
        {"plastic", "metal", "trans", "mirror", "glass", "dielectric", "light", "illum", "glow", "interface", "plastic2",
         "metal2", "trans2", "mist", "BRTDfunc", "plasfunc", "metfunc", "transfunc", "plasdata", "metdata", "transdata",
-        "ashik2", "WGMDfunc", "antimatter"}) {
+        "ashik2", "WGMDfunc", "antimatter", "BSDF", "aBSDF"}) {
     const MaterialFamily* f = familyNamed(name);
     ASSERT_NE(f, nullptr) << name;
     EXPECT_STREQ(f->name(), name);
@@ -36,14 +36,14 @@ TEST(MaterialRegistry, RadianceNamesReadTheirFamily) {
   EXPECT_EQ(familyNamed("spotlight")->type(), MaterialType::kLight);
   // A modifier "void" is no material; the types no family reads yet are refused by the reader.
   EXPECT_EQ(familyNamed("void"), nullptr);
-  EXPECT_EQ(familyNamed("BSDF"), nullptr);
+  EXPECT_EQ(familyNamed("prism1"), nullptr);
   EXPECT_EQ(familyNamed("Plastic"), nullptr);
   // A mixture (mixfunc) is read with the patterns, not by its family.
   EXPECT_EQ(familyNamed("mixfunc"), nullptr);
   EXPECT_EQ(materialTypeNames(),
             "plastic, metal, trans, mirror, glass, dielectric, light, spotlight, illum, glow, interface, plastic2, "
             "metal2, trans2, mist, BRTDfunc, plasfunc, metfunc, transfunc, plasdata, metdata, transdata, ashik2, WGMDfunc, "
-            "antimatter");
+            "antimatter, BSDF, aBSDF");
 }
 
 TEST(MaterialRegistry, RolesAndFlags) {

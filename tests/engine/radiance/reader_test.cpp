@@ -299,7 +299,7 @@ TEST(RadReader, PipelineStagesAreGeneratorsOnly) {
 }
 
 TEST(RadReader, UnsupportedTypeListsSupportedOnes) {
-  expectError("unsupported_type.rad", 6, "primitive type 'BSDF' is not supported");
+  expectError("unsupported_type.rad", 6, "primitive type 'shimmer' is not supported");
   expectError("unsupported_type.rad", 6, "supported: polygon, sphere, bubble, ring, cone, cup, cylinder, tube, source");
 }
 
