@@ -16,6 +16,7 @@ En1838Stats en1838Stats(const std::vector<double>& lux) {
   if (lux.empty()) return s;
   const auto [lo, hi] = std::minmax_element(lux.begin(), lux.end());
   s.minLux = *lo;
+  s.minIndex = static_cast<std::size_t>(lo - lux.begin());
   s.maxLux = *hi;
   double sum = 0.0;
   for (double v : lux) sum += v;

@@ -33,6 +33,7 @@ inline constexpr double kEn1838SafetyPointLux = 5.0;
 // Minimum, maximum and mean of a set of illuminances (lx); max/min is +inf when the minimum is 0.
 struct En1838Stats {
   std::size_t points = 0;
+  std::size_t minIndex = 0;  // the point of the minimum (the first of equal ones)
   double minLux = 0.0, maxLux = 0.0, averageLux = 0.0;
   double maxToMin() const;
 };
@@ -54,6 +55,7 @@ struct EscapeRouteResult {
   // Over every strip: the least and greatest centre-line values, the largest strip's max/min and
   // the least central-band value.
   double minCentreLineLux = 0.0, maxCentreLineLux = 0.0, uniformityRatio = 0.0, centralBandMinLux = 0.0;
+  Vec3 minCentreLineAtM{0.0};       // where the centre line's minimum lies
   Verdict verdict = Verdict::kNotChecked;
 };
 // Fills the route's figures and verdict from its strips (4.2.1, 4.2.2).
@@ -64,6 +66,7 @@ struct OpenAreaResult {
   double heightM = 0.0;
   std::vector<Vec2> outline, core;  // the area and its core (without the 0.5 m border)
   En1838Stats stats;                // over the core
+  Vec3 minAtM{0.0};                 // where its minimum lies
   double uniformityRatio = 0.0;     // max/min
   Verdict verdict = Verdict::kNotChecked;
 };
@@ -76,6 +79,7 @@ struct HighRiskAreaResult {
   double maintainedLux = 0.0;       // the task's maintained illuminance (normal lighting)
   double requiredLux = 0.0;         // max(10 % of it, 15 lx)
   En1838Stats stats;
+  Vec3 minAtM{0.0};
   double uniformity = 0.0;          // min/max
   Verdict verdict = Verdict::kNotChecked;
 };

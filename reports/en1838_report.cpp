@@ -18,6 +18,8 @@ using nlohmann::json;
 // JSON has no infinity: a ratio over a minimum of 0 is null.
 json number(double v) { return std::isfinite(v) ? json(v) : json(); }
 
+json position(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
+
 json stats(const En1838Stats& s) {
   return {{"points", s.points}, {"min_lux", s.minLux}, {"max_lux", s.maxLux}, {"average_lux", s.averageLux}};
 }
@@ -55,6 +57,7 @@ void En1838Section::addJson(json& j) const {
                       {"max_centre_line_lux", e.maxCentreLineLux},
                       {"uniformity_ratio", number(e.uniformityRatio)},
                       {"central_band_min_lux", e.centralBandMinLux},
+                      {"min_centre_line_position", position(e.minCentreLineAtM)},
                       {"strips", strips},
                       {"verdict", verdictName(e.verdict)}});
   }
@@ -65,6 +68,7 @@ void En1838Section::addJson(json& j) const {
                      {"height_m", a.heightM},
                      {"points", a.stats.points},
                      {"min_lux", a.stats.minLux},
+                     {"min_position", position(a.minAtM)},
                      {"max_lux", a.stats.maxLux},
                      {"average_lux", a.stats.averageLux},
                      {"uniformity_ratio", number(a.uniformityRatio)},
@@ -78,6 +82,7 @@ void En1838Section::addJson(json& j) const {
                      {"maintained_illuminance_lux", a.maintainedLux},
                      {"required_lux", a.requiredLux},
                      {"min_lux", a.stats.minLux},
+                     {"min_position", position(a.minAtM)},
                      {"max_lux", a.stats.maxLux},
                      {"average_lux", a.stats.averageLux},
                      {"uniformity", a.uniformity},
@@ -101,6 +106,9 @@ std::string En1838Section::html() const {
     << " emergency luminaire(s) at their emergency flux, maintenance factor " << formatFixed(r.maintenanceFactor, 2)
     << ", direct light only (EN 1838 disregards reflected light; docs/emergency.md).</p>\n";
   h << en1838PlanSvg(r, section_ ? &*section_ : nullptr) << "\n";
+  h << "<p class=\"legend\">Plan: filled circles emergency luminaires, open circles the others; routes with their "
+       "width and dashed centre line; open areas with their dashed core (0.5 m inside); squares safety points with "
+       "their facing; a cross marks each minimum; green passes, red fails. Walls cut 1 m above the floor.</p>\n";
   if (!r.routes.empty()) {
     h << "<h3>Escape routes (4.2: centre line ≥ 1 lx, central band ≥ 0.5 lx, max/min ≤ 40)</h3>\n"
          "<table class=\"compliance\"><tr><th>route</th><th>width m</th><th>strips</th><th>E<sub>min</sub> centre "
@@ -116,12 +124,13 @@ std::string En1838Section::html() const {
   }
   if (!r.openAreas.empty()) {
     h << "<h3>Anti-panic open areas (4.3: core area ≥ 0.5 lx, max/min ≤ 40)</h3>\n"
-         "<table class=\"compliance\"><tr><th>area</th><th>points</th><th>E<sub>min</sub> lx</th><th>E<sub>max</sub> "
-         "lx</th><th>max/min</th><th>verdict</th></tr>\n";
+         "<table class=\"compliance\"><tr><th>area</th><th>points</th><th>E<sub>min</sub> lx</th><th>at m</th>"
+         "<th>E<sub>max</sub> lx</th><th>max/min</th><th>verdict</th></tr>\n";
     for (const OpenAreaResult& a : r.openAreas)
       h << "<tr><td>" << xmlEscape(a.name) << "</td><td class=\"num\">" << a.stats.points << "</td><td class=\"num\">"
-        << fixed(a.stats.minLux, 2) << "</td><td class=\"num\">" << fixed(a.stats.maxLux, 2)
-        << "</td><td class=\"num\">" << fixed(a.uniformityRatio, 1) << "</td>" << verdictCell(a.verdict) << "</tr>\n";
+        << fixed(a.stats.minLux, 2) << "</td><td class=\"pos\">(" << fixed(a.minAtM.x, 2) << ", " << fixed(a.minAtM.y, 2)
+        << ")</td><td class=\"num\">" << fixed(a.stats.maxLux, 2) << "</td><td class=\"num\">"
+        << fixed(a.uniformityRatio, 1) << "</td>" << verdictCell(a.verdict) << "</tr>\n";
     h << "</table>\n";
   }
   if (!r.highRiskAreas.empty()) {
@@ -220,16 +229,28 @@ std::string en1838PlanSvg(const En1838Result& r, const PlanSection* section) {
       << "<line x1=\"" << X(x) << "\" y1=\"" << Y(y) << "\" x2=\"" << X(x + 0.6 * p.facing.x) << "\" y2=\""
       << Y(y + 0.6 * p.facing.y) << "\" stroke=\"" << colour(p.verdict) << "\" stroke-width=\"2\"/>\n";
   }
+  // Each area's and route's minimum: a small cross.
+  auto cross = [&](const Vec3& p, Verdict v) {
+    s << "<path d=\"M" << svgNumber((p.x - lo.x) * scale - 4) << "," << svgNumber((hi.y - p.y) * scale - 4) << "l8,8m0,-8l-8,8\" stroke=\""
+      << colour(v) << "\" stroke-width=\"2\"><title>minimum</title></path>\n";
+  };
+  for (const EscapeRouteResult& e : r.routes) cross(e.minCentreLineAtM, e.verdict);
+  for (const OpenAreaResult& a : r.openAreas) cross(a.minAtM, a.verdict);
+  for (const HighRiskAreaResult& a : r.highRiskAreas) cross(a.minAtM, a.verdict);
   // Labels last, over everything.
+  // Right of the plan's middle a label ends at its point, so that it stays inside the plan.
+  const double middleX = 0.5 * (lo.x + hi.x);
   auto label = [&](const Vec2& at, const std::string& text, Verdict v) {
-    s << "<text x=\"" << X(at.x) << "\" y=\"" << Y(at.y) << "\" fill=\"" << colour(v)
+    s << "<text x=\"" << X(at.x) << "\" y=\"" << Y(at.y) << "\"" << (at.x > middleX ? " text-anchor=\"end\"" : "")
+      << " fill=\"" << colour(v)
       << "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\" font-weight=\"700\">" << xmlEscape(text) << " "
       << verdictName(v) << "</text>\n";
   };
   for (const EscapeRouteResult& e : r.routes) label(e.path.front() + Vec2(0.1, 0.1), e.name, e.verdict);
   for (const OpenAreaResult& a : r.openAreas) label(a.core.empty() ? a.outline.front() : a.core.back(), a.name, a.verdict);
   for (const HighRiskAreaResult& a : r.highRiskAreas) label(a.outline.back(), a.name, a.verdict);
-  for (const SafetyPointResult& p : r.safetyPoints) label(Vec2(p.positionM) + Vec2(0.2, -0.3), p.name, p.verdict);
+  for (const SafetyPointResult& p : r.safetyPoints)
+    label(Vec2(p.positionM) + Vec2(p.positionM.x > middleX ? -0.2 : 0.2, -0.3), p.name, p.verdict);
   s << "</svg>";
   return s.str();
 }

@@ -115,6 +115,11 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
       e.strips.push_back({strips[s].offsetM, strips[s].widthM, en1838Stats(valuesOf(lux, pts.routeCentre[k][s])),
                           en1838Stats(valuesOf(lux, pts.routeBand[k][s]))});
     judgeEscapeRoute(e);
+    for (std::size_t s = 0; s < e.strips.size(); ++s)
+      if (e.strips[s].centreLine.minLux == e.minCentreLineLux) {
+        e.minCentreLineAtM = pts.sensors[pts.routeCentre[k][s].first + e.strips[s].centreLine.minIndex].position;
+        break;
+      }
     r.routes.push_back(std::move(e));
   }
   for (std::size_t k = 0; k < c.emergency.openAreas.size(); ++k) {
@@ -124,6 +129,7 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
     a.outline = c.emergency.openAreas[k].outline;
     a.core = pts.cores[k];
     a.stats = en1838Stats(valuesOf(lux, pts.openAreas[k]));
+    a.minAtM = pts.sensors[pts.openAreas[k].first + a.stats.minIndex].position;
     judgeOpenArea(a);
     r.openAreas.push_back(std::move(a));
   }
@@ -135,7 +141,8 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
     a.heightM = spec.heightM;
     a.outline = counterClockwise(spec.outline);
     a.maintainedLux = spec.maintainedLux;
-    a.stats = en1838Stats(valuesOf(lux, pts.highRisk[h++]));
+    a.stats = en1838Stats(valuesOf(lux, pts.highRisk[h]));
+    a.minAtM = pts.sensors[pts.highRisk[h++].first + a.stats.minIndex].position;
     judgeHighRiskArea(a);
     r.highRiskAreas.push_back(std::move(a));
   }
