@@ -537,8 +537,8 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
     for (const ComplianceSpec& s : out.compliance) {
       const bool en1838 = s.standard == ComplianceStandard::kEn1838;
       if (!en1838 && out.sky.type.kind != SkyKind::kAnnual)
-        throw InputError(s.loc, "[[compliance]] standard = \"" + std::string(standardKey(s.standard)) +
-                                    "\" needs an annual study ([sky] type = \"annual\" with a weather file)");
+        throw InputError(s.loc, "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file) "
+                                "for standard = \"" + std::string(standardKey(s.standard)) + "\"");
       if (en1838 && out.sky.type.kind == SkyKind::kAnnual)
         throw InputError(s.loc, "[[compliance]] standard = \"en1838\" needs a point-in-time study, not an annual sky");
     }
