@@ -175,6 +175,9 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
     throw InputError(s.loc, "two [[compliance]] entries are named '" + s.name + "' (give each a 'name')");
   if (const toml::node* n = tab.get("spaces")) {
     s.spacesLoc = c.at(*n);
+    if (s.standard == ComplianceStandard::kEn1838)
+      c.fail(*n, "'spaces' is for the daylight standards; en1838 checks [[escape_route]], [[open_area]], "
+                 "[[safety_point]] and high-risk task areas");
     const toml::array& a = asArray(c, *n, "spaces", 0, "an array of grid names");
     if (a.empty()) c.fail(*n, "'spaces' needs at least one grid name");
     for (const toml::node& g : a) {

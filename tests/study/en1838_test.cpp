@@ -261,6 +261,7 @@ TEST(En1838Case, BadInputNamesTheLine) {
   expectError("[[safety_point]]\nposition = [0.0, 0.0, 1.0]\nfacing = [0.0, 0.0]\n" + compliance, 7, "'facing'");
   expectError("[[escape_route]]\npath = [[0.0, 0.0], [1.0, 0.0]]\nwidth = 1.0\n", 5, "en1838");
   expectError(compliance, 5, "nothing to check");
+  expectError(compliance + "spaces = [\"hall\"]\n", 7, "'spaces' is for the daylight standards");
   expectError("[[task_area]]\ncorners = [[0.0, 0.0], [1.0, 1.0]]\nheight = 0.8\nmaintained_illuminance = 300\n"
               "emergency = \"low-risk\"\n" + compliance,
               9, "high-risk");
