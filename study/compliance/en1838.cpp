@@ -28,7 +28,36 @@ std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceF
     q.maintenanceFactor = maintenanceFactor;
     e.luminaires.push_back(std::move(q));
   }
-  return loadCaseScene(e, /*withDaylight=*/false);
+  std::unique_ptr<Scene> scene = loadCaseScene(e, /*withDaylight=*/false);
+  for (Material& m : scene->materials) blackOutReflection(m);
+  return scene;
+}
+
+bool blackOutReflection(Material& m) {
+  switch (m.type) {
+    // Opaque surfaces that only reflect: black. Zero diffuse bounces leave out their diffuse
+    // reflection, but not a mirror's virtual sources nor a glossy lobe's direct light at a
+    // hemisphere ray's hit (tests/study/en1838_test.cpp MirrorsAndGlossChangeNothing).
+    case MaterialType::kPlastic: case MaterialType::kMetal: case MaterialType::kMirror:
+    case MaterialType::kPlastic2: case MaterialType::kMetal2: case MaterialType::kPlasFunc:
+    case MaterialType::kMetFunc: case MaterialType::kPlasData: case MaterialType::kMetData:
+    case MaterialType::kAshik2: {
+      const std::string name = m.name;
+      const FileLoc loc = m.loc;
+      const int clipBit = m.clipBit;
+      MaterialParameters black;
+      black.type = MaterialType::kPlastic;
+      black.clipBit = clipBit;
+      deriveMaterial(black);
+      static_cast<MaterialParameters&>(m) = black;
+      m.name = name;
+      m.loc = loc;
+      return true;
+    }
+    // Emitters stay sources; glazing and translucent materials pass light (their transmission of
+    // the luminaires' light is direct light where it is specular); the rest are left as read.
+    default: return false;
+  }
 }
 
 TraceSettings directOnlySettings(TraceSettings s) {

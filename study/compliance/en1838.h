@@ -25,8 +25,14 @@ const ComplianceSpec* en1838Entry(const CaseFile& c);
 
 // The emergency scene: the case's geometry without daylight, and only its emergency luminaires,
 // each scaled by multiplier × emergency_factor × `maintenanceFactor` (its own maintenance factor
-// is the normal lighting's).
+// is the normal lighting's); every opaque reflecting material blacked out (blackOutReflection).
 std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceFactor);
+
+// Makes an opaque reflecting material (plastic, metal, mirror and their function, data, anisotropic
+// and Ashikhmin variants) a black plastic, keeping its name, line and antimatter bit: no light
+// reflected off it reaches a sensor. Returns whether it did. Emitters, glazing and translucent
+// materials are left as read.
+bool blackOutReflection(Material& m);
 
 // `s` made direct-only: no diffuse bounce, the path estimator (no irradiance cache), one batch.
 TraceSettings directOnlySettings(TraceSettings s);
