@@ -235,7 +235,8 @@ std::string complianceHtml(const std::vector<ComplianceReport>& entries) {
   std::ostringstream h;
   for (const ComplianceReport& r : entries) {
     h << "<section class=\"grid\" id=\"compliance-" << xmlEscape(r.name) << "\">\n<h2>Compliance: "
-      << xmlEscape(r.standard == "en17037" ? "EN 17037:2018+A1:2023"
+      << xmlEscape(r.section ? r.section->title()
+                   : r.standard == "en17037" ? "EN 17037:2018+A1:2023"
                    : r.standard == "leed-v4.1-option1" ? "LEED v4.1 EQ Daylight, option 1"
                                                        : "LEED v4.1 EQ Daylight, option 2")
       << (r.name != r.standard ? " (" + xmlEscape(r.name) + ")" : "") << " <span class=\"badge "
@@ -249,6 +250,7 @@ std::string complianceHtml(const std::vector<ComplianceReport>& entries) {
       if (!r.en17037->glare.empty()) glareHtml(h, *r.en17037);
     }
     if (r.leed) leedHtml(h, *r.leed);
+    if (r.section) h << r.section->html();
     h << "</section>\n";
   }
   return h.str();

@@ -166,6 +166,7 @@ nlohmann::json complianceJson(const ComplianceReport& r) {
   json j{{"standard", r.standard}, {"verdict", r.verdict}, {"verdict_lines", r.verdictLines}};
   if (r.en17037) addEn17037(j, *r.en17037);
   if (r.leed) addLeed(j, *r.leed);
+  if (r.section) r.section->addJson(j);
   json times = json::object();
   for (const auto& [part, t] : r.timesS) times[part] = t;
   j["time_s"] = times;

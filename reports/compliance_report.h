@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -113,6 +114,17 @@ struct LeedReport {
   std::vector<Sky> skyByTime;
 };
 
+// A standard's own part of its entry, written by the standard's unit (reports/en1838_report.h):
+// the shared writers call it without knowing the standard, so a new standard adds a file, not a
+// branch in each writer.
+class StandardSection {
+ public:
+  virtual ~StandardSection() = default;
+  virtual std::string title() const = 0;                 // the report section's heading
+  virtual void addJson(nlohmann::json& entry) const = 0;  // its keys in compliance.<name>
+  virtual std::string html() const = 0;                   // its part of the section, after the verdict lines
+};
+
 struct ComplianceReport {
   std::string name;      // the key under `compliance`
   std::string standard;  // "en17037", "leed-v4.1-option1", "leed-v4.1-option2"
@@ -120,6 +132,7 @@ struct ComplianceReport {
   std::vector<std::string> verdictLines;  // what decided it, one line each
   std::optional<En17037Report> en17037;
   std::optional<LeedReport> leed;
+  std::shared_ptr<const StandardSection> section;  // standards written by their own unit
   std::vector<std::pair<std::string, double>> timesS;  // wall time of each part, s (summary.json time_s)
 };
 

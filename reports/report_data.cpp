@@ -35,9 +35,10 @@ std::string safeFileName(const std::string& name) {
 namespace {
 
 // The kinds of checked line, in the report's order (checkedCategories' words).
-enum class LineKind { kGrid, kSurface, kModelling, kColourRendering, kObserverUgr, kCompliance, kCount };
+enum class LineKind { kGrid, kSurface, kModelling, kColourRendering, kObserverUgr, kCompliance, kStandard, kCount };
 constexpr const char* kLineKindWords[] = {"grids",           "walls and ceiling", "modelling",
-                                          "colour rendering", "observers' UGR",    "daylight compliance"};
+                                          "colour rendering", "observers' UGR",    "daylight compliance",
+                                          "standards"};
 
 // Calls line(verdict, kind) for every line the run's verdict counts, checked or not.
 template <class F>
@@ -54,7 +55,8 @@ void forEachLine(const ReportData& data, F line) {
       line(*pass ? Verdict::kPass : Verdict::kFail, LineKind::kObserverUgr);
   // A [[compliance]] entry is one line: its standard's verdict.
   for (const ComplianceReport& r : data.compliance)
-    line(r.verdict == "pass" ? Verdict::kPass : Verdict::kFail, LineKind::kCompliance);
+    line(r.verdict == "pass" ? Verdict::kPass : Verdict::kFail,
+         r.section ? LineKind::kStandard : LineKind::kCompliance);  // a standard of its own unit (EN 1838)
 }
 
 }  // namespace

@@ -295,7 +295,7 @@ Verdict overallVerdict(const ReportData& data, int* checked = nullptr, int* fail
 
 // What the checked lines of overallVerdict are, in the report's words and order, only those the
 // run has: "grids", "walls and ceiling", "modelling", "colour rendering", "observers' UGR",
-// "daylight compliance".
+// "daylight compliance", "standards" (a standard written by its own unit: EN 1838).
 std::vector<std::string> checkedCategories(const ReportData& data);
 
 // "2026-03-21" → "21 March 2026"; "2026-03-21T09:00" → "21 March 2026, 09:00" (the time as

@@ -20,6 +20,7 @@ std::string_view standardKey(ComplianceStandard s) {
   switch (s) {
     case ComplianceStandard::kLeedV41Option1: return "leed-v4.1-option1";
     case ComplianceStandard::kLeedV41Option2: return "leed-v4.1-option2";
+    case ComplianceStandard::kEn1838: return "en1838";
     case ComplianceStandard::kEn17037: break;
   }
   return "en17037";
@@ -61,9 +62,9 @@ std::vector<Vec3> asPoints3(const Context& c, const toml::node& n, std::string_v
 ComplianceStandard asStandard(const Context& c, const toml::node& n) {
   const std::string s = asString(c, n, "standard");
   for (ComplianceStandard k : {ComplianceStandard::kEn17037, ComplianceStandard::kLeedV41Option1,
-                               ComplianceStandard::kLeedV41Option2})
+                               ComplianceStandard::kLeedV41Option2, ComplianceStandard::kEn1838})
     if (s == standardKey(k)) return k;
-  c.fail(n, "unknown standard '" + s + "' (expected en17037, leed-v4.1-option1 or leed-v4.1-option2)");
+  c.fail(n, "unknown standard '" + s + "' (expected en17037, leed-v4.1-option1, leed-v4.1-option2 or en1838)");
 }
 
 // A key that belongs to another standard is an error at its line, not ignored.
@@ -174,6 +175,9 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
     throw InputError(s.loc, "two [[compliance]] entries are named '" + s.name + "' (give each a 'name')");
   if (const toml::node* n = tab.get("spaces")) {
     s.spacesLoc = c.at(*n);
+    if (s.standard == ComplianceStandard::kEn1838)
+      c.fail(*n, "'spaces' is for the daylight standards; en1838 checks [[escape_route]], [[open_area]], "
+                 "[[safety_point]] and high-risk task areas");
     const toml::array& a = asArray(c, *n, "spaces", 0, "an array of grid names");
     if (a.empty()) c.fail(*n, "'spaces' needs at least one grid name");
     for (const toml::node& g : a) {
@@ -188,6 +192,11 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
   }
   readEn17037(tab, s);
   readLeedOption2(tab, s);
+  if (const toml::node* n = keyOf(tab, "maintenance_factor", s, ComplianceStandard::kEn1838)) {
+    s.emergencyMaintenanceFactor = asNumber(c, *n, "maintenance_factor");
+    if (!(s.emergencyMaintenanceFactor > 0.0 && s.emergencyMaintenanceFactor <= 1.0))
+      c.fail(*n, "'maintenance_factor' must be in (0, 1]");
+  }
   tab.finish();
   out.compliance.push_back(std::move(s));
 }

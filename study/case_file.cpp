@@ -4,6 +4,7 @@
 #include "base/units.h"
 #include "engine/portals.h"
 #include "study/case_compliance.h"
+#include "study/compliance/en1838_case.h"
 #include "study/case_grids.h"
 #include "study/case_window_groups.h"
 #include "study/case_toml.h"
@@ -98,6 +99,15 @@ void readLuminaire(const Context& c, const toml::table& t, int entry, CaseFile& 
   if (tab.get("power_w")) {
     p.powerW = numberOr(tab, "power_w", 0.0);
     checkMin(tab, "power_w", *p.powerW, 0.0, true, " W (the luminaire's input power)");
+  }
+
+  if (const toml::node* n = tab.get("emergency")) p.emergency = asBool(c, *n, "emergency");
+  if (const toml::node* n = tab.get("emergency_factor")) {
+    p.emergencyFactor = asNumber(c, *n, "emergency_factor");
+    if (!(p.emergencyFactor > 0.0 && p.emergencyFactor <= 1.0))
+      c.fail(*n, "'emergency_factor' must be in (0, 1] (the share of the flux in emergency mode), got " +
+                     compactNumber(p.emergencyFactor));
+    if (!p.emergency) c.fail(*n, "'emergency_factor' needs 'emergency = true'");
   }
 
   int rows = 1, columns = 1;
@@ -459,13 +469,14 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   static const std::set<std::string> kTopLevel = {"case",      "scene",        "luminaire", "portal",   "site",
                                                   "sky",       "grid",         "task_area", "surface_grid",
                                                   "view",      "observer",     "settings",  "annual",   "output",
-                                                  "compliance", "window_group"};
+                                                  "compliance", "window_group", "escape_route", "open_area",
+                                                  "safety_point"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
                                                "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, "
-                                               "surface_grid, view, observer, window_group, settings, annual, output or "
-                                               "compliance)");
+                                               "surface_grid, view, observer, window_group, settings, annual, output, "
+                                               "compliance, escape_route, open_area or safety_point)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -510,6 +521,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
       throw InputError(out.windowGroups.front().loc, "[[window_group]] needs [sky] type = \"annual\" (LM-83's "
                                                      "operable blinds are part of the annual sDA)");
   }
+  readEmergencyTables(c, root, out);
   checkReferenceGrid(out);
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
   if (auto t = singleTable(c, root, "annual")) {
@@ -521,10 +533,17 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "compliance")) {
     std::set<std::string> names;
     for (const toml::node& n : *a) readCompliance(c, *n.as_table(), names, out);
-    if (out.sky.type.kind != SkyKind::kAnnual)
-      throw InputError(out.compliance.front().loc,
-                       "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file)");
+    // EN 1838 is a point-in-time study of the emergency luminaires; the others are annual.
+    for (const ComplianceSpec& s : out.compliance) {
+      const bool en1838 = s.standard == ComplianceStandard::kEn1838;
+      if (!en1838 && out.sky.type.kind != SkyKind::kAnnual)
+        throw InputError(s.loc, "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file) "
+                                "for standard = \"" + std::string(standardKey(s.standard)) + "\"");
+      if (en1838 && out.sky.type.kind == SkyKind::kAnnual)
+        throw InputError(s.loc, "[[compliance]] standard = \"en1838\" needs a point-in-time study, not an annual sky");
+    }
   }
+  checkEmergencyCompliance(out);
   return out;
 }
 

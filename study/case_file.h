@@ -19,6 +19,7 @@
 #include "photometry/sky_type.h"
 #include "metrics/targets.h"
 #include "study/compliance_spec.h"
+#include "study/compliance/en1838_spec.h"
 #include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
 
@@ -45,6 +46,10 @@ struct LuminairePlacement {
   // `power_w`: the luminaire's input power in W (> 0), in place of the file's input watts (the
   // luminaire schedule and the installed power, study/luminaire_schedule.h); unset: the file's.
   std::optional<double> powerW;
+  // `emergency`: an emergency luminaire (EN 1838, docs/emergency.md); `emergency_factor` in (0, 1]:
+  // the share of the file's flux it gives in emergency mode.
+  bool emergency = false;
+  double emergencyFactor = 1.0;
   int entry = 0;                        // index of the [[luminaire]] entry (0-based): CaseFile::luminaireEntries
   int row = 0, column = 0;              // position in the entry's array (0, 0 without array)
   FileLoc loc;                          // the [[luminaire]] entry
@@ -157,6 +162,9 @@ struct TaskAreaSpec {
   std::optional<double> cylindricalLux;
   bool modelling = false;
   double eyeHeightM = 1.2;
+  // `emergency = "high-risk"`: a high-risk task area of EN 1838:2013 4.4 (docs/emergency.md).
+  bool emergencyHighRisk = false;
+  std::optional<double> spacingM;      // `spacing`, m
   FileLoc loc;
 };
 
@@ -259,6 +267,8 @@ struct CaseFile {
   std::vector<ComplianceSpec> compliance;
   // [[window_group]]: none, one group of all the glazing per grid (as before the key existed).
   std::vector<WindowGroupSpec> windowGroups;
+  // [[escape_route]], [[open_area]], [[safety_point]]: EN 1838 (study/compliance/en1838_spec.h).
+  EmergencySpec emergency;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

@@ -269,6 +269,12 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
     spacing = asNumber(c, *n, "spacing");
     checkMin(tab, "spacing", *spacing, 0.0, true, " m");
   }
+  a.spacingM = spacing;
+  if (const toml::node* n = tab.get("emergency")) {
+    const std::string v = asString(c, *n, "emergency");
+    if (v != "high-risk") c.fail(*n, "'emergency' must be \"high-risk\" (EN 1838 4.4), got '" + v + "'");
+    a.emergencyHighRisk = true;
+  }
   tab.finish();
 
   GridSpec task = taskAreaGrid(a, a.name, GridSpec::Area::kTask);

@@ -13,9 +13,9 @@
 
 namespace candela {
 
-enum class ComplianceStandard { kEn17037, kLeedV41Option1, kLeedV41Option2 };
+enum class ComplianceStandard { kEn17037, kLeedV41Option1, kLeedV41Option2, kEn1838 };
 
-// "en17037", "leed-v4.1-option1", "leed-v4.1-option2": as written in the case file, and the
+// "en17037", "leed-v4.1-option1", "leed-v4.1-option2", "en1838": as written in the case file, and the
 // entry's default name.
 std::string_view standardKey(ComplianceStandard s);
 
@@ -71,6 +71,9 @@ struct ComplianceSpec {
   std::vector<CivilDate> leedDates;       // unset: 21 March and 21 September
   FileLoc leedDatesLoc;
   std::vector<double> leedHours{9.0, 15.0};
+  // EN 1838: the maintenance factor of the emergency luminaires (`maintenance_factor`, in (0, 1];
+  // the luminaires' own is for the normal lighting and is not used).
+  double emergencyMaintenanceFactor = 1.0;
   FileLoc loc;
 };
 

@@ -11,6 +11,7 @@
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 #include "study/case_scene.h"
+#include "study/compliance/en1838.h"
 #include "study/finite_results.h"
 #include "study/grid_quantity.h"
 #include "study/luminaire_schedule.h"
@@ -306,6 +307,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   const Tracer tracer(*scene);
   // Warnings on the input, before tracing: a strict run stops here.
   Warnings warnings = pointInTimeWarnings(c, tracer, grids);
+  if (std::optional<Warning> w = noEmergencyLuminaireWarning(c)) warnings.push_back(*w);
   const std::vector<SensorSet> sets = sensorSets(grids);
   throwIfStrict(warnings, run.request.strict);
   // The points are estimated a block at a time (engine/sensors.h): each block's values are kept
@@ -427,6 +429,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   }
   addTaskAreaReports(c, data);
   addSurfaceGridReports(c, data);
+  addEn1838Compliance(c, trace, data);  // EN 1838: its own scene of the emergency luminaires
   // The plans show where the luminaires and observers are (up to 2000 luminaires: more symbols
   // than that make no readable plan, and a 10⁶-fitting array would hold them all again).
   constexpr std::size_t kMaxLuminaireMarkers = 2000;

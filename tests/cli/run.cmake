@@ -99,3 +99,10 @@ candela_run_test(compliance_check_hour_form 2 "bad_hour.toml:17:" compliance/bad
 candela_run_test(compliance_check_hour_not_in_year 2
                  "leap_day.toml:17: 'check_hours': 2028-02-29T12:00 is not an hour of the weather file"
                  compliance/leap_day.toml)
+# EN 1838 tables (docs/emergency.md): bad input exits 2 naming its line.
+candela_run_test(en1838_route_one_point 2 "en1838_route_one_point.toml:4: 'path' needs at least 2 points"
+                 ${DATA}/cases/errors/en1838_route_one_point.toml)
+candela_run_test(en1838_route_width 2 "en1838_route_width.toml:4: 'width' must be greater than 0"
+                 ${DATA}/cases/errors/en1838_route_width.toml)
+candela_run_test(en1838_open_area_corners 2 "en1838_open_area_corners.toml:4: 'polygon' needs at least 3 corners"
+                 ${DATA}/cases/errors/en1838_open_area_corners.toml)
