@@ -1,5 +1,6 @@
 #include "study/compliance/en1838.h"
 
+#include "engine/materials/family.h"
 #include "engine/tracer.h"
 #include "reports/en1838_report.h"
 #include "study/case_scene.h"
@@ -34,30 +35,25 @@ std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceF
 }
 
 bool blackOutReflection(Material& m) {
-  switch (m.type) {
-    // Opaque surfaces that only reflect: black. Zero diffuse bounces leave out their diffuse
-    // reflection, but not a mirror's virtual sources nor a glossy lobe's direct light at a
-    // hemisphere ray's hit (tests/study/en1838_test.cpp MirrorsAndGlossChangeNothing).
-    case MaterialType::kPlastic: case MaterialType::kMetal: case MaterialType::kMirror:
-    case MaterialType::kPlastic2: case MaterialType::kMetal2: case MaterialType::kPlasFunc:
-    case MaterialType::kMetFunc: case MaterialType::kPlasData: case MaterialType::kMetData:
-    case MaterialType::kAshik2: {
-      const std::string name = m.name;
-      const FileLoc loc = m.loc;
-      const int clipBit = m.clipBit;
-      MaterialParameters black;
-      black.type = MaterialType::kPlastic;
-      black.clipBit = clipBit;
-      deriveMaterial(black);
-      static_cast<MaterialParameters&>(m) = black;
-      m.name = name;
-      m.loc = loc;
-      return true;
-    }
-    // Emitters stay sources; glazing and translucent materials pass light (their transmission of
-    // the luminaires' light is direct light where it is specular); the rest are left as read.
-    default: return false;
-  }
+  // Opaque surfaces that only reflect (their family neither emits nor lets light through): black.
+  // Zero diffuse bounces leave out their diffuse reflection, but not a mirror's virtual sources
+  // nor a glossy lobe's direct light at a hemisphere ray's hit (tests/study/en1838_test.cpp
+  // MirrorsAndGlossChangeNothing). Emitters stay sources; glazing and translucent materials pass
+  // light (their transmission of the luminaires' light is direct light where it is specular).
+  const MaterialFamily& family = familyOf(m);
+  const bool reflects = family.role() == HitRole::kScatter || family.role() == HitRole::kSpecular;
+  if (!reflects || family.emits() || family.transmitting()) return false;
+  const std::string name = m.name;
+  const FileLoc loc = m.loc;
+  const int clipBit = m.clipBit;
+  MaterialParameters black;
+  black.type = MaterialType::kPlastic;
+  black.clipBit = clipBit;
+  deriveMaterial(black);
+  static_cast<MaterialParameters&>(m) = black;
+  m.name = name;
+  m.loc = loc;
+  return true;
 }
 
 TraceSettings directOnlySettings(TraceSettings s) {
