@@ -20,6 +20,10 @@ namespace {
 std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
   std::vector<std::filesystem::path> files;
   for (const ScenePath& s : c.scenes) files.push_back(s.file);
+  // Window states (a Honeybee folder's aperture groups): point-in-time studies see each group in
+  // its first state (annual studies read their scenes in study/window_states.h).
+  for (const WindowGroupSpec& g : c.windowGroups)
+    if (!g.states.empty()) files.push_back(g.states.front().scene);
   return files;
 }
 }  // namespace
@@ -61,16 +65,20 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather) {
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   auto scene = std::make_unique<Scene>();
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
-  scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
+  finishAnnualScene(c, northDeg, *scene);
+  return scene;
+}
+
+void finishAnnualScene(const CaseFile& c, double northDeg, Scene& scene) {
+  scene.portals.insert(scene.portals.end(), c.portals.begin(), c.portals.end());
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
-  replaceSceneSky(*scene, c.sky.loc);
+  replaceSceneSky(scene, c.sky.loc);
   SkyDome dome;
   dome.model = makeSky({SkyKind::kUniform}, uniform, c.sky.loc);
   dome.northDeg = northDeg;
   dome.horizontalSkyLux = uniform.diffuseHorizontalLux;
-  scene->sky = dome;
-  return scene;
+  scene.sky = dome;
 }
 
 DaylightSpec daylightFromCase(const CaseFile& c) {
