@@ -258,8 +258,9 @@ void describeAnnualSettings(ReportData& data, const CaseFile& c, const AnnualInp
       {"occupancy", formatFixed(a.occupancyStartHour, 2) + "–" + formatFixed(a.occupancyEndHour, 2) + " h (" +
                         std::to_string(occupiedCount) + " h a year)"},
       {"blinds (LM-83)", !a.blinds ? "not modelled"
-                         : !in.states.empty() ? "replaced by the window states of " + std::to_string(in.states.groups.size()) +
-                                                    " groups (LM-83's direct-sun rule, or a schedule)"
+                         : !in.states.empty() ? "replaced by window states (" + std::to_string(in.states.groups.size()) +
+                                                    (in.states.groups.size() == 1 ? " group" : " groups") +
+                                                    ": LM-83's direct-sun rule or a schedule)"
                          : !in.windows.groups.empty()
                              ? std::to_string(in.windows.groups.size()) +
                                    " window groups closing in the fewest combination that leaves ≤ 2 % of a grid's "

@@ -7,6 +7,7 @@
 #include "photometry/site.h"
 #include "photometry/photometric_file.h"
 #include "photometry/make_sky.h"
+#include "study/window_states.h"
 
 #include <cmath>
 #include <optional>
@@ -20,17 +21,17 @@ namespace {
 std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
   std::vector<std::filesystem::path> files;
   for (const ScenePath& s : c.scenes) files.push_back(s.file);
-  // Window states (a Honeybee folder's aperture groups): point-in-time studies see each group in
-  // its first state (annual studies read their scenes in study/window_states.h).
-  for (const WindowGroupSpec& g : c.windowGroups)
-    if (!g.states.empty()) files.push_back(g.states.front().scene);
   return files;
 }
 }  // namespace
 
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
-  readSceneFiles(scenePaths(c), *scene, c.settings.scene);
+  // Window states (docs/annual.md): point-in-time studies see every group in its first state.
+  if (hasWindowStates(c))
+    readStateScene(c, {}, *scene);
+  else
+    readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
   placeLuminaires(*scene, c.luminaires);
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));

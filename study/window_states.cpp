@@ -129,10 +129,9 @@ WindowStates resolveWindowStates(const CaseFile& c, std::size_t hours) {
   return ws;
 }
 
-std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const WindowStates& ws,
-                                      const std::vector<int>& choice, SurfaceLabels* labels) {
-  auto scene = std::make_unique<Scene>();
-  SceneReader reader(*scene, c.settings.scene);
+void readStateScene(const CaseFile& c, const std::vector<int>& choice, Scene& scene, SurfaceLabels* labels,
+                    const WindowStates* ws) {
+  SceneReader reader(scene, c.settings.scene);
   // The case's files as readSceneFiles reads them: Radiance files, then OBJ files.
   for (const ScenePath& s : c.scenes)
     if (!isObjPath(s.file)) reader.readFile(s.file);
@@ -141,7 +140,7 @@ std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const 
   for (const WindowGroupSpec& spec : c.windowGroups) {
     if (spec.patterns.empty()) continue;
     std::vector<bool> used(spec.patterns.size(), false);
-    removeSurfaces(*scene, spec.patterns, used);
+    removeSurfaces(scene, spec.patterns, used);
     for (std::size_t k = 0; k < used.size(); ++k)
       if (!used[k])
         throw InputError(spec.patternsLoc, "window group '" + spec.name + "': no surface of the scene is named '" +
@@ -152,24 +151,32 @@ std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const 
     std::size_t s0, s1, t0, t1;
   };
   std::vector<Added> added;
-  for (std::size_t g = 0; g < ws.groups.size(); ++g) {
-    Added a{scene->shapes.size(), 0, scene->mesh.triangles.size(), 0};
-    reader.readFile(ws.groups[g].files[static_cast<std::size_t>(choice[g])]);
-    a.s1 = scene->shapes.size();
-    a.t1 = scene->mesh.triangles.size();
+  for (std::size_t g = 0; g < c.windowGroups.size(); ++g) {
+    const std::vector<WindowGroupSpec::State>& states = c.windowGroups[g].states;
+    if (states.empty()) continue;
+    Added a{scene.shapes.size(), 0, scene.mesh.triangles.size(), 0};
+    reader.readFile(states.at(static_cast<std::size_t>(g < choice.size() ? choice[g] : 0)).scene);
+    a.s1 = scene.shapes.size();
+    a.t1 = scene.mesh.triangles.size();
     added.push_back(a);
   }
-  if (labels) {
-    labels->ofSurface.assign(scene->surfaceCount(), -1);
-    labels->count = ws.sunGroups;
-    const std::size_t shapes = scene->shapes.size();
-    for (std::size_t g = 0; g < ws.groups.size(); ++g) {
-      const int label = ws.groups[g].sunIndex;
+  if (labels && ws) {
+    labels->ofSurface.assign(scene.surfaceCount(), -1);
+    labels->count = ws->sunGroups;
+    const std::size_t shapes = scene.shapes.size();
+    for (std::size_t g = 0; g < ws->groups.size() && g < added.size(); ++g) {
+      const int label = ws->groups[g].sunIndex;
       if (label < 0) continue;
       for (std::size_t i = added[g].s0; i < added[g].s1; ++i) labels->ofSurface[i] = label;
       for (std::size_t i = added[g].t0; i < added[g].t1; ++i) labels->ofSurface[shapes + i] = label;
     }
   }
+}
+
+std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const WindowStates& ws,
+                                      const std::vector<int>& choice, SurfaceLabels* labels) {
+  auto scene = std::make_unique<Scene>();
+  readStateScene(c, choice, *scene, labels, &ws);
   finishAnnualScene(c, northDeg, *scene);
   return scene;
 }

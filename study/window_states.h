@@ -46,10 +46,15 @@ WindowStates resolveWindowStates(const CaseFile& c, std::size_t hours);
 std::vector<uint8_t> readStateSchedule(const std::filesystem::path& path, const std::vector<std::string>& states,
                                        std::size_t hours);
 
-// The annual scene (sky as loadAnnualScene) with group g in state choice[g]: the case's scene
-// files, less every surface a group's `surfaces` patterns match, then each group's state file in
-// group order. With `labels`: each sun-rule group's surfaces labelled with its sunIndex (others
-// -1), count sunGroups. Throws InputError at the group when a pattern matches no surface.
+// The scene files of a case with window states read into `scene`, group g in state choice[g]
+// (0 where choice is shorter): the case's scene files, less every surface a group's `surfaces`
+// patterns match, then each group's state file in group order. With labels and ws: each
+// sun-rule group's surfaces labelled with its sunIndex (others -1), count ws->sunGroups. Throws
+// InputError at the group when a pattern matches no surface.
+void readStateScene(const CaseFile& c, const std::vector<int>& choice, Scene& scene, SurfaceLabels* labels = nullptr,
+                    const WindowStates* ws = nullptr);
+
+// The annual scene (sky as loadAnnualScene) of readStateScene.
 std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const WindowStates& ws,
                                       const std::vector<int>& choice, SurfaceLabels* labels = nullptr);
 

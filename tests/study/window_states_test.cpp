@@ -11,6 +11,7 @@
 #include "reports/annual_results.h"
 #include "study/annual_study.h"
 #include "study/case_file.h"
+#include "study/case_scene.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
@@ -173,6 +174,15 @@ TEST(WindowStateScene, ReplacesTheGroupsSurfaces) {
       EXPECT_EQ(labels.ofSurface[id], -1);
     }
   EXPECT_EQ(panes, 1);  // the base's pane removed, the state's added
+  // Point-in-time studies see the first state, the base's pane removed.
+  const auto first = loadCaseScene(c, false);
+  panes = 0;
+  for (uint32_t id = 0; id < first->surfaceCount(); ++id)
+    if (first->surfaceName(id) == "south_pane") {
+      ++panes;
+      EXPECT_EQ(first->materials[first->surfaceMaterial(id)].name, "clear_glass");
+    }
+  EXPECT_EQ(panes, 1);
   c.windowGroups[0].patterns = {"nowhere_*"};
   try {
     loadStateScene(c, 0.0, ws, {0});
