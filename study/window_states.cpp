@@ -122,6 +122,9 @@ WindowStates resolveWindowStates(const CaseFile& c, std::size_t hours) {
     }
     ws.groups.push_back(std::move(g));
   }
+  if (ws.groups.size() > kMaxStateGroups)
+    throw InputError(c.windowGroups.front().loc, "at most " + std::to_string(kMaxStateGroups) +
+                                                     " window groups with states, got " + std::to_string(ws.groups.size()));
   if (ws.sunGroups > kMaxWindowGroups)
     throw InputError(c.windowGroups.front().loc, "at most " + std::to_string(kMaxWindowGroups) +
                                                      " window groups under the direct-sun rule, got " +
@@ -182,13 +185,13 @@ std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const 
 }
 
 void foldWindowState(const float* stateYear, const float* reference, const std::vector<uint8_t>& state, int k,
-                     const std::vector<uint8_t>& others, std::size_t sensors, float* combined) {
+                     const std::vector<uint8_t>& switched, std::size_t sensors, float* combined) {
   const std::size_t nh = state.size();
   for (std::size_t s = 0; s < sensors; ++s)
     for (std::size_t h = 0; h < nh; ++h) {
       if (state[h] != k) continue;
       const std::size_t i = s * nh + h;
-      combined[i] = others[h] == 1 ? stateYear[i] : combined[i] + (stateYear[i] - reference[i]);
+      combined[i] = switched[h] == 1 ? stateYear[i] : combined[i] + (stateYear[i] - reference[i]);
     }
 }
 

@@ -16,6 +16,9 @@
 
 namespace candela {
 
+// At most this many groups with states (each extra state is a coefficient pass).
+inline constexpr std::size_t kMaxStateGroups = 64;
+
 struct WindowStateGroup {
   std::string name;
   std::vector<std::string> states;               // state names, in the entry's order
@@ -36,7 +39,8 @@ bool hasWindowStates(const CaseFile& c);
 
 // The case's window states with their schedules read for a year of `hours` hours. Throws
 // InputError at the entry when some groups have states and others not, when `sun_grid` names no
-// grid, or more than kMaxWindowGroups groups use the direct-sun rule; readStateSchedule's errors.
+// grid, when there are more than kMaxStateGroups groups or more than kMaxWindowGroups use the
+// direct-sun rule; readStateSchedule's errors.
 WindowStates resolveWindowStates(const CaseFile& c, std::size_t hours);
 
 // A schedule file: one state name per line (surrounding blanks ignored), exactly `hours` lines
@@ -59,10 +63,11 @@ std::unique_ptr<Scene> loadStateScene(const CaseFile& c, double northDeg, const 
                                       const std::vector<int>& choice, SurfaceLabels* labels = nullptr);
 
 // Group q's state year folded into the switched year: in every hour h with state[h] == k,
-// combined = stateYear itself when q is the only group off its first state at h (others[h] == 1),
-// else combined += stateYear − reference (light is linear in each window's transmission: exact
-// when no path crosses two groups). Arrays sensor-major [s * hours + h], hours = state.size().
+// combined = stateYear itself when q is the only group off its first state at h (switched[h],
+// the number of groups off their first state, is 1), else combined += stateYear − reference
+// (light is linear in each window's transmission: exact when no path crosses two groups).
+// Arrays sensor-major [s * hours + h], hours = state.size().
 void foldWindowState(const float* stateYear, const float* reference, const std::vector<uint8_t>& state, int k,
-                     const std::vector<uint8_t>& others, std::size_t sensors, float* combined);
+                     const std::vector<uint8_t>& switched, std::size_t sensors, float* combined);
 
 }  // namespace candela

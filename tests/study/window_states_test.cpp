@@ -193,6 +193,33 @@ TEST(WindowStateScene, ReplacesTheGroupsSurfaces) {
   }
 }
 
+std::string resolveError(const CaseFile& c) {
+  try {
+    resolveWindowStates(c, 8760);
+  } catch (const InputError& e) {
+    return std::to_string(e.loc().line) + ": " + e.what();
+  }
+  return "accepted";
+}
+
+TEST(WindowStateScene, ResolveErrorsNameTheEntry) {
+  CaseFile c = roomCase();
+  c.windowGroups = {southStates()};
+  EXPECT_EQ(resolveError(c), "accepted");
+  c.windowGroups[0].sunGrid = "hall";
+  c.windowGroups[0].sunGridLoc = FileLoc{"case.toml", 33, 1};
+  EXPECT_NE(resolveError(c).find("33: 'sun_grid': no [[grid]] is named 'hall'"), std::string::npos);
+  c.windowGroups = {southStates(), southStates()};
+  c.windowGroups[1].name = "blinds";
+  c.windowGroups[1].states.clear();
+  c.windowGroups[1].loc.line = 40;
+  EXPECT_NE(resolveError(c).find("40: window group 'blinds' has no 'states' while others have"), std::string::npos);
+  c.windowGroups = {southStates()};
+  c.windowGroups[0].states.pop_back();  // one state, no schedule
+  EXPECT_NE(resolveError(c).find("30: window group 'south': the direct-sun rule chooses between two states"),
+            std::string::npos);
+}
+
 RunResult runRoom(CaseFile c, const fs::path& out) {
   RunContext run;
   run.request.outDir = out;
