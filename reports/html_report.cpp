@@ -228,6 +228,15 @@ void annualSummaryTable(std::ostringstream& h, const AnnualPage& page) {
     row("Window groups (LM-83 blinds)", std::to_string(page.annual().windowGroups.size()),
         "occupied hours with the group's blinds closed: " + hours);
   }
+  if (!page.annual().windowStates.empty()) {
+    std::string text;
+    for (const AnnualGridReport::WindowStateResult& w : page.annual().windowStates)
+      text += (text.empty() ? "" : "; ") + xmlEscape(w.group) + " " + xmlEscape(w.state) + ": " +
+              std::to_string(w.occupiedHours) + " h, sDA " + pctText(w.summary.sDA300_50) + ", ASE " +
+              pctText(w.summary.ASE1000_250);
+    row("Window states", std::to_string(page.annual().windowStates.size()),
+        "occupied hours of the switched year in each state; sDA and ASE with the group in that state all year: " + text);
+  }
   if (run.coefficientsTimeS) row("Daylight-coefficient time", formatFixed(*run.coefficientsTimeS, 2) + " s", "daylight-coefficient step");
   if (run.productTimeS) row("Hourly product time", formatFixed(*run.productTimeS, 2) + " s", "hourly product over the year");
   h << "</tbody>\n</table>\n</div>\n</div>\n";

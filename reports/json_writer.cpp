@@ -149,6 +149,19 @@ std::string summaryJson(const ReportData& data) {
           groups.push_back({{"name", w.name}, {"surfaces", w.surfaces}, {"blinds_closed_hours", w.blindsClosedHours}});
         o["window_groups"] = groups;
       }
+      if (!g.annual->windowStates.empty()) {
+        json states = json::array();
+        for (const AnnualGridReport::WindowStateResult& w : g.annual->windowStates)
+          states.push_back({{"group", w.group},
+                            {"state", w.state},
+                            {"occupied_hours", w.occupiedHours},
+                            {"DA300", number(w.summary.DA300)},
+                            {"sDA300_50", number(w.summary.sDA300_50)},
+                            {"ASE1000_250", number(w.summary.ASE1000_250)},
+                            {"UDI_autonomous", number(w.summary.UDI_autonomous)},
+                            {"UDI_exceeded", number(w.summary.UDI_exceeded)}});
+        o["window_states"] = states;
+      }
     }
     grids.push_back(o);
   }

@@ -73,6 +73,15 @@ struct AnnualGridReport {
     int blindsClosedHours = 0;
   };
   std::vector<WindowGroupHours> windowGroups;
+  // Window states (docs/annual.md "Window states"): per group and state, the occupied hours the
+  // grid's switched year spends in it and the metrics of the year with the group in that state
+  // all year (the other groups in their first state); empty without states.
+  struct WindowStateResult {
+    std::string group, state;
+    int occupiedHours = 0;
+    GridAnnualSummary summary;
+  };
+  std::vector<WindowStateResult> windowStates;
 };
 
 // What a plan shows besides its grid (report.html): a luminaire's position or an observer's, in

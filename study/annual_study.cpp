@@ -21,6 +21,7 @@
 #include "study/run_outputs.h"
 #include "study/warnings.h"
 #include "study/window_groups.h"
+#include "study/window_states.h"
 #include "metrics/window_groups.h"
 
 #include <algorithm>
@@ -141,6 +142,7 @@ struct AnnualInputs {
   std::vector<PreparedGrid> grids;
   std::vector<Vec3> positions, normals;  // every grid's sensors, grids in case order
   WindowGroups windows;                  // [[window_group]]s resolved (none: one group per grid)
+  WindowStates states;                   // [[window_group]]s with states (their labels in windows.labels)
 };
 
 AnnualInputs readAnnualInputs(const CaseFile& c) {
@@ -156,10 +158,16 @@ AnnualInputs readAnnualInputs(const CaseFile& c) {
   if (!c.surfaceGrids.empty())
     throw InputError(c.surfaceGrids.front().loc, "[[surface_grid]] applies to point-in-time runs, not an annual sky "
                                                  "(the walls' and ceiling's EN 12464-1 requirements are for electric lighting)");
-  in.scene = loadAnnualScene(c, in.north);
-  in.windows = resolveWindowGroups(c, *in.scene);
-  if (!c.windowGroups.empty() && !c.annual.blinds)
-    throw InputError(c.windowGroups.front().loc, "[[window_group]] sets LM-83's operable blinds, but [annual] blinds = false");
+  if (hasWindowStates(c)) {
+    // Every group in its first state, the sun-rule groups' surfaces labelled (study/window_states.h).
+    in.states = resolveWindowStates(c, epw.records.size());
+    in.scene = loadStateScene(c, in.north, in.states, std::vector<int>(in.states.groups.size(), 0), &in.windows.labels);
+  } else {
+    in.scene = loadAnnualScene(c, in.north);
+    in.windows = resolveWindowGroups(c, *in.scene);
+    if (!c.windowGroups.empty() && !c.annual.blinds)
+      throw InputError(c.windowGroups.front().loc, "[[window_group]] sets LM-83's operable blinds, but [annual] blinds = false");
+  }
   in.grids = prepareGrids(c, gridBounds(*in.scene));
   for (const GridSpec& g : c.grids) {
     if (g.daylightFactor)
@@ -250,6 +258,9 @@ void describeAnnualSettings(ReportData& data, const CaseFile& c, const AnnualInp
       {"occupancy", formatFixed(a.occupancyStartHour, 2) + "–" + formatFixed(a.occupancyEndHour, 2) + " h (" +
                         std::to_string(occupiedCount) + " h a year)"},
       {"blinds (LM-83)", !a.blinds ? "not modelled"
+                         : !in.states.empty() ? "replaced by window states (" + std::to_string(in.states.groups.size()) +
+                                                    (in.states.groups.size() == 1 ? " group" : " groups") +
+                                                    ": LM-83's direct-sun rule or a schedule)"
                          : !in.windows.groups.empty()
                              ? std::to_string(in.windows.groups.size()) +
                                    " window groups closing in the fewest combination that leaves ≤ 2 % of a grid's "
@@ -312,6 +323,15 @@ struct GridYear {
   std::vector<SensorAnnualMetrics> sensors;
   int chosenSensor = 0;
   std::vector<double> chosenSensorLux;
+  // Window states: per group the state of every hour, per hour the groups off their first state;
+  // per traced state (a group in a state other than its first) its year's stream; the metrics of
+  // the reference year (every group in its first state), then of each traced state; the switched
+  // year's streams (they become the grid's hourly files).
+  std::vector<std::vector<uint8_t>> stateOf;
+  std::vector<uint8_t> switched;
+  std::vector<std::unique_ptr<AnnualResultsStream>> stateTotal;
+  std::vector<std::vector<SensorAnnualMetrics>> stateSensors;
+  std::unique_ptr<AnnualResultsStream> switchedTotal, switchedDirect;
 };
 
 // The part of block [b0, b0 + n) that lies in grid g: its first sensor and count (0: none).
@@ -518,6 +538,156 @@ void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob&
   }
 }
 
+// A traced window state: group `group` in state `state` (≥ 1), the other groups in their first.
+struct StateTrace {
+  int group = 0, state = 0;
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<YearTracer> tracer;
+};
+
+// The hourly stream of grid g's year in one window state, opened beside the run's folder.
+std::unique_ptr<AnnualResultsStream> stateStream(const AnnualPass& p, const GridYear& g) {
+  std::unique_ptr<AnnualResultsStream> out;
+  p.folder.guard([&] {
+    static int serial = 0;  // unique temporary names; the files are renamed at the end
+    out = std::make_unique<AnnualResultsStream>(p.folder.beside() / ("window_state_" + std::to_string(serial++)),
+                                                static_cast<int>(g.count), p.y.stamps);
+  });
+  return out;
+}
+
+// Pass 2 with window states: each block's reference year (every group in its first state) read
+// back, each traced state's year beside it (its own stream and metrics), folded into the switched
+// year by the hours' states (foldWindowState), which goes to the grid's switched streams.
+void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObserver& observer) {
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = traced.size();
+  const ObservedStep step(observer, "window states: coefficients", 2 * sensors * nq);
+  struct Slice {
+    GridYear* g;
+    std::size_t lo, k;
+    std::vector<float> ref, refDirect, total, direct;
+  };
+  auto metrics = [&](const float* e, const float* d, std::size_t k) {
+    return sensorAnnualMetrics(e, d, static_cast<int>(k), static_cast<int>(nh), p.y.occupied, p.th);
+  };
+  auto addTo = [](std::vector<SensorAnnualMetrics>& to, const std::vector<SensorAnnualMetrics>& m) {
+    to.insert(to.end(), m.begin(), m.end());
+  };
+  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+    const std::size_t n = std::min(p.block, sensors - b0);
+    std::vector<Slice> slices;
+    for (GridYear& g : p.grids) {
+      const auto [lo, k] = overlap(g, b0, n);
+      if (k == 0) continue;
+      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}, {}};
+      const int from = static_cast<int>(lo - g.first);
+      p.folder.guard([&] {
+        g.total->read(from, static_cast<int>(k), sl.ref.data());
+        g.directSun->read(from, static_cast<int>(k), sl.refDirect.data());
+      });
+      sl.total = sl.ref;
+      sl.direct = sl.refDirect;
+      addTo(g.stateSensors[0], metrics(sl.ref.data(), sl.refDirect.data(), k));
+      slices.push_back(std::move(sl));
+    }
+    for (std::size_t q = 0; q < nq; ++q) {
+      const StateTrace& st = traced[q];
+      const AnnualIlluminance year = st.tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
+      checkFinite(year.total, "the hourly illuminance of a window state", b0 * nh);
+      for (Slice& sl : slices) {
+        GridYear& g = *sl.g;
+        const float* e = year.total.data() + (sl.lo - b0) * nh;
+        const float* d = year.directSun.data() + (sl.lo - b0) * nh;
+        const std::vector<uint8_t>& state = g.stateOf[static_cast<std::size_t>(st.group)];
+        foldWindowState(e, sl.ref.data(), state, st.state, g.switched, sl.k, sl.total.data());
+        foldWindowState(d, sl.refDirect.data(), state, st.state, g.switched, sl.k, sl.direct.data());
+        p.folder.guard([&] { g.stateTotal[q]->append(e, static_cast<int>(sl.k)); });
+        addTo(g.stateSensors[q + 1], metrics(e, d, sl.k));
+      }
+    }
+    for (Slice& sl : slices) {
+      GridYear& g = *sl.g;
+      p.folder.guard([&] {
+        g.switchedTotal->append(sl.total.data(), static_cast<int>(sl.k));
+        g.switchedDirect->append(sl.direct.data(), static_cast<int>(sl.k));
+      });
+      const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
+      if (chosen >= sl.lo && chosen < sl.lo + sl.k)
+        g.chosenSensorLux.assign(sl.total.begin() + (chosen - sl.lo) * nh, sl.total.begin() + (chosen - sl.lo + 1) * nh);
+      addTo(g.sensors, metrics(sl.total.data(), sl.direct.data(), sl.k));
+    }
+  }
+}
+
+// Each grid's state per group and hour: the schedule's, or LM-83's direct-sun rule over the
+// sun-rule groups (blindsClosureFromCounts: a group "closed" is in its second state) on the
+// group's sun_grid or on the grid itself.
+void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
+  const WindowStates& ws = in.states;
+  const std::size_t nh = p.y.stamps.size();
+  std::vector<std::vector<uint32_t>> closure(p.grids.size());
+  for (std::size_t gi = 0; gi < p.grids.size() && ws.sunGroups > 0; ++gi)
+    closure[gi] = blindsClosureFromCounts(p.grids[gi].closureCounts, ws.sunGroups,
+                                          static_cast<int>(p.grids[gi].count), p.y.occupied);
+  for (std::size_t gi = 0; gi < p.grids.size(); ++gi) {
+    GridYear& g = p.grids[gi];
+    std::vector<int>().swap(g.closureCounts);
+    g.stateOf.clear();
+    g.switched.assign(nh, 0);
+    for (const WindowStateGroup& wg : ws.groups) {
+      std::vector<uint8_t> state = wg.scheduled;
+      if (state.empty()) {
+        const std::vector<uint32_t>& mask = closure[wg.sunGrid >= 0 ? static_cast<std::size_t>(wg.sunGrid) : gi];
+        state.resize(nh);
+        for (std::size_t h = 0; h < nh; ++h) state[h] = static_cast<uint8_t>((mask[h] >> wg.sunIndex) & 1u);
+      }
+      for (std::size_t h = 0; h < nh; ++h) g.switched[h] += state[h] != 0;
+      g.stateOf.push_back(std::move(state));
+    }
+  }
+}
+
+// With window states: the reference year (every group in its first state; the direct sun split
+// by the sun-rule groups), each grid's states per hour, then one coefficient pass per group and
+// state other than its first (every state is traced, used or not: its results are reported).
+void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
+                       AnnualTraces& t, StudyObserver& observer) {
+  {
+    YearTracer reference(*in.scene, job, true);
+    openPass(p, reference, false, observer);
+    t.coefficientsOpenS = reference.coefficientsS();
+    t.productOpenS = reference.productS();
+    t.raysOpen = reference.rays();
+  }
+  chooseWindowStates(in, p);
+  YearJob stateJob = job;
+  stateJob.windows = nullptr;
+  const WindowStates& ws = in.states;
+  std::vector<StateTrace> traced;
+  for (std::size_t q = 0; q < ws.groups.size(); ++q)
+    for (std::size_t k = 1; k < ws.groups[q].states.size(); ++k) {
+      StateTrace st{static_cast<int>(q), static_cast<int>(k), nullptr, nullptr};
+      std::vector<int> choice(ws.groups.size(), 0);
+      choice[q] = static_cast<int>(k);
+      st.scene = loadStateScene(c, in.north, ws, choice);
+      st.scene->sky->model = in.scene->sky->model;
+      st.tracer = std::make_unique<YearTracer>(*st.scene, stateJob, true);
+      traced.push_back(std::move(st));
+    }
+  for (GridYear& g : p.grids) {
+    g.stateSensors.assign(traced.size() + 1, {});
+    for (std::size_t q = 0; q < traced.size(); ++q) g.stateTotal.push_back(stateStream(p, g));
+    g.switchedTotal = stateStream(p, g);
+    g.switchedDirect = stateStream(p, g);
+  }
+  statesPass(p, traced, observer);
+  for (const StateTrace& st : traced) {
+    t.coefficientsClosedS += st.tracer->coefficientsS();
+    t.productClosedS += st.tracer->productS();
+    t.raysClosed += st.tracer->rays();
+  }
+}
+
 // The year's trace settings: the case's and the command line's, except that at the normal
 // preset the coefficients' hemisphere takes kAnnualNormalHemisphereSamples rays unless the case
 // or the command line gives a count. The annual metrics sum each sensor's coefficients over 3650
@@ -542,6 +712,11 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
   YearJob job{&in.positions, &in.normals, &t.sky,         &t.sunSet,      in.north,
               settings,       a.sunSamples, trace.threads, p.processes};
   if (p.compliance && p.compliance->needsHours()) job.overcast = &p.compliance->overcastPatches();
+  if (!in.states.empty()) {
+    if (in.windows.labels.count > 0) job.windows = &in.windows.labels;
+    traceWindowStates(c, in, job, p, t, observer);
+    return;
+  }
   if (in.windows.labels.count > 0) {
     job.windows = &in.windows.labels;
     traceWindowGroups(c, in, job, p, t, observer);
@@ -570,6 +745,19 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
   }
 }
 
+// Per group and state: the occupied hours in it and the metrics of its year (statesPass's order:
+// the reference year, then each group's states after its first).
+void windowStateResults(const WindowStates& ws, const YearHours& y, GridYear& gy, AnnualGridReport& ar) {
+  std::size_t traced = 0;
+  for (std::size_t q = 0; q < ws.groups.size() && !gy.stateSensors.empty(); ++q)
+    for (std::size_t k = 0; k < ws.groups[q].states.size(); ++k) {
+      int hours = 0;
+      for (std::size_t h = 0; h < y.occupied.size(); ++h) hours += y.occupied[h] && gy.stateOf[q][h] == static_cast<uint8_t>(k);
+      const std::vector<SensorAnnualMetrics>& m = gy.stateSensors[k == 0 ? 0 : ++traced];
+      ar.windowStates.push_back({ws.groups[q].name, ws.groups[q].states[k], hours, summarizeAnnual(m, y.occupiedCount)});
+    }
+}
+
 // Each grid's report from its metrics (LM-83's blinds rule applied per grid).
 void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThresholds& th, const YearHours& y,
                        std::vector<GridYear>& grids) {
@@ -585,6 +773,7 @@ void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThr
     for (std::size_t q = 0; q < in.windows.groups.size(); ++q)
       ar.windowGroups.push_back({in.windows.groups[q].name, in.windows.groups[q].surfaces,
                                  closedHoursOfGroup(gy.closure, static_cast<int>(q))});
+    windowStateResults(in.states, y, gy, ar);
     GridReport r;
     r.name = g.spec->name;
     r.description = gridDescription(g) + "; temporal map of sensor " + std::to_string(ar.chosenSensor);
@@ -598,6 +787,28 @@ void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThr
   }
 }
 
+// With window states: the switched year as the grid's hourly files, and each state's year as
+// <grid>_<group>_<state> (the reference year for every group's first state).
+void writeWindowStateFiles(const std::filesystem::path& outDir, const WindowStates& ws, const std::string& grid,
+                           GridYear& gy) {
+  gy.switchedTotal->commitAs(outDir / annualResultsFileName(grid));
+  gy.switchedDirect->commitAs(outDir / annualResultsFileName(grid + "_direct_sun"));
+  std::size_t traced = 0;
+  std::filesystem::path reference;
+  for (const WindowStateGroup& g : ws.groups)
+    for (std::size_t k = 0; k < g.states.size(); ++k) {
+      const std::filesystem::path target = outDir / annualResultsFileName(grid + "_" + g.name + "_" + g.states[k]);
+      if (k > 0) {
+        gy.stateTotal[traced++]->commitAs(target);
+      } else if (reference.empty()) {
+        gy.total->commitAs(target);
+        reference = target;
+      } else {
+        std::filesystem::copy_file(reference, target, std::filesystem::copy_options::overwrite_existing);
+      }
+    }
+}
+
 // Per grid: the annual CSV; the hourly files (all light, and direct sun alone), complete, move in.
 void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& data, const AnnualInputs& in,
                       std::vector<GridYear>& grids) {
@@ -606,6 +817,10 @@ void writeAnnualGrids(const std::filesystem::path& outDir, const ReportData& dat
     std::vector<ReportPoint> points;
     for (const SensorPoint& s : g.grid.points) points.push_back({s.position, s.normal});
     writeAnnualGridCsv(outDir, g.spec->name, points, *data.grids[gi].annual);
+    if (!in.states.empty()) {
+      writeWindowStateFiles(outDir, in.states, g.spec->name, grids[gi]);
+      continue;
+    }
     grids[gi].total->commitAs(outDir / annualResultsFileName(g.spec->name));
     grids[gi].directSun->commitAs(outDir / annualResultsFileName(g.spec->name + "_direct_sun"));
   }

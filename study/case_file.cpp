@@ -7,6 +7,7 @@
 #include "study/compliance/en1838_case.h"
 #include "study/case_grids.h"
 #include "study/case_window_groups.h"
+#include "study/honeybee_folder.h"
 #include "study/case_toml.h"
 
 #include <toml++/toml.h>
@@ -44,6 +45,17 @@ void readCase(const Context& c, const toml::table& t, CaseFile& out) {
 
 void readScene(const Context& c, const toml::table& t, CaseFile& out) {
   Table tab(t, c, "[[scene]]");
+  if (const toml::node* hb = tab.get("honeybee_folder")) {  // study/honeybee_folder.h
+    if (const toml::node* f = tab.get("file")) c.fail(*f, "a [[scene]] gives either 'file' or 'honeybee_folder'");
+    const std::string text = asString(c, *hb, "honeybee_folder");
+    fs::path folder = fs::path(text).is_relative() ? c.dir / text : fs::path(text);
+    std::error_code ec;
+    if (text.empty() || !fs::is_directory(folder, ec))
+      c.fail(*hb, "Honeybee folder '" + text + "' not found (looked for " + folder.lexically_normal().string() + ")");
+    tab.finish();
+    readHoneybeeFolder(folder.lexically_normal(), c.at(*hb), out);
+    return;
+  }
   ScenePath s;
   s.loc = c.at(tab.require("file"));
   s.file = filePath(tab, "file", "scene file");

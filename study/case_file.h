@@ -199,6 +199,19 @@ struct WindowGroupSpec {
   // (0, 1]; unset: LM-83-12 2.2.7's 20 % (study/blinds.h kBlindsTransmittance).
   std::optional<double> blindsTransmittance;
   FileLoc loc, patternsLoc;
+  // Window states (docs/annual.md "Window states"): the group's geometry and materials in each
+  // state, one Radiance file each; `patterns` (optional then) name base-scene surfaces the states
+  // replace. The rule: `schedule`, a file of one state name per hour, or else LM-83's direct-sun
+  // threshold on the grid `sunGrid` (empty: each grid for itself), first state below it, second above.
+  struct State {
+    std::string name;
+    std::filesystem::path scene;
+    FileLoc loc;
+  };
+  std::vector<State> states;
+  std::filesystem::path schedule;
+  std::string sunGrid;
+  FileLoc scheduleLoc, sunGridLoc;
 };
 
 // Unset optionals take the quality preset's value (chosen by the engine).

@@ -7,6 +7,7 @@
 #include "photometry/site.h"
 #include "photometry/photometric_file.h"
 #include "photometry/make_sky.h"
+#include "study/window_states.h"
 
 #include <cmath>
 #include <optional>
@@ -26,7 +27,11 @@ std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
 
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
   auto scene = std::make_unique<Scene>();
-  readSceneFiles(scenePaths(c), *scene, c.settings.scene);
+  // Window states (docs/annual.md): point-in-time studies see every group in its first state.
+  if (hasWindowStates(c))
+    readStateScene(c, {}, *scene);
+  else
+    readSceneFiles(scenePaths(c), *scene, c.settings.scene);
   scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
   placeLuminaires(*scene, c.luminaires);
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));
@@ -61,16 +66,20 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather) {
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg) {
   auto scene = std::make_unique<Scene>();
   readSceneFiles(scenePaths(c), *scene, c.settings.scene);
-  scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
+  finishAnnualScene(c, northDeg, *scene);
+  return scene;
+}
+
+void finishAnnualScene(const CaseFile& c, double northDeg, Scene& scene) {
+  scene.portals.insert(scene.portals.end(), c.portals.begin(), c.portals.end());
   SkyConditions uniform;
   uniform.diffuseHorizontalLux = kPi;  // 1 cd/m² everywhere: its value is never used
-  replaceSceneSky(*scene, c.sky.loc);
+  replaceSceneSky(scene, c.sky.loc);
   SkyDome dome;
   dome.model = makeSky({SkyKind::kUniform}, uniform, c.sky.loc);
   dome.northDeg = northDeg;
   dome.horizontalSkyLux = uniform.diffuseHorizontalLux;
-  scene->sky = dome;
-  return scene;
+  scene.sky = dome;
 }
 
 DaylightSpec daylightFromCase(const CaseFile& c) {

@@ -34,6 +34,9 @@ Site caseSite(const CaseFile& c, const EpwLocation* weather = nullptr);
 // geometry under a uniform sky that only guides the sampling of the sky coefficients
 // (skyCoefficients). Luminaires are left out: annual metrics are of daylight alone.
 std::unique_ptr<Scene> loadAnnualScene(const CaseFile& c, double northDeg);
+// What loadAnnualScene does after reading the files: the case's portals and the annual sky
+// (study/window_states.h reads its scenes otherwise).
+void finishAnnualScene(const CaseFile& c, double northDeg, Scene& scene);
 
 
 }  // namespace candela

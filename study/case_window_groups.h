@@ -11,6 +11,9 @@
 
 namespace candela {
 
+// At most this many states per window group.
+inline constexpr std::size_t kMaxWindowStates = 64;
+
 // Appends the [[window_group]] `t` (the index-th) to out.windowGroups; `names` holds the group
 // names so far (a name twice, an empty pattern list or a transmittance outside (0, 1] is an
 // InputError at its line).
