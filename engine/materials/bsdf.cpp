@@ -48,20 +48,6 @@ struct LocalFrame {
   Vec3 toWorld(const Vec3& v) const { return v.x * x + v.y * y + v.z * z; }
 };
 
-// The up vector when its three functions are numbers (0 0 1), else zero (the frame then falls
-// back as above); the function file's transform is not applied to it (shadow rays only).
-Vec3 constantUp(const RadPrimitive& p, size_t at) {
-  Vec3 up(0.0);
-  for (int k = 0; k < 3; ++k) {
-    const std::string& s = p.strings[at + static_cast<size_t>(k)];
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || end != s.data() + s.size()) return Vec3(0.0);
-    up[k] = v;
-  }
-  return up;
-}
-
 double readThickness(const MaterialReadContext& ctx) {
   const std::string& s = ctx.primitive.strings[0];
   double v = 0.0;
@@ -90,8 +76,6 @@ class BsdfFamily : public MaterialFamily {
                             "transmittance), got " + std::to_string(p.reals.size()));
     m.thicknessM = peak_ ? 0.0 : readThickness(ctx);
     m.bsdf = ctx.findBsdf(p.strings[fileAt]);
-    // Shadow rays meet the material as read (no up vector evaluated): constant functions give it.
-    m.anisotropyU = constantUp(p, fileAt + 1);
     m.color = p.reals.size() >= 3 ? ctx.vec(0) : Rgb(0.0);
     m.backColor = p.reals.size() >= 6 ? ctx.vec(3) : Rgb(0.0);
     m.transmissionColor = p.reals.size() >= 9 ? ctx.vec(6) : Rgb(0.0);
@@ -117,9 +101,9 @@ class BsdfFamily : public MaterialFamily {
   std::optional<Rgb> straightTransmittance(const Material& m, const Vec3& dir, const Vec3& ng) const override {
     if (m.thicknessM != 0.0) return Rgb(1.0);
     if (!peak_) return std::nullopt;
-    // Light arriving from dir's end; the frame at the hit needs the up vector, which shadow rays
-    // do not evaluate: a constant one (m.anisotropyU as read) serves.
-    const LocalFrame f(ng, upOf(m));
+    // Light arriving from dir's end; shadow rays see the material at the hit (the hook evaluated
+    // its up vector: engine/materials/pattern_hook.h, straightThrough).
+    const LocalFrame f(ng, m.anisotropyU);
     return peakOf(m).peakThrough(f.toLocal(dir)) * m.patternColour;
   }
   bool seeThrough(const Material& m) const override { return peak_ || m.thicknessM != 0.0; }
@@ -206,7 +190,6 @@ class BsdfFamily : public MaterialFamily {
 
  private:
   static const Bsdf& peakOf(const Material& m) { return *m.bsdf; }
-  static Vec3 upOf(const Material& m) { return m.anisotropyU; }
   bool peak_;
 };
 
