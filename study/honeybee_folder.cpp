@@ -44,6 +44,11 @@ void refuseStates(const fs::path& states, const std::string& what) {
 void readHoneybeeFolder(const fs::path& folder, const FileLoc& loc, CaseFile& out) {
   std::error_code ec;
   const fs::path model = fs::is_directory(folder / "model", ec) ? folder / "model" : folder;
+  // Honeybee runs Radiance from the folder holding model/, and its files name others from there
+  // (./model/bsdf/clear.xml): that folder is looked in for them wherever candela runs.
+  fs::path inner = model;
+  if (inner.filename().empty()) inner = inner.parent_path();  // "…/model/"
+  out.settings.scene.rootFolder = model == folder ? inner.parent_path() : folder;
   if (!fs::is_directory(model / "scene", ec) && !fs::is_directory(model / "aperture", ec))
     throw InputError(loc, "'" + folder.string() + "' is not a Honeybee radiance folder: it has neither "
                           "model/scene nor model/aperture");

@@ -19,6 +19,9 @@ namespace candela {
 // folder has neither model/scene nor model/aperture, and at states.json (its line where known)
 // for a file that is not such JSON, a state without identifier or default, a default file that
 // does not exist, a group name twice, or dynamic scene or interior aperture groups (not read).
+// The folder holding model/ becomes the scene's root folder (SceneReadOptions::rootFolder): the
+// files Honeybee's scene files name from there (./model/bsdf/clear.xml) are found wherever
+// candela runs.
 void readHoneybeeFolder(const std::filesystem::path& folder, const FileLoc& loc, CaseFile& out);
 
 }  // namespace candela

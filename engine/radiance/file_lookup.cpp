@@ -7,7 +7,8 @@
 namespace candela {
 
 std::filesystem::path findSceneFile(const std::string& name, const std::filesystem::path& folder, const FileLoc& loc,
-                                    const std::string& who, const std::string& role) {
+                                    const std::string& who, const std::string& role,
+                                    const std::filesystem::path& root) {
   const std::filesystem::path rel(name);
   bool up = false;
   for (const auto& part : rel) up |= part == "..";
@@ -25,13 +26,15 @@ std::filesystem::path findSceneFile(const std::string& name, const std::filesyst
     }
   }
   places.push_back(folder.empty() ? std::filesystem::current_path() : folder);
+  if (!root.empty()) places.push_back(root);
   for (const std::filesystem::path& place : places) {
     const std::filesystem::path path = place / rel;
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) return path;
   }
   throw InputError(loc, who + ": " + role + " '" + name + "' is not in the working directory, in RAYPATH or in " +
-                            (folder.empty() ? std::filesystem::current_path() : folder).string());
+                            (folder.empty() ? std::filesystem::current_path() : folder).string() +
+                            (root.empty() ? "" : " or " + root.string()));
 }
 
 }  // namespace candela

@@ -15,9 +15,12 @@
 namespace candela {
 
 // The path of `name` (a `role` such as "function file", named by `who` at loc; `folder` the
-// naming file's folder). InputError at loc when the name is not allowed or found nowhere (the
-// message names the places, never a file's content).
+// naming file's folder). `root`, when given, is looked in last: the root of a model whose files
+// name others from it, as a working directory of its own (a Honeybee radiance folder's: Honeybee
+// runs Radiance there, and its files name ./model/bsdf/…). InputError at loc when the name is not
+// allowed or found nowhere (the message names the places, never a file's content).
 std::filesystem::path findSceneFile(const std::string& name, const std::filesystem::path& folder, const FileLoc& loc,
-                                    const std::string& who, const std::string& role);
+                                    const std::string& who, const std::string& role,
+                                    const std::filesystem::path& root = {});
 
 }  // namespace candela

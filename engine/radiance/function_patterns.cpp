@@ -20,7 +20,7 @@ FunctionFiles::FunctionFiles() : program_(std::make_shared<cal::Program>()) {}
 const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const RadPrimitive& p,
                                                const std::filesystem::path& folder, const std::string& role,
                                                const std::function<void(const std::filesystem::path&, Read&)>& read) {
-  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", role);
+  const std::filesystem::path path = findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", role, root_);
   std::error_code ec;
   const std::string key = role + ":" + std::filesystem::weakly_canonical(path, ec).string();
   auto it = read_.find(key);

@@ -50,6 +50,8 @@ class FunctionFiles {
                                                             const std::filesystem::path& folder);
   // A window system's scattering (LBNL BSDF XML: engine/radiance/bsdf_xml.h) named by p, read once.
   std::shared_ptr<const Bsdf> bsdf(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder);
+  // A model's root, looked in last for every file (engine/radiance/file_lookup.h).
+  void setRoot(const std::filesystem::path& root) { root_ = root; }
   // The files read, in order (for summary.json).
   const std::vector<std::string>& files() const { return files_; }
 
@@ -69,6 +71,7 @@ class FunctionFiles {
                    const std::string& role, const std::function<void(const std::filesystem::path&, Read&)>& read);
 
   std::shared_ptr<cal::Program> program_;
+  std::filesystem::path root_;
   std::map<std::string, Read> read_;  // by role and canonical path
   std::vector<std::string> files_;
 };

@@ -42,7 +42,7 @@ using Vec2 = glm::dvec2;
 
 // x y pairs, blank-separated, from a vertex file (genprism.c's readverts).
 std::vector<Vec2> readVertexFile(const RadCommand& cmd, const RadExpandContext& ctx, const std::string& name) {
-  const fs::path path = findSceneFile(name, ctx.folder, cmd.loc, "genprism", "vertex file");
+  const fs::path path = findSceneFile(name, ctx.folder, cmd.loc, "genprism", "vertex file", ctx.root);
   std::istringstream in(readInputFile(path, "genprism vertex file"));
   std::vector<double> xy;
   std::string line;

@@ -80,7 +80,7 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
   std::optional<SurfaceData> data;
   std::filesystem::path dataPath;
   try {
-    dataPath = findSceneFile(w[5], ctx.folder, cmd.loc, "gensurf", "data file");
+    dataPath = findSceneFile(w[5], ctx.folder, cmd.loc, "gensurf", "data file", ctx.root);
   } catch (const InputError&) {
     dataPath.clear();  // an expression
   }

@@ -269,7 +269,7 @@ class XformExpansion {
 
   // A file the command names, found as Radiance finds files (engine/radiance/file_lookup.h).
   fs::path resolve(const std::string& name, const char* role) const {
-    return findSceneFile(name, ctx_.folder, cmd_.loc, "xform", role);
+    return findSceneFile(name, ctx_.folder, cmd_.loc, "xform", role, ctx_.root);
   }
 
   // xform.c's doargf: each line not empty and not a comment is one invocation, the line's words
@@ -438,7 +438,7 @@ class XformExpansion {
     if (ext == ".rtm" || ext == ".msh") obj.replace_extension(".obj");
     fs::path path;
     try {
-      path = findSceneFile(obj.string(), fs::path(p.loc.file).parent_path(), p.loc, "mesh", "OBJ file");
+      path = findSceneFile(obj.string(), fs::path(p.loc.file).parent_path(), p.loc, "mesh", "OBJ file", ctx_.root);
     } catch (const InputError&) {
       return 1.0;
     }

@@ -18,6 +18,7 @@ namespace candela {
 // commands expanded, relative to its own folder).
 struct RadExpandContext {
   std::filesystem::path folder;
+  std::filesystem::path root;  // looked in last (SceneReadOptions::rootFolder)
   std::function<std::vector<RadPrimitive>(const std::filesystem::path& file, const FileLoc& from)> readFile;
   // In a pipeline (`!genbox ... | xform -t ...`), what the previous command wrote: a generator
   // that reads its standard input when given no file (xform) reads this; null when there is none.

@@ -39,6 +39,7 @@ using Primitive = RadPrimitive;
 class SceneReader::Builder {
  public:
   Builder(Scene& scene, SceneReadOptions options) : scene_(scene), options_(options) {
+    functionFiles_.setRoot(options_.rootFolder);
     for (size_t i = 0; i < scene.materials.size(); ++i) materials_[scene.materials[i].name] = static_cast<int>(i);
   }
 
@@ -48,6 +49,7 @@ class SceneReader::Builder {
               const std::function<void(RadPrimitive&&)>& sink) {
     RadExpandContext ctx;
     ctx.folder = folder;
+    ctx.root = options_.rootFolder;
     ctx.maxMemoryBytes = options_.maxMemoryBytes;
     ctx.warnings = &scene_.inputWarnings;
     ctx.readFile = [this, depth](const std::filesystem::path& file, const FileLoc& from) {
@@ -177,7 +179,7 @@ class SceneReader::Builder {
       // in its place with a warning; otherwise the mesh is refused.
       const std::filesystem::path beside = std::filesystem::path(file).replace_extension(".obj");
       try {
-        findSceneFile(beside.string(), folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file");
+        findSceneFile(beside.string(), folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file", options_.rootFolder);
       } catch (const InputError&) {
         fail(p, "mesh '" + p.name + "' names a Radiance compiled mesh (" + file +
                     "); pass its source OBJ file instead (mesh ... model.obj, the file obj2mesh compiled it from)");
@@ -202,7 +204,7 @@ class SceneReader::Builder {
       modifierOf(p);  // defined before use, as every modifier
       opt.forcedModifier = p.modifier;
     }
-    const std::filesystem::path path = findSceneFile(fileRead, folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file");
+    const std::filesystem::path path = findSceneFile(fileRead, folderOf(p), p.loc, "mesh '" + p.name + "'", "OBJ file", options_.rootFolder);
     try {
       checkInputFile(path, "OBJ file");
     } catch (const InputError&) {

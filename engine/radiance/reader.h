@@ -43,6 +43,9 @@ struct SceneReadOptions {
   // --max-memory in bytes (0: none): bounds what one inline command may make
   // (engine/radiance/gen.h, generatedPrimitivesAllowed).
   uint64_t maxMemoryBytes = 0;
+  // A model's root, looked in last for every file a scene file names (engine/radiance/
+  // file_lookup.h): a Honeybee radiance folder's (study/honeybee_folder.h); empty: none.
+  std::filesystem::path rootFolder;
 };
 
 // Reads scene files, in order, into one scene: modifiers defined in one file serve the next.

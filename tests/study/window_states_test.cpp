@@ -15,7 +15,8 @@
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
-#include "../support/temp_files.h"
+#include "tests/engine/bsdf_test_xml.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 
@@ -402,6 +403,31 @@ TEST(HoneybeeFolder, ReadsIntoItsHandWrittenCase) {
   EXPECT_NE(parseError(hbCase, dir / "case.toml").find("aperture group 'south', state 1: its default file"),
             std::string::npos);
   fs::remove_all(dir);
+}
+
+// Honeybee's scene files name their BSDF files from the folder holding model/ (Honeybee runs
+// Radiance there): found wherever candela runs (the tests run in the build folder), and not
+// without the folder as the scene's root.
+TEST(HoneybeeFolder, FilesNamedFromTheFolderRootAreFound) {
+  const fs::path dir = test_support::scratchDir("window_states", "honeybee-bsdf." + std::to_string(::getpid()));
+  const fs::path m = dir / "folder" / "model";
+  for (const char* sub : {"scene", "aperture_group", "bsdf"}) fs::create_directories(m / sub);
+  std::ofstream(m / "scene" / "envelope.mat") << "void plastic wall 0 0 5 0.5 0.5 0.5 0 0\n";
+  std::ofstream(m / "scene" / "envelope.rad") << "wall polygon floor 0 0 12 0 0 0 0 4 0 4 4 0 4 0 0\n";
+  std::ofstream(m / "bsdf" / "half.xml") << test_support::bsdfXml(
+      {{"Transmission Front", std::vector<double>(145 * 145, 0.5 / kPi)}});
+  std::ofstream(m / "aperture_group" / "south..default..0.rad")
+      << "void BSDF half 6 0.0 ./model/bsdf/half.xml 0.01 0.01 1.0 .\n0\n0\n"
+         "half polygon south 0 0 12 0 0 1 0 0 2 4 0 2 4 0 1\n";
+  std::ofstream(m / "aperture_group" / "states.json")
+      << R"({"south": [{"identifier": "0_south", "default": "./south..default..0.rad"}]})";
+  const CaseFile c = parseCaseFile(kSkyGrid + "[[scene]]\nhoneybee_folder = \"folder\"\n", dir / "case.toml");
+  EXPECT_EQ(c.settings.scene.rootFolder, (dir / "folder").lexically_normal());
+  const auto scene = loadCaseScene(c, false);
+  ASSERT_EQ(scene->bsdfs.size(), 1u);
+  CaseFile without = c;
+  without.settings.scene.rootFolder.clear();
+  EXPECT_THROW(loadCaseScene(without, false), InputError);
 }
 
 }  // namespace
