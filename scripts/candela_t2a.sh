@@ -82,7 +82,7 @@ EOF
 
 for c in $CASES; do
   if [ $REFS = 1 ] && [ "$c" != sphere ]; then
-    te=0.15; [ "$c" = sunny ] && te=0.7
+    te=0.15; [ "$c" = sunny ] && te=1
     run "$c" ref1001 --method path --target-error $te --seed 1001
     run "$c" ref1002 --method path --target-error $te --seed 1002
   fi
