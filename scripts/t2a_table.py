@@ -9,7 +9,8 @@ are given both as measured and with that noise taken out in quadrature. The sphe
 exact: E = pi L r^2 (1/d^2 + rho/(1 - rho)) (the lamp's direct light at the sensor plus the wall's
 uniform interreflected light; the 2 cm lamp's shadow on the wall, 4e-4, is left out).
 
-"CPU s to reach RMS x" interpolates log CPU linearly in log RMS between the cheapest run at or
+Radiance runs with "-dj .7" (files <case>dj-S<k>) are listed apart (the sun's disk jittered: soft
+shadows). "CPU s to reach RMS x" interpolates log CPU linearly in log RMS between the cheapest run at or
 below x and the most expensive cheaper run above it; "-" when no run reaches it."""
 import math
 import os
@@ -76,16 +77,17 @@ for case in ("office", "sunny", "sphere"):
             own = math.sqrt(sum((math.sqrt(u * u + v * v) / m) ** 2 for u, v, m in zip(ses[0], ses[1], ref)) / n)
             line += f"; the seeds differ by RMS {100 * agree:.2f} % (their combined standard errors: {100 * own:.2f} %)"
         print(line)
-    rows = {"Radiance": [], "candela": []}
+    rows = {"Radiance": [], "Radiance -dj .7": [], "candela": []}
     print("| tool | run | CPU s | RMS | RMS (noise out) | p95 | mean vs ref |")
     print("|---|---|---|---|---|---|---|")
-    for k in (1, 2, 3):
-        p = os.path.join(rad_dir, f"{case}-S{k}.lux")
-        if os.path.exists(p):
-            c = cpu(os.path.join(rad_dir, f"{case}-S{k}.cpu"))
-            rms, rmsc, p95, mean = errors(load(p), ref, noise)
-            rows["Radiance"].append((c, rmsc))
-            print(f"| Radiance | S{k} | {c:.2f} | {100 * rms:.2f} % | {100 * rmsc:.2f} % | {100 * p95:.2f} % | {100 * mean:+.2f} % |")
+    for prefix, tool in ((case, "Radiance"), (case + "dj", "Radiance -dj .7")):
+        for k in (1, 2, 3):
+            p = os.path.join(rad_dir, f"{prefix}-S{k}.lux")
+            if os.path.exists(p) and os.path.exists(os.path.join(rad_dir, f"{prefix}-S{k}.cpu")):
+                c = cpu(os.path.join(rad_dir, f"{prefix}-S{k}.cpu"))
+                rms, rmsc, p95, mean = errors(load(p), ref, noise)
+                rows[tool].append((c, rmsc))
+                print(f"| {tool} | S{k} | {c:.2f} | {100 * rms:.2f} % | {100 * rmsc:.2f} % | {100 * p95:.2f} % | {100 * mean:+.2f} % |")
     for tag in ("draft", "normal-te2", "normal-te0", "normal", "high"):
         p = os.path.join(can_dir, f"{case}-{tag}.lux")
         if os.path.exists(p):
@@ -94,6 +96,8 @@ for case in ("office", "sunny", "sphere"):
             rows["candela"].append((c, rmsc))
             print(f"| candela | {tag} | {c:.2f} | {100 * rms:.2f} % | {100 * rmsc:.2f} % | {100 * p95:.2f} % | {100 * mean:+.2f} % |")
     for tool, runs in rows.items():
+        if not runs:
+            continue
         cells = []
         for target in (0.05, 0.02, 0.01):
             c, how = reach(runs, target)
