@@ -1,5 +1,7 @@
 #include "engine/bsdf_tree.h"
 
+#include "engine/radiance/spectrum.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -143,11 +145,15 @@ size_t TensorTree::locate(const double* posIn, double* cellSide) const {
   return n.first + k;
 }
 
-TreeBsdf::TreeBsdf(std::array<std::optional<TensorTree>, kBsdfParts> parts, std::string kind) : kind_(std::move(kind)) {
+TreeBsdf::TreeBsdf(Trees parts, Trees uPrime, Trees vPrime, std::string kind) : kind_(std::move(kind)) {
   for (int pi = 0; pi < kBsdfParts; ++pi) {
     if (!parts[pi]) continue;
     Part p;
     p.which = static_cast<BsdfPart>(pi);
+    if (uPrime[pi] && vPrime[pi]) {
+      p.u = std::move(uPrime[pi]);
+      p.v = std::move(vPrime[pi]);
+    }
     p.tree = std::move(*parts[pi]);
     const double leaf = smallestLeaf(p.tree, 0);
     p.minProjSA = kPi * leaf * leaf;  // Radiance's minProjSA (bsdf_t.c, get_extrema)
@@ -168,7 +174,19 @@ Rgb TreeBsdf::partValue(int part, const Vec3& in, const Vec3& out) const {
     const Vec2 b = freeSquare(s, out);
     pos[0] = s.pos[0], pos[1] = b.x, pos[2] = b.y;
   }
-  return Rgb(p.tree.lookup(pos));
+  return colourAt(p, pos, p.tree.lookup(pos));
+}
+
+Rgb TreeBsdf::colourAt(const Part& p, const double* pos, double y) {
+  if (!p.u || !(y > 0.0)) return Rgb(y);
+  // CIE 1976 u′v′ to xy (x = 9u′/(6u′ − 16v′ + 12), y = 4v′/(…)), then XYZ of luminance Y, then
+  // Radiance's RGB (engine/radiance/spectrum.h); a chromaticity outside the diagram is grey.
+  const double up = p.u->lookup(pos), vp = p.v->lookup(pos);
+  const double den = 6.0 * up - 16.0 * vp + 12.0;
+  if (!(den > 0.0) || !(vp > 0.0)) return Rgb(y);
+  const double cx = 9.0 * up / den, cy = 4.0 * vp / den;
+  if (!(cy > 0.0) || cx < 0.0 || cx + cy > 1.0) return Rgb(y);
+  return glm::max(xyzToRadianceRgb(Vec3(cx / cy * y, y, (1.0 - cx - cy) / cy * y)), Rgb(0.0));
 }
 
 double TreeBsdf::pairProjSA(int part, const Vec3& in, const Vec3& out) const {
@@ -243,7 +261,22 @@ double TreeBsdf::samplingTotal(int part, bool fixedIsIn, const Vec3& fixed) cons
 }
 
 Rgb TreeBsdf::integrateFree(int part, bool fixedIsIn, const Vec3& fixed) const {
-  return Rgb(samplingTotal(part, fixedIsIn, fixed));
+  const Part& p = *parts_[part];
+  if (!p.u) return Rgb(samplingTotal(part, fixedIsIn, fixed));
+  const int side = fixedIsIn ? bsdfInSide(p.which) : bsdfOutSide(p.which);
+  if (fixed.z * side <= 0.0) return Rgb(0.0);
+  const Slice s = slice(p, fixedIsIn, fixed);
+  // Each cell's colour at its centre (the chromaticity trees' cell there).
+  Rgb total(0.0);
+  auto add = [&](double v, double x0, double y0, double size) {
+    double pos[4] = {s.pos[0], s.pos[1], s.pos[2], s.pos[3]};
+    pos[s.freeDim] = x0 + 0.5 * size;
+    pos[s.freeDim + 1] = y0 + 0.5 * size;
+    total += colourAt(p, pos, v) * (size * size);
+    return true;
+  };
+  visitSlice(p.tree, 0, s.pos, s.freeDim, 0.0, 0.0, 1.0, add);
+  return kPi * total;
 }
 
 bool TreeBsdf::sampleFree(int part, bool fixedIsIn, const Vec3& fixed, const Vec2& u, double pick, Vec3& free,

@@ -7,7 +7,9 @@
 //   TensorTree3 (isotropic): (½ − ½·|in.xy|, sq(out rotated about z by −atan2(−in.y, −in.x))).
 // A node is either 2^n children (child bit d set for the upper half of coordinate d) or a grid
 // of 2^(n·k) values with the first coordinate varying slowest. Values are nearest-cell, no
-// interpolation.
+// interpolation. A colour is given, as bsdf_t.c reads it, by two more trees of the same
+// coordinates holding the CIE 1976 chromaticity u′ and v′ (<Wavelength> CIE-u and CIE-v): a
+// cell's colour is its Y with the u′v′ looked up at the same point (SDyuv2rgb), else grey.
 #pragma once
 
 #include "engine/bsdf_tabulated.h"
@@ -41,7 +43,9 @@ Vec2 diskToSquare(const Vec2& d);
 
 class TreeBsdf final : public TabulatedBsdf {
  public:
-  TreeBsdf(std::array<std::optional<TensorTree>, kBsdfParts> parts, std::string kind);
+  using Trees = std::array<std::optional<TensorTree>, kBsdfParts>;
+  // Each part's Y tree and, where given, its u′ and v′ trees.
+  TreeBsdf(Trees parts, Trees uPrime, Trees vPrime, std::string kind);
   std::string kind() const override { return kind_; }
 
  protected:
@@ -61,8 +65,11 @@ class TreeBsdf final : public TabulatedBsdf {
   struct Part {
     BsdfPart which;
     TensorTree tree;
+    std::optional<TensorTree> u, v;  // chromaticity (both or neither)
     double minProjSA = 0.0, minY = 0.0;
   };
+  // The colour of Y value y at tree coordinates pos (grey without chromaticity trees).
+  static Rgb colourAt(const Part& p, const double* pos, double y);
   // A slice of the tree: the two coordinates left free and the fixed ones' values, with how a
   // point of the free square becomes the free direction.
   struct Slice {

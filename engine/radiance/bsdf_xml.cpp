@@ -124,7 +124,7 @@ class Reader {
   struct Channels {  // one component's blocks: Y, X, Z
     std::array<std::vector<double>, 3> v;
     std::array<std::shared_ptr<const KlemsBasis>, 3> in, out;
-    std::array<std::optional<TensorTree>, 3> tree;
+    std::array<std::optional<TensorTree>, 5> tree;  // Y, (X, Z: unused), u′, v′
     int line = 0;
   };
 
@@ -424,7 +424,7 @@ std::shared_ptr<const Bsdf> Reader::makeKlems(std::array<Channels, kBsdfParts>& 
 }
 
 std::shared_ptr<const Bsdf> Reader::makeTree(std::array<Channels, kBsdfParts>& parts, int dims, int layerLine) const {
-  std::array<std::optional<TensorTree>, kBsdfParts> trees;
+  TreeBsdf::Trees trees, uPrime, vPrime;
   bool any = false;
   for (int p = 0; p < kBsdfParts; ++p) {
     if (!parts[p].tree[0]) continue;
@@ -433,10 +433,16 @@ std::shared_ptr<const Bsdf> Reader::makeTree(std::array<Channels, kBsdfParts>& p
     // Radiance drops one whose largest hemispherical value is ≤ 0.001 (bsdf.c, SDloadFile).
     if (kPi * *std::max_element(t.values.begin(), t.values.end()) <= 0.001) continue;
     trees[p] = std::move(t);
+    // Chromaticity trees of the same dimensions (both, else grey).
+    if (parts[p].tree[3] && parts[p].tree[4]) {
+      uPrime[p] = std::move(parts[p].tree[3]);
+      vPrime[p] = std::move(parts[p].tree[4]);
+    }
     any = true;
   }
   if (!any) fail(layerLine, "no visible scattering in the layer (no photopic data, or all ≤ 0.001)");
-  return std::make_shared<TreeBsdf>(std::move(trees), dims == 3 ? "tensor tree 3" : "tensor tree 4");
+  return std::make_shared<TreeBsdf>(std::move(trees), std::move(uPrime), std::move(vPrime),
+                                    dims == 3 ? "tensor tree 3" : "tensor tree 4");
 }
 
 // The component a <WavelengthDataDirection> names. The XML's front is the exterior, -z of the
@@ -449,13 +455,16 @@ int partOf(std::string_view direction) {
   return -1;
 }
 
-// The channel of a <WavelengthData>: 0 Y, 1 X, 2 Z; -1 to skip (solar, infrared, CIE-u/v).
+// The channel of a <WavelengthData>: 0 Y, 1 X, 2 Z (Klems), 3 u′, 4 v′ (tensor trees' CIE-u and
+// CIE-v, bsdf_t.c); -1 to skip (solar, infrared).
 // "Visible" is photopic unless its <DetectorSpectrum> names X or Z ("ASTM E308 1931 X.dsp",
 // "CIE-X"); Radiance's older "CIE-X"/"CIE-Z" wavelength names are read too.
 int channelOf(const std::string& wavelength, const std::string& detector) {
   if (same(wavelength, "CIE-X")) return 1;
   if (same(wavelength, "CIE-Y")) return 0;
   if (same(wavelength, "CIE-Z")) return 2;
+  if (same(wavelength, "CIE-u")) return 3;
+  if (same(wavelength, "CIE-v")) return 4;
   if (!same(wavelength, "Visible")) return -1;
   std::string word;
   int channel = 0;
@@ -503,7 +512,8 @@ std::shared_ptr<const Bsdf> Reader::read() {
     const Element* det = child(wd, "DetectorSpectrum");
     const int channel = channelOf(trim(need(wd, "Wavelength").text), det ? trim(det->text) : "");
     if (channel < 0) continue;
-    if (dims != 0 && channel != 0) continue;  // a tree's colour (CIE-u/v) is not read: grey
+    // Klems colour is X, Y, Z; a tree's is Y with u′ and v′ trees.
+    if ((dims == 0 && channel > 2) || (dims != 0 && (channel == 1 || channel == 2))) continue;
     for (int b : wd.kids) {
       const Element& block = el(b);
       if (!same(block.name, "WavelengthDataBlock")) continue;

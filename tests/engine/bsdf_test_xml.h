@@ -19,6 +19,7 @@ struct XmlBlock {
   std::string detector;
   std::string columnBasis = "LBNL/Klems Full", rowBasis = "LBNL/Klems Full";
   std::string rawData;  // used instead of values when not empty
+  std::string wavelength = "Visible";  // a tensor tree's chromaticity: "CIE-u", "CIE-v"
 };
 
 // Klems full rings: lower θ (degrees) and nPhis (LBNL's basis, as published with WINDOW).
@@ -91,7 +92,9 @@ inline std::string bsdfXml(const std::vector<XmlBlock>& blocks, const std::strin
     << bases << "\t</DataDefinition>\n";
   for (const XmlBlock& b : blocks) {
     s << "\t<WavelengthData>\n\t\t<LayerNumber>System</LayerNumber>\n"
-         "\t\t<Wavelength unit=\"Integral\">Visible</Wavelength>\n"
+         "\t\t<Wavelength unit=\"Integral\">"
+      << b.wavelength
+      << "</Wavelength>\n"
          "\t\t<SourceSpectrum>CIE Illuminant D65 1nm.ssp</SourceSpectrum>\n"
          "\t\t<DetectorSpectrum>"
       << b.detector << "</DetectorSpectrum>\n\t\t<WavelengthDataBlock>\n\t\t\t<WavelengthDataDirection>" << b.direction

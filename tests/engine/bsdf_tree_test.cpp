@@ -98,6 +98,49 @@ TEST(TreeBsdf, FourDimensionalLookupAndIntegrals) {
   }
 }
 
+// A tree's colour (bsdf_t.c): CIE-u and CIE-v trees give each cell's chromaticity u′v′, its Y
+// the tree's value. The equal-energy white (u′ 4/19, v′ 9/19) is Radiance's RGB white: grey; a
+// reddish x 0.5, y 0.4 keeps its luminance (photopic RGB = Y: the photopic weights are the Y row
+// of Radiance's RGB → XYZ) with R > G > B; the integrals take the colour cell by cell.
+TEST(TreeBsdf, ChromaticityTreesColourTheValues) {
+  auto coloured = [](double up, double vp) {
+    XmlBlock y{"Transmission Front", {}}, u{"Transmission Front", {}}, v{"Transmission Front", {}};
+    y.rawData = tree4Text();
+    u.rawData = "{ " + std::to_string(up) + " }";
+    v.rawData = "{ " + std::to_string(vp) + " }";
+    u.wavelength = "CIE-u";
+    v.wavelength = "CIE-v";
+    return parseBsdfXml(bsdfXml({y, u, v}, "TensorTree4", ""), "colour.xml");
+  };
+  std::mt19937_64 rng(4);
+  const auto white = coloured(4.0 / 19.0, 9.0 / 19.0);
+  const auto red = coloured(2.0 / 6.8, 3.6 / 6.8);  // x 0.5, y 0.4
+  for (int t = 0; t < 50; ++t) {
+    const Vec3 in = randomDir(rng, -1.0), out = randomDir(rng, 1.0);
+    const double y = tree4Value(in, out);
+    const Rgb w = white->eval(in, out);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(w[c], y, 2e-3 * y);
+    const Rgb r = red->eval(in, out);
+    EXPECT_NEAR(photopic(r), y, 2e-3 * y);
+    EXPECT_GT(r.x, r.y);
+    EXPECT_GT(r.y, r.z);
+    // One chromaticity everywhere: the albedo's colour is the value's, its luminance the tree's.
+    const Rgb a = red->albedoToward(out, true);
+    const double ay = kPi * (0.2 + (out.x > 0 ? 0.05 : 0.0));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], ay * r[c] / y, 1e-9);
+  }
+  // One of the two chromaticity trees alone: grey.
+  XmlBlock y{"Transmission Front", {}}, u{"Transmission Front", {}};
+  y.rawData = tree4Text();
+  u.rawData = "{ 0.3 }";
+  u.wavelength = "CIE-u";
+  const auto grey = parseBsdfXml(bsdfXml({y, u}, "TensorTree4", ""), "grey.xml");
+  const Vec3 in = glm::normalize(Vec3(0.2, 0.1, -0.9)), out = glm::normalize(Vec3(0.1, 0.3, 0.9));
+  const Rgb g = grey->eval(in, out);
+  EXPECT_EQ(g.x, g.y);
+  EXPECT_EQ(g.y, g.z);
+}
+
 // Sampling the incident direction of a 4-D tree: in.x < 0 with chance (0.3 + e)/(0.4 + 2e),
 // the pdf as pdfIn says, the mean weight the albedo.
 TEST(TreeBsdf, SamplingMatchesEvaluation) {
