@@ -26,6 +26,8 @@ function(candela_distributed_case name case_file)
 endfunction()
 
 candela_distributed_case(small_room ${PROJECT_SOURCE_DIR}/cases/small-room/case.toml --quality draft)
+# Window states (docs/annual.md): every state's year and the switched one, the per-state metrics.
+candela_distributed_case(window_states ${PROJECT_SOURCE_DIR}/cases/window-states/case.toml --quality draft)
 # The office demo with its two views at a quarter of their pixels each way: the views took most of
 # the office's time (a shard traces both whole), and what the tests check (the same bytes for any
 # split) does not depend on the image size. Made at configure time from the demo itself, so that
