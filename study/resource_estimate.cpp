@@ -395,8 +395,16 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   // Blinds closed: traced again where there is glass, once per window group (an implicit "other"
   // at most more); with groups a block holds its open, direct-sun and combined years and one
   // group's closed year (study/annual_study.cpp groupsPass).
-  const int closedStates = !c.annual.blinds ? 0 : c.windowGroups.empty() ? 1 : static_cast<int>(c.windowGroups.size()) + 1;
-  const int states = !c.annual.blinds ? 1 : c.windowGroups.empty() ? 2 : 3;
+  // Window states (docs/annual.md) replace the blinds: one more pass (sky, sun and its direct
+  // part, each state having its own year) per state beyond a group's first.
+  int extraStates = 0;
+  for (const WindowGroupSpec& g : c.windowGroups)
+    if (!g.states.empty()) extraStates += static_cast<int>(g.states.size()) - 1;
+  const bool withStates = std::any_of(c.windowGroups.begin(), c.windowGroups.end(),
+                                      [](const WindowGroupSpec& g) { return !g.states.empty(); });
+  const int closedStates =
+      withStates || !c.annual.blinds ? 0 : c.windowGroups.empty() ? 1 : static_cast<int>(c.windowGroups.size()) + 1;
+  const int states = withStates ? 3 : !c.annual.blinds ? 1 : c.windowGroups.empty() ? 2 : 3;
   uint64_t sensors = 0;
   for (std::size_t i = 0; i < a.gridSensors.size(); ++i) {
     const uint64_t k = a.gridSensors[i];
@@ -433,6 +441,7 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   if (closedStates == 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
   if (closedStates > 1)
     e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
+  if (extraStates > 0) e.work.push_back({"window states: coefficients", extraStates * (sky + sunPaths + direct)});
   // LEED option 2 (study/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
   // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's).
   if (pointSettings)

@@ -96,6 +96,31 @@ TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
   EXPECT_GT(with.seconds("compliance leed2"), 0.0);
 }
 
+// Window states replace the blinds' passes: one more pass (sky, sun and direct sun) per state
+// beyond each group's first; the blinds' closed passes are gone.
+TEST(ResourceEstimate, AnnualStudyCountsWindowStates) {
+  CaseFile c;
+  c.grids.resize(1);
+  c.grids[0].name = "room";
+  c.windowGroups.resize(2);
+  c.windowGroups[0].states.resize(3);
+  c.windowGroups[1].states.resize(2);
+  const Scene scene;
+  AnnualCounts a;
+  a.gridSensors = {50};
+  a.hours = 8760;
+  a.sunHours = 4000;
+  const ResourceEstimate e = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024);
+  double first = 0.0, states = 0.0;
+  for (const auto& w : e.work) {
+    EXPECT_EQ(w.label.rfind("blinds closed", 0), std::string::npos) << w.label;
+    if (w.label == "coefficients") first = w.rays;
+    if (w.label == "window states: coefficients") states = w.rays;
+  }
+  EXPECT_GT(first, 0.0);
+  EXPECT_DOUBLE_EQ(states, 3.0 * first);  // (3 − 1) + (2 − 1) passes, each the first's work
+}
+
 TEST(ResourceEstimate, PixelBytesFromTheImage) {
   // Kept per pixel: Image's radiance, luminance and standard error (float32), inside, traced and
   // interpolation level (a byte each), as the type holds them.
