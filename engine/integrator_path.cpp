@@ -405,7 +405,10 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
       if (v.holeSide()) st.clip.clipped = static_cast<uint16_t>(v.clipBeyond);  // on through: newcset
       continue;
     }
-    if (familyOf(*m).hidesSide(*m, v.front)) {  // a proxy's hidden side: straight on
+    // A proxy's hidden side, and a proxy met by an eye's ray before any reflection (Radiance lets
+    // rays that are neither specular nor ambient through): straight on.
+    const bool eyeRay = !st.lighting && st.diffuse == 0 && !ray.reflected;
+    if (familyOf(*m).hidesSide(*m, v.front) || (eyeRay && familyOf(*m).passesPrimaryRays(*m))) {
       ray.o = v.x - v.off * v.nf;
       st.skip = v.flatSkip;
       continue;

@@ -195,6 +195,8 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   m = materialAt(scene, *m, {x, d, ng, h.t}, cr.ctx.patternEval, cr.ctx.rng, patternedHere);
   if (!m) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, events + 1);  // invisible here
   const MaterialFamily& family = familyOf(*m);
+  // A proxy (BSDF with a thickness) shows the primary rays what lies behind it.
+  if (events == 0 && family.passesPrimaryRays(*m)) return cameraRadiance(cr, x - off * nf, d, flatSkip, share, 0);
   switch (family.role()) {
     case HitRole::kEmit:
       if (!front) return Rgb(0.0);

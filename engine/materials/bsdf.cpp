@@ -183,6 +183,7 @@ class BsdfFamily : public MaterialFamily {
     }
   }
   Vec3 transmittedOffset(const Material& m, const Vec3& ng) const override { return -m.thicknessM * ng; }
+  bool passesPrimaryRays(const Material& m) const override { return m.thicknessM != 0.0; }
   bool hidesSide(const Material& m, bool front) const override {
     // A positive thickness hides what lies behind (opposite the normal): rays arriving there pass.
     return m.thicknessM != 0.0 && ((m.thicknessM > 0.0) != front);

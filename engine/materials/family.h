@@ -230,6 +230,10 @@ class MaterialFamily {
   // Whether rays arriving on that side (front: the normal's) pass straight on (a BSDF proxy's
   // hidden side).
   virtual bool hidesSide(const Material& /*m*/, bool /*front*/) const { return false; }
+  // Whether the camera's primary rays pass straight through surfaces of m (a BSDF proxy: the
+  // detail geometry behind it is what a view shows, as Radiance's m_bsdf.c lets rays that are
+  // neither specular nor ambient through).
+  virtual bool passesPrimaryRays(const Material& /*m*/) const { return false; }
 
   // kSpecular: one sampled event (paths), or every part at once (the camera).
   virtual SpecularSample sampleSpecular(const Material& /*m*/, const SurfaceHit& /*h*/, Rng& /*rng*/,

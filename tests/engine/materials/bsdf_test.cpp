@@ -16,6 +16,8 @@
 #include "engine/bsdf.h"
 #include "engine/daylight.h"
 #include "engine/irradiance_estimator.h"
+#include "engine/render.h"
+#include "tests/support/test_views.h"
 #include "engine/radiance/reader.h"
 #include "engine/tracer.h"
 #include "photometry/sky_type.h"
@@ -277,6 +279,39 @@ TEST(BsdfMaterial, ClearGlassKlemsFile) {
   const IrradianceEstimate e = measure(spread, kBelow, kUp, 65536);
   EXPECT_NEAR(e.illuminanceLux(), 0.8 * sunLux(35.0), 4.0 * e.standardErrorLux());
   EXPECT_LT(e.standardErrorLux(), 0.05 * sunLux(35.0));
+}
+
+// A BSDF with a thickness is a proxy: the camera's primary rays pass it and show what lies behind
+// (a glow of radiance 10 here, seen through a proxy plane facing the camera), with the camera's
+// surface estimates and with plain paths alike; sensors' rays still meet it (its Lambertian
+// transmission gives a sensor above it τ times the glow's light).
+TEST(BsdfMaterial, AProxyShowsTheCameraWhatLiesBehindIt) {
+  using test_support::bsdfXml;
+  const std::string xml = bsdfXml({{"Transmission Front", std::vector<double>(kFull * kFull, 0.5 / kPi)}});
+  const fs::path dir = test_support::scratchDir("bsdf_xml_window", "proxy");
+  std::ofstream(dir / "w.xml") << xml;
+  // The proxy at z = 1 facing up (towards the camera at z = 3), the glow at z = 0 facing up.
+  std::ofstream(dir / "scene.rad")
+      << "void BSDF proxy 6 0.5 w.xml 0 1 0 . 0 0\n"
+         "proxy polygon p 0 0 12 -1e4 -1e4 1  1e4 -1e4 1  1e4 1e4 1  -1e4 1e4 1\n"
+         "void glow g 0 0 4 10 10 10 0\n"
+         "g polygon floor 0 0 12 -1e4 -1e4 0  1e4 -1e4 0  1e4 1e4 0  -1e4 1e4 0\n";
+  Scene sc;
+  readRadianceFile(dir / "scene.rad", sc);
+  const Tracer tracer(sc);
+  TraceSettings s;
+  s.maxBounces = 2;
+  const View v = test_support::makeView(ViewType::kPerspective, {0, 0, 3}, {0, 0, -1}, {0, 1, 0}, {40, 40}, 5, 5);
+  const double want = kLumensPerWatt * 10.0;
+  for (int samples : {0, 64}) {
+    RenderSettings r;
+    r.irradianceSamples = samples;
+    const Image img = renderView(tracer, v, s, 2, r);
+    for (std::size_t i = 0; i < img.luminance.size(); ++i) EXPECT_NEAR(img.luminance[i], want, 1e-9 * want) << i;
+  }
+  // A sensor above it facing down: the proxy's transmitted glow, τ·10 W/sr/m² over its whole
+  // hemisphere (paths end by Russian roulette with probability 1 − τ: within 4 standard errors).
+  expectWithin4Se(measure(sc, Vec3(0.3, 0.2, 2.0), kDown), kPi * kLumensPerWatt * 5.0, "sensor");
 }
 
 }  // namespace
