@@ -57,7 +57,9 @@ struct MaterialParameters {
   Rgb backColor{0.0};
   Rgb transmissionColor{0.0};
   bool specularTransmission = false;
-  // BRTDfunc: whether its directional functions (rbrtd gbrtd bbrtd) are not all 0.
+  // BRTDfunc: whether its directional functions (rbrtd gbrtd bbrtd) are not all 0. WGMDfunc at a
+  // hit: whether its mirror is Fresnel-raised there, so that the sampled sources' light on its
+  // diffuse parts takes the second factor of their own angle (m_wgmdf.c's dirwgmdf).
   bool directionalFunctions = false;
   // At a hit: the colour of the patterns modifying the material (1 elsewhere), set by
   // engine/materials/pattern_hook.h (BRTDfunc's CrP CgP CbP).

@@ -21,8 +21,9 @@
 //   same light, another estimator); shadow rays stop there.
 // Each part's modifier: `void` (white), `inherit` or the material's own modifier (its pattern
 // colour), or a pattern of its own (its colour at the hit).
-// Radiance weighs the sampled sources' light on the diffuse parts by a second Fresnel factor of
-// the light's angle (dirwgmdf); candela takes every light as Radiance's ambient does.
+// Where the mirror is Fresnel-raised, the sampled sources' light on the diffuse parts takes a
+// second factor 1 − F(cos θ_l) of the light's own angle (dirwgmdf; MaterialFamily::sourceBrdf);
+// the sky and the light paths meet takes none (Radiance's ambient).
 #include "engine/materials/normal.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
@@ -121,7 +122,8 @@ class WgmdFunc : public MaterialFamily {
       if (out.roughness > 0.0) punt(out.roughness, out.roughnessV);
       if (out.transmissionRoughnessU > 0.0) punt(out.transmissionRoughnessU, out.transmissionRoughnessV);
     }
-    if (out.roughness <= 0.0 && photopic(spec) >= kFresnelThreshold) {
+    out.directionalFunctions = out.roughness <= 0.0 && photopic(spec) >= kFresnelThreshold;
+    if (out.directionalFunctions) {
       const double f = fresnelEstimate(std::abs(glm::dot(p.d, ns)));
       spec += f * (Rgb(1.0) - spec);
       rd *= 1.0 - f;
@@ -141,6 +143,14 @@ class WgmdFunc : public MaterialFamily {
     const double ci = -glm::dot(inDir, nf), co = glm::dot(out, nf);
     if (co <= 0.0 || ci <= 0.0) return Rgb(0.0);
     return m.specularReflectance * (2.0 * co / (ci + co));
+  }
+  // Radiance's dirwgmdf: where the mirror is Fresnel-raised, a sampled source's light on the
+  // diffuse parts takes 1 − F(cos θ_l) of its own angle too (the sky and paths do not: ambient).
+  bool directionalSources(const Material& m) const override { return m.directionalFunctions; }
+  Rgb sourceBrdf(const Material& m, const PatternPoint& at, PatternEvaluator&, const Vec3& ldir, double,
+                 bool transmitted) const override {
+    const double f = fresnelEstimate(std::abs(glm::dot(at.ng, ldir)));
+    return (transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * (kInvPi * (1.0 - f));
   }
   bool roughTransmission(const Material& m) const override { return m.transmissionRoughnessU > 0.0; }
   bool sampleTransmittedLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
