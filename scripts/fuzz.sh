@@ -10,7 +10,7 @@
 # (commit it: the normal build's CTest fuzz_replay.<reader> replays it from then on).
 #
 #   scripts/fuzz.sh [tests|fuzz|all]      (default all)
-# Environment: FUZZ_SECONDS (per reader, default 30), FUZZ_JOBS (readers at once, default 2),
+# Environment: FUZZ_SECONDS (per reader, default 20), FUZZ_JOBS (readers at once, default 2),
 # FUZZ_READERS (default every reader), CANDELA_SKIP_FUZZ=1 skips everything (ignored when
 # CI=true: CI always runs it).
 set -euo pipefail
@@ -25,7 +25,7 @@ if [ "${CANDELA_SKIP_FUZZ:-0}" = "1" ]; then
     exit 0
   fi
 fi
-seconds="${FUZZ_SECONDS:-30}"
+seconds="${FUZZ_SECONDS:-20}"
 jobs="${FUZZ_JOBS:-2}"
 readers=(${FUZZ_READERS:-rad_reader obj_reader sensor_points ies eulumdat epw case_file part picture data_file font generators bsdf_xml})
 # Longest first (engine_test's shards, then study_test), so that no long job starts last.
