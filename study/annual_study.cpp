@@ -500,17 +500,21 @@ std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a,
   return grids;
 }
 
+// The open (or reference) scene's year through openPass, its times and rays into t.
+void tracedOpenPass(const AnnualInputs& in, const YearJob& job, const AnnualPass& p, bool metricsNow, AnnualTraces& t,
+                    StudyObserver& observer) {
+  YearTracer open(*in.scene, job, true);
+  openPass(p, open, metricsNow, observer);
+  t.coefficientsOpenS = open.coefficientsS();
+  t.productOpenS = open.productS();
+  t.raysOpen = open.rays();
+}
+
 // With window groups: the open year with the direct sun split by group, each grid's closures,
 // then one closed scene per group closed in some hour (only that group's glass closed).
 void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
                        AnnualTraces& t, StudyObserver& observer) {
-  {
-    YearTracer open(*in.scene, job, true);
-    openPass(p, open, false, observer);
-    t.coefficientsOpenS = open.coefficientsS();
-    t.productOpenS = open.productS();
-    t.raysOpen = open.rays();
-  }
+  tracedOpenPass(in, job, p, false, t, observer);
   const int groups = in.windows.labels.count;
   uint32_t used = 0;
   for (GridYear& g : p.grids) {
@@ -652,13 +656,7 @@ void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
 // state other than its first (every state is traced, used or not: its results are reported).
 void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
                        AnnualTraces& t, StudyObserver& observer) {
-  {
-    YearTracer reference(*in.scene, job, true);
-    openPass(p, reference, false, observer);
-    t.coefficientsOpenS = reference.coefficientsS();
-    t.productOpenS = reference.productS();
-    t.raysOpen = reference.rays();
-  }
+  tracedOpenPass(in, job, p, false, t, observer);  // the reference: every group in its first state
   chooseWindowStates(in, p);
   YearJob stateJob = job;
   stateJob.windows = nullptr;
@@ -729,13 +727,7 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
     t.blindMaterials = closeBlinds(*shaded);
   }
   t.closed = t.blindMaterials > 0;
-  {
-    YearTracer open(*in.scene, job, true);
-    openPass(p, open, !t.closed, observer);
-    t.coefficientsOpenS = open.coefficientsS();
-    t.productOpenS = open.productS();
-    t.raysOpen = open.rays();
-  }
+  tracedOpenPass(in, job, p, !t.closed, t, observer);
   if (t.closed) {
     YearTracer closed(*shaded, job, false);
     closedPass(p, closed, observer);

@@ -37,12 +37,7 @@ class BrtdFunc : public MaterialFamily {
     m.specularTransmission = !(p.strings[3] == "0" && p.strings[4] == "0" && p.strings[5] == "0");
   }
   // Without a hit: the front's diffuse parts (the report's table); specular parts at hits only.
-  void derive(MaterialParameters& m) const override {
-    m.diffuseReflectance = m.color;
-    m.diffuseTransmittance = m.transmissionColor;
-    m.specularReflectance = Rgb(0.0);
-    m.specularTransmittance = Rgb(0.0);
-  }
+  void derive(MaterialParameters& m) const override { deriveFromDiffuseReals(m); }
   void atHit(const Material& m, const PatternPoint& p, const Rgb& patternColour, PatternEvaluator& eval,
              MaterialParameters& out) const override {
     const bool front = glm::dot(p.d, p.ng) < 0.0;

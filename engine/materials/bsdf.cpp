@@ -18,6 +18,7 @@
 // pass it (the positive thickness hides the side opposite the normal), and transmitted paths
 // start that far beyond it.
 #include "engine/bsdf.h"
+#include "engine/materials/normal.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
 
@@ -82,12 +83,7 @@ class BsdfFamily : public MaterialFamily {
     for (const Rgb& c : {m.color, m.backColor, m.transmissionColor}) ctx.expectNonNegative(c);
   }
   // Without a hit: the diffuse parts added (the file's parts are direction-dependent).
-  void derive(MaterialParameters& m) const override {
-    m.diffuseReflectance = m.color;
-    m.diffuseTransmittance = m.transmissionColor;
-    m.specularReflectance = Rgb(0.0);
-    m.specularTransmittance = Rgb(0.0);
-  }
+  void derive(MaterialParameters& m) const override { deriveFromDiffuseReals(m); }
   void atHit(const Material& m, const PatternPoint& p, const Rgb& patternColour, PatternEvaluator& eval,
              MaterialParameters& out) const override {
     const bool front = glm::dot(p.d, p.ng) < 0.0;

@@ -15,6 +15,13 @@ void deriveMetal(MaterialParameters& m) {
   m.specularReflectance = m.color * m.specularity;
 }
 
+void deriveFromDiffuseReals(MaterialParameters& m) {
+  m.diffuseReflectance = m.color;
+  m.diffuseTransmittance = m.transmissionColor;
+  m.specularReflectance = Rgb(0.0);
+  m.specularTransmittance = Rgb(0.0);
+}
+
 void deriveTrans(MaterialParameters& m) {
   const Rgb nonSpec = m.color * (1.0 - m.specularity);
   m.diffuseReflectance = nonSpec * (1.0 - m.transmissivity);

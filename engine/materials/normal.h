@@ -14,6 +14,9 @@ bool sampleWardLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& r
 // transmitted trans·(1 − tspec) and specularly transmitted trans·tspec.
 void derivePlastic(MaterialParameters& m);
 void deriveMetal(MaterialParameters& m);
+// BRTDfunc, WGMDfunc, BSDF without a hit: the diffuse parts of their reals (the front's
+// reflectance, the transmittance), no specular part (those are evaluated at hits).
+void deriveFromDiffuseReals(MaterialParameters& m);
 void deriveTrans(MaterialParameters& m);
 
 class NormalFamily : public MaterialFamily {
