@@ -1,125 +1,30 @@
 #include "study/annual_study.h"
 
 #include "base/error.h"
-#include "engine/daylight_coefficients.h"
-#include "metrics/annual.h"
 #include "metrics/grid_stats.h"
-#include "photometry/annual_sky.h"
-#include "photometry/epw.h"
-#include "reports/annual_results.h"
+#include "metrics/window_groups.h"
 #include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 #include "study/annual_glare.h"
+#include "study/annual_year.h"
 #include "study/blinds.h"
 #include "study/case_scene.h"
-#include "study/annual_glare.h"
 #include "study/compliance_study.h"
 #include "study/finite_results.h"
-#include "study/prepared_grid.h"
 #include "study/resource_estimate.h"
-#include "study/run_outputs.h"
 #include "study/warnings.h"
-#include "study/window_groups.h"
-#include "study/window_states.h"
-#include "metrics/window_groups.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <span>
 
 namespace candela {
 
+using namespace annual_detail;  // the year's types (study/annual_year.h)
+
 namespace {
-
-namespace fs = std::filesystem;
-
-// What a YearTracer traces and how.
-struct YearJob {
-  const std::vector<Vec3>* positions = nullptr;
-  const std::vector<Vec3>* normals = nullptr;
-  const AnnualSky* sky = nullptr;
-  const SunSet* sunSet = nullptr;
-  double northDeg = 0.0;
-  TraceSettings settings;
-  int sunSamples = 4;  // rays over the sun's disc
-  int threads = 0;
-  const Distribution* distribution = nullptr;  // the processes the sensors are shared between
-  const SurfaceLabels* windows = nullptr;      // window groups: the direct sun split by group
-  // [[compliance]]: patch luminances of the overcast sky (1 lx horizontal) whose product with
-  // each sensor's sky coefficients is its daylight factor / 100 (study/compliance_study.h).
-  const std::vector<float>* overcast = nullptr;
-};
-
-// One state of the scene (blinds open or closed) traced a block of sensors at a time: the
-// block's coefficients, then its hourly products. Sensor indices are the study's, so every
-// sensor keeps its random streams (engine/daylight_coefficients.h SensorBlock).
-class YearTracer {
- public:
-  YearTracer(const Scene& scene, const YearJob& job, bool beamSun)
-      : start_(std::chrono::steady_clock::now()), job_(job), beamSun_(beamSun), tracer_(scene),
-        patches_(job.sky->subdivision), suns_(sunDirectionsModel(*job.sky, job.northDeg)) {
-    for (const Vec3& d : job.sunSet->dirsTrue) setModel_.push_back(trueToModel(d, job.northDeg));
-    // The interreflected sun needs fewer paths than the sky (each carries every sun of the set).
-    sunSettings_ = interreflectedSunSettings(job.settings);
-    coefficientsS_ = secondsSince(start_);
-  }
-
-  // The year of sensors first .. first + count - 1. progress(done) counts 2 per sensor (its
-  // sky, then its sun coefficients) from `progressBase`. With the job's window groups and a
-  // beam, groupDirect gets the hourly direct sun through each group's glass.
-  AnnualIlluminance block(std::size_t first, std::size_t count, std::size_t progressBase, const ObservedStep& step,
-                          std::vector<std::vector<float>>* groupDirect = nullptr) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const int threads = job_.threads;
-    const SensorBlock b{std::span(*job_.positions).subspan(first, count), std::span(*job_.normals).subspan(first, count),
-                        first};
-    const Distribution& processes = *job_.distribution;
-    const DaylightCoefficients dc = computeDaylightCoefficients(
-        tracer_, b, patches_, job_.settings, threads, [&](std::size_t d) { step(progressBase + d); }, processes);
-    overcast_.assign(job_.overcast ? count : 0, 0.0f);
-    for (std::size_t s = 0; s < overcast_.size(); ++s)
-      for (int p = 0; p < dc.patches; ++p) overcast_[s] += dc.total[s * dc.patches + p] * (*job_.overcast)[p];
-    std::vector<float> direct(count * suns_.size(), 0.0f);
-    if (beamSun_ && job_.windows && groupDirect) {
-      std::vector<std::vector<float>> parts = directSunCoefficientsByLabel(
-          tracer_, b, suns_, job_.sunSamples, job_.settings.seed, threads, *job_.windows, processes);
-      direct = std::move(parts[0]);
-      groupDirect->clear();
-      for (std::size_t g = 1; g < parts.size(); ++g)
-        groupDirect->push_back(hourlyDirectSun(parts[g], static_cast<int>(count), *job_.sky));
-    } else if (beamSun_) {
-      direct = directSunCoefficients(tracer_, b, suns_, job_.sunSamples, job_.settings.seed, threads, processes);
-    }
-    const std::vector<float> inter =
-        indirectSunCoefficients(tracer_, b, setModel_, sunSettings_, threads,
-                                [&](std::size_t d) { step(progressBase + count + d); }, processes);
-    coefficientsS_ += secondsSince(t0);
-    AnnualIlluminance year = annualIlluminance(dc, direct, inter, *job_.sunSet, *job_.sky, threads);
-    productS_ += year.productTimeS;
-    return year;
-  }
-
-  double coefficientsS() const { return coefficientsS_; }
-  double productS() const { return productS_; }
-  // The last block's illuminance per lux of overcast sky outdoors (YearJob::overcast), per sensor.
-  const std::vector<float>& overcast() const { return overcast_; }
-  // Every process's rays (a collective call: every process asks at the same point).
-  uint64_t rays() const { return job_.distribution->sum(tracer_.raysTraced()); }
-
- private:
-  std::chrono::steady_clock::time_point start_;
-  const YearJob& job_;
-  bool beamSun_;
-  Tracer tracer_;
-  SkyPatches patches_;
-  std::vector<Vec3> suns_, setModel_;
-  TraceSettings sunSettings_;
-  std::vector<float> overcast_;
-  double coefficientsS_ = 0.0, productS_ = 0.0;
-};
 
 // The sensor nearest the grid's centroid (the temporal map's default).
 int centralSensor(const SensorGrid& g) {
@@ -132,18 +37,6 @@ int centralSensor(const SensorGrid& g) {
   return best;
 }
 
-
-// The study's input, read and checked before any tracing.
-struct AnnualInputs {
-  EpwFile epw;
-  Site site;
-  double north = 0.0;
-  std::unique_ptr<Scene> scene;
-  std::vector<PreparedGrid> grids;
-  std::vector<Vec3> positions, normals;  // every grid's sensors, grids in case order
-  WindowGroups windows;                  // [[window_group]]s resolved (none: one group per grid)
-  WindowStates states;                   // [[window_group]]s with states (their labels in windows.labels)
-};
 
 AnnualInputs readAnnualInputs(const CaseFile& c) {
   AnnualInputs in;
@@ -201,22 +94,6 @@ AnnualCounts annualCounts(const AnnualInputs& in) {
   for (const EpwRecord& r : in.epw.records) a.sunHours += r.directNormalWhm2 > 0.0 || r.directNormalLux > 0.0;
   return a;
 }
-
-// The year traced: blinds open, and closed where LM-83's rule can close them. The hourly values
-// themselves went to the grids' files block by block (GridYear); what stays is their times.
-struct AnnualTraces {
-  AnnualSky sky;
-  SunSet sunSet;
-  double skyVectorsS = 0.0;
-  double coefficientsOpenS = 0.0, coefficientsClosedS = 0.0, productOpenS = 0.0, productClosedS = 0.0;
-  uint64_t raysOpen = 0, raysClosed = 0;
-  bool closed = false;     // a closed state was traced
-  std::unique_ptr<Scene> shaded;  // that state's scene (one group: all the glazing), kept for glare views
-  int blindMaterials = 0;  // glass materials the closed state changed
-  double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
-  double productS() const { return productOpenS + productClosedS; }
-  uint64_t rays() const { return raysOpen + raysClosed; }
-};
 
 // The year's sky vectors, the sun set, and the sampling guide of the scene's sky.
 AnnualTraces prepareAnnualSky(const CaseFile& c, AnnualInputs& in, const ResolvedTrace& trace) {
@@ -289,14 +166,6 @@ AnnualThresholds thresholdsOf(const AnnualSpec& a) {
   return th;
 }
 
-// The year's hours, as the metrics (hour ending) and the hourly files (stamps) label them.
-struct YearHours {
-  std::vector<int> hourEnding;
-  std::vector<HourStamp> stamps;
-  std::vector<char> occupied;
-  int occupiedCount = 0;
-};
-
 YearHours yearHours(const AnnualSky& sky, const AnnualSpec& a) {
   YearHours y;
   for (const AnnualHour& h : sky.hours) {
@@ -308,55 +177,11 @@ YearHours yearHours(const AnnualSky& sky, const AnnualSpec& a) {
   return y;
 }
 
-// One grid's year as the blocks pass: its hourly files (open), the per-hour count of its sensors
-// in direct sun (LM-83's blinds rule needs the whole grid's before the closed state is used), its
-// sensors' metrics and the temporal map's sensor. Nothing of it grows with hours × sensors.
-struct GridYear {
-  std::size_t first = 0, count = 0;  // the grid's sensors in the study's list
-  std::unique_ptr<AnnualResultsStream> total, directSun;
-  std::vector<int> sunlit;           // per hour: sensors with direct sun >= the ASE threshold
-  std::vector<char> blindsClosed;    // per hour, once every block has been counted
-  // Window groups: per hour and set of closed groups, the sensors left sunlit; then per hour the
-  // closed groups (metrics/window_groups.h).
-  std::vector<int> closureCounts;
-  std::vector<uint32_t> closure;
-  std::vector<SensorAnnualMetrics> sensors;
-  int chosenSensor = 0;
-  std::vector<double> chosenSensorLux;
-  // Window states: per group the state of every hour, per hour the groups off their first state;
-  // per traced state (a group in a state other than its first) its year's stream; the metrics of
-  // the reference year (every group in its first state), then of each traced state; the switched
-  // year's streams (they become the grid's hourly files).
-  std::vector<std::vector<uint8_t>> stateOf;
-  std::vector<uint8_t> switched;
-  std::vector<std::unique_ptr<AnnualResultsStream>> stateTotal;
-  std::vector<std::vector<SensorAnnualMetrics>> stateSensors;
-  std::unique_ptr<AnnualResultsStream> switchedTotal, switchedDirect;
-};
-
-// The part of block [b0, b0 + n) that lies in grid g: its first sensor and count (0: none).
-std::pair<std::size_t, std::size_t> overlap(const GridYear& g, std::size_t b0, std::size_t n) {
-  const std::size_t lo = std::max(g.first, b0), hi = std::min(g.first + g.count, b0 + n);
-  return {lo, hi > lo ? hi - lo : 0};
-}
-
 // The study's blocks: sensorsPerBlock rounded up to kAnnualProductBlock.
 std::size_t blockSize(const AnnualStudyOptions& o) {
   const std::size_t m = kAnnualProductBlock;
   return std::max<std::size_t>(1, (o.sensorsPerBlock + m - 1) / m) * m;
 }
-
-// Everything the passes share.
-struct AnnualPass {
-  const AnnualInputs& in;
-  const YearHours& y;
-  const AnnualThresholds& th;
-  const RunOutputFolder& folder;
-  std::size_t block = kAnnualSensorsPerBlock;
-  std::vector<GridYear>& grids;
-  const Distribution* processes = nullptr;  // the processes the sensors are shared between
-  ComplianceTallies* compliance = nullptr;  // [[compliance]]: what the entries need of the year
-};
 
 // Pass 1, blinds open: every block's year goes to the grids' files, counted for the blinds rule;
 // without a closed state the metrics are taken on the way.
@@ -371,7 +196,9 @@ void openPass(const AnnualPass& p, YearTracer& open, bool metricsNow, StudyObser
     if (p.compliance)
       p.compliance->addBlock(b0, n, static_cast<int>(nh), year.total.data(), open.overcast().data());
     for (GridYear& g : p.grids) {
-      const auto [lo, k] = overlap(g, b0, n);
+      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+      const auto part = overlap(g, b0, n);
+      const std::size_t lo = part.first, k = part.second;
       if (k == 0) continue;
       const float* total = year.total.data() + (lo - b0) * nh;
       const float* direct = year.directSun.data() + (lo - b0) * nh;
@@ -410,7 +237,9 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
     checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
     std::vector<float> open, direct;
     for (GridYear& g : p.grids) {
-      const auto [lo, k] = overlap(g, b0, n);
+      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+      const auto part = overlap(g, b0, n);
+      const std::size_t lo = part.first, k = part.second;
       if (k == 0) continue;
       open.resize(k * nh);
       direct.resize(k * nh);
@@ -446,7 +275,9 @@ void groupsPass(const AnnualPass& p, std::vector<ClosedGroup>& closed, StudyObse
     const std::size_t n = std::min(p.block, sensors - b0);
     std::vector<Slice> slices;
     for (GridYear& g : p.grids) {
-      const auto [lo, k] = overlap(g, b0, n);
+      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+      const auto part = overlap(g, b0, n);
+      const std::size_t lo = part.first, k = part.second;
       if (k == 0) continue;
       Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}};
       const int from = static_cast<int>(lo - g.first);
@@ -500,16 +331,6 @@ std::vector<GridYear> openGridYears(const AnnualInputs& in, const AnnualSpec& a,
   return grids;
 }
 
-// The open (or reference) scene's year through openPass, its times and rays into t.
-void tracedOpenPass(const AnnualInputs& in, const YearJob& job, const AnnualPass& p, bool metricsNow, AnnualTraces& t,
-                    StudyObserver& observer) {
-  YearTracer open(*in.scene, job, true);
-  openPass(p, open, metricsNow, observer);
-  t.coefficientsOpenS = open.coefficientsS();
-  t.productOpenS = open.productS();
-  t.raysOpen = open.rays();
-}
-
 // With window groups: the open year with the direct sun split by group, each grid's closures,
 // then one closed scene per group closed in some hour (only that group's glass closed).
 void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
@@ -539,150 +360,6 @@ void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob&
     t.coefficientsClosedS += q.tracer->coefficientsS();
     t.productClosedS += q.tracer->productS();
     t.raysClosed += q.tracer->rays();
-  }
-}
-
-// A traced window state: group `group` in state `state` (≥ 1), the other groups in their first.
-struct StateTrace {
-  int group = 0, state = 0;
-  std::unique_ptr<Scene> scene;
-  std::unique_ptr<YearTracer> tracer;
-};
-
-// The hourly stream of grid g's year in one window state, opened beside the run's folder.
-std::unique_ptr<AnnualResultsStream> stateStream(const AnnualPass& p, const GridYear& g) {
-  std::unique_ptr<AnnualResultsStream> out;
-  p.folder.guard([&] {
-    static int serial = 0;  // unique temporary names; the files are renamed at the end
-    out = std::make_unique<AnnualResultsStream>(p.folder.beside() / ("window_state_" + std::to_string(serial++)),
-                                                static_cast<int>(g.count), p.y.stamps);
-  });
-  return out;
-}
-
-// Pass 2 with window states: each block's reference year (every group in its first state) read
-// back, each traced state's year beside it (its own stream and metrics), folded into the switched
-// year by the hours' states (foldWindowState), which goes to the grid's switched streams.
-void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObserver& observer) {
-  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = traced.size();
-  const ObservedStep step(observer, "window states: coefficients", 2 * sensors * nq);
-  struct Slice {
-    GridYear* g;
-    std::size_t lo, k;
-    std::vector<float> ref, refDirect, total, direct;
-  };
-  auto metrics = [&](const float* e, const float* d, std::size_t k) {
-    return sensorAnnualMetrics(e, d, static_cast<int>(k), static_cast<int>(nh), p.y.occupied, p.th);
-  };
-  auto addTo = [](std::vector<SensorAnnualMetrics>& to, const std::vector<SensorAnnualMetrics>& m) {
-    to.insert(to.end(), m.begin(), m.end());
-  };
-  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
-    const std::size_t n = std::min(p.block, sensors - b0);
-    std::vector<Slice> slices;
-    for (GridYear& g : p.grids) {
-      const auto [lo, k] = overlap(g, b0, n);
-      if (k == 0) continue;
-      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}, {}};
-      const int from = static_cast<int>(lo - g.first);
-      p.folder.guard([&] {
-        g.total->read(from, static_cast<int>(k), sl.ref.data());
-        g.directSun->read(from, static_cast<int>(k), sl.refDirect.data());
-      });
-      sl.total = sl.ref;
-      sl.direct = sl.refDirect;
-      addTo(g.stateSensors[0], metrics(sl.ref.data(), sl.refDirect.data(), k));
-      slices.push_back(std::move(sl));
-    }
-    for (std::size_t q = 0; q < nq; ++q) {
-      const StateTrace& st = traced[q];
-      const AnnualIlluminance year = st.tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
-      checkFinite(year.total, "the hourly illuminance of a window state", b0 * nh);
-      for (Slice& sl : slices) {
-        GridYear& g = *sl.g;
-        const float* e = year.total.data() + (sl.lo - b0) * nh;
-        const float* d = year.directSun.data() + (sl.lo - b0) * nh;
-        const std::vector<uint8_t>& state = g.stateOf[static_cast<std::size_t>(st.group)];
-        foldWindowState(e, sl.ref.data(), state, st.state, g.switched, sl.k, sl.total.data());
-        foldWindowState(d, sl.refDirect.data(), state, st.state, g.switched, sl.k, sl.direct.data());
-        p.folder.guard([&] { g.stateTotal[q]->append(e, static_cast<int>(sl.k)); });
-        addTo(g.stateSensors[q + 1], metrics(e, d, sl.k));
-      }
-    }
-    for (Slice& sl : slices) {
-      GridYear& g = *sl.g;
-      p.folder.guard([&] {
-        g.switchedTotal->append(sl.total.data(), static_cast<int>(sl.k));
-        g.switchedDirect->append(sl.direct.data(), static_cast<int>(sl.k));
-      });
-      const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
-      if (chosen >= sl.lo && chosen < sl.lo + sl.k)
-        g.chosenSensorLux.assign(sl.total.begin() + (chosen - sl.lo) * nh, sl.total.begin() + (chosen - sl.lo + 1) * nh);
-      addTo(g.sensors, metrics(sl.total.data(), sl.direct.data(), sl.k));
-    }
-  }
-}
-
-// Each grid's state per group and hour: the schedule's, or LM-83's direct-sun rule over the
-// sun-rule groups (blindsClosureFromCounts: a group "closed" is in its second state) on the
-// group's sun_grid or on the grid itself.
-void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
-  const WindowStates& ws = in.states;
-  const std::size_t nh = p.y.stamps.size();
-  std::vector<std::vector<uint32_t>> closure(p.grids.size());
-  for (std::size_t gi = 0; gi < p.grids.size() && ws.sunGroups > 0; ++gi)
-    closure[gi] = blindsClosureFromCounts(p.grids[gi].closureCounts, ws.sunGroups,
-                                          static_cast<int>(p.grids[gi].count), p.y.occupied);
-  for (std::size_t gi = 0; gi < p.grids.size(); ++gi) {
-    GridYear& g = p.grids[gi];
-    std::vector<int>().swap(g.closureCounts);
-    g.stateOf.clear();
-    g.switched.assign(nh, 0);
-    for (const WindowStateGroup& wg : ws.groups) {
-      std::vector<uint8_t> state = wg.scheduled;
-      if (state.empty()) {
-        const std::vector<uint32_t>& mask = closure[wg.sunGrid >= 0 ? static_cast<std::size_t>(wg.sunGrid) : gi];
-        state.resize(nh);
-        for (std::size_t h = 0; h < nh; ++h) state[h] = static_cast<uint8_t>((mask[h] >> wg.sunIndex) & 1u);
-      }
-      for (std::size_t h = 0; h < nh; ++h) g.switched[h] += state[h] != 0;
-      g.stateOf.push_back(std::move(state));
-    }
-  }
-}
-
-// With window states: the reference year (every group in its first state; the direct sun split
-// by the sun-rule groups), each grid's states per hour, then one coefficient pass per group and
-// state other than its first (every state is traced, used or not: its results are reported).
-void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
-                       AnnualTraces& t, StudyObserver& observer) {
-  tracedOpenPass(in, job, p, false, t, observer);  // the reference: every group in its first state
-  chooseWindowStates(in, p);
-  YearJob stateJob = job;
-  stateJob.windows = nullptr;
-  const WindowStates& ws = in.states;
-  std::vector<StateTrace> traced;
-  for (std::size_t q = 0; q < ws.groups.size(); ++q)
-    for (std::size_t k = 1; k < ws.groups[q].states.size(); ++k) {
-      StateTrace st{static_cast<int>(q), static_cast<int>(k), nullptr, nullptr};
-      std::vector<int> choice(ws.groups.size(), 0);
-      choice[q] = static_cast<int>(k);
-      st.scene = loadStateScene(c, in.north, ws, choice);
-      st.scene->sky->model = in.scene->sky->model;
-      st.tracer = std::make_unique<YearTracer>(*st.scene, stateJob, true);
-      traced.push_back(std::move(st));
-    }
-  for (GridYear& g : p.grids) {
-    g.stateSensors.assign(traced.size() + 1, {});
-    for (std::size_t q = 0; q < traced.size(); ++q) g.stateTotal.push_back(stateStream(p, g));
-    g.switchedTotal = stateStream(p, g);
-    g.switchedDirect = stateStream(p, g);
-  }
-  statesPass(p, traced, observer);
-  for (const StateTrace& st : traced) {
-    t.coefficientsClosedS += st.tracer->coefficientsS();
-    t.productClosedS += st.tracer->productS();
-    t.raysClosed += st.tracer->rays();
   }
 }
 
@@ -737,19 +414,6 @@ void traceAnnual(const CaseFile& c, const AnnualInputs& in, const ResolvedTrace&
   }
 }
 
-// Per group and state: the occupied hours in it and the metrics of its year (statesPass's order:
-// the reference year, then each group's states after its first).
-void windowStateResults(const WindowStates& ws, const YearHours& y, GridYear& gy, AnnualGridReport& ar) {
-  std::size_t traced = 0;
-  for (std::size_t q = 0; q < ws.groups.size() && !gy.stateSensors.empty(); ++q)
-    for (std::size_t k = 0; k < ws.groups[q].states.size(); ++k) {
-      int hours = 0;
-      for (std::size_t h = 0; h < y.occupied.size(); ++h) hours += y.occupied[h] && gy.stateOf[q][h] == static_cast<uint8_t>(k);
-      const std::vector<SensorAnnualMetrics>& m = gy.stateSensors[k == 0 ? 0 : ++traced];
-      ar.windowStates.push_back({ws.groups[q].name, ws.groups[q].states[k], hours, summarizeAnnual(m, y.occupiedCount)});
-    }
-}
-
 // Each grid's report from its metrics (LM-83's blinds rule applied per grid).
 void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThresholds& th, const YearHours& y,
                        std::vector<GridYear>& grids) {
@@ -777,28 +441,6 @@ void annualGridReports(ReportData& data, const AnnualInputs& in, const AnnualThr
     r.annual = std::move(ar);
     data.grids.push_back(std::move(r));
   }
-}
-
-// With window states: the switched year as the grid's hourly files, and each state's year as
-// <grid>_<group>_<state> (the reference year for every group's first state).
-void writeWindowStateFiles(const std::filesystem::path& outDir, const WindowStates& ws, const std::string& grid,
-                           GridYear& gy) {
-  gy.switchedTotal->commitAs(outDir / annualResultsFileName(grid));
-  gy.switchedDirect->commitAs(outDir / annualResultsFileName(grid + "_direct_sun"));
-  std::size_t traced = 0;
-  std::filesystem::path reference;
-  for (const WindowStateGroup& g : ws.groups)
-    for (std::size_t k = 0; k < g.states.size(); ++k) {
-      const std::filesystem::path target = outDir / annualResultsFileName(grid + "_" + g.name + "_" + g.states[k]);
-      if (k > 0) {
-        gy.stateTotal[traced++]->commitAs(target);
-      } else if (reference.empty()) {
-        gy.total->commitAs(target);
-        reference = target;
-      } else {
-        std::filesystem::copy_file(reference, target, std::filesystem::copy_options::overwrite_existing);
-      }
-    }
 }
 
 // Per grid: the annual CSV; the hourly files (all light, and direct sun alone), complete, move in.
@@ -864,6 +506,16 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
 }
 
 }  // namespace
+
+// The open (or reference) scene's year through openPass, its times and rays into t.
+void annual_detail::tracedOpenPass(const AnnualInputs& in, const YearJob& job, const AnnualPass& p, bool metricsNow,
+                                   AnnualTraces& t, StudyObserver& observer) {
+  YearTracer open(*in.scene, job, true);
+  openPass(p, open, metricsNow, observer);
+  t.coefficientsOpenS = open.coefficientsS();
+  t.productOpenS = open.productS();
+  t.raysOpen = open.rays();
+}
 
 RunResult runAnnualStudy(const CaseFile& c, const RunContext& run, StudyObserver& observer,
                          const AnnualStudyOptions& options) {

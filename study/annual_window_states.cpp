@@ -1,0 +1,198 @@
+// Window states in the annual study (docs/bsdf.md, "Window states"): the states chosen per hour
+// (a schedule or LM-83's direct-sun rule), one coefficient pass per group and state beyond its
+// first, the switched year folded from them, and each state's results and hourly files.
+#include "study/annual_year.h"
+
+#include "metrics/window_groups.h"
+#include "study/finite_results.h"
+
+#include <cstdint>
+
+namespace candela::annual_detail {
+
+namespace {
+
+// A traced window state: group `group` in state `state` (≥ 1), the other groups in their first.
+struct StateTrace {
+  int group = 0, state = 0;
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<YearTracer> tracer;
+};
+
+// The hourly stream of grid g's year in one window state, opened beside the run's folder.
+std::unique_ptr<AnnualResultsStream> stateStream(const AnnualPass& p, const GridYear& g) {
+  std::unique_ptr<AnnualResultsStream> out;
+  p.folder.guard([&] {
+    static int serial = 0;  // unique temporary names; the files are renamed at the end
+    out = std::make_unique<AnnualResultsStream>(p.folder.beside() / ("window_state_" + std::to_string(serial++)),
+                                                static_cast<int>(g.count), p.y.stamps);
+  });
+  return out;
+}
+
+// Pass 2 with window states: each block's reference year (every group in its first state) read
+// back, each traced state's year beside it (its own stream and metrics), folded into the switched
+// year by the hours' states (foldWindowState), which goes to the grid's switched streams.
+void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObserver& observer) {
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = traced.size();
+  const ObservedStep step(observer, "window states: coefficients", 2 * sensors * nq);
+  struct Slice {
+    GridYear* g;
+    std::size_t lo, k;
+    std::vector<float> ref, refDirect, total, direct;
+  };
+  auto metrics = [&](const float* e, const float* d, std::size_t k) {
+    return sensorAnnualMetrics(e, d, static_cast<int>(k), static_cast<int>(nh), p.y.occupied, p.th);
+  };
+  auto addTo = [](std::vector<SensorAnnualMetrics>& to, const std::vector<SensorAnnualMetrics>& m) {
+    to.insert(to.end(), m.begin(), m.end());
+  };
+  for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+    const std::size_t n = std::min(p.block, sensors - b0);
+    std::vector<Slice> slices;
+    for (GridYear& g : p.grids) {
+      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+      const auto part = overlap(g, b0, n);
+      const std::size_t lo = part.first, k = part.second;
+      if (k == 0) continue;
+      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}, {}};
+      const int from = static_cast<int>(lo - g.first);
+      p.folder.guard([&] {
+        g.total->read(from, static_cast<int>(k), sl.ref.data());
+        g.directSun->read(from, static_cast<int>(k), sl.refDirect.data());
+      });
+      sl.total = sl.ref;
+      sl.direct = sl.refDirect;
+      addTo(g.stateSensors[0], metrics(sl.ref.data(), sl.refDirect.data(), k));
+      slices.push_back(std::move(sl));
+    }
+    for (std::size_t q = 0; q < nq; ++q) {
+      const StateTrace& st = traced[q];
+      const AnnualIlluminance year = st.tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
+      checkFinite(year.total, "the hourly illuminance of a window state", b0 * nh);
+      for (Slice& sl : slices) {
+        GridYear& g = *sl.g;
+        const float* e = year.total.data() + (sl.lo - b0) * nh;
+        const float* d = year.directSun.data() + (sl.lo - b0) * nh;
+        const std::vector<uint8_t>& state = g.stateOf[static_cast<std::size_t>(st.group)];
+        foldWindowState(e, sl.ref.data(), state, st.state, g.switched, sl.k, sl.total.data());
+        foldWindowState(d, sl.refDirect.data(), state, st.state, g.switched, sl.k, sl.direct.data());
+        p.folder.guard([&] { g.stateTotal[q]->append(e, static_cast<int>(sl.k)); });
+        addTo(g.stateSensors[q + 1], metrics(e, d, sl.k));
+      }
+    }
+    for (Slice& sl : slices) {
+      GridYear& g = *sl.g;
+      p.folder.guard([&] {
+        g.switchedTotal->append(sl.total.data(), static_cast<int>(sl.k));
+        g.switchedDirect->append(sl.direct.data(), static_cast<int>(sl.k));
+      });
+      const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
+      if (chosen >= sl.lo && chosen < sl.lo + sl.k)
+        g.chosenSensorLux.assign(sl.total.begin() + (chosen - sl.lo) * nh, sl.total.begin() + (chosen - sl.lo + 1) * nh);
+      addTo(g.sensors, metrics(sl.total.data(), sl.direct.data(), sl.k));
+    }
+  }
+}
+
+// Each grid's state per group and hour: the schedule's, or LM-83's direct-sun rule over the
+// sun-rule groups (blindsClosureFromCounts: a group "closed" is in its second state) on the
+// group's sun_grid or on the grid itself.
+void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
+  const WindowStates& ws = in.states;
+  const std::size_t nh = p.y.stamps.size();
+  std::vector<std::vector<uint32_t>> closure(p.grids.size());
+  for (std::size_t gi = 0; gi < p.grids.size() && ws.sunGroups > 0; ++gi)
+    closure[gi] = blindsClosureFromCounts(p.grids[gi].closureCounts, ws.sunGroups,
+                                          static_cast<int>(p.grids[gi].count), p.y.occupied);
+  for (std::size_t gi = 0; gi < p.grids.size(); ++gi) {
+    GridYear& g = p.grids[gi];
+    std::vector<int>().swap(g.closureCounts);
+    g.stateOf.clear();
+    g.switched.assign(nh, 0);
+    for (const WindowStateGroup& wg : ws.groups) {
+      std::vector<uint8_t> state = wg.scheduled;
+      if (state.empty()) {
+        const std::vector<uint32_t>& mask = closure[wg.sunGrid >= 0 ? static_cast<std::size_t>(wg.sunGrid) : gi];
+        state.resize(nh);
+        for (std::size_t h = 0; h < nh; ++h) state[h] = static_cast<uint8_t>((mask[h] >> wg.sunIndex) & 1u);
+      }
+      for (std::size_t h = 0; h < nh; ++h) g.switched[h] += state[h] != 0;
+      g.stateOf.push_back(std::move(state));
+    }
+  }
+}
+
+}  // namespace
+
+// With window states: the reference year (every group in its first state; the direct sun split
+// by the sun-rule groups), each grid's states per hour, then one coefficient pass per group and
+// state other than its first (every state is traced, used or not: its results are reported).
+void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
+                       AnnualTraces& t, StudyObserver& observer) {
+  tracedOpenPass(in, job, p, false, t, observer);  // the reference: every group in its first state
+  chooseWindowStates(in, p);
+  YearJob stateJob = job;
+  stateJob.windows = nullptr;
+  const WindowStates& ws = in.states;
+  std::vector<StateTrace> traced;
+  for (std::size_t q = 0; q < ws.groups.size(); ++q)
+    for (std::size_t k = 1; k < ws.groups[q].states.size(); ++k) {
+      StateTrace st{static_cast<int>(q), static_cast<int>(k), nullptr, nullptr};
+      std::vector<int> choice(ws.groups.size(), 0);
+      choice[q] = static_cast<int>(k);
+      st.scene = loadStateScene(c, in.north, ws, choice);
+      st.scene->sky->model = in.scene->sky->model;
+      st.tracer = std::make_unique<YearTracer>(*st.scene, stateJob, true);
+      traced.push_back(std::move(st));
+    }
+  for (GridYear& g : p.grids) {
+    g.stateSensors.assign(traced.size() + 1, {});
+    for (std::size_t q = 0; q < traced.size(); ++q) g.stateTotal.push_back(stateStream(p, g));
+    g.switchedTotal = stateStream(p, g);
+    g.switchedDirect = stateStream(p, g);
+  }
+  statesPass(p, traced, observer);
+  for (const StateTrace& st : traced) {
+    t.coefficientsClosedS += st.tracer->coefficientsS();
+    t.productClosedS += st.tracer->productS();
+    t.raysClosed += st.tracer->rays();
+  }
+}
+
+// Per group and state: the occupied hours in it and the metrics of its year (statesPass's order:
+// the reference year, then each group's states after its first).
+void windowStateResults(const WindowStates& ws, const YearHours& y, GridYear& gy, AnnualGridReport& ar) {
+  std::size_t traced = 0;
+  for (std::size_t q = 0; q < ws.groups.size() && !gy.stateSensors.empty(); ++q)
+    for (std::size_t k = 0; k < ws.groups[q].states.size(); ++k) {
+      int hours = 0;
+      for (std::size_t h = 0; h < y.occupied.size(); ++h) hours += y.occupied[h] && gy.stateOf[q][h] == static_cast<uint8_t>(k);
+      const std::vector<SensorAnnualMetrics>& m = gy.stateSensors[k == 0 ? 0 : ++traced];
+      ar.windowStates.push_back({ws.groups[q].name, ws.groups[q].states[k], hours, summarizeAnnual(m, y.occupiedCount)});
+    }
+}
+
+// With window states: the switched year as the grid's hourly files, and each state's year as
+// <grid>_<group>_<state> (the reference year for every group's first state).
+void writeWindowStateFiles(const std::filesystem::path& outDir, const WindowStates& ws, const std::string& grid,
+                           GridYear& gy) {
+  gy.switchedTotal->commitAs(outDir / annualResultsFileName(grid));
+  gy.switchedDirect->commitAs(outDir / annualResultsFileName(grid + "_direct_sun"));
+  std::size_t traced = 0;
+  std::filesystem::path reference;
+  for (const WindowStateGroup& g : ws.groups)
+    for (std::size_t k = 0; k < g.states.size(); ++k) {
+      const std::filesystem::path target = outDir / annualResultsFileName(grid + "_" + g.name + "_" + g.states[k]);
+      if (k > 0) {
+        gy.stateTotal[traced++]->commitAs(target);
+      } else if (reference.empty()) {
+        gy.total->commitAs(target);
+        reference = target;
+      } else {
+        std::filesystem::copy_file(reference, target, std::filesystem::copy_options::overwrite_existing);
+      }
+    }
+}
+
+}  // namespace candela::annual_detail
