@@ -25,8 +25,12 @@ ComplianceReport leedOption1(const ComplianceInputs& in, const ComplianceSpec& s
   std::vector<LeedSpace> spaces;
   for (int g : complianceSpaces(s, t)) {
     const AnnualGridReport& a = *(*in.annualGrids)[static_cast<std::size_t>(g)].annual;
+    // LM-83: sDA with the shading operated (the grid's year: blinds or window states switched),
+    // ASE without operable shading. With window states that is the reference year (every group
+    // in its first state, the first entry of windowStates), not the switched year's ASE.
+    const double ase = a.windowStates.empty() ? a.summary.ASE1000_250 : a.windowStates.front().summary.ASE1000_250;
     spaces.push_back({t.grids()[static_cast<std::size_t>(g)].name, spaceArea(t.grids()[static_cast<std::size_t>(g)]),
-                      a.summary.sDA300_50, a.summary.ASE1000_250});
+                      a.summary.sDA300_50, ase});
   }
   const LeedOption1Result r = leedV41Option1(spaces);
   ComplianceReport out;

@@ -12,6 +12,7 @@
 #include "study/annual_study.h"
 #include "study/case_file.h"
 #include "study/case_scene.h"
+#include "study/compliance_spec.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
@@ -248,7 +249,12 @@ class WindowStateStudy : public testing::Test {
     CaseFile c = roomCase();
     c.scenes.push_back({kDir / "pane.rad", {}});  // the base's pane, which the states replace
     c.windowGroups = {southStates()};
+    ComplianceSpec leed;
+    leed.name = "leed";
+    leed.standard = ComplianceStandard::kLeedV41Option1;
+    c.compliance = {leed};
     sun_ = new RunResult(runRoom(c, dir_ / "sun"));
+    c.compliance.clear();
     c.windowGroups[0].schedule = writeSchedule(dir_, 8760, [](std::size_t h) { return h % 3 == 1 || h / 24 % 10 == 0; });
     scheduled_ = new RunResult(runRoom(c, dir_ / "schedule"));
   }
@@ -343,6 +349,18 @@ TEST_F(WindowStateStudy, TheSunRuleIsLm83sThreshold) {
   EXPECT_GT(dimHours, 100);
   EXPECT_LT(dimHours, countHours(occupied) - 100);
   EXPECT_EQ(annual(sun_).windowStates.at(1).occupiedHours, dimHours);
+}
+
+// LEED v4.1 option 1 with window states: sDA of the switched year (the shading operated, LM-83),
+// ASE of the reference year (every group in its first state: no operable shading), which here is
+// the clear state's single run; the switched year's own ASE is lower (the dim state stops the beam).
+TEST_F(WindowStateStudy, LeedTakesTheSwitchedSdaAndTheReferenceAse) {
+  ASSERT_EQ(sun_->data.compliance.size(), 1u);
+  ASSERT_TRUE(sun_->data.compliance[0].leed.has_value());
+  const LeedSpaceReport& space = sun_->data.compliance[0].leed->spaces.at(0);
+  EXPECT_EQ(space.sdaPct, annual(sun_).summary.sDA300_50);
+  EXPECT_EQ(space.asePct, annual(clear_).summary.ASE1000_250);
+  EXPECT_LT(annual(sun_).summary.ASE1000_250, annual(clear_).summary.ASE1000_250);
 }
 
 // A Honeybee radiance folder (honeybee-radiance-folder's layout) written here, read into the case
