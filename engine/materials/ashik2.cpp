@@ -5,10 +5,9 @@
 // (read as a pattern into Material::functions), turned by the transform; v = n × u, u = v × n on
 // the shading normal n, as Radiance's getacoords_as. The parts at a hit, as m_ashikhmin computes
 // them:
-// - diffuse: the diffuse colour times the patterns' colour, ρ_d E/π. Radiance weighs the light of
-//   its sampled sources by 1 − (1 − cos θ_l)⁵ (dirashik) and its ambient (indirect) light not;
-//   candela takes every light as Radiance's ambient does (docs/engine.md: the difference is below
-//   3 % for light within 60° of the normal, and 0 under a sky, which Radiance's ambient carries);
+// - diffuse: the diffuse colour times the patterns' colour, ρ_d E/π for the sky and the light
+//   paths meet (Radiance's ambient), and ρ_d E (1 − (1 − cos θ_l)⁵)/π for the light of a sampled
+//   source at θ_l from the normal (dirashik; MaterialFamily::sourceBrdf);
 // - specular: the specular colour s raised by Schlick's Fresnel at the viewer's angle,
 //   s + (1 − s)(1 − cos θ_v)⁵, not times the patterns' colour; the lobe sampled by its half vector
 //   (ashikhmin.h), each sample carrying the BRDF times cos θ_o over its density,
@@ -123,7 +122,17 @@ class Ashik2 : public NormalFamily {
                                   ? m.specularColor + (Rgb(1.0) - m.specularColor) * fresnel
                                   : Rgb(0.0);
   }
-  bool matteOpaque(const Material& m) const override { return photopic(m.specularReflectance) <= 0.0; }
+  // Never: a diffuse part weighs its sources' light by their angle (below), which no irradiance
+  // estimate stands for.
+  bool matteOpaque(const Material&) const override { return false; }
+  // Radiance's dirashik: a sampled source's light on the diffuse part takes 1 − F(cos θ_l) of
+  // its own angle (Schlick's F); the sky and the light paths meet do not (its ambient).
+  bool directionalSources(const Material& m) const override { return photopic(m.diffuseReflectance) > 0.0; }
+  Rgb sourceBrdf(const Material& m, const PatternPoint& at, PatternEvaluator&, const Vec3& ldir, double,
+                 bool transmitted) const override {
+    if (transmitted) return Rgb(0.0);
+    return m.diffuseReflectance * (kInvPi * (1.0 - schlickFresnel(std::abs(glm::dot(at.ng, ldir)))));
+  }
   bool sampleLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
     if (glm::dot(inDir, nf) >= 0.0) return false;
     const double u1 = rng.uniform(), u2 = rng.uniform();

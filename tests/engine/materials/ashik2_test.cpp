@@ -4,12 +4,11 @@
 // Radiance's m_ashikhmin (not the code under test), the u direction through its transform, and
 // the refusals at their line.
 #include "engine/irradiance_estimator.h"
-#include "engine/daylight.h"
 #include "engine/materials/ashikhmin.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/radiance/reader.h"
 #include "engine/tracer.h"
-#include "photometry/sky_type.h"
+#include "tests/support/material_harness.h"
 #include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -128,23 +127,16 @@ TEST(Ashikhmin, HalfVectorAzimuthFollowsItsMarginal) {
   EXPECT_LT(chi2, 37.7);  // the 0.1 % point of chi-square with 15 degrees of freedom
 }
 
-constexpr double kSkyLux = 10000.0;
+constexpr double kSkyLux = test_support::kUniformSkyLux;
 
-Scene readIn(const std::string& name, const std::string& text) {
+// dir/u.cal gives u along x; the scene with the uniform sky when `sky`.
+Scene readIn(const std::string& name, const std::string& text, bool sky = true) {
   const fs::path dir = test_support::scratchDir("ashik2", name);
   std::ofstream(dir / "u.cal") << "ux = 1; uy = 0; uz = 0;\n";
-  std::ofstream(dir / "scene.rad") << text;
-  Scene sc;
-  readRadianceFile(dir / "scene.rad", sc);
-  DaylightSpec d;
-  d.skyType = parseSkyType("uniform").value();
-  d.diffuseHorizontalLux = kSkyLux;
-  d.groundReflectance = 0.0;
-  addDaylight(sc, d);
-  return sc;
+  return test_support::readSceneText(dir, text, sky);
 }
 
-const std::string kPlane = "a polygon plane 0 0 12 -1e4 -1e4 0  1e4 -1e4 0  1e4 1e4 0  -1e4 1e4 0\n";
+const std::string kPlane = test_support::infinitePlane("a", 0.0, true);
 
 // An infinite plane under a uniform sky of luminance L = E/π over a black ground, seen by a
 // sensor 2 m above facing down: E_s = L ∫ cos θ_v [π ρ_d + s'(θ_v) R(θ_v, φ_v)] dω_v, R the
@@ -186,6 +178,31 @@ TEST(Ashik2, PlaneUnderAUniformSkyReflectsItsQuadrature) {
   expectLux(readIn("pattern", "void brightfunc half 2 .5 . 0 0\nhalf ashik2 a 4 ux uy uz u.cal 0 8 .3 .3 .3 .2 .2 "
                               ".2 20 5\n" + kPlane),
             want - 0.15 * kSkyLux, "pattern on the diffuse part");
+}
+
+// Radiance's dirashik: a sampled source's light on the diffuse part takes 1 − (1 − cos θ_l)⁵ of
+// its own angle, the view none. A sun 75° from the zenith over the plane (the factor 0.776), no
+// sky; a sensor 2 m up facing down, tilted 45° away from the sun so that the lobe's image of the
+// sun (exponents 1000: within a few degrees of the mirror direction) is behind it:
+//   E = ρ_d/π (1 − (1 − cos 75°)⁵) E_sun ∫ (n·ω) dω over the plane's directions it sees.
+// Without the factor the sensor reads 29 % more.
+TEST(Ashik2, SourcesLightTheDiffusePartWithTheirOwnFresnelFactor) {
+  const double zenDeg = 75.0, tilt = degToRad(45.0);
+  const Scene sc = readIn("dirashik",
+                          test_support::distantSun(zenDeg) + "void ashik2 a 4 ux uy uz u.cal 0 8 .3 .3 .3 .1 .1 .1 1000 1000\n" +
+                              kPlane,
+                          false);
+  const Vec3 n(0.0, -std::sin(tilt), -std::cos(tilt));
+  const double seen = test_support::belowHorizonIntegral(n, [](double) { return 1.0; });
+  const double want = 0.3 * kInvPi * (1.0 - std::pow(1.0 - std::cos(degToRad(zenDeg)), 5)) *
+                      test_support::sunLux(zenDeg) * seen;
+  TraceSettings st;
+  st.seed = 2;
+  st.hemisphereSamples = 8192;
+  st.maxBounces = 2;
+  const IrradianceEstimate e = estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, 2.0), Response::planar(n), 0, st);
+  EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
+  EXPECT_LT(e.standardErrorLux(), 0.01 * want);
 }
 
 TEST(Ashik2, DirectionThroughItsTransformAndFresnelAtTheViewer) {

@@ -6,11 +6,9 @@
 // the sun's cone (0.5°) varies cos θ by less than 1e-5 over its samples: the tolerance is 1e-4.
 // Under a uniform sky (no sampled source) the same surfaces reflect diffusely with
 // colour·(1 − trans') (Radiance's ambient for these types), within 4 standard errors.
-#include "engine/daylight.h"
-#include "engine/radiance/reader.h"
 #include "engine/render.h"
 #include "engine/tracer.h"
-#include "photometry/sky_type.h"
+#include "tests/support/material_harness.h"
 #include "tests/support/temp_files.h"
 #include "tests/support/test_views.h"
 #include "engine/irradiance_estimator.h"
@@ -24,28 +22,11 @@
 namespace candela {
 namespace {
 
-namespace fs = std::filesystem;
-
-constexpr double kSunL = 1e5;       // W/sr/m²
-constexpr double kSunDeg = 0.5;     // full angle
-constexpr double kSkyLux = 10000.0;
-
-double sunSolidAngle() { return kTwoPi * (1.0 - std::cos(degToRad(kSunDeg / 2))); }
-
-// The sun at zenith angle `zenithDeg` (towards +y), as a distant light source.
-std::string sun(double zenithDeg) {
-  const double t = degToRad(zenithDeg);
-  return "void light sunl 0 0 3 " + std::to_string(kSunL) + " " + std::to_string(kSunL) + " " + std::to_string(kSunL) +
-         "\nsunl source sun 0 0 4 0 " + std::to_string(std::sin(t)) + " " + std::to_string(std::cos(t)) + " " +
-         std::to_string(kSunDeg) + "\n";
-}
-
-// An infinite plane at height z, its front facing up (or down).
-std::string plane(const std::string& material, double z, bool up) {
-  const std::string h = std::to_string(z);
-  return material + " polygon plane 0 0 12 -1e4 -1e4 " + h + (up ? "  1e4 -1e4 " : "  -1e4 1e4 ") + h +
-         "  1e4 1e4 " + h + (up ? "  -1e4 1e4 " : "  1e4 -1e4 ") + h + "\n";
-}
+using test_support::distantSun;
+using test_support::infinitePlane;
+using test_support::sunSolidAngle;
+constexpr double kSunL = test_support::kSunRadiance;  // W/sr/m²
+constexpr double kSkyLux = test_support::kUniformSkyLux;
 
 const char* kCal =
     "half(lx,ly,lz,om) = .5;\n"
@@ -56,21 +37,11 @@ const char* kCal =
     "blue(lx,ly,lz,om) = .4;\n";
 
 Scene readIn(const std::string& name, const std::string& text, bool sky = false) {
-  const fs::path dir = test_support::scratchDir("brdf_function", name);
+  const std::filesystem::path dir = test_support::scratchDir("brdf_function", name);
   std::ofstream(dir / "f.cal") << kCal;
   // 1-D data over lz from 0 to 1 in 3 points: the value lz itself, by linear interpolation.
   std::ofstream(dir / "lz.dat") << "1\n0 1 3\n0 .5 1\n";
-  std::ofstream(dir / "scene.rad") << text;
-  Scene sc;
-  readRadianceFile(dir / "scene.rad", sc);
-  if (sky) {
-    DaylightSpec d;
-    d.skyType = parseSkyType("uniform").value();
-    d.diffuseHorizontalLux = kSkyLux;
-    d.groundReflectance = 0.0;
-    addDaylight(sc, d);
-  }
-  return sc;
+  return test_support::readSceneText(dir, text, sky);
 }
 
 IrradianceEstimate measure(const Scene& sc, double z, const Vec3& n) {
@@ -104,28 +75,28 @@ TEST(BrdfFunction, PlasfuncReflectsASourceByItsFunctionOfTheSourcesDirection) {
   const std::string mat = "void plasfunc pf 2 half f.cal 0 4 .5 .4 .3 .2\n";
   for (double zen : {0.0, 40.0}) {
     const Rgb c(.5, .4, .3);
-    expectExact(readIn("plasfunc", sun(zen) + mat + plane("pf", 0.0, true)), 2.0, kDown,
+    expectExact(readIn("plasfunc", distantSun(zen) + mat + infinitePlane("pf", 0.0, true)), 2.0, kDown,
                 (c * (0.8 * kInvPi) + Rgb(0.2 * 0.5)) * sunE(zen), "zenith " + std::to_string(zen));
   }
   // A function of the direction: 1 within 36.9° of the zenith (lz > .8), else 0.
   const std::string steep = "void plasfunc pf 2 steep f.cal 0 4 .5 .5 .5 .2\n";
-  expectExact(readIn("steep30", sun(30.0) + steep + plane("pf", 0.0, true)), 2.0, kDown,
+  expectExact(readIn("steep30", distantSun(30.0) + steep + infinitePlane("pf", 0.0, true)), 2.0, kDown,
               Rgb(0.5 * 0.8 * kInvPi + 0.2) * sunE(30.0), "lz .87");
-  expectExact(readIn("steep45", sun(45.0) + steep + plane("pf", 0.0, true)), 2.0, kDown,
+  expectExact(readIn("steep45", distantSun(45.0) + steep + infinitePlane("pf", 0.0, true)), 2.0, kDown,
               Rgb(0.5 * 0.8 * kInvPi) * sunE(45.0), "lz .71");
   // omega is the source's solid angle.
-  expectExact(readIn("omega", sun(0.0) + "void plasfunc pf 2 solid f.cal 0 4 .5 .5 .5 .2\n" + plane("pf", 0.0, true)),
+  expectExact(readIn("omega", distantSun(0.0) + "void plasfunc pf 2 solid f.cal 0 4 .5 .5 .5 .2\n" + infinitePlane("pf", 0.0, true)),
               2.0, kDown, Rgb(0.4 * kInvPi + 0.2 * sunSolidAngle() * 1000.0) * sunE(0.0), "omega");
   // The function's transform turns the light's direction: rotated 90° about x, the zenith sun's
   // direction (0 0 1) reads as (0 ±1 0) in the function's coordinates (lz 0: steep is 0).
-  expectExact(readIn("rotated", sun(0.0) + "void plasfunc pf 4 steep f.cal -rx 90 0 4 .5 .5 .5 .2\n" +
-                                    plane("pf", 0.0, true)),
+  expectExact(readIn("rotated", distantSun(0.0) + "void plasfunc pf 4 steep f.cal -rx 90 0 4 .5 .5 .5 .2\n" +
+                                    infinitePlane("pf", 0.0, true)),
               2.0, kDown, Rgb(0.4 * kInvPi) * sunE(0.0), "rotated");
 }
 
 TEST(BrdfFunction, MetfuncColoursItsDirectionalPart) {
   const Rgb c(.6, .3, .1);
-  expectExact(readIn("metfunc", sun(20.0) + "void metfunc mf 2 half f.cal 0 4 .6 .3 .1 .5\n" + plane("mf", 0.0, true)),
+  expectExact(readIn("metfunc", distantSun(20.0) + "void metfunc mf 2 half f.cal 0 4 .6 .3 .1 .5\n" + infinitePlane("mf", 0.0, true)),
               2.0, kDown, (c * (0.5 * kInvPi) + c * (0.5 * 0.5)) * sunE(20.0), "metfunc");
 }
 
@@ -135,10 +106,10 @@ TEST(BrdfFunction, TransfuncTransmitsASourceByItsFunction) {
   // pane stops shadow rays (Radiance's m_brdf2), so the sensor below gets only that.
   const Rgb c(.9, .8, .7);
   const std::string mat = "void transfunc tf 2 half f.cal 0 6 .9 .8 .7 .2 .5 .4\n";
-  expectExact(readIn("transfunc", sun(10.0) + mat + plane("tf", 1.0, true)), 0.0, kUp,
+  expectExact(readIn("transfunc", distantSun(10.0) + mat + infinitePlane("tf", 1.0, true)), 0.0, kUp,
               (c * (0.24 * kInvPi) + c * (0.16 * 0.5)) * sunE(10.0), "through");
   // Its top: colour (1 − trans' − rspec)/π + rspec f (uncoloured).
-  expectExact(readIn("transtop", sun(10.0) + mat + plane("tf", 0.0, true)), 2.0, kDown,
+  expectExact(readIn("transtop", distantSun(10.0) + mat + infinitePlane("tf", 0.0, true)), 2.0, kDown,
               (c * (0.4 * kInvPi) + Rgb(0.2 * 0.5)) * sunE(10.0), "reflected");
 }
 
@@ -146,8 +117,8 @@ TEST(BrdfFunction, PlasdataLooksItsDataUpAtTheSourcesDirection) {
   // lz.dat holds lz over [0, 1]: the function `same` passes the value looked up at lz on.
   for (double zen : {0.0, 50.0}) {
     const double lz = std::cos(degToRad(zen));
-    expectExact(readIn("plasdata", sun(zen) + "void plasdata pd 4 same lz.dat f.cal up 0 4 .5 .5 .5 .25\n" +
-                                       plane("pd", 0.0, true)),
+    expectExact(readIn("plasdata", distantSun(zen) + "void plasdata pd 4 same lz.dat f.cal up 0 4 .5 .5 .5 .25\n" +
+                                       infinitePlane("pd", 0.0, true)),
                 2.0, kDown, Rgb(0.5 * 0.75 * kInvPi + 0.25 * lz) * sunE(zen), "zenith " + std::to_string(zen));
   }
 }
@@ -155,29 +126,29 @@ TEST(BrdfFunction, PlasdataLooksItsDataUpAtTheSourcesDirection) {
 TEST(BrdfFunction, BrtdfuncDirectionalFunctionsOnBothSides) {
   // Front: rdf/π + the three functions; through from the other side: rdt/π + the functions.
   const std::string mat = "void BRTDfunc b 10 0 0 0 0 0 0 half half blue f.cal 0 9 .2 .2 .2 .6 .6 .6 .1 .1 .1\n";
-  expectExact(readIn("brtd_front", sun(0.0) + mat + plane("b", 0.0, true)), 2.0, kDown,
+  expectExact(readIn("brtd_front", distantSun(0.0) + mat + infinitePlane("b", 0.0, true)), 2.0, kDown,
               (Rgb(0.2 * kInvPi) + Rgb(.5, .5, .4)) * sunE(0.0), "front");
-  expectExact(readIn("brtd_through", sun(0.0) + mat + plane("b", 1.0, true)), 0.0, kUp,
+  expectExact(readIn("brtd_through", distantSun(0.0) + mat + infinitePlane("b", 1.0, true)), 0.0, kUp,
               (Rgb(0.1 * kInvPi) + Rgb(.5, .5, .4)) * sunE(0.0), "through");
 }
 
 TEST(BrdfFunction, SkyLightIsReflectedDiffuselyAsRadiancesAmbient) {
   // No sampled source: plasfunc reflects colour (all of it, the specular share included),
   // transfunc colour (1 − trans') above and colour trans' below.
-  expectWithin4Se(readIn("sky_plasfunc", "void plasfunc pf 2 half f.cal 0 4 .5 .5 .5 .2\n" + plane("pf", 0.0, true), true),
+  expectWithin4Se(readIn("sky_plasfunc", "void plasfunc pf 2 half f.cal 0 4 .5 .5 .5 .2\n" + infinitePlane("pf", 0.0, true), true),
                   2.0, kDown, 0.5 * kSkyLux, "plasfunc");
   const std::string tf = "void transfunc tf 2 half f.cal 0 6 .5 .5 .5 .2 .5 .4\n";
-  expectWithin4Se(readIn("sky_transfunc_top", tf + plane("tf", 0.0, true), true), 2.0, kDown, 0.5 * 0.6 * kSkyLux,
+  expectWithin4Se(readIn("sky_transfunc_top", tf + infinitePlane("tf", 0.0, true), true), 2.0, kDown, 0.5 * 0.6 * kSkyLux,
                   "transfunc reflected");
-  expectWithin4Se(readIn("sky_transfunc_under", tf + plane("tf", 1.0, true), true), 0.0, kUp, 0.5 * 0.4 * kSkyLux,
+  expectWithin4Se(readIn("sky_transfunc_under", tf + infinitePlane("tf", 1.0, true), true), 0.0, kUp, 0.5 * 0.4 * kSkyLux,
                   "transfunc transmitted");
 }
 
 TEST(BrdfFunction, TheCameraSeesTheDirectionalPart) {
   // A view straight down on the sunlit plasfunc plane: every traced pixel's luminance is the
   // plane's radiance × 179 (paths: the sun's cone varies it by < 1e-5).
-  const Scene sc = readIn("camera", sun(0.0) + "void plasfunc pf 2 half f.cal 0 4 .5 .5 .5 .2\n" +
-                                        plane("pf", 0.0, true));
+  const Scene sc = readIn("camera", distantSun(0.0) + "void plasfunc pf 2 half f.cal 0 4 .5 .5 .5 .2\n" +
+                                        infinitePlane("pf", 0.0, true));
   const Tracer tracer(sc);
   TraceSettings s;
   s.maxBounces = 0;

@@ -3,42 +3,21 @@
 // ρE, a mirror reflectance r for every direction gives rE, and one for the directions within 60°
 // of the normal (RdotP > 0.5) r·E·∫cos dω/π over that cap = r·E·(1 − cos²60°) = 0.75 rE. An
 // infinite pane above a sensor facing up passes τE the same way.
-#include "engine/daylight.h"
-#include "engine/radiance/reader.h"
 #include "engine/tracer.h"
-#include "photometry/sky_type.h"
+#include "tests/support/material_harness.h"
 #include "tests/support/temp_files.h"
 #include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-
 namespace candela {
 namespace {
 
-namespace fs = std::filesystem;
-
-constexpr double kSkyLux = 10000.0;
-// An infinite plane at height z, its front facing up (or down).
-std::string plane(const std::string& material, double z, bool up) {
-  const std::string h = std::to_string(z);
-  return material + " polygon plane 0 0 12 -1e4 -1e4 " + h + (up ? "  1e4 -1e4 " : "  -1e4 1e4 ") + h +
-         "  1e4 1e4 " + h + (up ? "  -1e4 1e4 " : "  1e4 -1e4 ") + h + "\n";
-}
+constexpr double kSkyLux = test_support::kUniformSkyLux;
+using test_support::infinitePlane;
 
 Scene readIn(const std::string& name, const std::string& text) {
-  const fs::path dir = test_support::scratchDir("brtdfunc", name);
-  std::ofstream(dir / "scene.rad") << text;
-  Scene sc;
-  readRadianceFile(dir / "scene.rad", sc);
-  DaylightSpec d;
-  d.skyType = parseSkyType("uniform").value();
-  d.diffuseHorizontalLux = kSkyLux;
-  d.groundReflectance = 0.0;
-  addDaylight(sc, d);
-  return sc;
+  return test_support::readSceneText(test_support::scratchDir("brtdfunc", name), text, true);
 }
 
 // The light at (0.3, 0.2, z) on a sensor facing n, within 4 standard errors of want (and the
@@ -57,19 +36,19 @@ const Vec3 kDown(0, 0, -1), kUp(0, 0, 1);
 
 TEST(BrtdFunc, DiffuseReflectanceOfTheSideMetAndThePatternsColour) {
   const std::string mat = "void BRTDfunc b 10 0 0 0 0 0 0 0 0 0 . 0 9 .2 .2 .2 .6 .6 .6 0 0 0\n";
-  expectLux(readIn("front", mat + plane("b", 0.0, true)), 2.0, kDown, 0.2 * kSkyLux, "front");
-  expectLux(readIn("back", mat + plane("b", 0.0, false)), 2.0, kDown, 0.6 * kSkyLux, "back");
+  expectLux(readIn("front", mat + infinitePlane("b", 0.0, true)), 2.0, kDown, 0.2 * kSkyLux, "front");
+  expectLux(readIn("back", mat + infinitePlane("b", 0.0, false)), 2.0, kDown, 0.6 * kSkyLux, "back");
   expectLux(readIn("pattern", "void brightfunc half 2 .5 . 0 0\nhalf BRTDfunc b 10 0 0 0 0 0 0 0 0 0 . 0 9 "
-                              ".2 .2 .2 .6 .6 .6 0 0 0\n" + plane("b", 0.0, true)),
+                              ".2 .2 .2 .6 .6 .6 0 0 0\n" + infinitePlane("b", 0.0, true)),
             2.0, kDown, 0.1 * kSkyLux, "times the pattern");
 }
 
 TEST(BrtdFunc, MirrorReflectanceByItsExpressions) {
   expectLux(readIn("mirror", "void BRTDfunc b 10 .4 .4 .4 0 0 0 0 0 0 . 0 9 0 0 0 0 0 0 0 0 0\n" +
-                                 plane("b", 0.0, true)),
+                                 infinitePlane("b", 0.0, true)),
             2.0, kDown, 0.4 * kSkyLux, "constant");
   expectLux(readIn("cap", "void BRTDfunc b 10 if(RdotP-.5,.4,0) if(RdotP-.5,.4,0) if(RdotP-.5,.4,0) 0 0 0 0 0 0 . "
-                          "0 9 0 0 0 0 0 0 0 0 0\n" + plane("b", 0.0, true)),
+                          "0 9 0 0 0 0 0 0 0 0 0\n" + infinitePlane("b", 0.0, true)),
             2.0, kDown, 0.75 * 0.4 * kSkyLux, "within 60°");
 }
 
@@ -78,10 +57,10 @@ TEST(BrtdFunc, MirrorReflectanceByItsExpressions) {
 TEST(BrtdFunc, StraightTransmittanceTurnedTowardsTheRay) {
   const std::string cap = "if(RdotP-.5,.6,0)";
   expectLux(readIn("pane", "void BRTDfunc b 10 0 0 0 " + cap + " " + cap + " " + cap + " 0 0 0 . 0 9 0 0 0 0 0 0 0 0 0\n" +
-                               plane("b", 1.0, true)),
+                               infinitePlane("b", 1.0, true)),
             0.0, kUp, 0.75 * 0.6 * kSkyLux, "RdotP");
   expectLux(readIn("sign", "void BRTDfunc b 10 0 0 0 if(Rdot,.6,0) if(Rdot,.6,0) if(Rdot,.6,0) 0 0 0 . 0 9 0 0 0 0 0 0 "
-                           "0 0 0\n" + plane("b", 1.0, true)),
+                           "0 0 0\n" + infinitePlane("b", 1.0, true)),
             0.0, kUp, 0.0, "Rdot < 0 from behind");
 }
 

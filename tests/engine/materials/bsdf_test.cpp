@@ -14,14 +14,13 @@
 // through, τE exactly; BSDF: the sun spread over its patch, τE within 4 standard errors).
 // The window's edge is 1e4 m away: what it leaves of the hemisphere changes readings by < 1e-7.
 #include "engine/bsdf.h"
-#include "engine/daylight.h"
 #include "engine/irradiance_estimator.h"
 #include "engine/render.h"
 #include "tests/support/test_views.h"
 #include "engine/radiance/reader.h"
 #include "engine/tracer.h"
-#include "photometry/sky_type.h"
 #include "tests/engine/bsdf_test_xml.h"
+#include "tests/support/material_harness.h"
 #include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -88,27 +87,15 @@ class TestBsdf final : public Bsdf {
   double peak_;
 };
 
-constexpr double kSunL = 1e5;  // W/sr/m²
-constexpr double kSunDeg = 0.5;
-constexpr double kSkyLux = 10000.0;
+constexpr double kSkyLux = test_support::kUniformSkyLux;
+using test_support::sunLux;
+using test_support::sunSolidAngle;
 
-double sunSolidAngle() { return kTwoPi * (1.0 - std::cos(degToRad(kSunDeg / 2))); }
-double sunLux(double zenithDeg) { return kLumensPerWatt * kSunL * sunSolidAngle() * std::cos(degToRad(zenithDeg)); }
-
-std::string sun(double zenithDeg) {
-  const double t = degToRad(zenithDeg);
-  return "void light sunl 0 0 3 " + std::to_string(kSunL) + " " + std::to_string(kSunL) + " " + std::to_string(kSunL) +
-         "\nsunl source sun 0 0 4 0 " + std::to_string(std::sin(t)) + " " + std::to_string(std::cos(t)) + " " +
-         std::to_string(kSunDeg) + "\n";
-}
+std::string sun(double zenithDeg) { return test_support::distantSun(zenithDeg); }
 
 // A plane at height z of material `material` (a trans stand-in the test turns into the BSDF),
 // its normal down (the room below: Radiance's BSDF normal points into the room) or up.
-std::string plane(double z, bool up) {
-  const std::string h = std::to_string(z);
-  return "stand polygon window 0 0 12 -1e4 -1e4 " + h + (up ? "  1e4 -1e4 " : "  -1e4 1e4 ") + h + "  1e4 1e4 " + h +
-         (up ? "  -1e4 1e4 " : "  1e4 -1e4 ") + h + "\n";
-}
+std::string plane(double z, bool up) { return test_support::infinitePlane("stand", z, up, "window"); }
 
 // The scene with the stand-in turned into `type` (BSDF or aBSDF) with scattering b.
 Scene window(const std::string& name, const std::string& text, const Bsdf& b, MaterialType type, bool sky) {
@@ -124,13 +111,7 @@ Scene window(const std::string& name, const std::string& text, const Bsdf& b, Ma
       deriveMaterial(m);
       m.anisotropyU = Vec3(0.0, 1.0, 0.0);
     }
-  if (sky) {
-    DaylightSpec d;
-    d.skyType = parseSkyType("uniform").value();
-    d.diffuseHorizontalLux = kSkyLux;
-    d.groundReflectance = 0.0;
-    addDaylight(sc, d);
-  }
+  if (sky) test_support::addUniformSky(sc);
   return sc;
 }
 
@@ -237,18 +218,7 @@ Scene xmlWindow(const std::string& name, const std::string& xml, const std::stri
                 bool sky) {
   const fs::path dir = test_support::scratchDir("bsdf_xml_window", name);
   std::ofstream(dir / "w.xml") << xml;
-  std::ofstream(dir / "scene.rad") << material << "\n" << text
-                                   << "stand polygon window 0 0 12 -1e4 -1e4 1  -1e4 1e4 1  1e4 1e4 1  1e4 -1e4 1\n";
-  Scene sc;
-  readRadianceFile(dir / "scene.rad", sc);
-  if (sky) {
-    DaylightSpec d;
-    d.skyType = parseSkyType("uniform").value();
-    d.diffuseHorizontalLux = kSkyLux;
-    d.groundReflectance = 0.0;
-    addDaylight(sc, d);
-  }
-  return sc;
+  return test_support::readSceneText(dir, material + "\n" + text + plane(1.0, false), sky);
 }
 
 constexpr int kFull = 145;
