@@ -55,6 +55,13 @@ FunctionFiles::Arrays FunctionFiles::picture(const std::string& name, const RadP
          }).arrays;
 }
 
+std::shared_ptr<const RadDataArray> FunctionFiles::hyperspectral(const std::string& name, const RadPrimitive& p,
+                                                                 const std::filesystem::path& folder) {
+  return once(name, p, folder, "hyperspectral picture", [](const std::filesystem::path& path, Read& r) {
+           r.arrays = Arrays{std::make_shared<const RadDataArray>(readHyperspectralPicture(path))};
+         }).arrays[0];
+}
+
 namespace {
 // What a text pattern's file holds is read whole into memory; beyond these sizes it is refused
 // (Radiance's own fonts are below 100 kB, its texts a few lines).
@@ -195,28 +202,30 @@ ScenePattern readSpectrumPattern(const RadPrimitive& p, FunctionFiles& files, co
 // bounded in tests/engine/radiance/spectral_patterns_test.cpp.
 constexpr double kSpecfuncStepNm = 5.0;
 
-// specfunc (`2+ sfunc funcfile transform 0 2+ nmA nmB A3 …`, Radiance's p_func.c p_specfunc) and
+// specfunc (`2+ sfunc funcfile transform 0 2+ nmA nmB A3 …`, Radiance's p_func.c p_specfunc),
 // specdata (`4+ sfunc datafile funcfile x1 … xn transform`, its data over n coordinates and then
-// wavelength, p_data.c p_specdata): a spectrum of the ray, sfunc(nm) or sfunc(value, nm), reduced
-// to RGB at each hit as a spectrum of those values at the nodes (spectrumNodeWeights). specpict
-// (a hyperspectral picture) is refused with the reason.
+// wavelength, p_data.c p_specdata) and specpict (`5+ sfunc picture funcfile u v transform`, a
+// hyperspectral picture over its y, x and wavelength, p_data.c p_specpict): a spectrum of the ray,
+// sfunc(nm) or sfunc(value, nm), reduced to RGB at each hit as a spectrum of those values at the
+// nodes (spectrumNodeWeights): specdata's the data's wavelengths, specpict's the centres of the
+// picture's bands.
 ScenePattern readSpectralPattern(const RadPrimitive& p, FunctionFiles& files, const std::filesystem::path& folder,
                                  ScenePattern sp, int index) {
   const std::string what = p.type + " '" + p.name + "'";
-  if (p.type == "specpict")
-    throw InputError(p.loc, what + ": its picture" + (p.strings.size() > 1 ? " '" + p.strings[1] + "'" : "") +
-                                " is a Radiance 6 hyperspectral picture (NCOMP channels under one exponent, "
-                                "WAVELENGTH_SPLITS), a format candela does not read");
-  const bool data = p.type == "specdata";
+  const bool picture = p.type == "specpict";
+  const bool data = p.type == "specdata" || picture;
   const size_t fileAt = data ? 2 : 1;
-  if (p.strings.size() < fileAt + 1)
-    throw InputError(p.loc, what + " needs " + std::to_string(fileAt + 1) + " or more string arguments (" +
-                                (data ? "sfunc datafile funcfile x1 .. xn [transform]" : "sfunc funcfile [transform]") +
+  const size_t minimum = picture ? 5 : fileAt + 1;
+  if (p.strings.size() < minimum)
+    throw InputError(p.loc, what + " needs " + std::to_string(minimum) + " or more string arguments (" +
+                                (picture ? "sfunc picture funcfile u v [transform]"
+                                 : data  ? "sfunc datafile funcfile x1 .. xn [transform]"
+                                         : "sfunc funcfile [transform]") +
                                 "), got " + std::to_string(p.strings.size()));
   files.load(p.strings[fileAt], p, folder);
   size_t at = fileAt + 1;
   if (data) {
-    sp.data[0] = files.data(p.strings[1], p, folder);
+    sp.data[0] = picture ? files.hyperspectral(p.strings[1], p, folder) : files.data(p.strings[1], p, folder);
     const RadDataArray& d = *sp.data[0];
     if (d.dimensions() < 2)
       throw InputError(p.loc, what + ": its data file '" + p.strings[1] + "' needs 2 or more dimensions (the last "
@@ -225,14 +234,19 @@ ScenePattern readSpectralPattern(const RadPrimitive& p, FunctionFiles& files, co
     if (p.strings.size() < at + dims)
       throw InputError(p.loc, what + " needs a coordinate for each of its data's " + std::to_string(dims) +
                                   " dimensions before wavelength, got " + std::to_string(p.strings.size() - at));
+    // A picture's coordinates are u (along x) then v (along y), its data y then x (p_specpict).
+    std::vector<std::string> coordinates(p.strings.begin() + static_cast<long>(at),
+                                         p.strings.begin() + static_cast<long>(at + dims));
+    if (picture) std::reverse(coordinates.begin(), coordinates.end());
     for (size_t k = 0; k < dims; ++k, ++at) {
+      const std::string& text = coordinates[k];
       const std::string label = "`pattern" + std::to_string(index) + ".x" + std::to_string(k);
       try {
-        sp.coordinates.push_back(files.program()->addExpression(p.strings[at], label, p.loc));
+        sp.coordinates.push_back(files.program()->addExpression(text, label, p.loc));
       } catch (const InputError& e) {
-        throw InputError(p.loc, what + ": its coordinate '" + p.strings[at] + "' is not an expression: " + e.message());
+        throw InputError(p.loc, what + ": its coordinate '" + text + "' is not an expression: " + e.message());
       }
-      files.program()->check(label, -1, p.loc, p.strings[at]);
+      files.program()->check(label, -1, p.loc, text);
     }
     const RadDataArray::Axis& axis = d.axes.back();
     for (int k = 0; k < axis.count; ++k)

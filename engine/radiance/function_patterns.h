@@ -43,6 +43,9 @@ class FunctionFiles {
                                            const std::filesystem::path& folder);
   std::array<std::shared_ptr<const RadDataArray>, 3> picture(const std::string& name, const RadPrimitive& p,
                                                              const std::filesystem::path& folder);
+  // A hyperspectral picture (specpict: engine/radiance/picture.h), y, x and wavelength, read once.
+  std::shared_ptr<const RadDataArray> hyperspectral(const std::string& name, const RadPrimitive& p,
+                                                    const std::filesystem::path& folder);
   // A text pattern's font (engine/radiance/font.h) and text file (its lines), read once.
   std::shared_ptr<const RadFont> font(const std::string& name, const RadPrimitive& p,
                                       const std::filesystem::path& folder);
@@ -64,7 +67,8 @@ class FunctionFiles {
     std::shared_ptr<const std::vector<std::string>> lines;  // a text file's lines
     std::shared_ptr<const Bsdf> bsdf;                       // a BSDF file's scattering
   };
-  // Finds `name` (a `role`: "function file", "data file", "picture", "font file", "text file") as
+  // Finds `name` (a `role`: "function file", "data file", "picture", "hyperspectral picture", "font
+  // file", "text file") as
   // every file a scene names is found; the first time its canonical path is met in that role,
   // `read` reads it into the Read and the file is listed in files(); later, what was read then.
   const Read& once(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder,

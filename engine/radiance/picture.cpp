@@ -2,10 +2,13 @@
 
 #include "base/input_file.h"
 
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace candela {
@@ -76,34 +79,72 @@ bool readScanline(std::string_view bytes, size_t& pos, int width, std::vector<ui
   return true;
 }
 
-}  // namespace
+// What the header says that candela reads (header.c's lines up to an empty one).
+struct PictureHeader {
+  std::string format;            // FORMAT= (empty: none)
+  int formatLine = 0;
+  double aspect = 1.0;           // PIXASPECT= (multiplied, as Radiance's headaspect)
+  int components = 0;            // NCOMP= (0: none)
+  std::array<double, 4> splits{};  // WAVELENGTH_SPLITS= (nm, the longest first)
+  bool hasSplits = false;
+  int line = 0;                  // the header's last line (the empty one)
+};
 
-std::array<RadDataArray, 3> parseRadiancePicture(std::string_view bytes, const std::string& fileName) {
-  // The header: lines up to an empty one (header.c); the format must be RGBE.
-  size_t pos = 0;
-  int line = 0;
-  double aspect = 1.0;
+PictureHeader readHeader(std::string_view bytes, const std::string& fileName, size_t& pos) {
+  PictureHeader h;
   bool first = true;
   for (;;) {
     const size_t end = bytes.find('\n', pos);
-    if (end == std::string_view::npos || ++line > 10000) bad(fileName, line, "no end of header (not a Radiance picture)");
+    if (end == std::string_view::npos || ++h.line > 10000)
+      bad(fileName, h.line, "no end of header (not a Radiance picture)");
     const std::string_view text = bytes.substr(pos, end - pos);
     pos = end + 1;
     if (first && text.rfind("#?", 0) != 0 && !text.empty() && text.find('=') == std::string_view::npos)
-      bad(fileName, line, "not a Radiance picture (no '#?RADIANCE' line)");
+      bad(fileName, h.line, "not a Radiance picture (no '#?RADIANCE' line)");
     first = false;
-    if (text.empty()) break;
-    if (text.rfind("FORMAT=", 0) == 0 && text.substr(7) != "32-bit_rle_rgbe")
-      bad(fileName, line, "format '" + std::string(text.substr(7, 40)) + "' is not 32-bit_rle_rgbe (RGB)");
-    if (text.rfind("PIXASPECT=", 0) == 0) {
-      const double a = std::atof(std::string(text.substr(10, 40)).c_str());
-      if (!(a > 0.0 && a < 1e6)) bad(fileName, line, "PIXASPECT is not a positive number");
-      aspect *= a;
+    if (text.empty()) return h;
+    const std::string value(text.substr(text.find('=') + 1, 200));
+    if (text.rfind("FORMAT=", 0) == 0) {
+      h.format = std::string(text.substr(7, 40));
+      h.formatLine = h.line;
+    } else if (text.rfind("PIXASPECT=", 0) == 0) {
+      const double a = std::atof(value.c_str());
+      if (!(a > 0.0 && a < 1e6)) bad(fileName, h.line, "PIXASPECT is not a positive number");
+      h.aspect *= a;
+    } else if (text.rfind("NCOMP=", 0) == 0) {
+      h.components = std::atoi(value.c_str());
+    } else if (text.rfind("WAVELENGTH_SPLITS=", 0) == 0) {
+      std::istringstream in(value);
+      for (double& w : h.splits) in >> w;
+      h.hasSplits = static_cast<bool>(in);
+      if (!h.hasSplits) bad(fileName, h.line, "WAVELENGTH_SPLITS needs four wavelengths (nm)");
     }
   }
-  // The resolution line: "-Y h +X w" (standard) or any of Radiance's eight orientations.
+}
+
+// The resolution line's layout: the picture's size, how its scanlines run, and getpict's extent
+// (y then x, the shorter side from 0 to 1).
+struct PictureLayout {
+  long width = 0, height = 0;
+  bool yMajor = true, yDown = true, xLeft = true;
+  double ySize = 1.0, xSize = 1.0;
+  long scanLength() const { return yMajor ? width : height; }
+  long scans() const { return yMajor ? height : width; }
+  // The pixel at position `along` of scanline `across`: its row from the bottom times the width
+  // plus its column from the left.
+  size_t pixel(long across, long along) const {
+    long x = yMajor ? along : across, y = yMajor ? across : along;
+    if (yDown) y = height - 1 - y;
+    if (!xLeft) x = width - 1 - x;
+    return static_cast<size_t>(y * width + x);
+  }
+};
+
+// The resolution line ("-Y h +X w" or another of Radiance's eight orientations) at pos, for
+// pixels of `valuesPerPixel` values each (bounded by kMaxDataValues in all).
+PictureLayout readResolution(std::string_view bytes, const std::string& fileName, size_t& pos, int line,
+                             double aspect, size_t valuesPerPixel) {
   const size_t end = bytes.find('\n', pos);
-  ++line;
   if (end == std::string_view::npos) bad(fileName, line, "no resolution line");
   std::istringstream res{std::string(bytes.substr(pos, std::min<size_t>(end - pos, 100)))};
   std::string a1, a2;
@@ -112,37 +153,61 @@ std::array<RadDataArray, 3> parseRadiancePicture(std::string_view bytes, const s
   const bool ok1 = a1.size() == 2 && (a1[0] == '-' || a1[0] == '+'), ok2 = a2.size() == 2 && (a2[0] == '-' || a2[0] == '+');
   if (!res || !ok1 || !ok2 || a1[1] == a2[1] || (a1[1] != 'X' && a1[1] != 'Y') || (a2[1] != 'X' && a2[1] != 'Y'))
     bad(fileName, line, "the resolution line is not '-Y height +X width' or another of Radiance's orientations");
-  if (n1 < 1 || n2 < 1 || n1 > kMaxSide || n2 > kMaxSide || static_cast<size_t>(n1 * n2) > kMaxPicturePixels)
-    bad(fileName, line, "a picture of " + std::to_string(n1) + " × " + std::to_string(n2) +
-                            " pixels is beyond what candela reads (32768 a side, 2^24 pixels)");
+  if (n1 < 1 || n2 < 1 || n1 > kMaxSide || n2 > kMaxSide ||
+      static_cast<size_t>(n1 * n2) > kMaxDataValues / valuesPerPixel)
+    bad(fileName, line, "a picture of " + std::to_string(n1) + " × " + std::to_string(n2) + " pixels of " +
+                            std::to_string(valuesPerPixel) + " values is beyond what candela reads (32768 a side, " +
+                            "2^24 values)");
   pos = end + 1;
-  const bool yMajor = a1[1] == 'Y';  // scanlines run along x
-  const long width = yMajor ? n2 : n1, height = yMajor ? n1 : n2;
-  const bool yDown = (yMajor ? a1 : a2)[0] == '-', xLeft = (yMajor ? a2 : a1)[0] == '+';
+  PictureLayout l;
+  l.yMajor = a1[1] == 'Y';  // scanlines run along x
+  l.width = l.yMajor ? n2 : n1;
+  l.height = l.yMajor ? n1 : n2;
+  l.yDown = (l.yMajor ? a1 : a2)[0] == '-';
+  l.xLeft = (l.yMajor ? a2 : a1)[0] == '+';
+  const bool tall = static_cast<double>(l.width) <= static_cast<double>(l.height) * aspect;
+  l.ySize = tall ? aspect * static_cast<double>(l.height) / static_cast<double>(l.width) : 1.0;
+  l.xSize = tall ? 1.0 : static_cast<double>(l.width) / static_cast<double>(l.height) / aspect;
+  return l;
+}
+
+// A picture file's bytes, read whole (a regular file: base/input_file.h) up to maxBytes.
+std::string pictureBytes(const std::filesystem::path& path, std::uintmax_t maxBytes, const std::string& what) {
+  checkInputFile(path, what);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > maxBytes)
+    throw InputError(FileLoc{path.string(), 0}, what + ": larger than a picture candela reads (2^24 values)");
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw InputError(FileLoc{path.string(), 0}, what + ": cannot be read");
+  InputFileLog::record(path, bytes);
+  return bytes;
+}
+
+}  // namespace
+
+std::array<RadDataArray, 3> parseRadiancePicture(std::string_view bytes, const std::string& fileName) {
+  size_t pos = 0;
+  const PictureHeader h = readHeader(bytes, fileName, pos);
+  if (!h.format.empty() && h.format != "32-bit_rle_rgbe")
+    bad(fileName, h.formatLine, "format '" + h.format + "' is not 32-bit_rle_rgbe (RGB)");
+  const int line = h.line + 1;
+  const PictureLayout l = readResolution(bytes, fileName, pos, line, h.aspect, 3);
   std::array<RadDataArray, 3> out;
-  // getpict's dimensions: y then x, the shorter side from 0 to 1.
-  const bool tall = static_cast<double>(width) <= static_cast<double>(height) * aspect;
-  const double ySize = tall ? aspect * static_cast<double>(height) / static_cast<double>(width) : 1.0;
-  const double xSize = tall ? 1.0 : static_cast<double>(width) / static_cast<double>(height) / aspect;
   for (RadDataArray& a : out) {
     a.file = fileName;
-    a.axes = {RadDataArray::Axis{0.0, ySize, static_cast<int>(height), {}},
-              RadDataArray::Axis{0.0, xSize, static_cast<int>(width), {}}};
-    a.values.assign(static_cast<size_t>(width * height), 0.0);
+    a.axes = {RadDataArray::Axis{0.0, l.ySize, static_cast<int>(l.height), {}},
+              RadDataArray::Axis{0.0, l.xSize, static_cast<int>(l.width), {}}};
+    a.values.assign(static_cast<size_t>(l.width * l.height), 0.0);
   }
-  const long scanLength = yMajor ? width : height, scans = yMajor ? height : width;
   std::vector<uint8_t> scan;
-  for (long s = 0; s < scans; ++s) {
-    if (!readScanline(bytes, pos, static_cast<int>(scanLength), scan))
-      bad(fileName, line, "scanline " + std::to_string(s + 1) + " of " + std::to_string(scans) +
+  for (long s = 0; s < l.scans(); ++s) {
+    if (!readScanline(bytes, pos, static_cast<int>(l.scanLength()), scan))
+      bad(fileName, line, "scanline " + std::to_string(s + 1) + " of " + std::to_string(l.scans()) +
                               " is damaged or missing");
-    for (long k = 0; k < scanLength; ++k) {
-      // The pixel's place: row y from the bottom, column x from the left.
-      const long along = k, across = s;
-      long x = yMajor ? along : across, y = yMajor ? across : along;
-      if (yDown) y = height - 1 - y;
-      if (!xLeft) x = width - 1 - x;
-      const size_t at = static_cast<size_t>(y * width + x);
+    for (long k = 0; k < l.scanLength(); ++k) {
+      const size_t at = l.pixel(s, k);
       const uint8_t* p = &scan[static_cast<size_t>(k) * 4];
       for (int c = 0; c < 3; ++c) out[static_cast<size_t>(c)].values[at] = channel(p[c], p[3]);
     }
@@ -150,17 +215,55 @@ std::array<RadDataArray, 3> parseRadiancePicture(std::string_view bytes, const s
   return out;
 }
 
+RadDataArray parseHyperspectralPicture(std::string_view bytes, const std::string& fileName) {
+  size_t pos = 0;
+  const PictureHeader h = readHeader(bytes, fileName, pos);
+  // getspec (src/rt/data.c): a FORMAT other than the spectral one, NCOMP of 3 or fewer (or beyond
+  // MAXCSAMP, 24) or no wavelength splits is not a hyperspectral picture.
+  if (!h.format.empty() && h.format.find("spectra") == std::string::npos)
+    bad(fileName, h.formatLine, "format '" + h.format + "' is not a Radiance hyperspectral picture (Radiance_spectra)");
+  if (h.components <= 3 || h.components > kMaxSpectralComponents)
+    bad(fileName, h.line, "a hyperspectral picture needs NCOMP= between 4 and " +
+                              std::to_string(kMaxSpectralComponents) + " in its header" +
+                              (h.components != 0 ? ", got " + std::to_string(h.components) : ""));
+  if (!h.hasSplits || !(h.splits[3] >= 1.0) || h.splits[0] == h.splits[3])
+    bad(fileName, h.line, "a hyperspectral picture needs WAVELENGTH_SPLITS= with its range of wavelengths (nm)");
+  const int line = h.line + 1;
+  const int nc = h.components;
+  const PictureLayout l = readResolution(bytes, fileName, pos, line, h.aspect, static_cast<size_t>(nc));
+  RadDataArray out;
+  out.file = fileName;
+  // The components are nc equal bands from splits[0] to splits[3], each at its centre (getspec).
+  const double range = h.splits[3] - h.splits[0];
+  const double first = h.splits[0] + 0.5 * range / nc;
+  out.axes = {RadDataArray::Axis{0.0, l.ySize, static_cast<int>(l.height), {}},
+              RadDataArray::Axis{0.0, l.xSize, static_cast<int>(l.width), {}},
+              RadDataArray::Axis{first, first + range * (nc - 1.0) / nc, nc, {}}};
+  out.values.assign(static_cast<size_t>(l.width * l.height) * static_cast<size_t>(nc), 0.0);
+  // Each scanline flat: nc mantissas and one common exponent a pixel (color.c freadscolrs).
+  const size_t pixelBytes = static_cast<size_t>(nc) + 1;
+  for (long s = 0; s < l.scans(); ++s) {
+    const size_t need = static_cast<size_t>(l.scanLength()) * pixelBytes;
+    if (bytes.size() - pos < need)
+      bad(fileName, line, "scanline " + std::to_string(s + 1) + " of " + std::to_string(l.scans()) + " is missing");
+    for (long k = 0; k < l.scanLength(); ++k) {
+      const auto* p = reinterpret_cast<const uint8_t*>(bytes.data() + pos + static_cast<size_t>(k) * pixelBytes);
+      double* v = &out.values[l.pixel(s, k) * static_cast<size_t>(nc)];
+      for (int c = 0; c < nc; ++c) v[c] = channel(p[c], p[nc]);
+    }
+    pos += need;
+  }
+  return out;
+}
+
 std::array<RadDataArray, 3> readRadiancePicture(const std::filesystem::path& path) {
-  checkInputFile(path, "picture");
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxPicturePixels * 4 + (1 << 20))
-    throw InputError(FileLoc{path.string(), 0}, "picture: larger than a picture candela reads (2^24 pixels)");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw InputError(FileLoc{path.string(), 0}, "picture: cannot be read");
-  InputFileLog::record(path, bytes);
-  return parseRadiancePicture(bytes, path.string());
+  return parseRadiancePicture(pictureBytes(path, kMaxPicturePixels * 4 + (1 << 20), "picture"), path.string());
+}
+
+RadDataArray readHyperspectralPicture(const std::filesystem::path& path) {
+  // nc + 1 bytes a pixel for nc values: at most twice the values (nc ≥ 4), and the header.
+  return parseHyperspectralPicture(pictureBytes(path, 2 * kMaxDataValues + (1 << 20), "hyperspectral picture"),
+                                   path.string());
 }
 
 }  // namespace candela

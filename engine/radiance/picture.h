@@ -26,4 +26,13 @@ std::array<RadDataArray, 3> parseRadiancePicture(std::string_view bytes, const s
 // Reads a picture file (a regular file: base/input_file.h); errors as parseRadiancePicture.
 std::array<RadDataArray, 3> readRadiancePicture(const std::filesystem::path& path);
 
+// Radiance 6's hyperspectral pictures (specpict; src/rt/data.c getspec, src/common/color.c):
+// a header with NCOMP= (4 to 24 components) and WAVELENGTH_SPLITS= (nm, the longest first: the
+// components are NCOMP equal bands from the first to the last), then scanlines of NCOMP mantissas
+// and one common exponent a pixel, flat. Read as one data array of three dimensions, y and x as a
+// picture's and then wavelength at the bands' centres (in the file's order, the longest first).
+inline constexpr int kMaxSpectralComponents = 24;  // Radiance's MAXCSAMP
+RadDataArray parseHyperspectralPicture(std::string_view bytes, const std::string& fileName);
+RadDataArray readHyperspectralPicture(const std::filesystem::path& path);
+
 }  // namespace candela

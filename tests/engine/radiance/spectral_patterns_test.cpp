@@ -1,7 +1,7 @@
-// specfunc and specdata (spectra of the ray, reduced to RGB at each hit) against the reduction of
-// the `spectrum` pattern: the same values give the same RGB; specfunc's 5 nm nodes against 1 nm
-// steps within the interpolation bound; specdata's coordinates; specpict and a spectrum on a
-// light refused with their reasons.
+// specfunc, specdata and specpict (spectra of the ray, reduced to RGB at each hit) against the
+// reduction of the `spectrum` pattern: the same values give the same RGB; specfunc's 5 nm nodes
+// against 1 nm steps within the interpolation bound; specdata's and specpict's coordinates; a
+// spectrum on a light and bad hyperspectral pictures refused with their reasons.
 #include "engine/irradiance_estimator.h"
 #include "engine/radiance/spectrum.h"
 
@@ -14,7 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace candela {
@@ -22,8 +24,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Scene readIn(const std::string& name, const std::string& text) {
+// A hyperspectral picture `bytes` is written as s.hsr.
+Scene readIn(const std::string& name, const std::string& text, const std::string& hsr = "") {
   const fs::path dir = test_support::scratchDir("spectral", name);
+  if (!hsr.empty()) std::ofstream(dir / "s.hsr", std::ios::binary) << hsr;
   std::ofstream(dir / "s.cal") << "ramp(nm) = .2 + .6*(nm - 400)/300;\n"
                                   "half(nm) = if(Px, .8, .2);\n";
   // Two rows over a coordinate 0..1, each a spectrum at 400, 500, 600, 700 nm.
@@ -150,9 +154,53 @@ TEST(SpectralPatterns, SpecfuncOnAFloorUnderTheSky) {
   EXPECT_LT(e.standardErrorLux(), 0.02 * want);
 }
 
-std::string errorOf(const std::string& name, const std::string& text) {
+// A Radiance 6 hyperspectral picture (color.h, color.c: NCOMP mantissas and one exponent a
+// pixel, flat) of 8 bands from 780 to 380 nm, 50 nm each (centres 755 … 405 nm), two rows of two
+// pixels, the top row first ("-Y 2 +X 2"); pixel values are (m + 0.5)/256 (exponent 128).
+const std::string kHsrHeader = "#?RADIANCE\nNCOMP=8\nWAVELENGTH_SPLITS= 780 588 480 380\nFORMAT=Radiance_spectra\n\n";
+std::string hsrPixel(const std::array<int, 8>& m) {
+  std::string p;
+  for (int v : m) p += static_cast<char>(v);
+  return p + static_cast<char>(128);
+}
+const std::array<int, 8> kA{200, 180, 160, 140, 120, 100, 80, 60}, kB{20, 40, 60, 80, 100, 120, 140, 160},
+    kC{90, 90, 90, 90, 90, 90, 90, 90};
+const std::string kHsr = kHsrHeader + "-Y 2 +X 2\n" + hsrPixel(kA) + hsrPixel(kB) + hsrPixel(kC) + hsrPixel(kC);
+
+// The `spectrum` line of a pixel's values: from the shortest band's centre (405 nm) to the
+// longest's (755), the file's order reversed.
+std::string spectrumOf(const std::string& name, const std::array<int, 8>& m) {
+  std::string line = "void spectrum " + name + " 0 0 10 405 755";
+  for (int k = 7; k >= 0; --k) {
+    char v[32];
+    std::snprintf(v, sizeof v, " %.17g", (m[static_cast<size_t>(k)] + 0.5) / 256.0);  // exact: 9 digits at most
+    line += v;
+  }
+  return line + "\n";
+}
+
+// specpict: the picture's spectrum at (u, v) = (Px, Py), through noop: at a pixel's centre that
+// pixel's spectrum (as the `spectrum` of its values), between them the bilinear mix (the
+// reduction to RGB is linear in the values). The picture is 1 × 1 (square): pixel centres at 0
+// and 1 along each axis, as Radiance's getspec places them.
+TEST(SpectralPatterns, SpecpictIsThePicturesSpectrumAtItsCoordinates) {
+  const Scene sc = readIn("pict", spectrumOf("a", kA) + spectrumOf("b", kB) + spectrumOf("c", kC) +
+                                      "void specpict p 5 noop s.hsr . Px Py 0 0\n" + kUse +
+                                      "p plastic x 0 0 5 1 1 1 0 0\nx polygon q 0 0 9 0 0 0 1 0 0 0 1 0\n",
+                          kHsr);
+  const Rgb a = colourOf(sc, "a"), b = colourOf(sc, "b"), c = colourOf(sc, "c");
+  EXPECT_GT(a.x, a.z);  // A falls towards the blue, B rises
+  EXPECT_LT(b.x, b.z);
+  expectSame(colourOf(sc, "p", Vec3(0, 1, 0)), a, 1e-9, "top left");
+  expectSame(colourOf(sc, "p", Vec3(1, 1, 0)), b, 1e-9, "top right");
+  expectSame(colourOf(sc, "p", Vec3(0, 0, 0)), c, 1e-9, "bottom left");
+  expectSame(colourOf(sc, "p", Vec3(0.25, 1, 0)), 0.75 * a + 0.25 * b, 1e-9, "along the top row");
+  expectSame(colourOf(sc, "p", Vec3(0.25, 0.5, 0)), 0.5 * (0.75 * a + 0.25 * b) + 0.5 * c, 1e-9, "inside");
+}
+
+std::string errorOf(const std::string& name, const std::string& text, const std::string& hsr = "") {
   try {
-    readIn(name, text);
+    readIn(name, text, hsr);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -160,9 +208,24 @@ std::string errorOf(const std::string& name, const std::string& text) {
 }
 
 TEST(SpectralPatterns, RefusalsNameTheirLineAndReason) {
-  EXPECT_NE(errorOf("pict", "void specpict p 5 clip fish.hsr . Px Py 0 0\np plastic m 0 0 5 1 1 1 0 0\n"
-                            "m polygon q 0 0 9 0 0 0 1 0 0 0 1 0\n")
-                .find("scene.rad:1: specpict 'p': its picture 'fish.hsr' is a Radiance 6 hyperspectral picture"),
+  const std::string pict = "void specpict p 5 noop s.hsr . Px Py 0 0\np plastic m 0 0 5 1 1 1 0 0\n"
+                           "m polygon q 0 0 9 0 0 0 1 0 0 0 1 0\n";
+  EXPECT_NE(errorOf("pict_args", "void specpict p 4 noop s.hsr . Px 0 0\np plastic m 0 0 5 1 1 1 0 0\n"
+                                 "m polygon q 0 0 9 0 0 0 1 0 0 0 1 0\n", kHsr)
+                .find("scene.rad:1: specpict 'p' needs 5 or more string arguments (sfunc picture funcfile u v"),
+            std::string::npos);
+  EXPECT_NE(errorOf("pict_absent", pict).find("scene.rad:1: specpict 'p'"), std::string::npos);
+  std::string threeBands = kHsr;
+  threeBands.replace(threeBands.find("NCOMP=8"), 7, "NCOMP=3");
+  EXPECT_NE(errorOf("pict_ncomp", pict, threeBands).find("s.hsr:5: picture: a hyperspectral picture needs NCOMP="),
+            std::string::npos);
+  EXPECT_NE(errorOf("pict_short", pict, kHsr.substr(0, kHsr.size() - 9))
+                .find("s.hsr:6: picture: scanline 2 of 2 is missing"),
+            std::string::npos);
+  std::string rgbe = kHsr;
+  rgbe.replace(rgbe.find("Radiance_spectra"), 16, "32-bit_rle_rgbe");
+  EXPECT_NE(errorOf("pict_format", pict, rgbe).find("s.hsr:4: picture: format '32-bit_rle_rgbe' is not a Radiance "
+                                                    "hyperspectral picture"),
             std::string::npos);
   EXPECT_NE(errorOf("light", "void specfunc f 2 ramp s.cal 0 2 400 700\nf light l 0 0 3 1 1 1\n")
                 .find("scene.rad:2: light 'l' is modified by the spectrum 'f'"),
