@@ -122,6 +122,11 @@ void readEn17037(Table& tab, ComplianceSpec& s) {
         }
         g.checkLoc = c.at(*h);
       }
+      if (const toml::node* r = vt.get("check_resolution")) {
+        const int64_t px = asInteger(c, *r, "check_resolution");
+        if (px < 16 || px > 4096) c.fail(*r, "'check_resolution' must lie in 16 .. 4096 pixels");
+        g.checkResolutionPx = static_cast<int>(px);
+      }
       vt.finish();
       s.glareViews.push_back(g);
     }

@@ -36,6 +36,8 @@ struct GlareViewSpec {
   // `check_hours`: hours of the year rendered to check the imageless DGP (local standard time,
   // "YYYY-MM-DDTHH:MM" as written: the hour that starts then).
   std::vector<std::string> checkHours;
+  // `check_resolution`: the check images' side in pixels (a square 180° fisheye).
+  int checkResolutionPx = 256;
   FileLoc loc, checkLoc;
 };
 

@@ -205,12 +205,14 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
         g.blindsClosedHours += ((*closedHours)[h] && (*in.occupied)[h]) ? 1 : 0;
     }
     // Each check hour rendered in the state its blinds were in.
+    RenderedGlareOptions check;
+    check.resolutionPx = v.checkResolutionPx;
     for (std::size_t k = 0; k < checkHours.size(); ++k) {
       const bool shut = blinds && (*closedHours)[static_cast<std::size_t>(checkHours[k])];
       const HourSceneInput hs{shut ? in.closedScene : in.scene, in.epw, in.sky, in.glareJob->northDeg,
                               in.caseFile->sky.groundReflectance};
       const GlareHourCheck c =
-          checkChosenHours(hs, view, shut ? *closed : open, {checkHours[k]}, in.glareJob->settings, in.threads, {})
+          checkChosenHours(hs, view, shut ? *closed : open, {checkHours[k]}, in.glareJob->settings, in.threads, {}, check)
               .at(0);
       g.checks.push_back({v.checkHours[k], shut, c.imagelessDgp, c.renderedDgp, c.imagelessEvLux, c.renderedEvLux});
     }

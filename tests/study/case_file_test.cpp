@@ -293,6 +293,7 @@ INSTANTIATE_TEST_SUITE_P(
                     ErrorCase{"annual_occupancy_order.toml", 5, "'occupancy_end' must be later than 'occupancy_start'"},
                     ErrorCase{"annual_threshold_order.toml", 5, "udi_low < da_threshold < udi_high"},
                     ErrorCase{"annual_subdivision.toml", 6, "'sky_subdivision' must be between 1 and 8"},
+                    ErrorCase{"glare_check_resolution.toml", 10, "'check_resolution' must lie in 16 .. 4096 pixels"},
                     // A grid at 1e19 m under a sky once aborted the process inside Embree.
                     ErrorCase{"huge_height.toml", 4, "'height' must lie within ±1e7"},
                     // A NUL once silently cut the path short.

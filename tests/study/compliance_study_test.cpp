@@ -255,7 +255,7 @@ RunResult runWindowRoom(const fs::path& dir, bool blinds) {
       << "/epw/synthetic_golden_2026.epw\"\n[annual]\nblinds = " << (blinds ? "true" : "false")
       << "\n[[grid]]\nname = \"floor\"\ncorners = [[0.2, 0.2], [3.8, 3.8]]\nheight = 0.8\nspacing = 0.6\n"
          "[[compliance]]\nstandard = \"en17037\"\n[[compliance.glare_views]]\nposition = [2.0, 2.5, 1.2]\n"
-         "direction = [0.0, -1.0, 0.0]\ncheck_hours = [\"2026-01-15T11:00\"]\n"
+         "direction = [0.0, -1.0, 0.0]\ncheck_hours = [\"2026-01-15T11:00\"]\ncheck_resolution = 64\n"
          "[settings]\nquality = \"draft\"\n";
   return runCaseIn(dir);
 }
