@@ -77,7 +77,10 @@ void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObser
         const std::vector<uint8_t>& state = g.stateOf[static_cast<std::size_t>(st.group)];
         foldWindowState(e, sl.ref.data(), state, st.state, g.switched, sl.k, sl.total.data());
         foldWindowState(d, sl.refDirect.data(), state, st.state, g.switched, sl.k, sl.direct.data());
-        p.folder.guard([&] { g.stateTotal[q]->append(e, static_cast<int>(sl.k)); });
+        p.folder.guard([&] {
+          g.stateTotal[q]->append(e, static_cast<int>(sl.k));
+          g.stateDirect[q]->append(d, static_cast<int>(sl.k));
+        });
         addTo(g.stateSensors[q + 1], metrics(e, d, sl.k));
       }
     }
@@ -148,7 +151,10 @@ void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob&
     }
   for (GridYear& g : p.grids) {
     g.stateSensors.assign(traced.size() + 1, {});
-    for (std::size_t q = 0; q < traced.size(); ++q) g.stateTotal.push_back(stateStream(p, g));
+    for (std::size_t q = 0; q < traced.size(); ++q) {
+      g.stateTotal.push_back(stateStream(p, g));
+      g.stateDirect.push_back(stateStream(p, g));
+    }
     g.switchedTotal = stateStream(p, g);
     g.switchedDirect = stateStream(p, g);
   }
@@ -173,24 +179,31 @@ void windowStateResults(const WindowStates& ws, const YearHours& y, GridYear& gy
     }
 }
 
-// With window states: the switched year as the grid's hourly files, and each state's year as
-// <grid>_<group>_<state> (the reference year for every group's first state).
+// With window states: the switched year as the grid's hourly files, and each state's year (all
+// light and direct sun) as <grid>_<group>_<state> and <grid>_<group>_<state>_direct_sun (the
+// reference year for every group's first state).
 void writeWindowStateFiles(const std::filesystem::path& outDir, const WindowStates& ws, const std::string& grid,
                            GridYear& gy) {
   gy.switchedTotal->commitAs(outDir / annualResultsFileName(grid));
   gy.switchedDirect->commitAs(outDir / annualResultsFileName(grid + "_direct_sun"));
   std::size_t traced = 0;
-  std::filesystem::path reference;
+  std::filesystem::path reference, referenceDirect;
   for (const WindowStateGroup& g : ws.groups)
     for (std::size_t k = 0; k < g.states.size(); ++k) {
-      const std::filesystem::path target = outDir / annualResultsFileName(grid + "_" + g.name + "_" + g.states[k]);
+      const std::string name = grid + "_" + g.name + "_" + g.states[k];
+      const std::filesystem::path total = outDir / annualResultsFileName(name),
+                                  direct = outDir / annualResultsFileName(name + "_direct_sun");
       if (k > 0) {
-        gy.stateTotal[traced++]->commitAs(target);
+        gy.stateTotal[traced]->commitAs(total);
+        gy.stateDirect[traced++]->commitAs(direct);
       } else if (reference.empty()) {
-        gy.total->commitAs(target);
-        reference = target;
+        gy.total->commitAs(total);
+        gy.directSun->commitAs(direct);
+        reference = total;
+        referenceDirect = direct;
       } else {
-        std::filesystem::copy_file(reference, target, std::filesystem::copy_options::overwrite_existing);
+        std::filesystem::copy_file(reference, total, std::filesystem::copy_options::overwrite_existing);
+        std::filesystem::copy_file(referenceDirect, direct, std::filesystem::copy_options::overwrite_existing);
       }
     }
 }

@@ -171,12 +171,13 @@ struct GridYear {
   int chosenSensor = 0;
   std::vector<double> chosenSensorLux;
   // Window states: per group the state of every hour, per hour the groups off their first state;
-  // per traced state (a group in a state other than its first) its year's stream; the metrics of
+  // per traced state (a group in a state other than its first) its year's streams (all light and
+  // direct sun); the metrics of
   // the reference year (every group in its first state), then of each traced state; the switched
   // year's streams (they become the grid's hourly files).
   std::vector<std::vector<uint8_t>> stateOf;
   std::vector<uint8_t> switched;
-  std::vector<std::unique_ptr<AnnualResultsStream>> stateTotal;
+  std::vector<std::unique_ptr<AnnualResultsStream>> stateTotal, stateDirect;
   std::vector<std::vector<SensorAnnualMetrics>> stateSensors;
   std::unique_ptr<AnnualResultsStream> switchedTotal, switchedDirect;
 };

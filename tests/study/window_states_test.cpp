@@ -280,6 +280,8 @@ TEST_F(WindowStateStudy, EachStateIsItsSingleRun) {
   for (const RunResult* r : {sun_, scheduled_}) {
     EXPECT_EQ(hourly(r, "room_south_clear").lux, hourly(clear_, "room").lux);
     EXPECT_EQ(hourly(r, "room_south_dim").lux, hourly(dim_, "room").lux);
+    EXPECT_EQ(hourly(r, "room_south_clear_direct_sun").lux, hourly(clear_, "room_direct_sun").lux);
+    EXPECT_EQ(hourly(r, "room_south_dim_direct_sun").lux, hourly(dim_, "room_direct_sun").lux);
   }
   // Per-state metrics: the single runs' (no blinds), to the last bit.
   const auto& states = annual(sun_).windowStates;
