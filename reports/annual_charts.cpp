@@ -108,7 +108,9 @@ TemporalMap temporalMap(const std::vector<double>& lux, const std::vector<HourSt
 
 std::string sdaAsePlanSvg(const PlanLayout& L, const std::vector<bool>& sdaPass, const std::vector<bool>& aseExceeded,
                           const PlanOptions& opt) {
-  const auto [lo, hi] = planExtent(L);
+  // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+  const PlanExtent extent = planExtent(L);
+  const Vec2 lo = extent.lo, hi = extent.hi;
   const Vec2 ext = hi - lo;
   const double k = std::min(opt.maxPlanWidthPx / ext.x, opt.maxPlanHeightPx / ext.y);  // px per m
   const double planW = ext.x * k, planH = ext.y * k, left = 10, top = 10;
