@@ -112,9 +112,10 @@ std::string En13201Section::html() const {
       << fixed(r.widthM, 2) << " m, " << r.lanes << (r.lanes == 1 ? " lane" : " lanes");
     if (r.roadClass.family == RoadClassFamily::kM) h << ", surface " << xmlEscape(r.surface) << " (q0 " << fixed(r.q0, 3) << ")";
     h << "</h3>\n" << en13201PlanSvg(r, report_.luminaires) << "\n";
-    h << "<p class=\"legend\">Plan: the field of calculation (grey) and its lanes (dashed); squares the illuminance "
-         "points shaded by their value, dots the luminance points, circles the luminaires, triangles the "
-         "observers (60 m before the field).</p>\n";
+    h << "<p class=\"legend\">Plan: the field of calculation (grey) and its lanes (dashed white); squares the "
+         "illuminance points shaded from black (0 lx) to yellow (the maximum), dots the luminance points, circles the "
+         "luminaires, triangles the observers (60 m before the field); for M classes the edge strips of R<sub>EI</sub> "
+         "dashed, inside and outside each edge.</p>\n";
     h << "<table class=\"compliance\"><tr><th>criterion (EN 13201-2, class " << r.roadClass.name()
       << ")</th><th>computed</th><th>required</th><th>verdict</th></tr>\n";
     for (const RoadCriterion& c : r.criteria) {
@@ -171,6 +172,12 @@ std::string en13201PlanSvg(const RoadResult& r, const std::vector<En13201Report:
     s << "<line x1=\"" << X(u0) << "\" y1=\"" << Y(v) << "\" x2=\"" << X(u1) << "\" y2=\"" << Y(v)
       << "\" stroke=\"#fff\" stroke-width=\"2\" stroke-dasharray=\"12 8\"/>\n";
   }
+  // The edge illuminance ratio's strips beside the field (M classes), dashed: outside and inside each edge.
+  if (r.stripWidthM > 0.0)
+    for (double v : {-r.stripWidthM, 0.0, r.widthM - r.stripWidthM, r.widthM})
+      s << "<rect x=\"" << X(0.0) << "\" y=\"" << Y(v + r.stripWidthM) << "\" width=\"" << svgNumber(r.lengthM * scale)
+        << "\" height=\"" << svgNumber(r.stripWidthM * scale)
+        << "\" fill=\"none\" stroke=\"#8a6d00\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/>\n";
   // Illuminance points shaded from black (0) to yellow (the maximum).
   for (std::size_t k = 0; k < r.illuminancePoints.size(); ++k) {
     const Vec2 q = toRoad(r.illuminancePoints[k]);
