@@ -4,6 +4,7 @@
 #include "base/units.h"
 #include "engine/portals.h"
 #include "study/case_compliance.h"
+#include "study/compliance/en13201_case.h"
 #include "study/compliance/en1838_case.h"
 #include "study/case_grids.h"
 #include "study/case_window_groups.h"
@@ -482,13 +483,13 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
                                                   "sky",       "grid",         "task_area", "surface_grid",
                                                   "view",      "observer",     "settings",  "annual",   "output",
                                                   "compliance", "window_group", "escape_route", "open_area",
-                                                  "safety_point"};
+                                                  "safety_point", "road"};
   for (auto&& [key, node] : root) {
     if (!kTopLevel.count(std::string(key.str())))
       throw InputError(c.at(key.source()), "unknown key '" + std::string(key.str()) +
                                                "' (expected case, scene, luminaire, portal, site, sky, grid, task_area, "
                                                "surface_grid, view, observer, window_group, settings, annual, output, "
-                                               "compliance, escape_route, open_area or safety_point)");
+                                               "compliance, escape_route, open_area, safety_point or road)");
   }
   if (auto t = singleTable(c, root, "case")) readCase(c, *t, out);
   if (auto a = tableArray(c, root, "scene"))
@@ -534,6 +535,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
                                                      "operable blinds are part of the annual sDA)");
   }
   readEmergencyTables(c, root, out);
+  readRoadTables(c, root, out);
   checkReferenceGrid(out);
   if (auto t = singleTable(c, root, "settings")) readSettings(c, *t, out.settings);
   if (auto t = singleTable(c, root, "annual")) {
@@ -545,8 +547,13 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "compliance")) {
     std::set<std::string> names;
     for (const toml::node& n : *a) readCompliance(c, *n.as_table(), names, out);
-    // EN 1838 is a point-in-time study of the emergency luminaires; the others are annual.
+    // EN 1838 and EN 13201 are point-in-time studies of the luminaires; the others are annual.
     for (const ComplianceSpec& s : out.compliance) {
+      if (s.standard == ComplianceStandard::kEn13201) {
+        if (out.sky.type.kind == SkyKind::kAnnual)
+          throw InputError(s.loc, "[[compliance]] standard = \"en13201\" needs a point-in-time study, not an annual sky");
+        continue;
+      }
       const bool en1838 = s.standard == ComplianceStandard::kEn1838;
       if (!en1838 && out.sky.type.kind != SkyKind::kAnnual)
         throw InputError(s.loc, "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file) "
@@ -556,6 +563,7 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
     }
   }
   checkEmergencyCompliance(out);
+  checkRoadCompliance(out);
   return out;
 }
 

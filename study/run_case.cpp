@@ -3,6 +3,7 @@
 #include "base/error.h"
 #include "study/annual_study.h"
 #include "study/case_file.h"
+#include "study/compliance/en13201.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
 #include "study/grid_study.h"
@@ -147,7 +148,7 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   CaseFile c = readCaseFile(caseFile);
   c.settings.scene = sceneReadOptions(&c.settings, request.trace);
   c.settings.scene.maxMemoryBytes = request.limits.maxMemoryBytes;
-  if (c.grids.empty() && c.surfaceGrids.empty() && !en1838Entry(c))
+  if (c.grids.empty() && c.surfaceGrids.empty() && !en1838Entry(c) && !en13201Entry(c))
     throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   checkOnRankZero(request.processes(), [&] { checkResultFolder(run.outDir); });

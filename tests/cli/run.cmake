@@ -106,3 +106,14 @@ candela_run_test(en1838_route_width 2 "en1838_route_width.toml:4: 'width' must b
                  ${DATA}/cases/errors/en1838_route_width.toml)
 candela_run_test(en1838_open_area_corners 2 "en1838_open_area_corners.toml:4: 'polygon' needs at least 3 corners"
                  ${DATA}/cases/errors/en1838_open_area_corners.toml)
+# EN 13201 roads (docs/road.md): bad input exits 2 naming its line.
+candela_run_test(en13201_bad_class 2 "en13201_bad_class.toml:7: unknown road lighting class 'ME3'"
+                 ${DATA}/cases/errors/en13201_bad_class.toml)
+candela_run_test(en13201_surface_w4 2 "en13201_surface_w4.toml:8: 'surface' W4 is no r-table candela has"
+                 ${DATA}/cases/errors/en13201_surface_w4.toml)
+candela_run_test(en13201_no_compliance 2 "en13201_no_compliance.toml:2: [[road]] needs a [[compliance]] entry"
+                 ${DATA}/cases/errors/en13201_no_compliance.toml)
+candela_run_test(en13201_lanes 2 "en13201_lanes.toml:7: 'lanes' must be between 1 and 20"
+                 ${DATA}/cases/errors/en13201_lanes.toml)
+# The road example runs and reports its road.
+candela_run_test(road_example 0 "\"edge_illuminance_ratio\"" ${PROJECT_SOURCE_DIR}/cases/road/case.toml)
