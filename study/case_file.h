@@ -19,6 +19,7 @@
 #include "photometry/sky_type.h"
 #include "metrics/targets.h"
 #include "study/compliance_spec.h"
+#include "study/compliance/en12464_2_spec.h"
 #include "study/compliance/en1838_spec.h"
 #include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
@@ -282,6 +283,8 @@ struct CaseFile {
   std::vector<WindowGroupSpec> windowGroups;
   // [[escape_route]], [[open_area]], [[safety_point]]: EN 1838 (study/compliance/en1838_spec.h).
   EmergencySpec emergency;
+  // [[task_area]] standard = "en12464-2", [[observer]] kind = "gr": EN 12464-2 (study/compliance/en12464_2_spec.h).
+  OutdoorSpec outdoor;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

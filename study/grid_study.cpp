@@ -11,6 +11,7 @@
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
 #include "study/case_scene.h"
+#include "study/compliance/en12464_2.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
 #include "study/grid_quantity.h"
@@ -430,6 +431,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   addTaskAreaReports(c, data);
   addSurfaceGridReports(c, data);
   addEn1838Compliance(c, trace, data);  // EN 1838: its own scene of the emergency luminaires
+  addEn12464_2Compliance(c, tracer, data);  // EN 12464-2: the areas' grids above and GR at its observers
   // The plans show where the luminaires and observers are (up to 2000 luminaires: more symbols
   // than that make no readable plan, and a 10⁶-fitting array would hold them all again).
   constexpr std::size_t kMaxLuminaireMarkers = 2000;

@@ -106,3 +106,10 @@ candela_run_test(en1838_route_width 2 "en1838_route_width.toml:4: 'width' must b
                  ${DATA}/cases/errors/en1838_route_width.toml)
 candela_run_test(en1838_open_area_corners 2 "en1838_open_area_corners.toml:4: 'polygon' needs at least 3 corners"
                  ${DATA}/cases/errors/en1838_open_area_corners.toml)
+# EN 12464-2 outdoor task areas and GR observers (docs/outdoor.md): bad input exits 2 naming its line.
+candela_run_test(en12464_2_gr_limit 2 "en12464_2_gr_limit.toml:6: 'gr_limit' must be between 10 and 90"
+                 ${DATA}/cases/errors/en12464_2_gr_limit.toml)
+candela_run_test(en12464_2_observer_kind 2 "en12464_2_observer_kind.toml:3: an observer's 'kind' must be"
+                 ${DATA}/cases/errors/en12464_2_observer_kind.toml)
+candela_run_test(en12464_2_no_reflectance 2 "en12464_2_no_reflectance.toml:2: task area 'yard' needs 'ground_reflectance'"
+                 ${DATA}/cases/errors/en12464_2_no_reflectance.toml)
