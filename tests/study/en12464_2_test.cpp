@@ -220,6 +220,28 @@ TEST(En12464_2Study, MeasuredIesFileAgainstItsTable) {
   EXPECT_NEAR(r.entry["observers"][0]["views"][0]["luminaires_veil_cd_m2"].get<double>(), lvl, 1e-9 * lvl);
 }
 
+// A luminaire on its pole lies above a ground-only scene's flat box: not outside the scene unless
+// it stands beyond the ground's plan extent or below the ground (study/warnings.cpp).
+TEST(En12464_2Study, PolesOverFlatGroundAreNotOutsideTheScene) {
+  const fs::path dir = test_support::scratchDir("en12464_2", "flat_ground");
+  writeGround(dir);  // the isotropic source (and a ground with a wall, replaced by the ground alone)
+  writeFile(dir / "ground.rad", "void plastic soil\n0\n0\n5 0.2 0.2 0.2 0 0\n\n"
+                                "soil polygon ground\n0\n0\n12\n-30 -30 0\n30 -30 0\n30 30 0\n-30 30 0\n");
+  const std::string lum = "[[luminaire]]\nfile = \"isotropic.ies\"\nposition = ";
+  writeFile(dir / "case.toml", kHeader + lum + "[0.0, 0.0, 8.0]\n" +  // lines 3-5: over the ground
+                                   lum + "[50.0, 0.0, 8.0]\n" +      // lines 6-8: beyond its extent
+                                   lum + "[0.0, 0.0, -1.0]\n" +      // lines 9-11: below it
+                                   "[[grid]]\nname = \"g\"\ncorners = [[-5.0, -5.0], [5.0, 5.0]]\nheight = 0.0\n");
+  RunRequest request;
+  request.outDir = dir / "out";
+  request.trace.quality = Quality::kDraft;
+  const RunResult run = runCase(dir / "case.toml", request);
+  std::vector<int> lines;
+  for (const Warning& w : run.data.warnings)
+    if (w.code == "luminaire_outside_scene") lines.push_back(w.loc.line);
+  EXPECT_EQ(lines, (std::vector<int>{6, 9}));
+}
+
 TEST(En12464_2Case, GrLatticeOverTheArea) {
   OutdoorTaskAreaSpec a;
   a.name = "yard";
