@@ -96,9 +96,9 @@ std::string En12464_2Section::html() const {
   h << "<p class=\"legend\">Plan: task areas coloured by verdict (green passes, red fails, grey not checked); "
        "circles luminaires; dots GR observers, the line their worst line of sight, labelled with its GR.</p>\n";
   h << "<h3>Task areas</h3>\n<table class=\"compliance\"><tr><th>area</th><th>points</th><th>Ē lx</th>"
-       "<th>Ē<sub>m</sub> lx</th><th>Ē</th><th>U<sub>0</sub></th><th>U<sub>0</sub> required</th><th>U<sub>0</sub></th>"
-       "<th>GR<sub>max</sub></th><th>GR<sub>L</sub></th><th>GR</th><th>Ra least</th><th>Ra</th><th>Ra</th>"
-       "<th>verdict</th></tr>\n";
+       "<th>Ē<sub>m</sub> lx</th><th>Ē ≥ Ē<sub>m</sub></th><th>U<sub>0</sub></th><th>U<sub>0</sub> required</th>"
+       "<th>U<sub>0</sub> ≥</th><th>GR<sub>max</sub></th><th>GR<sub>L</sub></th><th>GR ≤ GR<sub>L</sub></th>"
+       "<th>Ra least</th><th>Ra required</th><th>Ra ≥</th><th>verdict</th></tr>\n";
   for (const OutdoorAreaResult& a : r.areas) {
     std::string raLeast = cell(a.raLeast, 0);
     if (!a.raUnknown.empty()) raLeast = "unknown";
