@@ -220,6 +220,31 @@ TEST(En12464_2Study, MeasuredIesFileAgainstItsTable) {
   EXPECT_NEAR(r.entry["observers"][0]["views"][0]["luminaires_veil_cd_m2"].get<double>(), lvl, 1e-9 * lvl);
 }
 
+// Ra against the colour rendering the EULUMDAT file states (cases/luminaires/led_panel_600.ldt:
+// group 1B, Ra ≥ 80): an area asking 80 passes, one asking 85 fails; no observer: GR not checked.
+TEST(En12464_2Study, ColourRenderingFromTheEulumdatFile) {
+  const fs::path dir = test_support::scratchDir("en12464_2", "ra");
+  writeGround(dir);
+  fs::copy_file(fs::path(CANDELA_TEST_DATA) / ".." / ".." / "cases" / "luminaires" / "led_panel_600.ldt",
+                dir / "panel.ldt");
+  const std::string area = "[[task_area]]\nstandard = \"en12464-2\"\ncorners = [[-2.0, -2.0], [2.0, 2.0]]\n"
+                           "maintained_illuminance = 1.0\n";
+  const OutdoorRun r = runIn(dir,
+                             kHeader + "[[luminaire]]\nfile = \"panel.ldt\"\nposition = [0.0, 0.0, 4.0]\n" + area +
+                                 "name = \"a\"\nra = 80\n" + area + "name = \"b\"\nra = 85\n" + kCompliance,
+                             "a");
+  const nlohmann::json& areas = r.entry["task_areas"];
+  ASSERT_EQ(areas.size(), 2u);
+  for (const nlohmann::json& a : areas) {
+    EXPECT_EQ(a["ra_least"], 80.0);
+    EXPECT_EQ(a["verdict_gr"], "n/a");
+  }
+  EXPECT_EQ(areas[0]["verdict_ra"], "pass");
+  EXPECT_EQ(areas[1]["verdict_ra"], "fail");
+  EXPECT_EQ(areas[1]["verdict"], "fail");
+  EXPECT_EQ(r.entry["verdict"], "fail");
+}
+
 // A luminaire on its pole lies above a ground-only scene's flat box: not outside the scene unless
 // it stands beyond the ground's plan extent or below the ground (study/warnings.cpp).
 TEST(En12464_2Study, PolesOverFlatGroundAreNotOutsideTheScene) {
