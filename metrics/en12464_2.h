@@ -45,6 +45,10 @@ struct OutdoorAreaResult {
   std::optional<double> uniformityRequired;
   Verdict averageVerdict = Verdict::kNotChecked, uniformityVerdict = Verdict::kNotChecked;
   std::optional<double> grLimit, grMax;  // GR_L; the largest GR of its observers
+  // ρ of its surface for L_ve: the case's `ground_reflectance`, else measured in the scene
+  // (`groundReflectanceFromScene`); unset when neither (then no observer rates it).
+  std::optional<double> groundReflectance;
+  bool groundReflectanceFromScene = false;
   std::vector<std::string> grObservers;
   Verdict grVerdict = Verdict::kNotChecked;
   // Ra: the least the luminaires' files state (EULUMDAT) where every one states it; the files that

@@ -53,6 +53,8 @@ void En12464_2Section::addJson(json& j) const {
                      {"gr_limit", orNull(a.grLimit)},
                      {"gr_max", orNull(a.grMax)},
                      {"gr_observers", a.grObservers},
+                     {"ground_reflectance", orNull(a.groundReflectance)},
+                     {"ground_reflectance_from", a.groundReflectance ? (a.groundReflectanceFromScene ? "scene" : "case") : "none"},
                      {"verdict_gr", verdictName(a.grVerdict)},
                      {"ra_required", orNull(a.ra)},
                      {"ra_least", orNull(a.raLeast)},
@@ -111,6 +113,10 @@ std::string En12464_2Section::html() const {
       << verdictCell(a.raVerdict) << verdictCell(a.verdict) << "</tr>\n";
   }
   h << "</table>\n";
+  for (const OutdoorAreaResult& a : r.areas)
+    if (a.groundReflectance && a.groundReflectanceFromScene)
+      h << "<p class=\"sub\">" << xmlEscape(a.name) << ": ρ = " << formatFixed(*a.groundReflectance, 3)
+        << " for L<sub>ve</sub>, the mean reflectance of the scene's surface under its points.</p>\n";
   for (const OutdoorAreaResult& a : r.areas)
     if (!a.raUnknown.empty())
       h << "<p class=\"sub\">" << xmlEscape(a.name) << ": Ra not checked, the file(s) state no colour rendering ("

@@ -1,6 +1,7 @@
 #include "study/compliance/en12464_2.h"
 
 #include "base/units.h"
+#include "engine/materials/family.h"
 #include "metrics/glare_rating.h"
 #include "reports/en12464_2_report.h"
 
@@ -54,6 +55,22 @@ GrViewResult glareRatingView(const Tracer& tracer, const Vec3& eyeM, const Vec3&
   return v;
 }
 
+std::optional<double> sceneGroundReflectance(const Tracer& tracer, const GridSpec& grid) {
+  const Scene& scene = tracer.scene();
+  double sum = 0.0;
+  std::size_t hits = 0;
+  for (const SensorPoint& p : makePlaneGrid(grid.plane, grid.loc).points) {
+    RayHit hit;
+    if (!tracer.accelerator().intersect(p.position + Vec3(0.0, 0.0, 0.5), Vec3(0.0, 0.0, -1.0), 0.0, 1e30, hit))
+      continue;
+    const Material& m = scene.materials[scene.shapes[hit.shape].material];
+    sum += familyOf(m).normalIncidence(m).reflectance;
+    ++hits;
+  }
+  if (hits == 0) return std::nullopt;
+  return sum / static_cast<double>(hits);
+}
+
 namespace {
 
 const GridReport* gridNamed(const ReportData& data, const std::string& name) {
@@ -103,6 +120,17 @@ En12464_2Result computeEn12464_2(const CaseFile& c, const Tracer& tracer, const 
       a.u0 = g->stats.u0;
     }
     checkColourRendering(data, a);
+    a.groundReflectance = spec.groundReflectance;
+    const bool rated = std::any_of(c.outdoor.observers.begin(), c.outdoor.observers.end(),
+                                   [&](const GrObserverSpec& o) { return o.taskArea == spec.name; });
+    if (!a.groundReflectance && rated) {
+      const auto grid = std::find_if(c.grids.begin(), c.grids.end(), [&](const GridSpec& g) { return g.name == spec.name; });
+      if (grid != c.grids.end()) a.groundReflectance = sceneGroundReflectance(tracer, *grid);
+      if (!a.groundReflectance)
+        throw InputError(spec.loc, "task area '" + spec.name + "': no surface of the scene lies under it to take ρ "
+                                   "(GR's L_ve) from: give 'ground_reflectance'");
+      a.groundReflectanceFromScene = true;
+    }
     r.areas.push_back(std::move(a));
   }
   for (const GrObserverSpec& spec : c.outdoor.observers) {
@@ -116,7 +144,7 @@ En12464_2Result computeEn12464_2(const CaseFile& c, const Tracer& tracer, const 
     o.eyeM = spec.eyeM();
     o.fromGrid = spec.fromGrid;
     o.inclinationDeg = spec.inclinationDeg;
-    o.groundReflectance = area->groundReflectance.value_or(0.0);  // resolveOutdoor made sure it is given
+    o.groundReflectance = result->groundReflectance.value_or(0.0);  // set above for every rated area
     o.averageHorizontalLux = result->averageLux;
     o.environmentVeilCdM2 = environmentVeilingLuminance(o.groundReflectance, o.averageHorizontalLux);
     o.grLimit = spec.grLimit ? spec.grLimit : area->grLimit;

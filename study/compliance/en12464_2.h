@@ -29,6 +29,11 @@ std::vector<std::pair<double, Vec3>> grLinesOfSight(const GrObserverSpec& o);
 GrViewResult glareRatingView(const Tracer& tracer, const Vec3& eyeM, const Vec3& sight, double azimuthDeg,
                              double environmentVeilCdM2);
 
+// ρ of a task area's surface, from the scene: the mean photopic reflectance at normal incidence
+// (as the report's Surfaces table gives it) of the first surface below each point of `grid`, seen
+// from 0.5 m above the point. Unset when no surface lies below any point.
+std::optional<double> sceneGroundReflectance(const Tracer& tracer, const GridSpec& grid);
+
 // The areas' and observers' results: the areas' grids read from data.grids (by name), their Ra
 // from data.installation's luminaire types, GR traced in `tracer` (the run's scene).
 En12464_2Result computeEn12464_2(const CaseFile& c, const Tracer& tracer, const ReportData& data);

@@ -186,9 +186,6 @@ void resolveOutdoor(CaseFile& out) {
                                 "lighting it rates with 'task_area' (its L_ve, docs/outdoor.md)");
       o.taskArea = area->name;
     }
-    if (!area->groundReflectance)
-      throw InputError(area->loc, "task area '" + area->name + "' needs 'ground_reflectance' (ρ of its surface) for "
-                                  "the glare rating of observer '" + o.name + "' (L_ve = 0.035 ρ E_hav / π)");
   }
   const auto entry = std::find_if(out.compliance.begin(), out.compliance.end(), [](const ComplianceSpec& c) {
     return c.standard == ComplianceStandard::kEn12464_2;

@@ -24,7 +24,7 @@ struct OutdoorTaskAreaSpec {
   std::optional<double> uniformity;          // U0 = E_min / Ē
   std::optional<double> grLimit;             // GR_L
   std::optional<double> ra;                  // required Ra
-  std::optional<double> groundReflectance;   // ρ of the area's surface (GR's L_ve), in [0, 1]
+  std::optional<double> groundReflectance;   // ρ of the area's surface (GR's L_ve), in [0, 1]; unset: the scene's
   std::optional<double> grSpacingM;          // GR observers on a lattice of this pitch over the area
   FileLoc loc, grSpacingLoc;
 };

@@ -111,5 +111,5 @@ candela_run_test(en12464_2_gr_limit 2 "en12464_2_gr_limit.toml:6: 'gr_limit' mus
                  ${DATA}/cases/errors/en12464_2_gr_limit.toml)
 candela_run_test(en12464_2_observer_kind 2 "en12464_2_observer_kind.toml:3: an observer's 'kind' must be"
                  ${DATA}/cases/errors/en12464_2_observer_kind.toml)
-candela_run_test(en12464_2_no_reflectance 2 "en12464_2_no_reflectance.toml:2: task area 'yard' needs 'ground_reflectance'"
+candela_run_test(en12464_2_no_reflectance 2 "en12464_2_no_reflectance.toml:3: task area 'yard': no surface of the scene lies under it"
                  ${DATA}/cases/errors/en12464_2_no_reflectance.toml)

@@ -245,6 +245,30 @@ TEST(En12464_2Study, ColourRenderingFromTheEulumdatFile) {
   EXPECT_EQ(r.entry["verdict"], "fail");
 }
 
+// Without `ground_reflectance` ρ is the scene's: the ground's plastic of reflectance 0.2 under every
+// point; an area over no surface at all is an error at its line.
+TEST(En12464_2Study, GroundReflectanceFromTheScene) {
+  const fs::path dir = test_support::scratchDir("en12464_2", "rho_scene");
+  writeGround(dir);
+  const std::string head = kHeader + "[[luminaire]]\nfile = \"isotropic.ies\"\nposition = [0.0, 0.0, 6.0]\n"
+                                     "[[task_area]]\nstandard = \"en12464-2\"\nname = \"yard\"\n";
+  const std::string tail = "maintained_illuminance = 1.0\nspacing = 1.0\n"
+                           "[[observer]]\nkind = \"gr\"\nposition = [-10.0, 0.0]\ndirection = [1.0, 0.0]\n" +
+                           kCompliance;
+  const OutdoorRun r = runIn(dir, head + "corners = [[-5.0, -5.0], [5.0, 5.0]]\n" + tail, "yard");
+  EXPECT_NEAR(r.entry["task_areas"][0]["ground_reflectance"].get<double>(), kRho, 1e-12);
+  EXPECT_EQ(r.entry["task_areas"][0]["ground_reflectance_from"], "scene");
+  EXPECT_NEAR(r.entry["observers"][0]["gr_max"].get<double>(),
+              grByHand(Vec3(-10.0, 0.0, 1.5), Vec3(0.0, 0.0, 6.0), kIntensityCd, mean(r.lux)), 1e-9);
+  try {
+    runIn(dir, head + "corners = [[100.0, 100.0], [110.0, 110.0]]\n" + tail, "yard");
+    FAIL() << "an area over no surface";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 6) << e.what();
+    EXPECT_NE(std::string(e.what()).find("give 'ground_reflectance'"), std::string::npos) << e.what();
+  }
+}
+
 // A luminaire on its pole lies above a ground-only scene's flat box: not outside the scene unless
 // it stands beyond the ground's plan extent or below the ground (study/warnings.cpp).
 TEST(En12464_2Study, PolesOverFlatGroundAreNotOutsideTheScene) {
@@ -316,9 +340,6 @@ TEST(En12464_2Case, BadInputNamesTheLine) {
   expectError(area, 3, "needs a [[compliance]] entry");
   expectError(kCompliance, 3, "nothing to check");
   expectError(kCompliance + "spaces = [\"a\"]\n", 5, "'spaces'");
-  expectError("[[task_area]]\nstandard = \"en12464-2\"\ncorners = [[0.0, 0.0], [10.0, 10.0]]\n"
-              "maintained_illuminance = 10\n" + gr + kCompliance,
-              3, "needs 'ground_reflectance'");
   expectError(area + "gr_spacing = 10\n[[task_area]]\nstandard = \"en12464-2\"\nname = \"b\"\n"
               "corners = [[20.0, 0.0], [30.0, 10.0]]\nmaintained_illuminance = 10\n" +
               "[[observer]]\nkind = \"gr\"\nposition = [15.0, 5.0]\n" + kCompliance,
