@@ -22,6 +22,7 @@ std::string_view standardKey(ComplianceStandard s) {
     case ComplianceStandard::kLeedV41Option2: return "leed-v4.1-option2";
     case ComplianceStandard::kEn1838: return "en1838";
     case ComplianceStandard::kEn13201: return "en13201";
+    case ComplianceStandard::kEn12464_2: return "en12464-2";
     case ComplianceStandard::kEn17037: break;
   }
   return "en17037";
@@ -64,9 +65,10 @@ ComplianceStandard asStandard(const Context& c, const toml::node& n) {
   const std::string s = asString(c, n, "standard");
   for (ComplianceStandard k : {ComplianceStandard::kEn17037, ComplianceStandard::kLeedV41Option1,
                                ComplianceStandard::kLeedV41Option2, ComplianceStandard::kEn1838,
-                               ComplianceStandard::kEn13201})
+                               ComplianceStandard::kEn13201, ComplianceStandard::kEn12464_2})
     if (s == standardKey(k)) return k;
-  c.fail(n, "unknown standard '" + s + "' (expected en17037, leed-v4.1-option1, leed-v4.1-option2, en1838 or en13201)");
+  c.fail(n, "unknown standard '" + s + "' (expected en17037, leed-v4.1-option1, leed-v4.1-option2, en1838, en13201 "
+            "or en12464-2)");
 }
 
 // A key that belongs to another standard is an error at its line, not ignored.
@@ -187,6 +189,8 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
                  "[[safety_point]] and high-risk task areas");
     if (s.standard == ComplianceStandard::kEn13201)
       c.fail(*n, "'spaces' is for the daylight standards; en13201 checks the [[road]] tables");
+    if (s.standard == ComplianceStandard::kEn12464_2)
+      c.fail(*n, "'spaces' is for the daylight standards; en12464-2 checks the [[task_area]]s with standard = \"en12464-2\"");
     const toml::array& a = asArray(c, *n, "spaces", 0, "an array of grid names");
     if (a.empty()) c.fail(*n, "'spaces' needs at least one grid name");
     for (const toml::node& g : a) {

@@ -5,6 +5,7 @@
 #include "engine/portals.h"
 #include "study/case_compliance.h"
 #include "study/compliance/en13201_case.h"
+#include "study/compliance/en12464_2_case.h"
 #include "study/compliance/en1838_case.h"
 #include "study/case_grids.h"
 #include "study/case_window_groups.h"
@@ -293,7 +294,9 @@ void readView(const Context& c, const toml::table& t, int index, CaseFile& out) 
 }
 
 void readObserver(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  if (isGrObserver(c, t)) return readGrObserver(c, t, index, names, out);  // EN 12464-2's GR
   Table tab(t, c, "[[observer]]");
+  tab.get("kind");  // "ugr", the default
   ObserverSpec o;
   o.loc = tab.loc();
   o.name = "observer" + std::to_string(index + 1);
@@ -547,23 +550,23 @@ CaseFile parseCaseFile(std::string_view text, const fs::path& path) {
   if (auto a = tableArray(c, root, "compliance")) {
     std::set<std::string> names;
     for (const toml::node& n : *a) readCompliance(c, *n.as_table(), names, out);
-    // EN 1838 and EN 13201 are point-in-time studies of the luminaires; the others are annual.
+    // EN 1838, EN 13201 and EN 12464-2 are point-in-time studies of the luminaires; the others are
+    // annual.
     for (const ComplianceSpec& s : out.compliance) {
-      if (s.standard == ComplianceStandard::kEn13201) {
-        if (out.sky.type.kind == SkyKind::kAnnual)
-          throw InputError(s.loc, "[[compliance]] standard = \"en13201\" needs a point-in-time study, not an annual sky");
-        continue;
-      }
-      const bool en1838 = s.standard == ComplianceStandard::kEn1838;
-      if (!en1838 && out.sky.type.kind != SkyKind::kAnnual)
+      const bool pointInTime = s.standard == ComplianceStandard::kEn1838 ||
+                               s.standard == ComplianceStandard::kEn13201 ||
+                               s.standard == ComplianceStandard::kEn12464_2;
+      if (!pointInTime && out.sky.type.kind != SkyKind::kAnnual)
         throw InputError(s.loc, "[[compliance]] needs an annual study ([sky] type = \"annual\" with a weather file) "
                                 "for standard = \"" + std::string(standardKey(s.standard)) + "\"");
-      if (en1838 && out.sky.type.kind == SkyKind::kAnnual)
-        throw InputError(s.loc, "[[compliance]] standard = \"en1838\" needs a point-in-time study, not an annual sky");
+      if (pointInTime && out.sky.type.kind == SkyKind::kAnnual)
+        throw InputError(s.loc, "[[compliance]] standard = \"" + std::string(standardKey(s.standard)) +
+                                    "\" needs a point-in-time study, not an annual sky");
     }
   }
   checkEmergencyCompliance(out);
   checkRoadCompliance(out);
+  resolveOutdoor(out);
   return out;
 }
 

@@ -20,6 +20,7 @@
 #include "metrics/targets.h"
 #include "study/compliance_spec.h"
 #include "study/compliance/en13201_spec.h"
+#include "study/compliance/en12464_2_spec.h"
 #include "study/compliance/en1838_spec.h"
 #include "study/grid_quantity.h"
 #include "study/sensor_grid.h"
@@ -285,6 +286,8 @@ struct CaseFile {
   EmergencySpec emergency;
   // [[road]]: EN 13201 (study/compliance/en13201_spec.h).
   RoadLightingSpec roadLighting;
+  // [[task_area]] standard = "en12464-2", [[observer]] kind = "gr": EN 12464-2 (study/compliance/en12464_2_spec.h).
+  OutdoorSpec outdoor;
   Settings settings;
   AnnualSpec annual;
   OutputSpec output;

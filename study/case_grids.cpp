@@ -2,6 +2,7 @@
 
 #include "metrics/targets.h"
 #include "study/case_toml.h"
+#include "study/compliance/en12464_2_case.h"
 #include "study/grid_quantity.h"
 
 #include <array>
@@ -219,7 +220,9 @@ GridSpec taskBand(const TaskAreaSpec& a, const std::string& name, GridSpec::Area
 }  // namespace
 
 void readTaskArea(const Context& c, const toml::table& t, int index, std::set<std::string>& names, CaseFile& out) {
+  if (isOutdoorTaskArea(c, t)) return readOutdoorTaskArea(c, t, index, names, out);  // EN 12464-2
   Table tab(t, c, "[[task_area]]");
+  tab.get("standard");  // "en12464-1", the default
   TaskAreaSpec a;
   a.loc = tab.loc();
   a.name = entryName(tab, "task area " + std::to_string(index + 1));

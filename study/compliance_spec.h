@@ -13,9 +13,9 @@
 
 namespace candela {
 
-enum class ComplianceStandard { kEn17037, kLeedV41Option1, kLeedV41Option2, kEn1838, kEn13201 };
+enum class ComplianceStandard { kEn17037, kLeedV41Option1, kLeedV41Option2, kEn1838, kEn13201, kEn12464_2 };
 
-// "en17037", "leed-v4.1-option1", "leed-v4.1-option2", "en1838", "en13201": as written in the case file, and the
+// "en17037", "leed-v4.1-option1", "leed-v4.1-option2", "en1838", "en13201", "en12464-2": as written in the case file, and the
 // entry's default name.
 std::string_view standardKey(ComplianceStandard s);
 

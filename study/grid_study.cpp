@@ -12,6 +12,7 @@
 #include "reports/json_writer.h"
 #include "study/case_scene.h"
 #include "study/compliance/en13201.h"
+#include "study/compliance/en12464_2.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
 #include "study/grid_quantity.h"
@@ -432,6 +433,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   addSurfaceGridReports(c, data);
   addEn1838Compliance(c, trace, data);  // EN 1838: its own scene of the emergency luminaires
   addEn13201Compliance(c, data);        // EN 13201: the roads, direct light of every luminaire
+  addEn12464_2Compliance(c, tracer, data);  // EN 12464-2: the areas' grids above and GR at its observers
   // The plans show where the luminaires and observers are (up to 2000 luminaires: more symbols
   // than that make no readable plan, and a 10⁶-fitting array would hold them all again).
   constexpr std::size_t kMaxLuminaireMarkers = 2000;

@@ -181,7 +181,11 @@ void checkLuminaires(const Tracer& tracer, const std::vector<LuminairePlacement>
   for (const LuminairePlacement& l : luminaires) {
     const Vec3& p = l.positionM;
     const std::string who = "luminaire '" + l.name + "' at " + vec(p) + " m";
-    if (!inside(box, p, kLuminaireBoxToleranceM)) {
+    // Over a flat scene (a car park's or a road's ground alone) a luminaire on its pole is above
+    // the box: it is outside only beyond the ground's plan extent or below the ground.
+    const bool overFlatGround = box.hi.z - box.lo.z <= kLuminaireBoxToleranceM &&
+                                inside(box, Vec3(p.x, p.y, box.lo.z), kLuminaireBoxToleranceM) && p.z > box.lo.z;
+    if (!inside(box, p, kLuminaireBoxToleranceM) && !overFlatGround) {
       if (millimetresFor(box, p, kLuminaireBoxToleranceM))
         out.push_back({"millimetre_positions",
                        who + " lies outside the scene " + boxText + " but inside it if read in millimetres: "

@@ -117,3 +117,10 @@ candela_run_test(en13201_lanes 2 "en13201_lanes.toml:7: 'lanes' must be between 
                  ${DATA}/cases/errors/en13201_lanes.toml)
 # The road example runs and reports its road.
 candela_run_test(road_example 0 "\"edge_illuminance_ratio\"" ${PROJECT_SOURCE_DIR}/cases/road/case.toml)
+# EN 12464-2 outdoor task areas and GR observers (docs/outdoor.md): bad input exits 2 naming its line.
+candela_run_test(en12464_2_gr_limit 2 "en12464_2_gr_limit.toml:6: 'gr_limit' must be between 10 and 90"
+                 ${DATA}/cases/errors/en12464_2_gr_limit.toml)
+candela_run_test(en12464_2_observer_kind 2 "en12464_2_observer_kind.toml:3: an observer's 'kind' must be"
+                 ${DATA}/cases/errors/en12464_2_observer_kind.toml)
+candela_run_test(en12464_2_no_reflectance 2 "en12464_2_no_reflectance.toml:3: task area 'yard': no surface of the scene lies under it"
+                 ${DATA}/cases/errors/en12464_2_no_reflectance.toml)
