@@ -122,6 +122,9 @@ class StandardSection {
   virtual ~StandardSection() = default;
   virtual std::string title() const = 0;                 // the report section's heading
   virtual void addJson(nlohmann::json& entry) const = 0;  // its keys in compliance.<name>
+  // Keys of summary.json's top level that the standard's issue names there (EN 13201's `roads`);
+  // none by default.
+  virtual void addTopLevelJson(nlohmann::json& /*summary*/) const {}
   virtual std::string html() const = 0;                   // its part of the section, after the verdict lines
 };
 

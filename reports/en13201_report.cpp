@@ -102,6 +102,12 @@ void En13201Section::addJson(json& entry) const {
   entry["light"] = "direct";
 }
 
+void En13201Section::addTopLevelJson(json& summary) const {
+  json& roads = summary["roads"];
+  if (!roads.is_array()) roads = json::array();
+  for (const RoadResult& r : report_.roads) roads.push_back(roadJson(r));
+}
+
 std::string En13201Section::html() const {
   std::ostringstream h;
   h << "<p>Each road's field of calculation with the EN 13201-3 grids and observers; direct light of every "

@@ -25,6 +25,9 @@ class En13201Section final : public StandardSection {
   explicit En13201Section(En13201Report report) : report_(std::move(report)) {}
   std::string title() const override { return "EN 13201 road lighting"; }
   void addJson(nlohmann::json& entry) const override;
+  // summary.json's `roads` (issue 39's name): the same road objects as compliance.<name>.roads,
+  // appended when several entries hold roads.
+  void addTopLevelJson(nlohmann::json& summary) const override;
   std::string html() const override;
   const En13201Report& report() const { return report_; }
 

@@ -228,6 +228,8 @@ std::string summaryJson(const ReportData& data) {
     json compliance = json::object();
     for (const ComplianceReport& r : data.compliance) compliance[r.name] = complianceJson(r);
     j["compliance"] = compliance;
+    for (const ComplianceReport& r : data.compliance)
+      if (r.section) r.section->addTopLevelJson(j);
   }
   // Always present (empty when none), so a pipeline can test it without a key check.
   json warnings = json::array();

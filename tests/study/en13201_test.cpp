@@ -366,6 +366,9 @@ TEST(En13201Study, RoadExample) {
                           "threshold_increment_percent", "edge_illuminance_ratio", "verdict"})
     EXPECT_TRUE(r.contains(key)) << key;
   EXPECT_EQ(r["points"], 10 * 5);
+  // The issue's `roads[i]` at summary.json's top level too: the same objects.
+  ASSERT_TRUE(j.contains("roads"));
+  EXPECT_EQ(j["roads"], e["roads"]);
   EXPECT_GT(r["average_luminance_cd_m2"].get<double>(), 0.0);
   const std::string html = test_support::slurp(request.outDir / "report.html");
   EXPECT_NE(html.find("EN 13201 road lighting"), std::string::npos);
