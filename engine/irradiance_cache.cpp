@@ -290,24 +290,6 @@ double IrradianceCache::weight(const IrradianceRecord& r, const Vec3& p, const V
   return den > 1e-12 ? 1.0 / den : 1e12;
 }
 
-void IrradianceCache::visitNode(int32_t node, const Vec3& p, double extraM,
-                                const std::function<void(uint32_t)>& fn) const {
-  const Node& nd = nodes_[node];
-  // Records stored here have their centres in this cube and valid radii ≤ half.
-  if (node != 0) {
-    const Vec3 d = glm::abs(p - nd.centre);
-    const double reach = 2.0 * nd.half + extraM;
-    if (d.x > reach || d.y > reach || d.z > reach) return;
-  }
-  for (uint32_t r : nd.records) fn(r);
-  for (int32_t c : nd.child)
-    if (c >= 0) visitNode(c, p, extraM, fn);
-}
-
-void IrradianceCache::visit(const Vec3& p, double extraM, const std::function<void(uint32_t)>& fn) const {
-  visitNode(0, p, extraM, fn);
-}
-
 uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
   IrradianceRecord r = rec;
   const double a = settings_.accuracy;
