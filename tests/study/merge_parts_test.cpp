@@ -61,7 +61,10 @@ std::string floorRad(double rho) {
 class MergeParts : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::path(testing::TempDir()) / "merge_parts_test";
+    // A folder per test: CTest runs the suite's tests as parallel processes, and one test's
+    // SetUp must not remove another's case while it runs.
+    root_ = fs::path(testing::TempDir()) / "merge_parts_test" /
+            testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(root_);
     fs::create_directories(root_ / "case");
     write("case/case.toml", kCase);
