@@ -501,6 +501,7 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
     for (const GridYear& g : grids) closedHours.push_back(g.blindsClosed);
     ci.closedScene = t.shaded.get();
     ci.blindsClosed = &closedHours;
+    ci.blindsLabel = t.closedLabel;
   }
   return evaluateCompliance(ci);
 }

@@ -141,6 +141,7 @@ struct AnnualTraces {
   uint64_t raysOpen = 0, raysClosed = 0;
   bool closed = false;     // a closed state was traced
   std::unique_ptr<Scene> shaded;  // that state's scene (one group: all the glazing), kept for glare views
+  std::string closedLabel = "lm83";  // what closes it, as the glare views report it
   int blindMaterials = 0;  // glass materials the closed state changed
   double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
   double productS() const { return productOpenS + productClosedS; }

@@ -199,7 +199,7 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
     g.glareAutonomy = m.glareAutonomy;
     g.level = m.level;
     if (blinds) {
-      g.blinds = "lm83";
+      g.blinds = in.blindsLabel;
       g.blindsSpace = in.tallies->grids()[static_cast<std::size_t>(spaces.front())].name;
       for (std::size_t h = 0; h < closedHours->size(); ++h)
         g.blindsClosedHours += ((*closedHours)[h] && (*in.occupied)[h]) ? 1 : 0;

@@ -78,6 +78,9 @@ struct ComplianceInputs {
   // [[window_group]]): the blinds-closed scene and each grid's hours of closed blinds (grid order).
   const Scene* closedScene = nullptr;
   const std::vector<std::vector<char>>* blindsClosed = nullptr;
+  // What closes them, as the views report it: "lm83" (the blinds), or "window_states" (a
+  // [[window_group]] of two states, its second state's scene and hours).
+  std::string blindsLabel = "lm83";
   int threads = 0;
   StudyObserver* observer = nullptr;  // one step per entry, its parts as the items
 };

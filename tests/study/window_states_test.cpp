@@ -240,6 +240,27 @@ RunResult runSingle(const std::string& state, const fs::path& out) {
   return runRoom(c, out);
 }
 
+// EN 17037 with one glare view, from the room's middle towards the south window.
+ComplianceSpec glareEntry() {
+  ComplianceSpec e;
+  e.name = "en17037";
+  e.standard = ComplianceStandard::kEn17037;
+  GlareViewSpec v;
+  v.positionM = Vec3(2.0, 2.5, 1.2);
+  v.direction = Vec3(0.0, -1.0, 0.0);
+  e.glareViews = {v};
+  return e;
+}
+
+// One state alone with the glare view: the view's year in that state all year.
+RunResult runSingleWithGlare(const std::string& state, const fs::path& out) {
+  CaseFile c = roomCase();
+  c.scenes.push_back({kDir / (state + ".rad"), {}});
+  c.annual.blinds = false;
+  c.compliance = {glareEntry()};
+  return runRoom(c, out);
+}
+
 class WindowStateStudy : public testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -252,7 +273,7 @@ class WindowStateStudy : public testing::Test {
     ComplianceSpec leed;
     leed.name = "leed";
     leed.standard = ComplianceStandard::kLeedV41Option1;
-    c.compliance = {leed};
+    c.compliance = {leed, glareEntry()};
     sun_ = new RunResult(runRoom(c, dir_ / "sun"));
     c.compliance.clear();
     c.windowGroups[0].schedule = writeSchedule(dir_, 8760, [](std::size_t h) { return h % 3 == 1 || h / 24 % 10 == 0; });
@@ -357,12 +378,33 @@ TEST_F(WindowStateStudy, TheSunRuleIsLm83sThreshold) {
 // ASE of the reference year (every group in its first state: no operable shading), which here is
 // the clear state's single run; the switched year's own ASE is lower (the dim state stops the beam).
 TEST_F(WindowStateStudy, LeedTakesTheSwitchedSdaAndTheReferenceAse) {
-  ASSERT_EQ(sun_->data.compliance.size(), 1u);
+  ASSERT_EQ(sun_->data.compliance.size(), 2u);  // LEED, then EN 17037 (GlareViewsFollowTheStates)
   ASSERT_TRUE(sun_->data.compliance[0].leed.has_value());
   const LeedSpaceReport& space = sun_->data.compliance[0].leed->spaces.at(0);
   EXPECT_EQ(space.sdaPct, annual(sun_).summary.sDA300_50);
   EXPECT_EQ(space.asePct, annual(clear_).summary.ASE1000_250);
   EXPECT_LT(annual(sun_).summary.ASE1000_250, annual(clear_).summary.ASE1000_250);
+}
+
+// EN 17037's glare view follows a group of two states as it follows LM-83's blinds: each occupied
+// hour's DGP is the state's of that hour (the clear state's single run and the dim one's, chosen
+// by the switched year's hours), the hours in the second state reported.
+TEST_F(WindowStateStudy, GlareViewsFollowTheStates) {
+  const GlareViewReport& g = sun_->data.compliance.at(1).en17037->glare.at(0);
+  EXPECT_EQ(g.blinds, "window_states");
+  EXPECT_EQ(g.blindsSpace, "room");
+  EXPECT_EQ(g.blindsClosedHours, annual(sun_).windowStates.at(1).occupiedHours);
+  const fs::path dir = dir_ / "glare";
+  const RunResult clear = runSingleWithGlare("clear", dir / "clear");
+  const RunResult dim = runSingleWithGlare("dim", dir / "dim");
+  const GlareViewReport& c = clear.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& d = dim.data.compliance.at(0).en17037->glare.at(0);
+  EXPECT_EQ(c.blinds, "open");
+  // The switched year lies between its states' years, and the dim state cuts the clear's glare.
+  EXPECT_LT(d.shareAbove035, c.shareAbove035);
+  EXPECT_LE(g.shareAbove035, c.shareAbove035);
+  EXPECT_GE(g.shareAbove035, d.shareAbove035);
+  EXPECT_LT(g.shareAbove035, c.shareAbove035);
 }
 
 // A Honeybee radiance folder (honeybee-radiance-folder's layout) written here, read into the case
