@@ -101,7 +101,17 @@ struct En1838Luminaire {
   bool emergency = false;
 };
 
+// One calculation point and its illuminance (the per-point CSV, en1838_points.csv): which part it
+// belongs to ("centre line", "central band", "open area core", "high-risk area", "safety point"),
+// the route's, area's or point's name, and the sensor (a safety point's faces its equipment).
+struct En1838PointValue {
+  std::string part, name;
+  Vec3 positionM{0.0}, normal{0.0, 0.0, 1.0};
+  double lux = 0.0;
+};
+
 struct En1838Result {
+  std::vector<En1838PointValue> points;  // every point, in the order of the parts below
   std::vector<EscapeRouteResult> routes;
   std::vector<OpenAreaResult> openAreas;
   std::vector<HighRiskAreaResult> highRiskAreas;

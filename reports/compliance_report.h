@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -125,6 +126,8 @@ class StandardSection {
   // Keys of summary.json's top level that the standard's issue names there (EN 13201's `roads`);
   // none by default.
   virtual void addTopLevelJson(nlohmann::json& /*summary*/) const {}
+  // Files of its own in the result folder `dir` (EN 1838's per-point CSV); none by default.
+  virtual void writeFiles(const std::filesystem::path& /*dir*/) const {}
   virtual std::string html() const = 0;                   // its part of the section, after the verdict lines
 };
 

@@ -1,11 +1,14 @@
 #include "reports/en1838_report.h"
 
+#include "base/atomic_file.h"
+#include "reports/csv_writer.h"
 #include "reports/plan_svg.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -253,6 +256,21 @@ std::string en1838PlanSvg(const En1838Result& r, const PlanSection* section) {
     label(Vec2(p.positionM) + Vec2(p.positionM.x > middleX ? -0.2 : 0.2, -0.3), p.name, p.verdict);
   s << "</svg>";
   return s.str();
+}
+
+std::string en1838PointsCsv(const En1838Result& r) {
+  std::string out = "part,name,x,y,z,dx,dy,dz,illuminance_lux\n";
+  char row[200];
+  for (const En1838PointValue& p : r.points) {
+    std::snprintf(row, sizeof row, ",%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", p.positionM.x, p.positionM.y, p.positionM.z,
+                  p.normal.x, p.normal.y, p.normal.z, p.lux);
+    out += csvField(p.part) + "," + csvField(p.name) + row;
+  }
+  return out;
+}
+
+void En1838Section::writeFiles(const std::filesystem::path& dir) const {
+  writeFileAtomic(dir / "en1838_points.csv", en1838PointsCsv(result_));
 }
 
 }  // namespace candela

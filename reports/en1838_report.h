@@ -19,12 +19,17 @@ class En1838Section final : public StandardSection {
   std::string title() const override { return "EN 1838:2013 emergency lighting"; }
   void addJson(nlohmann::json& entry) const override;
   std::string html() const override;
+  // en1838_points.csv: part,name,x,y,z,dx,dy,dz,illuminance_lux, one row a calculation point.
+  void writeFiles(const std::filesystem::path& dir) const override;
   const En1838Result& result() const { return result_; }
 
  private:
   En1838Result result_;
   std::optional<PlanSection> section_;
 };
+
+// The per-point CSV's text (en1838_points.csv).
+std::string en1838PointsCsv(const En1838Result& r);
 
 // The plan alone, `<svg ...>...</svg>`: walls, routes (their width, centre line), open areas
 // (outline and dashed core), high-risk areas, safety points and luminaires (emergency ones

@@ -451,6 +451,8 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
     if (csvFiles) csvFiles->commitInto(dir);
     for (ViewImageFiles& p : pictures) p.commitInto(dir);
     writeSummaryCsv(dir, data);
+    for (const ComplianceReport& r : data.compliance)
+      if (r.section) r.section->writeFiles(dir);
     writeFileAtomic(dir / "summary.json", summaryJsonWithSpacing(data, grids));
     writeHtmlReport(dir / "report.html", data);
   });

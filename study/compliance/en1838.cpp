@@ -128,6 +128,22 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
 
   En1838Result r;
   r.maintenanceFactor = entry.emergencyMaintenanceFactor;
+  auto keep = [&](const char* part, const std::string& name, const En1838Points::Span& span) {
+    for (std::size_t i = span.first; i < span.first + span.count; ++i)
+      r.points.push_back({part, name, pts.sensors[i].position, pts.sensors[i].normal, lux[i]});
+  };
+  for (std::size_t k = 0; k < c.emergency.routes.size(); ++k)
+    for (std::size_t s = 0; s < pts.routeCentre[k].size(); ++s) {
+      keep("centre line", c.emergency.routes[k].name, pts.routeCentre[k][s]);
+      keep("central band", c.emergency.routes[k].name, pts.routeBand[k][s]);
+    }
+  for (std::size_t k = 0; k < c.emergency.openAreas.size(); ++k)
+    keep("open area core", c.emergency.openAreas[k].name, pts.openAreas[k]);
+  std::size_t risk = 0;
+  for (const TaskAreaSpec& spec : c.taskAreas)
+    if (spec.emergencyHighRisk) keep("high-risk area", spec.name, pts.highRisk[risk++]);
+  for (std::size_t k = 0; k < c.emergency.safetyPoints.size(); ++k)
+    keep("safety point", c.emergency.safetyPoints[k].name, pts.safetyPoints[k]);
   for (std::size_t k = 0; k < c.emergency.routes.size(); ++k) {
     const EscapeRouteSpec& spec = c.emergency.routes[k];
     EscapeRouteResult e;

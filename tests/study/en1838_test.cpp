@@ -4,6 +4,8 @@
 // surfaces change nothing), the grids' shape, the case's keys and errors, and the example case.
 #include "study/compliance/en1838.h"
 
+#include "reports/en1838_report.h"
+
 #include "engine/tracer.h"
 #include "photometry/photometric_file.h"
 #include "study/case_file.h"
@@ -17,6 +19,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 namespace candela {
 namespace {
@@ -378,6 +382,26 @@ TEST(En1838Study, OfficeEmergencyExample) {
   const std::string html = test_support::slurp(request.outDir / "report.html");
   EXPECT_NE(html.find("EN 1838:2013 emergency lighting"), std::string::npos);
   EXPECT_NE(html.find("class=\"en1838-plan\""), std::string::npos);
+  // en1838_points.csv: every point once, its minima those of summary.json (to the CSV's 4 decimals).
+  std::istringstream csv(test_support::slurp(request.outDir / "en1838_points.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "part,name,x,y,z,dx,dy,dz,illuminance_lux");
+  std::map<std::string, double> least;
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    const std::string part = line.substr(0, line.find(','));
+    const double lux = std::stod(line.substr(line.rfind(',') + 1));
+    least.try_emplace(part, lux);
+    least[part] = std::min(least[part], lux);
+  }
+  const auto& result = dynamic_cast<const En1838Section&>(*r.data.compliance.at(0).section).result();
+  EXPECT_EQ(rows, result.points.size());
+  EXPECT_GT(rows, 100u);
+  EXPECT_NEAR(least.at("centre line"), route["min_centre_line_lux"].get<double>(), 5e-5);
+  EXPECT_NEAR(least.at("open area core"), e["open_areas"][0]["min_lux"].get<double>(), 5e-5);
+  EXPECT_EQ(least.count("safety point"), 1u);
 }
 
 }  // namespace
