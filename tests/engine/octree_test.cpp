@@ -33,11 +33,17 @@ Scene randomScene(uint64_t seed, int n) {
   Scene sc;
   sc.addPolygon({{0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0}}, 0);
   sc.addPolygon({{10, 10, 10}, {9.99, 10, 10}, {10, 9.99, 10}}, 0);
+  // The draws in a sequence of their own: the order in which a constructor's or a function's
+  // arguments are evaluated is unspecified (g++ and clang differ), and the scene must not be.
   auto pos = [&](double margin) {
-    return Vec3(margin + (10 - 2 * margin) * U(g), margin + (10 - 2 * margin) * U(g), margin + (10 - 2 * margin) * U(g));
+    Vec3 p;
+    for (int a = 0; a < 3; ++a) p[a] = margin + (10 - 2 * margin) * U(g);
+    return p;
   };
   for (int k = 0; k < n - 2; ++k) {
-    const Vec3 c = pos(0.7);
+    // 1.3 m from the sides: the largest shape (a parallelogram of two 0.6 m edges) stays inside
+    // [0, 10]³, so the two triangles alone set the bounds.
+    const Vec3 c = pos(1.3);
     const double s = 0.1 + 0.5 * U(g);
     switch (k % 6) {
       case 0: {
@@ -59,7 +65,9 @@ Scene randomScene(uint64_t seed, int n) {
       }
       case 4: {
         const double ra = 0.2 * s * U(g), rb = U(g) < 0.3 ? ra : 0.2 * s * U(g);
-        sc.addCone(c, c + s * randomUnit(g), ra + 0.01, rb, 0, U(g) < 0.3);
+        const Vec3 tip = c + s * randomUnit(g);
+        const bool inside = U(g) < 0.3;
+        sc.addCone(c, tip, ra + 0.01, rb, 0, inside);
         break;
       }
       case 5: {  // shapes in or across the mid-planes
@@ -87,7 +95,11 @@ std::vector<Ray> randomRays(uint64_t seed, int n, const Vec3& lo, const Vec3& hi
   std::mt19937_64 g(seed);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   const Vec3 size = hi - lo, mid = 0.5 * (lo + hi);
-  auto inside = [&] { return lo + Vec3(U(g), U(g), U(g)) * size; };
+  auto inside = [&] {
+    Vec3 u;
+    for (int a = 0; a < 3; ++a) u[a] = U(g);  // in sequence (see randomScene)
+    return lo + u * size;
+  };
   std::vector<Ray> rays;
   for (int i = 0; i < n; ++i) {
     Ray r;
