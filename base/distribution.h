@@ -1,6 +1,6 @@
 // How the work items of a run are shared between processes: one process (the default), the ranks
-// of an MPI job (study/mpi_distribution.h), or the shards of a batch-scheduler array
-// (study/shard_distribution.h). Every item carries its own random stream, so an item's value does
+// of an MPI job (study/distributed/mpi_distribution.h), or the shards of a batch-scheduler array
+// (study/distributed/shard_distribution.h). Every item carries its own random stream, so an item's value does
 // not depend on which process or thread computed it: the results are the same bytes for any
 // split (docs/distributed.md).
 //

@@ -1,11 +1,11 @@
-// The plans' sections (study/plan_section.h): the office demo's four cuts (the workplane at
+// The plans' sections (study/grids/plan_section.h): the office demo's four cuts (the workplane at
 // 0.8 m, the corridor's floor grid cut at 1.0 m, modelling at 1.2 m, the task area at 0.75 m),
 // each with its floor search, as the study computes them; and one cut through a 10⁶-triangle
 // heightfield crossing the plane everywhere (the raw cap and the merge at work). Results in
 // docs/reports.md ("Plans").
 // Run: build/bench/plan_section_bench
 #include "engine/radiance/reader.h"
-#include "study/plan_section.h"
+#include "study/grids/plan_section.h"
 
 #include <benchmark/benchmark.h>
 

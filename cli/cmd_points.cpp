@@ -13,7 +13,7 @@
 #include "photometry/site.h"
 #include "photometry/sky_type.h"
 #include "study/points_study.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 #include "engine/irradiance_estimator.h"
 
 #include <cstdio>

@@ -9,7 +9,7 @@
 #include "reports/report_data.h"
 #include "base/error.h"
 #include "study/run_case.h"
-#include "study/shard_distribution.h"
+#include "study/distributed/shard_distribution.h"
 
 #include <cstdio>
 #include <iostream>

@@ -4,7 +4,7 @@
 #include "cli/commands.h"
 #include "cli/processes.h"
 #include "base/error.h"
-#include "study/mpi_distribution.h"
+#include "study/distributed/mpi_distribution.h"
 
 #include <exception>
 #include <iostream>

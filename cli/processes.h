@@ -1,4 +1,4 @@
-// The processes this candela is one of (an MPI job's ranks, study/mpi_distribution.h): set once
+// The processes this candela is one of (an MPI job's ranks, study/distributed/mpi_distribution.h): set once
 // by main.cpp, read by the commands that trace.
 #pragma once
 

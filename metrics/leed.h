@@ -60,7 +60,7 @@ LeedOption1Result leedV41Option1(const std::vector<LeedSpace>& spaces,
                                  LeedProjectType type = LeedProjectType::kGeneral);
 
 // The floor area a regular plane grid stands for: its sensors times the lattice's cell area (m²),
-// each sensor the centre of one cell (study/sensor_grid.h). Throws std::invalid_argument for a
+// each sensor the centre of one cell (study/grids/sensor_grid.h). Throws std::invalid_argument for a
 // negative count or cell area.
 double gridFloorAreaM2(int sensors, double cellAreaM2);
 

@@ -17,10 +17,10 @@
 #include "photometry/sky_type.h"
 #include "photometry/sun_spa.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/points_study.h"
 #include "study/run_case.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 #include "study/trace_options.h"
 
 #include <pybind11/numpy.h>
@@ -119,7 +119,7 @@ LuminairePlacement placementFromDict(const py::dict& d, int index) {
   p.maintenanceFactor = optionalItem<double>(d, "maintenance_factor").value_or(1.0);
   for (double v : {p.positionM.x, p.positionM.y, p.positionM.z, p.aim.x, p.aim.y, p.aim.z, p.spinDeg, p.multiplier})
     if (!std::isfinite(v)) throw InputError(kPython, "a luminaire's numbers must be finite");
-  // As a case file's numbers (study/case_toml.cpp): positions within 1e7 m, and no multiplier
+  // As a case file's numbers (study/case/case_toml.cpp): positions within 1e7 m, and no multiplier
   // or spin near the overflow of the intensities (multiplier=1e308 once ended as an internal error).
   for (double v : {p.positionM.x, p.positionM.y, p.positionM.z})
     if (std::abs(v) > kMaxCoordinateM)

@@ -107,7 +107,7 @@ struct LeedReport {
   bool eachSpaceAbove55 = false;
   bool aseExceeds10Percent = false;      // option 1: any space with ASE > 10 %
   std::vector<std::string> times;        // option 2: the simulated times
-  // Option 2: each time's sky (study/compliance_leed.h equinoxWindowLight).
+  // Option 2: each time's sky (study/compliance/compliance_leed.h equinoxWindowLight).
   struct Sky {
     double diffuseHorizontalLux = 0.0, directNormalLux = 0.0;
     int days = 0;

@@ -114,7 +114,7 @@ std::string summaryJson(const ReportData& data) {
                         {"range", {kModellingRatioMin, kModellingRatioMax}},
                         {"verdict", verdictName(m.verdict)}};
     }
-    // The plan's section (study/plan_section.h): where it is cut and what it holds, as counts.
+    // The plan's section (study/grids/plan_section.h): where it is cut and what it holds, as counts.
     if (g.planSection >= 0 && static_cast<std::size_t>(g.planSection) < data.planSections.size()) {
       const PlanSection& p = data.planSections[static_cast<std::size_t>(g.planSection)];
       o["plan_section"] = {{"cut_height_m", number(p.cutHeightM)},

@@ -93,7 +93,7 @@ struct PlanMarker {
   std::string name;
 };
 
-// The scene cut horizontally for the plans of horizontal grids (study/plan_section.h), in plan
+// The scene cut horizontally for the plans of horizontal grids (study/grids/plan_section.h), in plan
 // coordinates x, y (m): what the plan draws over the grid's colours and under its markers.
 struct PlanSegment {
   Vec2 a{0.0}, b{0.0};
@@ -112,7 +112,7 @@ struct PlanSection {
   std::vector<PlanSegment> openings;       // glazing crossing it
   std::vector<PlanSegment> openingsAbove;  // vertical glazing above it (a sill higher than the cut)
   std::vector<PlanFootprint> furniture;    // horizontal surfaces between the floor and the cut
-  std::size_t droppedSegments = 0;         // past the cap on segments (study/plan_section.h)
+  std::size_t droppedSegments = 0;         // past the cap on segments (study/grids/plan_section.h)
   std::size_t droppedFootprints = 0;       // past the cap on footprint vertices
   std::size_t skippedCurved = 0;           // spheres, cones and rings crossing the cut: not drawn
 };

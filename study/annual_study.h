@@ -5,7 +5,7 @@
 // summary.json and report.html.
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
 #include "study/run_case.h"
 

@@ -11,9 +11,9 @@
 #include "reports/annual_results.h"
 #include "study/annual_glare.h"
 #include "study/annual_study.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
-#include "study/prepared_grid.h"
+#include "study/grids/prepared_grid.h"
 #include "study/run_case.h"
 #include "study/run_outputs.h"
 #include "study/window_groups.h"
@@ -47,7 +47,7 @@ struct YearJob {
   const Distribution* distribution = nullptr;  // the processes the sensors are shared between
   const SurfaceLabels* windows = nullptr;      // window groups: the direct sun split by group
   // [[compliance]]: patch luminances of the overcast sky (1 lx horizontal) whose product with
-  // each sensor's sky coefficients is its daylight factor / 100 (study/compliance_study.h).
+  // each sensor's sky coefficients is its daylight factor / 100 (study/compliance/compliance_study.h).
   const std::vector<float>* overcast = nullptr;
 };
 

@@ -10,18 +10,18 @@
 #include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/json_writer.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 #include "study/compliance/en13201.h"
 #include "study/compliance/en12464_2.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
-#include "study/grid_quantity.h"
+#include "study/grids/grid_quantity.h"
 #include "study/luminaire_schedule.h"
-#include "study/plan_section.h"
-#include "study/prepared_grid.h"
+#include "study/grids/plan_section.h"
+#include "study/grids/prepared_grid.h"
 #include "study/resource_estimate.h"
 #include "study/run_outputs.h"
-#include "study/surface_grids.h"
+#include "study/grids/surface_grids.h"
 #include "study/task_area_report.h"
 #include "study/view_glare.h"
 #include "study/view_study.h"
@@ -117,7 +117,7 @@ struct GridValues {
   std::vector<double> cylindricalLux, cylindricalErrorLux, horizontalLux, horizontalErrorLux;
 };
 
-// Whether every sensor of the grid already measures q (study/prepared_grid.h).
+// Whether every sensor of the grid already measures q (study/grids/prepared_grid.h).
 bool measures(const PreparedGrid& g, GridQuantity q) { return gridMeasures(g, q); }
 
 // A run of consecutive points of the traced list: grid `grid`'s own points, or the sensors of

@@ -4,7 +4,7 @@
 // summary.json and report.html, committed as a whole (study/run_outputs.h).
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
 #include "study/run_case.h"
 

@@ -6,8 +6,8 @@
 
 #include "engine/scene.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
-#include "study/prepared_grid.h"
+#include "study/case/case_file.h"
+#include "study/grids/prepared_grid.h"
 
 #include <optional>
 #include <string>

@@ -3,7 +3,7 @@
 // of an annual run, a view `x_preview` beside a view `x`) are an input error naming both.
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 namespace candela {
 

@@ -1,9 +1,9 @@
 #include "study/points_study.h"
-#include "study/portal_file.h"
+#include "study/case/portal_file.h"
 
 #include "engine/radiance/reader.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "study/finite_results.h"
 #include "study/warnings.h"
 #include "engine/irradiance_estimator.h"

@@ -7,7 +7,7 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "base/warning.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
 #include "study/resource_estimate.h"
 #include "study/trace_options.h"
@@ -23,7 +23,7 @@ namespace candela {
 struct PointsJob {
   std::filesystem::path caseFile;             // empty: no case
   std::vector<std::filesystem::path> scenes;  // Radiance files read after the case's, in order
-  std::vector<std::filesystem::path> portalFiles;  // openings added to the case's (study/portal_file.h)
+  std::vector<std::filesystem::path> portalFiles;  // openings added to the case's (study/case/portal_file.h)
   // Luminaires placed after the case's and the scene files (the Python module's `luminaires`).
   std::vector<LuminairePlacement> luminaires;
   // A sky asked for by the caller: called with the case's daylight (or the default without a

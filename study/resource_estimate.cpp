@@ -8,9 +8,9 @@
 #include "engine/sensors.h"
 #include "reports/plan_svg.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
-#include "study/prepared_grid.h"
-#include "study/sensor_grid.h"
+#include "study/case/case_file.h"
+#include "study/grids/prepared_grid.h"
+#include "study/grids/sensor_grid.h"
 #include "study/trace_options.h"
 #include "engine/irradiance_estimator.h"
 
@@ -442,7 +442,7 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   if (closedStates > 1)
     e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
   if (extraStates > 0) e.work.push_back({"window states: coefficients", extraStates * (sky + sunPaths + direct)});
-  // LEED option 2 (study/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
+  // LEED option 2 (study/compliance/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
   // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's).
   if (pointSettings)
     for (const ComplianceSpec& spec : c.compliance) {

@@ -2,13 +2,13 @@
 
 #include "base/error.h"
 #include "study/annual_study.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/compliance/en13201.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
 #include "study/grid_study.h"
 #include "study/run_outputs.h"
-#include "study/shard_distribution.h"
+#include "study/distributed/shard_distribution.h"
 
 #include <nlohmann/json.hpp>
 

@@ -73,7 +73,7 @@ ReportData reportDataFor(const CaseFile& c, const RunContext& run, uint64_t seed
 
 // Commits the run's result as its processes ask (docs/distributed.md): rank 0 of a job (or the
 // one process) writes the result folder by calling write(dir) inside writeRunOutputs; the other
-// ranks write nothing; a shard writes its part (study/shard_distribution.h) instead. A merge's
+// ranks write nothing; a shard writes its part (study/distributed/shard_distribution.h) instead. A merge's
 // distribution first checks that the parts held nothing the run did not use.
 void commitRun(const CaseFile& c, const RunContext& run, const std::function<void(const std::filesystem::path&)>& write);
 

@@ -13,7 +13,7 @@
 #include "engine/tracer.h"
 #include "metrics/en17037_view_sunlight.h"
 #include "photometry/site.h"
-#include "study/compliance_spec.h"
+#include "study/compliance/compliance_spec.h"
 
 #include <vector>
 

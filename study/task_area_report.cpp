@@ -1,7 +1,7 @@
 #include "study/task_area_report.h"
 
 #include "metrics/targets.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 
 #include <algorithm>
 

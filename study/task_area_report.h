@@ -4,7 +4,7 @@
 #pragma once
 
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 namespace candela {
 
@@ -13,7 +13,7 @@ namespace candela {
 void addTaskAreaReports(const CaseFile& c, ReportData& data);
 
 // The grid reports' surface labels and data.surfaceGrids, from the case's [[surface_grid]]
-// entries and the grids they made (c: the case with them, study/surface_grids.h).
+// entries and the grids they made (c: the case with them, study/grids/surface_grids.h).
 void addSurfaceGridReports(const CaseFile& c, ReportData& data);
 
 }  // namespace candela

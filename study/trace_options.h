@@ -3,7 +3,7 @@
 #pragma once
 
 #include "engine/trace_settings.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <cstdint>
 #include <optional>

@@ -3,7 +3,7 @@
 // (Wienold & Christoffersen 2006) from the image when the view is a fisheye.
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "engine/render.h"
 #include "engine/tracer.h"
 #include "metrics/glare.h"

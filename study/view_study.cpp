@@ -3,7 +3,7 @@
 #include "engine/camera.h"
 #include "base/atomic_file.h"
 #include "reports/png_writer.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 #include "study/finite_results.h"
 #include "study/warnings.h"
 

@@ -9,7 +9,7 @@
 #include "reports/falsecolor.h"
 #include "reports/report_data.h"
 #include "reports/tonemap.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
 #include "study/resource_estimate.h"
 #include "study/trace_options.h"

@@ -4,7 +4,7 @@
 #include "engine/source_distribution.h"
 #include "photometry/site.h"
 #include "reports/report_data.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 #include "study/sight_line.h"
 
 #include <algorithm>

@@ -11,8 +11,8 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "photometry/epw.h"
-#include "study/case_file.h"
-#include "study/prepared_grid.h"
+#include "study/case/case_file.h"
+#include "study/grids/prepared_grid.h"
 
 #include <string>
 #include <vector>

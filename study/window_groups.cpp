@@ -4,7 +4,7 @@
 #include "engine/materials/family.h"
 #include "metrics/window_groups.h"
 #include "study/blinds.h"
-#include "study/surface_grids.h"
+#include "study/grids/surface_grids.h"
 
 #include <map>
 

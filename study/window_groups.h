@@ -5,7 +5,7 @@
 
 #include "engine/daylight_coefficients.h"
 #include "engine/scene.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <string>
 #include <vector>

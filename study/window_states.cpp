@@ -5,8 +5,8 @@
 #include "engine/obj_reader.h"
 #include "engine/radiance/reader.h"
 #include "metrics/window_groups.h"
-#include "study/case_scene.h"
-#include "study/surface_grids.h"
+#include "study/case/case_scene.h"
+#include "study/grids/surface_grids.h"
 
 #include <sstream>
 

@@ -44,7 +44,7 @@ struct SceneReadOptions {
   // (engine/radiance/gen.h, generatedPrimitivesAllowed).
   uint64_t maxMemoryBytes = 0;
   // A model's root, looked in last for every file a scene file names (engine/radiance/
-  // file_lookup.h): a Honeybee radiance folder's (study/honeybee_folder.h); empty: none.
+  // file_lookup.h): a Honeybee radiance folder's (study/case/honeybee_folder.h); empty: none.
   std::filesystem::path rootFolder;
 };
 

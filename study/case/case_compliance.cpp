@@ -1,8 +1,8 @@
-// [[compliance]] entries of the case file (study/compliance_spec.h, docs/compliance.md).
-#include "study/case_compliance.h"
+// [[compliance]] entries of the case file (study/compliance/compliance_spec.h, docs/compliance.md).
+#include "study/case/case_compliance.h"
 
 #include "photometry/site.h"
-#include "study/case_toml.h"
+#include "study/case/case_toml.h"
 
 #include <cstdio>
 #include <set>

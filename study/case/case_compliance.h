@@ -1,9 +1,9 @@
-// Reading the [[compliance]] entries of a case file (study/compliance_spec.h holds what they say;
+// Reading the [[compliance]] entries of a case file (study/compliance/compliance_spec.h holds what they say;
 // docs/compliance.md every key).
 #pragma once
 
-#include "study/case_file.h"
-#include "study/case_toml.h"
+#include "study/case/case_file.h"
+#include "study/case/case_toml.h"
 
 #include <set>
 #include <string>

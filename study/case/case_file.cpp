@@ -1,16 +1,16 @@
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include "base/input_file.h"
 #include "base/units.h"
 #include "engine/portals.h"
-#include "study/case_compliance.h"
+#include "study/case/case_compliance.h"
 #include "study/compliance/en13201_case.h"
 #include "study/compliance/en12464_2_case.h"
 #include "study/compliance/en1838_case.h"
-#include "study/case_grids.h"
-#include "study/case_window_groups.h"
-#include "study/honeybee_folder.h"
-#include "study/case_toml.h"
+#include "study/case/case_grids.h"
+#include "study/case/case_window_groups.h"
+#include "study/case/honeybee_folder.h"
+#include "study/case/case_toml.h"
 
 #include <toml++/toml.h>
 
@@ -47,7 +47,7 @@ void readCase(const Context& c, const toml::table& t, CaseFile& out) {
 
 void readScene(const Context& c, const toml::table& t, CaseFile& out) {
   Table tab(t, c, "[[scene]]");
-  if (const toml::node* hb = tab.get("honeybee_folder")) {  // study/honeybee_folder.h
+  if (const toml::node* hb = tab.get("honeybee_folder")) {  // study/case/honeybee_folder.h
     if (const toml::node* f = tab.get("file")) c.fail(*f, "a [[scene]] gives either 'file' or 'honeybee_folder'");
     const std::string text = asString(c, *hb, "honeybee_folder");
     fs::path folder = fs::path(text).is_relative() ? c.dir / text : fs::path(text);

@@ -18,12 +18,12 @@
 #include "engine/luminaire_source.h"
 #include "photometry/sky_type.h"
 #include "metrics/targets.h"
-#include "study/compliance_spec.h"
+#include "study/compliance/compliance_spec.h"
 #include "study/compliance/en13201_spec.h"
 #include "study/compliance/en12464_2_spec.h"
 #include "study/compliance/en1838_spec.h"
-#include "study/grid_quantity.h"
-#include "study/sensor_grid.h"
+#include "study/grids/grid_quantity.h"
+#include "study/grids/sensor_grid.h"
 
 namespace candela {
 
@@ -109,7 +109,7 @@ struct GridSpec {
   std::optional<double> targetAverageLux;
   std::optional<double> targetUniformity;  // U0 = Emin/Eavg
   bool daylightFactor = false;          // report the grid as a daylight factor in %
-  // `quantity` (study/grid_quantity.h): unset, planar illuminance on the grid's normal (the
+  // `quantity` (study/grids/grid_quantity.h): unset, planar illuminance on the grid's normal (the
   // points file's normals), as before the key existed.
   std::optional<GridQuantity> quantity;
   FileLoc quantityLoc;
@@ -120,11 +120,11 @@ struct GridSpec {
   FileLoc modellingLoc;
   FileLoc loc;                          // the [[grid]] entry
   // Grids a [[task_area]] makes: its name and which of its areas this is; a background without
-  // a `room` is clipped to the scene's plan extent when it is made (study/prepared_grid.cpp).
+  // a `room` is clipped to the scene's plan extent when it is made (study/grids/prepared_grid.cpp).
   std::string taskArea;
   enum class Area { kNone, kTask, kSurrounding, kBackground, kCylindrical } area = Area::kNone;
   bool clipToRoom = false;
-  // Grids a [[surface_grid]] makes (study/surface_grids.h): its name, the scene surfaces this
+  // Grids a [[surface_grid]] makes (study/grids/surface_grids.h): its name, the scene surfaces this
   // grid lies on (their identifiers) and which surface of the room they are.
   std::string surfaceGrid;
   std::vector<std::string> onSurfaces;
@@ -275,9 +275,9 @@ struct CaseFile {
   std::vector<ObserverSpec> observers;  // [[observer]]
   std::vector<TaskAreaSpec> taskAreas;  // [[task_area]]; their grids are in `grids`
   // [[surface_grid]]: their grids need the scene, and are added to `grids` when it is read
-  // (withSurfaceGrids, study/surface_grids.h).
+  // (withSurfaceGrids, study/grids/surface_grids.h).
   std::vector<SurfaceGridSpec> surfaceGrids;
-  // [[compliance]]: the standards the case is checked against (study/compliance_spec.h); annual
+  // [[compliance]]: the standards the case is checked against (study/compliance/compliance_spec.h); annual
   // cases only.
   std::vector<ComplianceSpec> compliance;
   // [[window_group]]: none, one group of all the glazing per grid (as before the key existed).

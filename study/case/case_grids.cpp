@@ -1,9 +1,9 @@
-#include "study/case_grids.h"
+#include "study/case/case_grids.h"
 
 #include "metrics/targets.h"
-#include "study/case_toml.h"
+#include "study/case/case_toml.h"
 #include "study/compliance/en12464_2_case.h"
-#include "study/grid_quantity.h"
+#include "study/grids/grid_quantity.h"
 
 #include <array>
 #include <cmath>

@@ -1,10 +1,10 @@
 // The case file's grids: [[grid]] entries and the grids a [[task_area]] makes (its task area,
-// immediate surrounding and background, EN 12464-1:2021), read as study/case_file.cpp reads the
+// immediate surrounding and background, EN 12464-1:2021), read as study/case/case_file.cpp reads the
 // rest of the file.
 #pragma once
 
-#include "study/case_file.h"
-#include "study/case_toml.h"
+#include "study/case/case_file.h"
+#include "study/case/case_toml.h"
 
 #include <set>
 #include <string>

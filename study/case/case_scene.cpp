@@ -1,4 +1,4 @@
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 
 #include "engine/daylight.h"
 #include "engine/luminaire_opening.h"

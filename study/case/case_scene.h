@@ -2,7 +2,7 @@
 // `candela points --case` and `candela run`.
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "engine/daylight.h"
 #include "engine/scene.h"
 #include "photometry/epw.h"

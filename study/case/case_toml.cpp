@@ -1,4 +1,4 @@
-#include "study/case_toml.h"
+#include "study/case/case_toml.h"
 
 #include "base/units.h"
 

@@ -1,4 +1,4 @@
-// The case file's TOML values as candela reads them (study/case_file.cpp and its parts): every
+// The case file's TOML values as candela reads them (study/case/case_file.cpp and its parts): every
 // key consumed once and a leftover one an error at its line, numbers finite and within ±1e7,
 // paths relative to the case file's folder, and errors as InputError("case.toml:LINE: ...").
 #pragma once

@@ -1,4 +1,4 @@
-#include "study/case_window_groups.h"
+#include "study/case/case_window_groups.h"
 
 namespace candela {
 

@@ -1,10 +1,10 @@
-// The case file's [[window_group]] entries (docs/case-format.md), read as study/case_file.cpp
+// The case file's [[window_group]] entries (docs/case-format.md), read as study/case/case_file.cpp
 // reads the rest of the file. Whether the patterns name glazing of the scene is checked when the
 // scene is read (study/window_groups.h).
 #pragma once
 
-#include "study/case_file.h"
-#include "study/case_toml.h"
+#include "study/case/case_file.h"
+#include "study/case/case_toml.h"
 
 #include <set>
 #include <string>

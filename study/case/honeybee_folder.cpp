@@ -1,4 +1,4 @@
-#include "study/honeybee_folder.h"
+#include "study/case/honeybee_folder.h"
 
 #include "base/error.h"
 #include "base/input_file.h"

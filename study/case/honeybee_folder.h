@@ -4,7 +4,7 @@
 // [[window_group]] with its states (docs/annual.md "Window states").
 #pragma once
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <filesystem>
 

@@ -1,4 +1,4 @@
-#include "study/portal_file.h"
+#include "study/case/portal_file.h"
 
 #include "base/input_file.h"
 #include "engine/portals.h"

@@ -1,10 +1,10 @@
-#include "study/compliance_leed.h"
+#include "study/compliance/compliance_leed.h"
 
 #include "engine/sensors.h"
 #include "metrics/leed.h"
 #include "reports/report_data.h"
 #include "study/annual_glare.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 #include "engine/irradiance_estimator.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // (docs/compliance.md, docs/leed.md).
 #pragma once
 
-#include "study/compliance_study.h"
+#include "study/compliance/compliance_study.h"
 
 namespace candela {
 

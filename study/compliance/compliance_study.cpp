@@ -1,4 +1,4 @@
-#include "study/compliance_study.h"
+#include "study/compliance/compliance_study.h"
 
 #include "base/error.h"
 #include "metrics/annual_glare.h"
@@ -7,7 +7,7 @@
 #include "reports/report_data.h"
 #include "study/annual_glare.h"
 #include "study/annual_glare_check.h"
-#include "study/compliance_leed.h"
+#include "study/compliance/compliance_leed.h"
 #include "study/sunlight_exposure.h"
 #include "study/view_out.h"
 

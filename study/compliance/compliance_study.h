@@ -9,7 +9,7 @@
 #include "photometry/annual_sky.h"
 #include "photometry/site.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/observer.h"
 
 #include <cstddef>

@@ -9,7 +9,7 @@
 #include "engine/tracer.h"
 #include "metrics/en12464_2.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <utility>
 #include <vector>

@@ -1,7 +1,7 @@
 // [[task_area]] standard = "en12464-2", [[observer]] kind = "gr" (study/compliance/en12464_2_case.h).
 #include "study/compliance/en12464_2_case.h"
 
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 // standard = "en12464-2" and [[observer]] with kind = "gr", read into CaseFile::outdoor.
 #pragma once
 
-#include "study/case_file.h"
-#include "study/case_toml.h"
+#include "study/case/case_file.h"
+#include "study/case/case_toml.h"
 
 #include <set>
 #include <string>

@@ -3,7 +3,7 @@
 #include "base/units.h"
 #include "engine/accelerator.h"
 #include "reports/en13201_report.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 
 #include <algorithm>
 #include <chrono>

@@ -14,7 +14,7 @@
 #include "engine/tracer.h"
 #include "metrics/en13201.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/compliance/en13201_grids.h"
 
 #include <vector>

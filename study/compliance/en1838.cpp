@@ -3,10 +3,10 @@
 #include "engine/materials/family.h"
 #include "engine/tracer.h"
 #include "reports/en1838_report.h"
-#include "study/case_scene.h"
+#include "study/case/case_scene.h"
 #include "study/compliance/en1838_grids.h"
 #include "study/finite_results.h"
-#include "study/plan_section.h"
+#include "study/grids/plan_section.h"
 
 #include <algorithm>
 #include <chrono>

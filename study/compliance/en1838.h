@@ -11,7 +11,7 @@
 #include "engine/trace_settings.h"
 #include "metrics/en1838.h"
 #include "reports/report_data.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/trace_options.h"
 
 #include <memory>

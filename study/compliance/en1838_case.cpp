@@ -3,7 +3,7 @@
 
 #include "metrics/en1838.h"
 #include "study/compliance/en1838_grids.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 
 #include <algorithm>
 #include <cmath>

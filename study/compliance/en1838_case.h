@@ -2,8 +2,8 @@
 // [[open_area]] and [[safety_point]], read into CaseFile::emergency.
 #pragma once
 
-#include "study/case_file.h"
-#include "study/case_toml.h"
+#include "study/case/case_file.h"
+#include "study/case/case_toml.h"
 
 namespace candela {
 

@@ -1,4 +1,4 @@
-#include "study/mpi_distribution.h"
+#include "study/distributed/mpi_distribution.h"
 
 #include "base/parallel.h"
 #include "study/trace_options.h"

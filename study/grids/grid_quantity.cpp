@@ -1,4 +1,4 @@
-#include "study/grid_quantity.h"
+#include "study/grids/grid_quantity.h"
 
 namespace candela {
 

@@ -1,4 +1,4 @@
-#include "study/plan_section.h"
+#include "study/grids/plan_section.h"
 
 #include <algorithm>
 #include <array>

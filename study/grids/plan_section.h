@@ -2,7 +2,7 @@
 // plan showing walls, openings and furniture cut at the grid height"): where the plane z = cut
 // crosses the scene's polygons, triangles and mesh triangles, sorted by what their material makes
 // them (walls or glazing), and the furniture tops between the floor and the cut. Pure functions
-// over the scene (tests/study/plan_section_test.cpp), and the study's step that gives each
+// over the scene (tests/study/grids/plan_section_test.cpp), and the study's step that gives each
 // horizontal grid's plan its section (docs/reports.md, "Plans").
 #pragma once
 
@@ -12,7 +12,7 @@
 
 #include "engine/scene.h"
 #include "reports/report_data.h"
-#include "study/prepared_grid.h"
+#include "study/grids/prepared_grid.h"
 
 namespace candela {
 
@@ -75,7 +75,7 @@ double planCutHeight(double gridZ, double floorZ);
 PlanSection planSection(const Scene& scene, const SectionRequest& request, const SectionLimits& limits = {});
 
 // The height of a grid whose plan is an x, y plan (m): a plane grid's plane in plan coordinates
-// (study/sensor_grid.h inPlanCoordinates: z = its origin's), a points file's points' mean z when
+// (study/grids/sensor_grid.h inPlanCoordinates: z = its origin's), a points file's points' mean z when
 // they lie within 0.1 m of one level; none for any other grid, and none for a ceiling's grid
 // ([[surface_grid]]): its plan is a reflected ceiling plan with the luminaires, and a cut at its
 // height would take the ceiling itself for the floor.

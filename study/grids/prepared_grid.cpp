@@ -1,4 +1,4 @@
-#include "study/prepared_grid.h"
+#include "study/grids/prepared_grid.h"
 
 #include "study/output_names.h"
 

@@ -4,8 +4,8 @@
 
 #include "base/math.h"
 #include "engine/scene.h"
-#include "study/case_file.h"
-#include "study/sensor_grid.h"
+#include "study/case/case_file.h"
+#include "study/grids/sensor_grid.h"
 #include "reports/report_data.h"
 
 #include <optional>

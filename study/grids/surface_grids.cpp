@@ -1,4 +1,4 @@
-#include "study/surface_grids.h"
+#include "study/grids/surface_grids.h"
 
 #include "base/error.h"
 

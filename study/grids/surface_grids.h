@@ -4,7 +4,7 @@
 #pragma once
 
 #include "engine/scene.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <optional>
 #include <string>

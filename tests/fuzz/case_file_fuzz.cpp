@@ -1,6 +1,6 @@
-// Fuzz target: the TOML case file (study/case_file.h, parseCaseFile). The case sits in a folder
+// Fuzz target: the TOML case file (study/case/case_file.h, parseCaseFile). The case sits in a folder
 // that holds no files, so every referenced scene, luminaire or weather file is missing.
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "base/error.h"
 #include "tests/fuzz/fuzz_target.h"
 

@@ -1,11 +1,11 @@
-// Fuzz target: a shard's part as `candela merge` reads it (study/shard_distribution.h): part.json
+// Fuzz target: a shard's part as `candela merge` reads it (study/distributed/shard_distribution.h): part.json
 // (readPartHeader, checkPartSet) and fills.bin (MergeDistribution's fills of a small study).
 //
 // Input: one flag byte, a little-endian uint16 L, L bytes of part.json, then fills.bin. When the
 // flag is odd and part.json parses, its "data_checksum" is set to fills.bin's (as a deliberate
 // edit would), so that the fuzzer reaches the fills behind the checksum. tests/fuzz/part/ holds
 // seeds made from a real part of this study.
-#include "study/shard_distribution.h"
+#include "study/distributed/shard_distribution.h"
 #include "base/error.h"
 #include "base/input_file.h"
 #include "tests/fuzz/fuzz_target.h"
@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The fills the seeds' study makes (tests/study/shard_distribution_test.cpp's Study): shared
+// The fills the seeds' study makes (tests/study/distributed/shard_distribution_test.cpp's Study): shared
 // lists, result lists, shared items, result items.
 void runStudy(const candela::Distribution& d) {
   std::vector<std::vector<std::byte>> a(4), b(50);

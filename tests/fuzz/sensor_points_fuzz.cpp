@@ -1,5 +1,5 @@
-// Fuzz target: Radiance-style sensor points (study/sensor_grid.h, readPoints).
-#include "study/sensor_grid.h"
+// Fuzz target: Radiance-style sensor points (study/grids/sensor_grid.h, readPoints).
+#include "study/grids/sensor_grid.h"
 #include "base/error.h"
 #include "tests/fuzz/fuzz_target.h"
 

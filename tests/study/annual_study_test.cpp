@@ -7,12 +7,12 @@
 
 #include "metrics/annual.h"
 #include "reports/annual_results.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/run_case.h"
 #include "study/run_outputs.h"
 #include "study/trace_options.h"
 
-#include "../support/temp_files.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // keys and errors, and the car park example.
 #include "study/compliance/en12464_2.h"
 
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/compliance/en12464_2_case.h"
 #include "study/run_case.h"
 #include "tests/support/temp_files.h"

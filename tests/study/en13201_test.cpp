@@ -7,7 +7,7 @@
 #include "study/compliance/en13201.h"
 
 #include "photometry/photometric_file.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 #include "study/compliance/en13201_grids.h"
 #include "study/run_case.h"
 #include "tests/support/temp_files.h"

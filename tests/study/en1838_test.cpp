@@ -8,8 +8,8 @@
 
 #include "engine/tracer.h"
 #include "photometry/photometric_file.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "study/compliance/en1838_grids.h"
 #include "study/run_case.h"
 #include "tests/support/temp_files.h"

@@ -5,7 +5,7 @@
 // CIE overcast sky). The two are independent estimates of the same illuminance: at each point
 // they must agree within 4 standard errors of their difference.
 #include "study/points_study.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // what a merge must refuse (docs/distributed.md#faults): a file the scene reads that changed
 // between the shards or since, a part damaged in place, a NaN in a part.
 #include "study/run_case.h"
-#include "study/shard_distribution.h"
+#include "study/distributed/shard_distribution.h"
 
 #include "base/error.h"
 #include "base/input_file.h"

@@ -5,7 +5,7 @@
 // Every set has an expected outcome below: it agrees, or it is refused for a stated reason. A set
 // that starts (or stops) loading fails the test until the table and docs/engine.md say so.
 #include "study/points_study.h"
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 #include "engine/irradiance_estimator.h"
 #include "engine/radiance/parse.h"
 #include "engine/radiance/reader.h"

@@ -2,7 +2,7 @@
 // caller's overrides win over them.
 #include "study/points_study.h"
 
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 #include "engine/irradiance_estimator.h"
 
 #include <gtest/gtest.h>

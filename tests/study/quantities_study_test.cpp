@@ -5,9 +5,9 @@
 // number for number; a modelling grid in a room gives the same files on 1 and 2 threads.
 #include "engine/sensors.h"
 #include "engine/tracer.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
-#include "study/prepared_grid.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
+#include "study/grids/prepared_grid.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 #include "engine/irradiance_estimator.h"

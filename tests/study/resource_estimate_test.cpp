@@ -5,7 +5,7 @@
 #include "engine/render.h"
 #include "engine/scene.h"
 #include "engine/sensors.h"
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include <gtest/gtest.h>
 

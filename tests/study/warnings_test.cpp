@@ -8,10 +8,10 @@
 #include "engine/radiance/reader.h"
 #include "photometry/epw.h"
 #include "photometry/ies_lm63.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "study/points_study.h"
-#include "study/prepared_grid.h"
+#include "study/grids/prepared_grid.h"
 #include "study/run_case.h"
 
 #include <gtest/gtest.h>

@@ -8,12 +8,12 @@
 #include "metrics/annual.h"
 #include "reports/annual_results.h"
 #include "study/annual_study.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
-#include "../support/temp_files.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 

@@ -10,9 +10,9 @@
 #include "metrics/annual.h"
 #include "reports/annual_results.h"
 #include "study/annual_study.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
-#include "study/compliance_spec.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
+#include "study/compliance/compliance_spec.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 

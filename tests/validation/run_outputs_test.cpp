@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "engine/scene.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"

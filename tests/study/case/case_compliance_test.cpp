@@ -1,4 +1,4 @@
-#include "study/case_compliance.h"
+#include "study/case/case_compliance.h"
 
 #include "base/error.h"
 

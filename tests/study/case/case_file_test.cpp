@@ -1,8 +1,8 @@
-#include "study/case_file.h"
+#include "study/case/case_file.h"
 
 #include "engine/scene.h"
-#include "study/case_scene.h"
-#include "study/prepared_grid.h"
+#include "study/case/case_scene.h"
+#include "study/grids/prepared_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -469,7 +469,7 @@ TEST(CaseFile, TaskAreaCylindricalAndModellingGrid) {
   EXPECT_THROW(parseCaseFile(area + "cylindrical_illuminance = 0\n", path), InputError);
 }
 
-// A [[surface_grid]] is read as written; its grids are made with the scene (study/surface_grids.h).
+// A [[surface_grid]] is read as written; its grids are made with the scene (study/grids/surface_grids.h).
 TEST(CaseFile, ReadsSurfaceGrids) {
   const fs::path path = casesDir() / "errors" / "surface_grid.toml";
   const CaseFile c = parseCaseFile(

@@ -1,9 +1,9 @@
-// Declared portals: `[[portal]]` in a case and `--portal` files (study/portal_file.h), their
+// Declared portals: `[[portal]]` in a case and `--portal` files (study/case/portal_file.h), their
 // errors at the offending line, and both reaching the scene the tracer sees.
-#include "study/case_file.h"
-#include "study/case_scene.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
 #include "study/points_study.h"
-#include "study/portal_file.h"
+#include "study/case/portal_file.h"
 
 #include <gtest/gtest.h>
 

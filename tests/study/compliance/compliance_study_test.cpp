@@ -9,13 +9,13 @@
 #include "photometry/sun_spa.h"
 #include "metrics/annual.h"
 #include "reports/annual_results.h"
-#include "study/case_file.h"
-#include "study/case_scene.h"
-#include "study/compliance_leed.h"
+#include "study/case/case_file.h"
+#include "study/case/case_scene.h"
+#include "study/compliance/compliance_leed.h"
 #include "study/run_case.h"
 #include "study/trace_options.h"
 
-#include "../support/temp_files.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 

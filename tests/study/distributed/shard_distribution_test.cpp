@@ -1,4 +1,4 @@
-#include "study/shard_distribution.h"
+#include "study/distributed/shard_distribution.h"
 
 #include "base/atomic_file.h"
 #include "base/error.h"

@@ -1,4 +1,4 @@
-#include "study/sensor_grid.h"
+#include "study/grids/sensor_grid.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-// [[surface_grid]] (study/surface_grids.cpp): identifiers matched by glob, one grid per plane,
+// [[surface_grid]] (study/grids/surface_grids.cpp): identifiers matched by glob, one grid per plane,
 // sensors facing the room whichever way the surface is wound, covered parts left out, the room
 // type's targets; and a black room's walls against the direct light's closed form I·cos θ / d².
-#include "study/surface_grids.h"
+#include "study/grids/surface_grids.h"
 
 #include "engine/radiance/reader.h"
-#include "study/case_scene.h"
-#include "study/prepared_grid.h"
+#include "study/case/case_scene.h"
+#include "study/grids/prepared_grid.h"
 #include "study/run_case.h"
 
 #include <nlohmann/json.hpp>
