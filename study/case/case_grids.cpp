@@ -13,9 +13,6 @@ namespace candela {
 
 using namespace case_toml;
 
-namespace {
-
-// An entry's 'name', not empty; `dflt` when it has none.
 std::string entryName(Table& tab, std::string dflt) {
   const toml::node* n = tab.get("name");
   if (!n) return dflt;
@@ -23,6 +20,27 @@ std::string entryName(Table& tab, std::string dflt) {
   if (name.empty()) tab.ctx().fail(*n, "'name' must not be empty");
   return name;
 }
+
+std::vector<Vec2> readTaskAreaOutline(Table& tab, const FileLoc& loc) {
+  const Context& c = tab.ctx();
+  const toml::node* cn = tab.get("corners");
+  const toml::node* pn = tab.get("polygon");
+  if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
+  if (!cn && !pn) throw InputError(loc, "a task area needs 'corners' = [[x0, y0], [x1, y1]] or a 'polygon'");
+  if (cn) {
+    const std::vector<Vec2> k = asPointList(c, *cn, "corners");
+    if (k.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
+    const Vec2 lo = glm::min(k[0], k[1]), hi = glm::max(k[0], k[1]);
+    if (!(hi.x > lo.x && hi.y > lo.y)) c.fail(*cn, "'corners' span a zero area");
+    return {lo, Vec2(hi.x, lo.y), hi, Vec2(lo.x, hi.y)};
+  }
+  std::vector<Vec2> outline = asPointList(c, *pn, "polygon");
+  if (outline.size() < 3) c.fail(*pn, "'polygon' needs at least 3 points");
+  if (!(std::abs(polygonArea(outline)) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
+  return outline;
+}
+
+namespace {
 
 // The grid's 'name' (default grid<n>), unique among the case's grids.
 void readGridName(Table& tab, int index, std::set<std::string>& names, GridSpec& g) {
@@ -226,21 +244,7 @@ void readTaskArea(const Context& c, const toml::table& t, int index, std::set<st
   TaskAreaSpec a;
   a.loc = tab.loc();
   a.name = entryName(tab, "task area " + std::to_string(index + 1));
-  const toml::node* cn = tab.get("corners");
-  const toml::node* pn = tab.get("polygon");
-  if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
-  if (!cn && !pn) throw InputError(a.loc, "a task area needs 'corners' = [[x0, y0], [x1, y1]] or a 'polygon'");
-  if (cn) {
-    const std::vector<Vec2> k = asPointList(c, *cn, "corners");
-    if (k.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
-    const Vec2 lo = glm::min(k[0], k[1]), hi = glm::max(k[0], k[1]);
-    if (!(hi.x > lo.x && hi.y > lo.y)) c.fail(*cn, "'corners' span a zero area");
-    a.outline = {lo, Vec2(hi.x, lo.y), hi, Vec2(lo.x, hi.y)};
-  } else {
-    a.outline = asPointList(c, *pn, "polygon");
-    if (a.outline.size() < 3) c.fail(*pn, "'polygon' needs at least 3 points");
-    if (!(std::abs(polygonArea(a.outline)) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
-  }
+  a.outline = readTaskAreaOutline(tab, a.loc);
   a.heightM = asNumber(c, tab.require("height"), "height");
   a.maintainedLux = asNumber(c, tab.require("maintained_illuminance"), "maintained_illuminance");
   checkMin(tab, "maintained_illuminance", a.maintainedLux, 0.0, true, " lx");

@@ -1,6 +1,7 @@
 // [[task_area]] standard = "en12464-2", [[observer]] kind = "gr" (study/compliance/en12464_2_case.h).
 #include "study/compliance/en12464_2_case.h"
 
+#include "study/case/case_grids.h"
 #include "study/grids/sensor_grid.h"
 
 #include <algorithm>
@@ -41,26 +42,8 @@ void readOutdoorTaskArea(const Context& c, const toml::table& t, int index, std:
   tab.get("standard");
   OutdoorTaskAreaSpec a;
   a.loc = tab.loc();
-  a.name = "task area " + std::to_string(index + 1);
-  if (const toml::node* n = tab.get("name")) {
-    a.name = asString(c, *n, "name");
-    if (a.name.empty()) c.fail(*n, "'name' must not be empty");
-  }
-  const toml::node* cn = tab.get("corners");
-  const toml::node* pn = tab.get("polygon");
-  if (cn && pn) c.fail(*pn, "give either 'corners' or 'polygon', not both");
-  if (!cn && !pn) throw InputError(a.loc, "a task area needs 'corners' = [[x0, y0], [x1, y1]] or a 'polygon'");
-  if (cn) {
-    const std::vector<Vec2> k = asPointList(c, *cn, "corners");
-    if (k.size() != 2) c.fail(*cn, "'corners' must be two points [[x0, y0], [x1, y1]]");
-    const Vec2 lo = glm::min(k[0], k[1]), hi = glm::max(k[0], k[1]);
-    if (!(hi.x > lo.x && hi.y > lo.y)) c.fail(*cn, "'corners' span a zero area");
-    a.outline = {lo, Vec2(hi.x, lo.y), hi, Vec2(lo.x, hi.y)};
-  } else {
-    a.outline = asPointList(c, *pn, "polygon");
-    if (a.outline.size() < 3) c.fail(*pn, "'polygon' needs at least 3 points");
-    if (!(std::abs(polygonArea(a.outline)) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
-  }
+  a.name = entryName(tab, "task area " + std::to_string(index + 1));
+  a.outline = readTaskAreaOutline(tab, a.loc);
   a.heightM = numberOr(tab, "height", 0.0);
   a.maintainedLux = asNumber(c, tab.require("maintained_illuminance"), "maintained_illuminance");
   checkMin(tab, "maintained_illuminance", a.maintainedLux, 0.0, true, " lx");
