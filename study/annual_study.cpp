@@ -235,21 +235,11 @@ void closedPass(const AnnualPass& p, YearTracer& closed, StudyObserver& observer
     AnnualIlluminance year = closed.block(b0, n, 2 * b0, step);
     std::vector<float>().swap(year.directSun);  // no beam through closed blinds: zeros
     checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
-    std::vector<float> open, direct;
-    for (GridYear& g : p.grids) {
-      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
-      const auto part = overlap(g, b0, n);
-      const std::size_t lo = part.first, k = part.second;
-      if (k == 0) continue;
-      open.resize(k * nh);
-      direct.resize(k * nh);
-      const int from = static_cast<int>(lo - g.first);
-      p.folder.guard([&] {
-        g.total->read(from, static_cast<int>(k), open.data());
-        g.directSun->read(from, static_cast<int>(k), direct.data());
-      });
-      const auto m = sensorAnnualMetrics(open.data(), direct.data(), static_cast<int>(k), static_cast<int>(nh),
-                                         p.y.occupied, p.th, year.total.data() + (lo - b0) * nh, &g.blindsClosed);
+    for (BlockPart& part : readBlockParts(p, b0, n)) {
+      GridYear& g = *part.g;
+      const auto m = sensorAnnualMetrics(part.total.data(), part.direct.data(), static_cast<int>(part.k),
+                                         static_cast<int>(nh), p.y.occupied, p.th,
+                                         year.total.data() + (part.lo - b0) * nh, &g.blindsClosed);
       g.sensors.insert(g.sensors.end(), m.begin(), m.end());
     }
   }
@@ -266,39 +256,23 @@ struct ClosedGroup {
 void groupsPass(const AnnualPass& p, std::vector<ClosedGroup>& closed, StudyObserver& observer) {
   const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = closed.size();
   const ObservedStep step(observer, "blinds closed per window group: coefficients", 2 * sensors * nq);
-  struct Slice {
-    GridYear* g;
-    std::size_t lo, k;
-    std::vector<float> open, direct, combined;
-  };
   for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
     const std::size_t n = std::min(p.block, sensors - b0);
-    std::vector<Slice> slices;
-    for (GridYear& g : p.grids) {
-      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
-      const auto part = overlap(g, b0, n);
-      const std::size_t lo = part.first, k = part.second;
-      if (k == 0) continue;
-      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}};
-      const int from = static_cast<int>(lo - g.first);
-      p.folder.guard([&] {
-        g.total->read(from, static_cast<int>(k), sl.open.data());
-        g.directSun->read(from, static_cast<int>(k), sl.direct.data());
-      });
-      sl.combined = sl.open;
-      slices.push_back(std::move(sl));
-    }
+    std::vector<BlockPart> parts = readBlockParts(p, b0, n);
+    std::vector<std::vector<float>> combined;
+    for (const BlockPart& part : parts) combined.push_back(part.total);
     for (std::size_t q = 0; q < nq; ++q) {
       const AnnualIlluminance year = closed[q].tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
       checkFinite(year.total, "the hourly illuminance with blinds closed", b0 * nh);
-      for (Slice& sl : slices)
-        foldClosedGroup(year.total.data() + (sl.lo - b0) * nh, sl.open.data(), sl.g->closure, closed[q].group, sl.k,
-                        sl.combined.data());
+      for (std::size_t i = 0; i < parts.size(); ++i)
+        foldClosedGroup(year.total.data() + (parts[i].lo - b0) * nh, parts[i].total.data(), parts[i].g->closure,
+                        closed[q].group, parts[i].k, combined[i].data());
     }
-    for (Slice& sl : slices) {
-      const auto m = sensorAnnualMetrics(sl.combined.data(), sl.direct.data(), static_cast<int>(sl.k),
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const BlockPart& part = parts[i];
+      const auto m = sensorAnnualMetrics(combined[i].data(), part.direct.data(), static_cast<int>(part.k),
                                          static_cast<int>(nh), p.y.occupied, p.th);
-      sl.g->sensors.insert(sl.g->sensors.end(), m.begin(), m.end());
+      part.g->sensors.insert(part.g->sensors.end(), m.begin(), m.end());
     }
   }
 }
@@ -507,6 +481,23 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
 }
 
 }  // namespace
+
+std::vector<BlockPart> annual_detail::readBlockParts(const AnnualPass& p, std::size_t b0, std::size_t n) {
+  const std::size_t nh = p.y.stamps.size();
+  std::vector<BlockPart> parts;
+  for (GridYear& g : p.grids) {
+    const auto [lo, k] = overlap(g, b0, n);
+    if (k == 0) continue;
+    BlockPart part{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh)};
+    const int from = static_cast<int>(lo - g.first), count = static_cast<int>(k);
+    p.folder.guard([&] {
+      g.total->read(from, count, part.total.data());
+      g.directSun->read(from, count, part.direct.data());
+    });
+    parts.push_back(std::move(part));
+  }
+  return parts;
+}
 
 // The open (or reference) scene's year through openPass, its times and rays into t.
 void annual_detail::tracedOpenPass(const AnnualInputs& in, const YearJob& job, const AnnualPass& p, bool metricsNow,

@@ -37,9 +37,8 @@ void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObser
   const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size(), nq = traced.size();
   const ObservedStep step(observer, "window states: coefficients", 2 * sensors * nq);
   struct Slice {
-    GridYear* g;
-    std::size_t lo, k;
-    std::vector<float> ref, refDirect, total, direct;
+    BlockPart ref;                     // the reference year (every group in its first state)
+    std::vector<float> total, direct;  // the switched year, folded state by state
   };
   auto metrics = [&](const float* e, const float* d, std::size_t k) {
     return sensorAnnualMetrics(e, d, static_cast<int>(k), static_cast<int>(nh), p.y.occupied, p.th);
@@ -50,20 +49,11 @@ void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObser
   for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
     const std::size_t n = std::min(p.block, sensors - b0);
     std::vector<Slice> slices;
-    for (GridYear& g : p.grids) {
-      // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
-      const auto part = overlap(g, b0, n);
-      const std::size_t lo = part.first, k = part.second;
-      if (k == 0) continue;
-      Slice sl{&g, lo, k, std::vector<float>(k * nh), std::vector<float>(k * nh), {}, {}};
-      const int from = static_cast<int>(lo - g.first);
-      p.folder.guard([&] {
-        g.total->read(from, static_cast<int>(k), sl.ref.data());
-        g.directSun->read(from, static_cast<int>(k), sl.refDirect.data());
-      });
-      sl.total = sl.ref;
-      sl.direct = sl.refDirect;
-      addTo(g.stateSensors[0], metrics(sl.ref.data(), sl.refDirect.data(), k));
+    for (BlockPart& part : readBlockParts(p, b0, n)) {
+      addTo(part.g->stateSensors[0], metrics(part.total.data(), part.direct.data(), part.k));
+      Slice sl{std::move(part), {}, {}};
+      sl.total = sl.ref.total;
+      sl.direct = sl.ref.direct;
       slices.push_back(std::move(sl));
     }
     for (std::size_t q = 0; q < nq; ++q) {
@@ -71,29 +61,29 @@ void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObser
       const AnnualIlluminance year = st.tracer->block(b0, n, 2 * (b0 * nq + q * n), step);
       checkFinite(year.total, "the hourly illuminance of a window state", b0 * nh);
       for (Slice& sl : slices) {
-        GridYear& g = *sl.g;
-        const float* e = year.total.data() + (sl.lo - b0) * nh;
-        const float* d = year.directSun.data() + (sl.lo - b0) * nh;
+        GridYear& g = *sl.ref.g;
+        const float* e = year.total.data() + (sl.ref.lo - b0) * nh;
+        const float* d = year.directSun.data() + (sl.ref.lo - b0) * nh;
         const std::vector<uint8_t>& state = g.stateOf[static_cast<std::size_t>(st.group)];
-        foldWindowState(e, sl.ref.data(), state, st.state, g.switched, sl.k, sl.total.data());
-        foldWindowState(d, sl.refDirect.data(), state, st.state, g.switched, sl.k, sl.direct.data());
+        foldWindowState(e, sl.ref.total.data(), state, st.state, g.switched, sl.ref.k, sl.total.data());
+        foldWindowState(d, sl.ref.direct.data(), state, st.state, g.switched, sl.ref.k, sl.direct.data());
         p.folder.guard([&] {
-          g.stateTotal[q]->append(e, static_cast<int>(sl.k));
-          g.stateDirect[q]->append(d, static_cast<int>(sl.k));
+          g.stateTotal[q]->append(e, static_cast<int>(sl.ref.k));
+          g.stateDirect[q]->append(d, static_cast<int>(sl.ref.k));
         });
-        addTo(g.stateSensors[q + 1], metrics(e, d, sl.k));
+        addTo(g.stateSensors[q + 1], metrics(e, d, sl.ref.k));
       }
     }
     for (Slice& sl : slices) {
-      GridYear& g = *sl.g;
+      GridYear& g = *sl.ref.g;
       p.folder.guard([&] {
-        g.switchedTotal->append(sl.total.data(), static_cast<int>(sl.k));
-        g.switchedDirect->append(sl.direct.data(), static_cast<int>(sl.k));
+        g.switchedTotal->append(sl.total.data(), static_cast<int>(sl.ref.k));
+        g.switchedDirect->append(sl.direct.data(), static_cast<int>(sl.ref.k));
       });
       const std::size_t chosen = g.first + static_cast<std::size_t>(g.chosenSensor);
-      if (chosen >= sl.lo && chosen < sl.lo + sl.k)
-        g.chosenSensorLux.assign(sl.total.begin() + (chosen - sl.lo) * nh, sl.total.begin() + (chosen - sl.lo + 1) * nh);
-      addTo(g.sensors, metrics(sl.total.data(), sl.direct.data(), sl.k));
+      if (chosen >= sl.ref.lo && chosen < sl.ref.lo + sl.ref.k)
+        g.chosenSensorLux.assign(sl.total.begin() + (chosen - sl.ref.lo) * nh, sl.total.begin() + (chosen - sl.ref.lo + 1) * nh);
+      addTo(g.sensors, metrics(sl.total.data(), sl.direct.data(), sl.ref.k));
     }
   }
 }

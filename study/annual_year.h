@@ -201,6 +201,16 @@ struct AnnualPass {
   ComplianceTallies* compliance = nullptr;  // [[compliance]]: what the entries need of the year
 };
 
+// A grid's part of a block of sensors, [lo, lo + k) in the study's list, with the year the first
+// pass wrote for it (blinds open, or the reference state) read back from the grid's files.
+struct BlockPart {
+  GridYear* g = nullptr;
+  std::size_t lo = 0, k = 0;
+  std::vector<float> total, direct;  // k × hours each: all light, direct sun
+};
+// The parts of block [b0, b0 + n), one per grid it reaches, in grid order.
+std::vector<BlockPart> readBlockParts(const AnnualPass& p, std::size_t b0, std::size_t n);
+
 // The open (or reference) scene's year through the open pass, its times and rays into t.
 void tracedOpenPass(const AnnualInputs& in, const YearJob& job, const AnnualPass& p, bool metricsNow, AnnualTraces& t,
                     StudyObserver& observer);
