@@ -35,6 +35,24 @@ const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const Ra
 
 std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
   if (name == ".") return {};
+  // A file of Radiance's library its generators name (surf.cal, ...): a copy found where files
+  // are looked up is read; otherwise candela's own.
+  if (const std::optional<std::string_view> text = cal::libraryFile(name)) {
+    bool found = true;
+    try {
+      findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "function file", root_);
+    } catch (const InputError&) {
+      found = false;
+    }
+    if (!found) {
+      const std::string used = name + " (built in)";
+      if (read_.emplace("function file:" + used, Read{used, {}, nullptr, nullptr, nullptr}).second) {
+        program_->addText(*text, used);
+        files_.push_back(used);
+      }
+      return used;
+    }
+  }
   return once(name, p, folder, "function file", [this](const std::filesystem::path& path, Read&) {
            program_->addText(readInputFile(path, "function file"), path.string());
          }).path;
@@ -483,6 +501,10 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
   for (int k = 0; k < sp.channels; ++k) {
     const std::string label = "`pattern" + std::to_string(index) + "." + std::to_string(k);
     const std::string& expression = p.strings[firstFunction + static_cast<size_t>(k)];
+    if (const std::optional<cal::Symbol> known = files.compiled(expression)) {
+      sp.functions[static_cast<size_t>(k)] = *known;
+      continue;
+    }
     try {
       sp.functions[static_cast<size_t>(k)] = files.program()->addExpression(expression, label, p.loc);
     } catch (const InputError& e) {
@@ -497,6 +519,7 @@ ScenePattern readFunctionPattern(const RadPrimitive& p, FunctionFiles& files, co
     // A plain name is checked as itself (its messages name it); an expression as a whole.
     if (cal::isName(expression)) files.program()->check(expression, -1, p.loc);
     files.program()->check(label, -1, p.loc, expression);
+    files.remember(expression, sp.functions[static_cast<size_t>(k)]);
   }
   return sp;
 }

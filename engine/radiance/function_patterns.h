@@ -53,6 +53,14 @@ class FunctionFiles {
                                                             const std::filesystem::path& folder);
   // A window system's scattering (LBNL BSDF XML: engine/radiance/bsdf_xml.h) named by p, read once.
   std::shared_ptr<const Bsdf> bsdf(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder);
+  // An expression of a pattern's function compiled and checked before (the same text means the
+  // same names: a later definition replaces a name's meaning for every user alike), so that
+  // thousands of patterns of one expression (gensurf -s's cells) share it; nullopt the first time.
+  std::optional<cal::Symbol> compiled(const std::string& expression) const {
+    const auto it = compiled_.find(expression);
+    return it == compiled_.end() ? std::nullopt : std::optional<cal::Symbol>(it->second);
+  }
+  void remember(const std::string& expression, cal::Symbol symbol) { compiled_.emplace(expression, symbol); }
   // A model's root, looked in last for every file (engine/radiance/file_lookup.h).
   void setRoot(const std::filesystem::path& root) { root_ = root; }
   // The files read, in order (for summary.json).
@@ -77,6 +85,7 @@ class FunctionFiles {
   std::shared_ptr<cal::Program> program_;
   std::filesystem::path root_;
   std::map<std::string, Read> read_;  // by role and canonical path
+  std::map<std::string, cal::Symbol> compiled_;  // functions' expressions compiled (compiled)
   std::vector<std::string> files_;
 };
 

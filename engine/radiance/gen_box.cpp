@@ -1,4 +1,4 @@
-// genbox(1), interpreted: `genbox mat name xsiz ysiz zsiz [-i] [-b bev | -r rad [-n nseg]]`.
+// genbox(1), interpreted: `genbox mat name xsiz ysiz zsiz [-i] [-b bev | -r rad [-n nseg] [-s]]`.
 // The faces, their names, vertex order and the rounded and bevelled corners are those Radiance's
 // src/gen/genbox.c writes (doc/man/man1/genbox.1); the code is candela's.
 #include "base/math.h"
@@ -17,6 +17,7 @@ namespace {
 constexpr const char* kCornerLetters = "0123456789._ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 // objutil.c's addFace: a face of area at most FTINY² (FTINY 1e-6, fvect.h) is not written.
 constexpr double kDegenerateArea = 1e-12;
+constexpr double kTiny = 1e-6;  // fvect.h's FTINY
 
 // A corner code (genbox.c): bit i (i = 0, 1, 2) puts coordinate i on the far side, bit i + 3 moves
 // it inwards by the bevel; -i swaps near and far, which turns every face inside out.
@@ -89,33 +90,142 @@ constexpr std::array<std::array<int, 4>, 6> kMajorFaces = {
 
 // Rounded edges and corners as polygons (genbox.c with -i or -n 3 and more: its .OBJ scene,
 // written by objutil's toRadiance): faces named name.1, name.2, ... in the reverse of the order
-// they were made, degenerate ones left out.
+// they were made, degenerate ones left out. With -s the faces keep their vertices' normals (the
+// strips' and the corners' directions from the edge or corner, the inset faces' own) and, as
+// convertobj.c writes them, each face whose normals do not all agree with it (cosine 0.999995)
+// is split into triangles by polyTriangulate's ear order (triangulate.c) and each triangle
+// written first, modified by its own texfunc `T-nor` of tmesh.cal: its normals interpolated by
+// barycentric coordinates (tmesh.c's comp_baryc and fput_baryc); a face whose normals are all
+// reversed turns round and is written flat with the rest.
 class FacetedBox {
  public:
-  FacetedBox(const GenBox& box, int level) : box_(box), level_(level) {}
+  FacetedBox(const GenBox& box, int level, bool smooth) : box_(box), level_(level), smooth_(smooth) {}
 
   std::vector<RadPrimitive> make() {
-    for (const auto& f : kMinorFaces) add({box_.corner(f[0]), box_.corner(f[1]), box_.corner(f[2]), box_.corner(f[3])});
+    for (const auto& f : kMinorFaces) {
+      std::vector<Vec3> p{box_.corner(f[0]), box_.corner(f[1]), box_.corner(f[2]), box_.corner(f[3])};
+      const Vec3 n = glm::normalize(glm::cross(p[2] - p[1], p[3] - p[2]));  // genbox.c's onormal
+      add(std::move(p), {n, n, n, n});
+    }
     for (const auto& e : kEdges) edge(e[0], e[1]);
     for (int v = 070; v <= 077; ++v) ball(v);
     std::vector<RadPrimitive> out;
     int n = 0;
-    for (auto it = faces_.rbegin(); it != faces_.rend(); ++it) {
-      if (area(*it) <= kDegenerateArea) continue;
+    std::vector<bool> smoothed(faces_.size(), false);
+    if (smooth_) {
+      std::vector<Face> triangles;  // the smoothed faces' triangles, newest first (objtriangulate.c)
+      std::vector<const Face*> kept;  // the smoothed triangles made as such, in the order made
+      for (size_t i = 0; i < faces_.size(); ++i) {
+        if (area(faces_[i].p) <= kDegenerateArea || !smoothable(faces_[i])) continue;
+        smoothed[i] = true;
+        if (faces_[i].p.size() == 3) kept.push_back(&faces_[i]);
+        else triangulate(faces_[i], triangles);
+      }
+      for (auto it = triangles.rbegin(); it != triangles.rend(); ++it) smoothTriangle(*it, n, out);
+      for (const Face* f : kept) smoothTriangle(*f, n, out);
+    }
+    for (size_t i = faces_.size(); i-- > 0;) {
+      if (smoothed[i] || area(faces_[i].p) <= kDegenerateArea) continue;
       std::vector<double> r;
-      for (const Vec3& p : *it) GenBox::append(r, p);
+      for (const Vec3& p : faces_[i].p) GenBox::append(r, p);
       out.push_back(box_.primitive("polygon", std::to_string(++n), std::move(r)));
     }
     return out;
   }
 
  private:
-  void add(std::vector<Vec3> f) { faces_.push_back(std::move(f)); }
+  struct Face {
+    std::vector<Vec3> p, n;  // vertices and their unit normals
+  };
 
-  static double area(const std::vector<Vec3>& f) {
+  void add(std::vector<Vec3> p, std::vector<Vec3> n) { faces_.push_back(Face{std::move(p), std::move(n)}); }
+
+  static Vec3 newell(const std::vector<Vec3>& f) {
     Vec3 n(0.0);
     for (size_t i = 2; i < f.size(); ++i) n += glm::cross(f[i - 1] - f[0], f[i] - f[0]);
-    return 0.5 * glm::length(n);
+    return n;
+  }
+  static double area(const std::vector<Vec3>& f) { return 0.5 * glm::length(newell(f)); }
+
+  // convertobj.c's checksmooth: whether face f is smoothed; a face whose normals are all reversed
+  // is turned round (its vertices in reverse order) and written flat.
+  static bool smoothable(Face& f) {
+    constexpr double kCosTol = 0.999995;  // tmesh.h's COSTOL
+    const Vec3 fn = glm::normalize(newell(f.p));
+    size_t reversed = 0;
+    for (const Vec3& vn : f.n) {
+      const double d = glm::dot(vn, fn);
+      if (d >= kCosTol) continue;
+      if (d > -kCosTol) return true;
+      ++reversed;
+    }
+    if (reversed == f.p.size()) {
+      std::reverse(f.p.begin(), f.p.end());
+      std::reverse(f.n.begin(), f.n.end());
+    }
+    return false;
+  }
+
+  // objtriangulate.c's mktriangles for a convex face: the vertices projected past the normal's
+  // dominant axis, taken counter-clockwise, ears cut from the last vertex on, each triangle kept
+  // in the face's own orientation; appended in the order made.
+  static void triangulate(const Face& f, std::vector<Face>& out) {
+    const Vec3 fn = newell(f.p);
+    int ax = fn.y * fn.y > fn.x * fn.x ? 1 : 0;
+    if (fn.z * fn.z > fn[ax] * fn[ax]) ax = 2;
+    const int x = (ax + 1) % 3, y = (ax + 2) % 3;
+    const int count = static_cast<int>(f.p.size());
+    double a2 = 0.0;
+    for (int p = count - 1, q = 0; q < count; p = q++) a2 += f.p[p][x] * f.p[q][y] - f.p[q][x] * f.p[p][y];
+    const bool rev = a2 < 0.0;
+    std::vector<int> v(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) v[static_cast<size_t>(i)] = rev ? count - 1 - i : i;
+    int left = count, at = count - 1;
+    while (left > 2) {
+      const int u = at >= left ? 0 : at;
+      at = u + 1 >= left ? 0 : u + 1;
+      const int w = at + 1 >= left ? 0 : at + 1;
+      int a = v[static_cast<size_t>(u)], b = v[static_cast<size_t>(at)], c = v[static_cast<size_t>(w)];
+      if (rev) std::swap(a, c);
+      out.push_back(Face{{f.p[static_cast<size_t>(a)], f.p[static_cast<size_t>(b)], f.p[static_cast<size_t>(c)]},
+                         {f.n[static_cast<size_t>(a)], f.n[static_cast<size_t>(b)], f.n[static_cast<size_t>(c)]}});
+      v.erase(v.begin() + at);
+      --left;
+    }
+  }
+
+  // convertobj.c's trismooth: the texture T-nor of tmesh.cal (the normals as functions of the
+  // point's coordinates past the dominant axis, through the barycentric coordinates) and the
+  // triangle of it, numbered ++k; a triangle without barycentric coordinates is left out.
+  void smoothTriangle(const Face& t, int& k, std::vector<RadPrimitive>& out) const {
+    const Vec3 fn = glm::cross(t.p[0] - t.p[1], t.p[2] - t.p[1]);
+    int ax = fn.y * fn.y > fn.x * fn.x ? 1 : 0;
+    if (fn.z * fn.z > fn[ax] * fn[ax]) ax = 2;
+    const int x = (ax + 1) % 3, y = (ax + 2) % 3;
+    double tm[2][3];
+    for (int i = 0; i < 2; ++i) {  // the weight of vertex i as a x + b y + c (tmesh.c's comp_baryc)
+      const Vec3& v1 = t.p[static_cast<size_t>(i)];
+      const Vec3& v2 = t.p[static_cast<size_t>((i + 1) % 3)];
+      const Vec3& v3 = t.p[static_cast<size_t>((i + 2) % 3)];
+      const double ab0 = v1[x] - v2[x], cb0 = v3[x] - v2[x], ab1 = v1[y] - v2[y], cb1 = v3[y] - v2[y];
+      double d = cb0 * cb0 + cb1 * cb1;
+      if (d <= kTiny * kTiny) return;
+      d = (cb0 * ab0 + cb1 * ab1) / d;
+      double a0 = ab0 - cb0 * d, a1 = ab1 - cb1 * d;
+      d = a0 * a0 + a1 * a1;
+      if (d <= kTiny * kTiny) return;
+      a0 /= d, a1 /= d;
+      tm[i][0] = a0, tm[i][1] = a1, tm[i][2] = -(v2[x] * a0 + v2[y] * a1);
+    }
+    std::vector<double> r{static_cast<double>(ax)};
+    for (int c = 0; c < 3; ++c) {  // normal component c = n0 w0 + n1 w1 + n2 (1 - w0 - w1)
+      const double a = t.n[0][c] - t.n[2][c], b = t.n[1][c] - t.n[2][c];
+      r.insert(r.end(), {tm[0][0] * a + tm[1][0] * b, tm[0][1] * a + tm[1][1] * b, tm[0][2] * a + tm[1][2] * b + t.n[2][c]});
+    }
+    out.push_back(generatedPrimitive(box_.mat, "texfunc", "T-nor", box_.loc, {"dx", "dy", "dz", "tmesh.cal"}, std::move(r)));
+    std::vector<double> v;
+    for (const Vec3& p : t.p) GenBox::append(v, p);
+    out.push_back(generatedPrimitive("T-nor", "polygon", box_.name + "." + std::to_string(++k), box_.loc, {}, std::move(v)));
   }
 
   // A quarter cylinder of 2^level strips about the edge from v0 to v1, bending from the face
@@ -132,12 +242,15 @@ class FacetedBox {
     }
     const int n = 1 << level_;
     const double step = 0.5 * kPi / n;
-    Vec3 prev0 = p0 + a0, prev1 = p1 + a0;
+    const double sign = box_.rev ? -1.0 : 1.0;  // genbox.c's nsgn: -i turns the normals in
+    Vec3 prev0 = p0 + a0, prev1 = p1 + a0, prevN = glm::normalize(a0) * sign;
     for (int i = 1; i <= n; ++i) {
       const Vec3 off = std::cos(step * i) * a0 + std::sin(step * i) * a1;
-      add({prev0, prev1, p1 + off, p0 + off});
+      const Vec3 offN = glm::normalize(off) * sign;
+      add({prev0, prev1, p1 + off, p0 + off}, {prevN, prevN, offN, offN});
       prev0 = p0 + off;
       prev1 = p1 + off;
+      prevN = offN;
     }
   }
 
@@ -153,8 +266,8 @@ class FacetedBox {
 
   void subdivide(const Vec3& o, const Vec3& c0, const Vec3& c1, const Vec3& c2, int level) {
     if (level <= 0) {
-      const double b = box_.bevel;
-      add({o + c0 * b, o + c1 * b, o + c2 * b});
+      const double b = box_.bevel, sign = box_.rev ? -1.0 : 1.0;
+      add({o + c0 * b, o + c1 * b, o + c2 * b}, {c0 * sign, c1 * sign, c2 * sign});
       return;
     }
     const Vec3 m01 = glm::normalize(c0 + c1), m12 = glm::normalize(c1 + c2), m20 = glm::normalize(c2 + c0);
@@ -166,7 +279,8 @@ class FacetedBox {
 
   const GenBox& box_;
   int level_;
-  std::vector<std::vector<Vec3>> faces_;
+  bool smooth_;
+  std::vector<Face> faces_;
 };
 
 double number(const RadCommand& cmd, size_t i, const std::string& what) {
@@ -180,7 +294,7 @@ double number(const RadCommand& cmd, size_t i, const std::string& what) {
   return v;
 }
 
-constexpr const char* kUsage = " (genbox mat name xsiz ysiz zsiz [-i] [-b bevel | -r radius [-n nseg]])";
+constexpr const char* kUsage = " (genbox mat name xsiz ysiz zsiz [-i] [-b bevel | -r radius [-n nseg] [-s]])";
 
 }  // namespace
 
@@ -230,13 +344,11 @@ std::vector<RadPrimitive> expandGenbox(const RadCommand& cmd, const RadExpandCon
   std::vector<RadPrimitive> out;
   if (rounde > 1) {
     const double faces = 6.0 + 12.0 * std::ldexp(1.0, rounde) + 8.0 * std::ldexp(1.0, 2 * rounde);
-    if (faces > generatedPrimitivesAllowed(ctx))
+    if (faces * (smooth ? kSmoothedPolygonWeight : 1.0) > generatedPrimitivesAllowed(ctx))
       throw InputError(cmd.loc, "genbox: -n " + std::to_string(nsegs) + " makes " + std::to_string(long(faces)) +
-                                    " polygons, more than " + generatedLimitText(ctx));
-    if (smooth)
-      throw InputError(cmd.loc, "genbox: -s smooths the rounded edges with a Phong texfunc, which candela does not "
-                                "implement; drop -s");
-    return FacetedBox(box, rounde).make();
+                                    " polygons" + (smooth ? " (smoothed: each counts as " + std::to_string(static_cast<int>(kSmoothedPolygonWeight)) + ")" : "") + ", more than " +
+                                    generatedLimitText(ctx));
+    return FacetedBox(box, rounde, smooth).make();
   }
   if (box.bevel > 0.0)
     for (const auto& f : kMinorFaces) out.push_back(box.face({f[0], f[1], f[2], f[3]}));

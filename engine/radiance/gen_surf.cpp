@@ -6,8 +6,12 @@
 // (or all three when they name the same file) may name a data file of m+1 by n+1 values (or m by
 // n cell centres; triplets when all three), interpolated bilinearly. Primitives, names
 // (name.1, name.2, … in order) and the rules above are those of Radiance's src/gen/gensurf.c
-// (facts of its output); -s smooths the shading in Radiance with a texfunc, candela writes the
-// same surfaces unsmoothed (docs/engine.md); the code is candela's.
+// (facts of its output). With -s each point's normal is the cross product of its neighbours'
+// differences along s and t (the rows and columns one step past the ends evaluated for it), and
+// each cell whose four points allow it is modified by its own texfunc `Phong` of surf.cal
+// (`mat texfunc Phong`, then `Phong polygon ...`): the normals fitted as a u v + b u + c v + d
+// over the cell's points, u and v the two coordinates besides the normals' dominant axis
+// (docs/engine.md). The code is candela's.
 #include "base/input_file.h"
 #include "engine/radiance/file_lookup.h"
 #include "engine/radiance/gen.h"
@@ -20,11 +24,68 @@ namespace {
 
 constexpr double kTiny = 1e-6;  // gensurf.c's FTINY
 constexpr long kMaxSide = 1000000;
+const std::string kPhong = "Phong";  // the name of -s's texture of each cell
 
 struct Point {
   bool valid = false;
   Vec3 p{0.0};
+  Vec3 n{0.0};  // -s: the averaged normal (0 where it has none)
 };
+
+// -s: the normal at each point of row r1 from its neighbours in rows r0 and r2 and along the row
+// (central differences, one-sided at an invalid neighbour; none without a neighbour either way).
+// Rows hold n + 3 points, t from -1/n to 1 + 1/n; the normals of points 1..n+1 (t 0..1) are set.
+void rowNormals(const std::vector<Point>& r0, std::vector<Point>& r1, const std::vector<Point>& r2) {
+  for (size_t j = 1; j + 1 < r1.size(); ++j) {
+    Point& c = r1[j];
+    c.n = Vec3(0.0);
+    if (!c.valid) continue;
+    if (!r0[j].valid && !r2[j].valid) continue;
+    if (!r1[j - 1].valid && !r1[j + 1].valid) continue;
+    const Vec3 ds = !r0[j].valid ? r2[j].p - c.p : !r2[j].valid ? c.p - r0[j].p : r2[j].p - r0[j].p;
+    const Vec3 dt = !r1[j - 1].valid ? r1[j + 1].p - c.p : !r1[j + 1].valid ? c.p - r1[j - 1].p
+                                                                           : r1[j + 1].p - r1[j - 1].p;
+    const Vec3 n = glm::cross(ds, dt);
+    const double l = glm::length(n);
+    c.n = l > 0.0 ? n / l : Vec3(0.0);
+  }
+}
+
+// -s: the coefficients (rows: u v, u, v, 1) of the normals over a cell's four points, u and v the
+// coordinates after the dominant axis of their sum in cyclic order; the axis, or -1 where the four
+// points do not determine them (a pivot below gensurf.c's FTINY in the elimination).
+int normalFit(const Point* const pts[4], Vec3 coef[4]) {
+  const Vec3 sum = pts[0]->n + pts[1]->n + pts[2]->n + pts[3]->n;
+  int ax = std::abs(sum.x) > std::abs(sum.y) ? 0 : 1;
+  ax = std::abs(sum[ax]) > std::abs(sum.z) ? ax : 2;
+  const int u = (ax + 1) % 3, v = (ax + 2) % 3;
+  double a[4][8];  // [E | I], reduced to [I | E^-1]
+  for (int k = 0; k < 4; ++k) {
+    const Vec3& p = pts[k]->p;
+    const double row[4] = {p[u] * p[v], p[u], p[v], 1.0};
+    for (int c = 0; c < 4; ++c) a[k][c] = row[c], a[k][4 + c] = c == k ? 1.0 : 0.0;
+  }
+  for (int i = 0; i < 4; ++i) {
+    int pivot = -1;
+    double best = kTiny;
+    for (int k = i; k < 4; ++k)
+      if (std::abs(a[k][i]) > best) best = std::abs(a[k][i]), pivot = k;
+    if (pivot < 0) return -1;
+    if (pivot != i) std::swap(a[i], a[pivot]);
+    const double d = a[i][i];
+    for (double& x : a[i]) x /= d;
+    for (int k = 0; k < 4; ++k) {
+      if (k == i) continue;
+      const double f = a[k][i];
+      for (int c = 0; c < 8; ++c) a[k][c] -= a[i][c] * f;
+    }
+  }
+  for (int j = 0; j < 4; ++j) {
+    coef[j] = Vec3(0.0);
+    for (int k = 0; k < 4; ++k) coef[j] += a[j][4 + k] * pts[k]->n;
+  }
+  return ax;
+}
 
 // A data file's values in place of the functions (gensurf.c's loaddata and l_dataval).
 struct SurfaceData {
@@ -69,13 +130,15 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
     return v;
   };
   const long m = count(w[6], "m"), n = count(w[7], "n");
-  if (2.0 * static_cast<double>(m) * static_cast<double>(n) > generatedPrimitivesAllowed(ctx))
-    fail("m × n = " + std::to_string(m) + " × " + std::to_string(n) + " cells would make up to " +
-         std::to_string(2 * m * n) + " polygons, more than " + generatedLimitText(ctx));
   FunctionFiles files;
   cal::Program& program = *files.program();
-  bool smooth = false;  // written unsmoothed (above)
+  bool smooth = false;
   readFunctionOptions(cmd, ctx, 8, files, &smooth);
+  const double weight = smooth ? kSmoothedPolygonWeight : 1.0;
+  if (2.0 * static_cast<double>(m) * static_cast<double>(n) * weight > generatedPrimitivesAllowed(ctx))
+    fail("m × n = " + std::to_string(m) + " × " + std::to_string(n) + " cells would make up to " +
+         std::to_string(2 * m * n) + " polygons" + (smooth ? " (smoothed: each counts as " + std::to_string(static_cast<int>(kSmoothedPolygonWeight)) + ")" : "") + ", more than " +
+         generatedLimitText(ctx));
   // Data: z names a file (all three the same file: triplets).
   std::optional<SurfaceData> data;
   std::filesystem::path dataPath;
@@ -125,13 +188,15 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
   }
   cal::Evaluator eval(program);
   const cal::Symbol validF = checkValid ? program.find("valid") : -1;
+  // Row i (s = i/m) at t = j/n, j from 0 to n; with -s from -1 to n + 1 (at index j + 1).
+  const long first = smooth ? -1 : 0, last = smooth ? n + 1 : n;
   auto row = [&](long i, std::vector<Point>& out) {
-    out.assign(static_cast<size_t>(n + 1), Point{});
-    for (long j = 0; j <= n; ++j) {
+    out.assign(static_cast<size_t>(last - first + 1), Point{});
+    for (long j = first; j <= last; ++j) {
       const double st[] = {static_cast<double>(i) / static_cast<double>(m), static_cast<double>(j) / static_cast<double>(n)};
       eval.begin({});
       if (checkValid && !(eval.call(validF, st) > 0.0)) continue;
-      Point& pt = out[static_cast<size_t>(j)];
+      Point& pt = out[static_cast<size_t>(j - first)];
       for (int k = 0; k < 3; ++k) {
         double v;
         if (k < functions) {
@@ -150,10 +215,19 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
   };
   std::vector<RadPrimitive> out;
   long serial = 0;
-  auto polygon = [&](std::initializer_list<Vec3> vs) {
+  // A polygon of the material, or of the texture just written (smoothed).
+  auto polygon = [&](bool smoothed, std::initializer_list<Vec3> vs) {
     std::vector<double> reals;
     for (const Vec3& v : vs) reals.insert(reals.end(), {v.x, v.y, v.z});
-    out.push_back(generatedPrimitive(mat, "polygon", name + "." + std::to_string(++serial), cmd.loc, {}, std::move(reals)));
+    out.push_back(generatedPrimitive(smoothed ? kPhong : mat, "polygon", name + "." + std::to_string(++serial), cmd.loc, {}, std::move(reals)));
+  };
+  // -s: the texture of the polygon that follows, its perturbation the fitted normal less the
+  // polygon's own (face).
+  auto phong = [&](int axis, const Vec3 coef[4], const Vec3& face) {
+    std::vector<double> reals{static_cast<double>(axis)};
+    for (const Vec3& c : {coef[0], coef[1], coef[2], coef[3] - face}) reals.insert(reals.end(), {c.x, c.y, c.z});
+    out.push_back(generatedPrimitive(mat, "texfunc", kPhong, cmd.loc, {"surf_dx", "surf_dy", "surf_dz", "surf.cal"},
+                                     std::move(reals)));
   };
   // One cell: the triangles (p0, p1, p2) and (p2, p1, p3), or the quadrilateral p0 p1 p3 p2 when
   // their normals agree.
@@ -172,17 +246,44 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
       ok2 = l > 0.0;
       if (ok2) n2 /= l;
     }
-    if (ok1 && ok2 && glm::dot(n1, n2) >= 1.0 - kTiny * kTiny) return polygon({p0.p, p1.p, p3.p, p2.p});
-    if (ok1) polygon({p0.p, p1.p, p2.p});
-    if (ok2) polygon({p2.p, p1.p, p3.p});
+    if (!(ok1 || ok2)) return;
+    Vec3 coef[4];
+    const Point* const pts[4] = {&p0, &p1, &p2, &p3};
+    const int axis = smooth ? normalFit(pts, coef) : -1;
+    if (ok1 && ok2 && glm::dot(n1, n2) >= 1.0 - kTiny * kTiny) {
+      if (axis >= 0) phong(axis, coef, 0.5 * (n1 + n2));
+      return polygon(axis >= 0, {p0.p, p1.p, p3.p, p2.p});
+    }
+    if (ok1) {
+      if (axis >= 0) phong(axis, coef, n1);
+      polygon(axis >= 0, {p0.p, p1.p, p2.p});
+    }
+    if (ok2) {
+      if (axis >= 0) phong(axis, coef, n2);
+      polygon(axis >= 0, {p2.p, p1.p, p3.p});
+    }
   };
-  std::vector<Point> row0, row1;
+  // Rows i and i + 1 (row0, row1), and i + 2 (next) for the normals with -s.
+  std::vector<Point> row0, row1, next;
+  if (smooth) row(-1, row0);
   row(0, row1);
+  if (smooth) {
+    row(1, next);
+    rowNormals(row0, row1, next);
+  }
+  const size_t off = static_cast<size_t>(-first);
   for (long i = 0; i < m; ++i) {
-    row0.swap(row1);
-    row(i + 1, row1);
+    if (smooth) {
+      row0.swap(row1);  // row i
+      row1.swap(next);  // row i + 1
+      row(i + 2, next);
+      rowNormals(row0, row1, next);
+    } else {
+      row0.swap(row1);
+      row(i + 1, row1);
+    }
     for (long j = 0; j < n; ++j) {
-      const size_t a = static_cast<size_t>(j), b = static_cast<size_t>(j + 1);
+      const size_t a = static_cast<size_t>(j) + off, b = a + 1;
       bool orient = (j & 1) != 0;
       if (!(row0[a].valid && row1[b].valid)) orient = true;
       else if (!(row1[a].valid && row0[b].valid)) orient = false;

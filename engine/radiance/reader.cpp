@@ -273,14 +273,18 @@ class SceneReader::Builder {
     std::string unreadable;  // why a function pattern could not be read (--patterns base)
     if (!implementedPattern(p) && isFunctionPattern(p)) {
       refuseIfDeferred(p.modifier, userOf(p));
-      if (p.modifier != "void" && !patterns_.count(p.modifier))
-        fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not a pattern defined before use");
+      // Radiance's other order, `mat texfunc t` then `t polygon ...` (gensurf -s, obj2rad's
+      // smoothed triangles): the pattern stands for the material it modifies, patterned.
+      const auto over = materials_.find(p.modifier);
+      if (p.modifier != "void" && !patterns_.count(p.modifier) && over == materials_.end())
+        fail(p, "modifier '" + p.modifier + "' of " + p.type + " '" + p.name + "' is not a pattern or material defined before use");
       try {
         const int index = static_cast<int>(scene_.patterns.size());
         if (isMixture(p)) return addMixture(p, index);
         scene_.patterns.push_back(readFunctionPattern(p, functionFiles_, folderOf(p), index, patternAlong(p.modifier)));
         scene_.functions = functionFiles_.program();
         scene_.functionFiles = functionFiles_.files();
+        if (over != materials_.end()) return addPatternedMaterial(p, over->second, index);
         patterns_[p.name] = PatternEntry{index, p.modifier};
         materials_.erase(p.name);
         return;
@@ -336,6 +340,39 @@ class SceneReader::Builder {
                 p.loc});
     patterns_[p.name] = PatternEntry{-1, base};
     materials_.erase(p.name);
+  }
+
+  // A pattern modifying a material (`mat texfunc t`): t names a copy of the material with the
+  // pattern (index) first along its chain, an object of its own as an alias's copy.
+  void addPatternedMaterial(const Primitive& p, int material, int index) {
+    bool used = false;
+    materials_[p.name] = withPattern(p, material, index, used, 0);
+    patterns_.erase(p.name);
+  }
+  // The copy of `material` with pattern `index` in front of its own patterns (the pattern itself
+  // the first time, `used` then set; a copy of it after); of a mixture, the mixture of such copies
+  // (Radiance applies the texture before the mixture chooses: genrev -s over a mixfunc, Radiance's
+  // torus.rad).
+  int withPattern(const Primitive& p, int material, int index, bool& used, int depth) {
+    Material m = scene_.materials[static_cast<size_t>(material)];
+    if (m.type == MaterialType::kMixture) {
+      if (depth > 16) fail(p, p.type + " '" + p.name + "' modifies mixtures of mixtures more than 16 deep");
+      if (m.foreground >= 0) m.foreground = withPattern(p, m.foreground, index, used, depth + 1);
+      if (m.background >= 0) m.background = withPattern(p, m.background, index, used, depth + 1);
+    } else if (!used) {
+      scene_.patterns[static_cast<size_t>(index)].next = m.pattern;
+      m.pattern = index;
+      used = true;
+    } else {
+      ScenePattern sp = scene_.patterns[static_cast<size_t>(index)];
+      sp.next = m.pattern;
+      m.pattern = static_cast<int>(scene_.patterns.size());
+      scene_.patterns.push_back(std::move(sp));
+    }
+    m.name = p.name;
+    m.loc = p.loc;
+    m.clipBit = -1;
+    return static_cast<int>(scene_.addMaterial(std::move(m)));
   }
 
   // A mixfunc: a material of its own (surfaces name it), mixing two materials defined before (or

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -72,6 +73,11 @@ class Program {
  private:
   std::unique_ptr<Impl> impl_;
 };
+
+// The text of a function file Radiance's generators name and a Radiance installation keeps in its
+// library (surf.cal, rev.cal, tmesh.cal), for when the file is not found where files are looked
+// up; nullopt for any other name.
+std::optional<std::string_view> libraryFile(std::string_view name);
 
 // Whether `text` is a plain name of the language (a letter or '`', then letters, digits, '_', '.'
 // and '`'), as the parser reads names.

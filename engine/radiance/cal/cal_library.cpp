@@ -127,7 +127,59 @@ Idy = Ldy(-Dx, -Dy, -Dz);
 Idz = RdotP;
 )cal";
 
+// The function files Radiance's generators name in what they write (gensurf -s, genrev -s, and
+// the smoothed triangles of genbox -s and obj2rad), which a Radiance installation keeps in its
+// library folder: their names and what they compute (the shading normal by Phong interpolation)
+// are facts of that output; written here for candela.
+struct LibraryFile {
+  const char* name;
+  const char* text;
+};
+constexpr LibraryFile kLibraryFiles[] = {
+    // A1 the dominant axis (0, 1, 2: x, y, z); the perturbation is M [u v, u, v, 1], u and v the
+    // point's two other coordinates in cyclic order, M's columns A2..A4, A5..A7, A8..A10, A11..A13.
+    {"surf.cal", R"cal(
+surf_u = select(arg(1) + 1, Py, Pz, Px);
+surf_v = select(arg(1) + 1, Pz, Px, Py);
+surf_dx = surf_u * surf_v * arg(2) + surf_u * arg(5) + surf_v * arg(8) + arg(11);
+surf_dy = surf_u * surf_v * arg(3) + surf_u * arg(6) + surf_v * arg(9) + arg(12);
+surf_dz = surf_u * surf_v * arg(4) + surf_u * arg(7) + surf_v * arg(10) + arg(13);
+)cal"},
+    // About the z axis: the radial part A3 r + A4 along the point's radial direction, the axial
+    // part A1 z + A2.
+    {"rev.cal", R"cal(
+rev_rad = sqrt(Px * Px + Py * Py);
+rev_dr = A3 * rev_rad + A4;
+rev_dx = rev_dr * Px / rev_rad;
+rev_dy = rev_dr * Py / rev_rad;
+rev_dz = A1 * Pz + A2;
+)cal"},
+    // A triangle's normals by barycentric interpolation: A1 the dominant axis, then for each world
+    // component a row (a, b, c) of a u + b v + c, u and v as in surf.cal; the perturbation turns
+    // the normal to the interpolated one. u, v: the first two rows' values modulo 1 (tiled
+    // texture coordinates, for patterns that use them).
+    {"tmesh.cal", R"cal(
+bu = select(arg(1) + 1, Py, Pz, Px);
+bv = select(arg(1) + 1, Pz, Px, Py);
+v1 = arg(2) * bu + arg(3) * bv + arg(4);
+v2 = arg(5) * bu + arg(6) * bv + arg(7);
+v3 = arg(8) * bu + arg(9) * bv + arg(10);
+nf = 1 / sqrt(v1 * v1 + v2 * v2 + v3 * v3);
+dx = v1 * nf - Nx;
+dy = v2 * nf - Ny;
+dz = v3 * nf - Nz;
+u = frac(v1);
+v = frac(v2);
+)cal"},
+};
+
 }  // namespace
+
+std::optional<std::string_view> libraryFile(std::string_view name) {
+  for (const LibraryFile& f : kLibraryFiles)
+    if (name == f.name) return std::string_view(f.text);
+  return std::nullopt;
+}
 
 int nativeArity(Native n) {
   for (const NativeName& e : kNatives)

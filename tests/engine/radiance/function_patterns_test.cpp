@@ -205,6 +205,51 @@ TEST(FunctionPatterns, TexturesTurnTheShadingNormal) {
              std::cos(a - kPi / 4.0), "texdata (1, 0, 0)");
 }
 
+// Radiance's other order, a pattern modified by the material (`m texfunc t`, then surfaces of t:
+// what gensurf -s and obj2rad write): the surface has the material with the pattern, as in the
+// usual order. The floor of the test above, its normal turned by (1, 0, 0): cos 5°.
+TEST(FunctionPatterns, APatternOfAMaterialStandsForThePatternedMaterial) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "pattern_of_material");
+  const double a = 40.0 * kPi / 180.0;
+  const std::string sun = "void light s 0 0 3 1e4 1e4 1e4\ns source sun 0 0 4 " + std::to_string(std::sin(a)) +
+                          " 0 " + std::to_string(std::cos(a)) + " 0.5\n";
+  const double sinA = std::sin(0.25 * kPi / 180.0);
+  const double en = 1e4 * kLumensPerWatt * kPi * sinA * sinA;
+  // The brightness 0.5 after the texture, both over the plastic: 0.5 · 0.5 E_n cos 5°.
+  const Scene sc = readIn(dir, sun + "void plastic p 0 0 5 .5 .5 .5 0 0\np brightfunc half 2 .5 . 0 0\n"
+                                     "half texfunc f 4 1 0 0 . 0 0\n" + kFloor);
+  TraceSettings s;
+  s.seed = 4;
+  s.hemisphereSamples = 1024;
+  s.maxBounces = 1;
+  const IrradianceEstimate e = estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  const double want = 0.25 * en * std::cos(a - kPi / 4.0);
+  EXPECT_NEAR(e.illuminanceLux(), want, 4.0 * e.standardErrorLux());
+  EXPECT_LT(e.standardErrorLux(), 0.01 * want);
+  // Over a mixture (Radiance's torus.rad: genrev -s over a mixfunc) the texture turns the normal
+  // of both materials: 0.3 of reflectance 0.4 and 0.7 of 0.6, (0.12 + 0.42) E_n cos 5°.
+  const Scene mixed = readIn(dir, sun + "void plastic a 0 0 5 .4 .4 .4 0 0\nvoid plastic b 0 0 5 .6 .6 .6 0 0\n"
+                                        "void mixfunc mx 4 a b .3 . 0 0\nmx texfunc f 4 1 0 0 . 0 0\n" + kFloor);
+  const IrradianceEstimate m = estimateIrradiance(Tracer(mixed), Vec3(0.3, 0.2, 2.0), Response::planar(Vec3(0, 0, -1)), 0, s);
+  const double wantMixed = 0.54 * en * std::cos(a - kPi / 4.0);
+  EXPECT_NEAR(m.illuminanceLux(), wantMixed, 4.0 * m.standardErrorLux());
+  EXPECT_LT(m.standardErrorLux(), 0.01 * wantMixed);
+}
+
+// The function files Radiance's generators name (surf.cal, rev.cal, tmesh.cal) are built in,
+// used where no copy is found where files are looked up; a copy found there is read instead.
+TEST(FunctionPatterns, GeneratorsLibraryFilesAreBuiltInUnlessFound) {
+  const fs::path dir = test_support::scratchDir("function_patterns", "library_files");
+  const std::string text = "void plastic p 0 0 5 .5 .5 .5 0 0\np texfunc t 4 rev_dx rev_dy rev_dz rev.cal 0 4 0 0 0 1\n"
+                           "t polygon x 0 0 9 0 0 0 1 0 0 0 1 0\n";
+  EXPECT_EQ(readIn(dir, text).functionFiles, (std::vector<std::string>{"rev.cal (built in)"}));
+  std::ofstream(dir / "rev.cal") << "rev_dx = 0; rev_dy = 0; rev_dz = 0;\n";
+  const std::vector<std::string> files = readIn(dir, text).functionFiles;
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(fs::path(files[0]).filename(), "rev.cal");
+  EXPECT_EQ(fs::path(files[0]).parent_path(), dir);
+}
+
 // Shadow rays through a mixture of glass and void blend what each lets through.
 TEST(FunctionPatterns, ShadowRaysThroughAMixtureBlendItsMaterials) {
   const fs::path dir = test_support::scratchDir("function_patterns", "mixture_glass");

@@ -4,8 +4,10 @@
 #include "base/input_file.h"
 #include "engine/radiance/gen.h"
 #include "engine/radiance/generators.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/radiance/reader.h"
 #include "engine/scene.h"
+#include "engine/shapes.h"
 #include "tests/support/peer_suite.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +71,30 @@ std::string errorOf(const std::function<void()>& f) {
     return e.what();
   }
   return "(no error)";
+}
+
+// -s: a generator's output read into a scene after a plastic `m`.
+Scene smoothScene(const std::string& command) {
+  Scene sc;
+  SceneReader(sc).readText("void plastic m 0 0 5 .5 .5 .5 0 0\n" + command + "\n", "x.rad", genDir());
+  return sc;
+}
+
+// The shading normal of surface `shape` at point x on it, met from its front: the material as
+// the hit sees it (patterned, engine/materials/pattern_hook.h) turning the geometric normal.
+Vec3 shadingNormalAt(const Scene& sc, uint32_t shape, const Vec3& x) {
+  const Shape& s = sc.shapes[shape];
+  const Vec3 ng = shapeNormal(s, x);
+  PatternEvaluator eval(sc);
+  Material copy;
+  const Material& m = patterned(sc, sc.materials[s.material], PatternPoint{x, -ng, ng, 1.0}, eval, copy);
+  return shadingNormal(m, ng, true);
+}
+
+// A polygon's or triangle's vertices.
+std::vector<Vec3> verticesOf(const Scene& sc, const Shape& s) {
+  if (s.type == ShapeType::kTriangle) return {s.a, s.a + s.b, s.a + s.c};
+  return {sc.vertices.points.begin() + s.firstVertex, sc.vertices.points.begin() + s.firstVertex + s.vertexCount};
 }
 
 // The message of running `command` at line 3 of x.rad; checks the location it names.
@@ -591,6 +617,39 @@ TEST(Genbox, FacetedRoundedBoxLiesOnTheRoundedSurface) {
   EXPECT_EQ(run("!genbox grey b 2 3 4 -r 0.25 -i").size(), 8582u);
 }
 
+// -r with -n and -s (convertobj.c's smoothed triangles, tmesh.cal built in): the rounded
+// parts are triangles, each after its texture; at each corner of each triangle the shading
+// normal is the rounded surface's (away from the inner box, towards it with -i); the inset
+// faces stay flat polygons. Names and order are genbox's (b.1 … after the smoothed triangles).
+TEST(Genbox, SmoothedRoundingTakesTheRoundedSurfacesNormalsAtTheVertices) {
+  const double r = 0.25;
+  const Vec3 lo(r), hi(2 - r, 3 - r, 4 - r);
+  for (const bool inward : {false, true}) {
+    const std::string cmd = std::string("!genbox m b 2 3 4 -r 0.25 -n 4 -s") + (inward ? " -i" : "");
+    const auto ps = run(cmd);
+    // 12·4 strips in two triangles each and 8·16 corner triangles, each after its texfunc, then
+    // the 6 inset faces.
+    ASSERT_EQ(ps.size(), 2u * (12 * 4 * 2 + 8 * 16) + 6u);
+    EXPECT_EQ(ps[0].type, "texfunc");
+    EXPECT_EQ(ps[1].modifier, "T-nor");
+    EXPECT_EQ(ps[1].name, "b.1");
+    EXPECT_EQ(ps.back().modifier, "m");
+    EXPECT_EQ(ps.back().name, "b." + std::to_string(12 * 4 * 2 + 8 * 16 + 6));
+    const Scene sc = smoothScene(cmd);
+    EXPECT_EQ(sc.functionFiles, (std::vector<std::string>{"tmesh.cal (built in)"}));
+    int checked = 0;
+    for (uint32_t i = 0; i < sc.shapes.size(); ++i) {
+      if (sc.materials[sc.shapes[i].material].pattern < 0) continue;  // an inset face
+      for (const Vec3& p : verticesOf(sc, sc.shapes[i])) {
+        const Vec3 out = (p - glm::clamp(p, lo, hi)) / r;
+        expectVec(shadingNormalAt(sc, i, p), inward ? -out : out, 1e-9);
+        ++checked;
+      }
+    }
+    EXPECT_EQ(checked, 3 * (12 * 4 * 2 + 8 * 16));
+  }
+}
+
 TEST(Genbox, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genbox grey b 1 1"), "genbox needs a material, a name and three sizes");
   EXPECT_HAS(runError("!genbox grey b 1 0 1"), "genbox: the sizes must be positive, not '0'");
@@ -598,7 +657,6 @@ TEST(Genbox, BadArgumentsAreRefused) {
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -b"), "genbox: -b needs a number after it");
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -r 0.6"), "more than half the smallest size");
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -o"), "-o writes a Wavefront .OBJ file");
-  EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 8 -s"), "-s smooths");
   // -n 1024: 2¹⁰ strips, 6 + 12·2¹⁰ + 8·4¹⁰ ≈ 8.4·10⁶ polygons, allowed; -n 1025 rounds up to 2¹¹.
   EXPECT_HAS(runError("!genbox grey b 1 1 1 -r .1 -n 1025"), "makes 33579014 polygons, more than the 10000000 primitives a command may make");
 }
@@ -770,11 +828,15 @@ TEST(Genrev, PiecesByHowZAndRChange) {
 // the polygon's perimeter approaches the circle's: 32 sin(π/32)/π of it.
 TEST(Genrev, TorusOfRadiancesTestScene) {
   const auto ps = run("!genrev striped torus \"sin(2*PI*t)\" \"2+cos(2*PI*t)\" 32 -s");
-  ASSERT_EQ(ps.size(), 32u);
+  ASSERT_EQ(ps.size(), 64u);  // -s: each piece after its texture
   double area = 0.0;
   int cones = 0, cups = 0;
   for (const RadPrimitive& p : ps) {
-    EXPECT_EQ(p.modifier, "striped");
+    if (p.type == "texfunc") {
+      EXPECT_EQ(p.modifier, "striped");
+      continue;
+    }
+    EXPECT_EQ(p.modifier, "Phong");
     cones += p.type == "cone";
     cups += p.type == "cup";
     const double z0 = p.reals[2], z1 = p.reals[5], r0 = p.reals[6], r1 = p.reals[7];
@@ -790,6 +852,34 @@ TEST(Genrev, TorusOfRadiancesTestScene) {
     want += kTwoPi * (2.0 + std::cos(mid) * std::cos(kPi / 32.0)) * 2.0 * std::sin(kPi / 32.0);
   }
   EXPECT_NEAR(area, want, 1e-9 * want);
+}
+
+// -s on a sphere of 8 pieces (genrev.c's smoothing, rev.cal built in): at each end of a piece
+// the shading normal is the bisector of the piece's normal and its neighbour's, which for a
+// polygon inscribed in a circle is the circle's radius through their common vertex (inwards: z
+// falls, so the pieces are cups). The first and last pieces (the caps) have no neighbour at the
+// poles: checked at their inner end only.
+TEST(Genrev, SmoothedPiecesTurnTheirNormalsToTheSpheresAtTheVertices) {
+  const int n = 8;
+  const Scene sc = smoothScene("!genrev m ball 'cos(PI*t)' 'sin(PI*t)' 8 -s");
+  ASSERT_EQ(sc.shapes.size(), 8u);
+  EXPECT_EQ(sc.functionFiles, (std::vector<std::string>{"rev.cal (built in)"}));
+  for (int i = 0; i < n; ++i) {
+    const double t0 = kPi * i / n, t1 = kPi * (i + 1) / n, phi = 0.3 + i;  // any azimuth
+    const Vec3 radial(std::cos(phi), std::sin(phi), 0.0);
+    for (const double f : {1e-7, 1.0 - 1e-7}) {  // just inside each end of the piece
+      if ((i == 0 && f < 0.5) || (i == n - 1 && f > 0.5)) continue;
+      const double z = std::cos(t0) + f * (std::cos(t1) - std::cos(t0));
+      const double r = std::sin(t0) + f * (std::sin(t1) - std::sin(t0));
+      const double tv = f < 0.5 ? t0 : t1;  // the vertex
+      const Vec3 want = -(std::sin(tv) * radial + Vec3(0, 0, std::cos(tv)));
+      expectVec(shadingNormalAt(sc, static_cast<uint32_t>(i), r * radial + Vec3(0, 0, z)), want, 1e-6);
+    }
+  }
+  // Unsmoothed, the shading normal is the piece's own.
+  const Scene flat = smoothScene("!genrev m ball 'cos(PI*t)' 'sin(PI*t)' 8");
+  const Vec3 x(std::sin(kPi / 8), 0, std::cos(kPi / 8));
+  expectVec(shadingNormalAt(flat, 1, x), shapeNormal(flat.shapes[1], x), 1e-12);
 }
 
 TEST(Genrev, BadCommandsAreRefusedAtTheirLine) {
@@ -856,12 +946,45 @@ TEST(Gensurf, NonPlanarCellsAreTwoTrianglesAndValidLeavesPointsOut) {
   EXPECT_EQ(run("!gensurf m v s t 0 2 3 -e 'valid(s,t) = .75 - s'").size(), 3u);
 }
 
+// -s on the unit sphere (s the polar angle over π, t the azimuth over 2π) in 6 × 8 cells
+// (gensurf.c's smoothing, surf.cal built in): a point's normal is the cross product of its
+// neighbours' differences, chords of a meridian and a parallel parallel to their tangents, so the
+// radius; the fit through a cell's four points takes those normals at its corners. Every corner
+// off the poles (where the cells have no fit and stay flat) reads the sphere's normal, and so
+// does the middle of each cell (a trapezoid symmetric about its middle meridian) within 1e-6 rad
+// (measured: 2e-8), where the flat facet's own normal is off by up to half a cell, 22°.
+TEST(Gensurf, SmoothedCellsTakeTheSpheresNormalsAtTheirCorners) {
+  const Scene sc = smoothScene("!gensurf m ball 'sin(PI*s)*cos(2*PI*t)' 'sin(PI*s)*sin(2*PI*t)' 'cos(PI*s)' 6 8 -s");
+  EXPECT_EQ(sc.functionFiles, (std::vector<std::string>{"surf.cal (built in)"}));
+  int corners = 0, smoothed = 0;
+  double worstMiddle = 0.0;
+  for (uint32_t i = 0; i < sc.shapes.size(); ++i) {
+    if (sc.materials[sc.shapes[i].material].pattern < 0) continue;  // at the poles
+    ++smoothed;
+    const std::vector<Vec3> v = verticesOf(sc, sc.shapes[i]);
+    Vec3 mid(0.0);
+    for (const Vec3& p : v) mid += p / static_cast<double>(v.size());
+    // gensurf's orientation, ∂/∂s × ∂/∂t (south × east), faces this sphere out.
+    for (const Vec3& p : v) {
+      if (std::abs(p.z) > 1.0 - 1e-9) continue;
+      expectVec(shadingNormalAt(sc, i, p), glm::normalize(p), 1e-9);
+      ++corners;
+    }
+    worstMiddle = std::max(worstMiddle, std::acos(std::min(1.0, glm::dot(shadingNormalAt(sc, i, mid), glm::normalize(mid)))));
+  }
+  EXPECT_EQ(smoothed, 6 * 8 - 2 * 8);  // the 8 cells at each pole are flat
+  EXPECT_GT(corners, 0);
+  EXPECT_LT(worstMiddle, 1e-6);  // radians
+}
+
 TEST(Gensurf, DataFileAndBounds) {
   // z from a data file of (m+1)(n+1) = 6 corner values, all 2: the square lifted to z = 2.
   const auto ps = run("!gensurf m d s t surf.dat 1 2");
   ASSERT_EQ(ps.size(), 2u);
   for (size_t k = 2; k < ps[0].reals.size(); k += 3) EXPECT_DOUBLE_EQ(ps[0].reals[k], 2.0);
   EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 10000 10000"); }).find("more than the 10000000 primitives a command may make"), std::string::npos);
+  // -s: each polygon with its texture counts as 4 (gen.h): 2 · 2500 · 1000 · 4 > 10⁷.
+  EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 2500 1000 -s"); }).find("5000000 polygons (smoothed: each counts as 4), more than the 10000000"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 0 3"); }).find("m must be a whole number"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s t 0 2"); }).find("x.rad:3: gensurf: usage"), std::string::npos);
   EXPECT_NE(errorOf([] { run("!gensurf m x s 't+' 0 2 2"); }).find("y(s,t) 't+' is not an expression"),
