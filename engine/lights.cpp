@@ -1,5 +1,6 @@
 #include "engine/lights.h"
 
+#include "engine/light_selection.h"
 #include "engine/materials/family.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/sampling.h"
@@ -461,6 +462,7 @@ double distributionImportance(const SourceDistribution& dist, const Vec3& e, dou
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n) {
   if (light.kind == Light::Kind::kLuminaire) {
     const LuminaireSource& lum = scene.luminaires[light.luminaire];
+    if (lum.peakTabulated) return luminaireImportance(lum, p, n);
     const Vec3 e = p - lum.position;
     const double d2 = std::max(glm::dot(e, e), 0.25 * lum.sizeM() * lum.sizeM() + 1e-6);
     const double d = std::sqrt(glm::dot(e, e));
