@@ -10,6 +10,7 @@
 // (lx, ly, lz, omega), the BRDF of its light on either side beside the diffuse parts (Radiance's
 // dirbrdf: the sampled sources only; the sky and paths see the diffuse and specular parts). The
 // glaze script's coated glazings are BRTDfuncs without them.
+#include "engine/materials/function_family.h"
 #include "engine/materials/normal.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
@@ -17,12 +18,10 @@
 namespace candela {
 namespace {
 
-class BrtdFunc : public MaterialFamily {
+class BrtdFunc : public FunctionFamily {
  public:
   MaterialType type() const override { return MaterialType::kBrtdFunc; }
   const char* name() const override { return "BRTDfunc"; }
-  HitRole role() const override { return HitRole::kScatter; }
-  int functionPatterns() const override { return 3; }
   void read(const MaterialReadContext& ctx, Material& m) const override {
     const RadPrimitive& p = ctx.primitive;
     if (p.reals.size() < 9)
@@ -36,8 +35,6 @@ class BrtdFunc : public MaterialFamily {
     m.roughness = 0.0;  // the reflected part is a mirror's
     m.specularTransmission = !(p.strings[3] == "0" && p.strings[4] == "0" && p.strings[5] == "0");
   }
-  // Without a hit: the front's diffuse parts (the report's table); specular parts at hits only.
-  void derive(MaterialParameters& m) const override { deriveFromDiffuseReals(m); }
   void atHit(const Material& m, const PatternPoint& p, const Rgb& patternColour, PatternEvaluator& eval,
              MaterialParameters& out) const override {
     const bool front = glm::dot(p.d, p.ng) < 0.0;
@@ -47,7 +44,6 @@ class BrtdFunc : public MaterialFamily {
     out.specularTransmittance =
         m.specularTransmission ? glm::max(eval.oriented(m.functions + 1, p, patternColour), Rgb(0.0)) : Rgb(0.0);
   }
-  bool directionalSources(const Material& m) const override { return m.directionalFunctions; }
   Rgb sourceBrdf(const Material& m, const PatternPoint& at, PatternEvaluator& eval, const Vec3& ldir, double omegaSr,
                  bool transmitted) const override {
     const Rgb f = (transmitted ? m.diffuseTransmittance : m.diffuseReflectance) * kInvPi;
@@ -58,18 +54,6 @@ class BrtdFunc : public MaterialFamily {
   }
   bool sampleLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
     return sampleWardLobe(m, inDir, nf, rng, out);  // roughness 0: the mirror direction
-  }
-  bool mayPassShadowRays(const Material& m) const override { return m.specularTransmission; }
-  std::optional<Rgb> straightTransmittance(const Material& m, const Vec3&, const Vec3&) const override {
-    if (!m.specularTransmission) return std::nullopt;
-    return m.specularTransmittance;  // at a hit: evaluated by the hook (pattern_hook.h)
-  }
-  bool seeThrough(const Material& m) const override { return m.specularTransmission; }
-  bool transmitting() const override { return true; }
-  NormalIncidence normalIncidence(const Material& m) const override {
-    NormalIncidence n = MaterialFamily::normalIncidence(m);
-    n.transmittance = photopic(m.transmissionColor);
-    return n;
   }
 };
 

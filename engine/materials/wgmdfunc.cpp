@@ -24,6 +24,7 @@
 // Where the mirror is Fresnel-raised, the sampled sources' light on the diffuse parts takes a
 // second factor 1 − F(cos θ_l) of the light's own angle (dirwgmdf; MaterialFamily::sourceBrdf);
 // the sky and the light paths meet takes none (Radiance's ambient).
+#include "engine/materials/function_family.h"
 #include "engine/materials/normal.h"
 #include "engine/materials/pattern_hook.h"
 #include "engine/materials/registry.h"
@@ -41,12 +42,10 @@ constexpr double kFresnelThreshold = 0.017999;
 
 enum : int { kRsInherits = 1, kTsInherits = 2, kTdInherits = 4 };
 
-class WgmdFunc : public MaterialFamily {
+class WgmdFunc : public FunctionFamily {
  public:
   MaterialType type() const override { return MaterialType::kWgmdFunc; }
   const char* name() const override { return "WGMDfunc"; }
-  HitRole role() const override { return HitRole::kScatter; }
-  int functionPatterns() const override { return 3; }
   void read(const MaterialReadContext& ctx, Material& m) const override {
     const RadPrimitive& p = ctx.primitive;  // 13+ strings: checked with its functions
     if (p.reals.size() < 9)
@@ -78,8 +77,6 @@ class WgmdFunc : public MaterialFamily {
     }
     m.specularTransmission = p.strings[5] != "0";
   }
-  // Without a hit: the front's diffuse parts (the report's table); specular parts at hits only.
-  void derive(MaterialParameters& m) const override { deriveFromDiffuseReals(m); }
   void atHit(const Material& m, const PatternPoint& p, const Rgb& patternColour, PatternEvaluator& eval,
              MaterialParameters& out) const override {
     const bool front = glm::dot(p.d, p.ng) < 0.0;
@@ -141,7 +138,6 @@ class WgmdFunc : public MaterialFamily {
   }
   // Radiance's dirwgmdf: where the mirror is Fresnel-raised, a sampled source's light on the
   // diffuse parts takes 1 − F(cos θ_l) of its own angle too (the sky and paths do not: ambient).
-  bool directionalSources(const Material& m) const override { return m.directionalFunctions; }
   Rgb sourceBrdf(const Material& m, const PatternPoint& at, PatternEvaluator&, const Vec3& ldir, double,
                  bool transmitted) const override {
     const double f = fresnelEstimate(std::abs(glm::dot(at.ng, ldir)));
@@ -151,22 +147,13 @@ class WgmdFunc : public MaterialFamily {
   bool sampleTransmittedLobe(const Material& m, const Vec3& inDir, const Vec3& nf, Rng& rng, Vec3& out) const override {
     return sampleWgmdTransmission(m, inDir, nf, rng, out);
   }
-  bool mayPassShadowRays(const Material& m) const override { return m.specularTransmission; }
   std::optional<Rgb> straightTransmittance(const Material& m, const Vec3&, const Vec3&) const override {
     // At a hit (evaluated by the hook, pattern_hook.h): a rough transmission stops shadow rays
     // (its light arrives by the lobe's draws, which count the sources they meet).
-    if (!m.specularTransmission) return std::nullopt;
-    if (m.transmissionRoughnessU > 0.0) return Rgb(0.0);
-    return m.specularTransmittance;
+    if (m.specularTransmission && m.transmissionRoughnessU > 0.0) return Rgb(0.0);
+    return FunctionFamily::straightTransmittance(m, Vec3(0.0), Vec3(0.0));
   }
-  bool seeThrough(const Material& m) const override { return m.specularTransmission; }
-  bool transmitting() const override { return true; }
   double viewTransmittance(const Material& m) const override { return photopic(m.specularTransmittance); }
-  NormalIncidence normalIncidence(const Material& m) const override {
-    NormalIncidence n = MaterialFamily::normalIncidence(m);
-    n.transmittance = photopic(m.transmissionColor);
-    return n;
-  }
 };
 
 }  // namespace

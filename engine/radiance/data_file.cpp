@@ -1,76 +1,15 @@
 #include "engine/radiance/data_file.h"
 
 #include "base/input_file.h"
+#include "engine/radiance/words.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace candela {
 namespace {
 
-// Words of a data file with their lines; `#` starts a comment to the end of the line, also in
-// the middle of a word (as fgetval in src/common/fgetval.c).
-class Words {
- public:
-  Words(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
-
-  bool next(std::string_view& word) {
-    for (;;) {
-      while (pos_ < text_.size() && isSpace(text_[pos_])) {
-        if (text_[pos_] == '\n') ++line_;
-        ++pos_;
-      }
-      if (pos_ >= text_.size()) return false;
-      if (text_[pos_] != '#') break;
-      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-    }
-    const size_t b = pos_;
-    while (pos_ < text_.size() && !isSpace(text_[pos_]) && text_[pos_] != '#') ++pos_;
-    word = text_.substr(b, pos_ - b);
-    wordLine_ = line_;
-    return true;
-  }
-
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(FileLoc{file_, wordLine_, 0}, message); }
-
-  std::string_view need(const std::string& what) {
-    std::string_view w;
-    if (!next(w)) fail("unexpected end of file: expected " + what);  // at the last word's line
-    return w;
-  }
-
-  double number(const std::string& what) {
-    const std::string_view w = need(what);
-    const char* b = w.data();
-    const char* e = b + w.size();
-    if (b != e && *b == '+') ++b;
-    double v = 0.0;
-    const auto r = std::from_chars(b, e, v);
-    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v))
-      fail("'" + std::string(w) + "' is not a number (" + what + ")");
-    return v;
-  }
-
-  long integer(const std::string& what) {
-    const std::string_view w = need(what);
-    long v = 0;
-    const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (r.ec != std::errc() || r.ptr != w.data() + w.size())
-      fail("'" + std::string(w) + "' is not an integer (" + what + ")");
-    return v;
-  }
-
- private:
-  static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-
-  std::string_view text_;
-  std::string file_;
-  size_t pos_ = 0;
-  int line_ = 1, wordLine_ = 1;
-};
-
-RadDataArray::Axis readAxis(Words& w, int d, size_t valuesSoFar) {
+RadDataArray::Axis readAxis(RadWords& w, int d, size_t valuesSoFar) {
   const std::string dim = "dimension " + std::to_string(d + 1);
   RadDataArray::Axis a;
   a.begin = w.number("the first point of " + dim);
@@ -158,7 +97,7 @@ double RadDataArray::maxAbsValue() const {
 }
 
 RadDataArray parseRadData(std::string_view text, const std::string& fileName) {
-  Words w(text, fileName);
+  RadWords w(text, fileName);
   RadDataArray out;
   out.file = fileName;
   const long nd = w.integer("the number of dimensions");
@@ -176,7 +115,7 @@ RadDataArray parseRadData(std::string_view text, const std::string& fileName) {
     out.values.push_back(w.number("value " + std::to_string(i + 1) + " of " + std::to_string(total)));
   std::string_view extra;
   if (w.next(extra))
-    w.fail("'" + std::string(extra) + "' after the " + std::to_string(total) +
+    w.fail("'" + RadWords::quoted(extra) + "' after the " + std::to_string(total) +
            " values the dimensions ask for: the dimensions or the values are wrong");
   return out;
 }

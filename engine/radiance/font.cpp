@@ -1,79 +1,21 @@
 #include "engine/radiance/font.h"
 
 #include "base/error.h"
+#include "engine/radiance/words.h"
 
-#include <charconv>
 
 namespace candela {
 
-namespace {
-
-// The words of a font file with their lines; '#' to the end of a line is a comment (fgetval).
-class FontWords {
- public:
-  FontWords(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
-
-  // The next word, or false at the end of the text.
-  bool next(std::string_view& word) {
-    for (;;) {
-      while (pos_ < text_.size() && isSpace(text_[pos_])) {
-        if (text_[pos_] == '\n') ++line_;
-        ++pos_;
-      }
-      if (pos_ >= text_.size()) return false;
-      if (text_[pos_] != '#') break;
-      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
-    }
-    const size_t b = pos_;
-    while (pos_ < text_.size() && !isSpace(text_[pos_]) && text_[pos_] != '#') ++pos_;
-    word = text_.substr(b, pos_ - b);
-    wordLine_ = line_;
-    return true;
-  }
-
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(FileLoc{file_, wordLine_, 0}, message); }
-
-  // An integer word (optional sign, digits), or InputError naming `what`.
-  long integer(std::string_view w, const std::string& what) const {
-    const char* b = w.data();
-    const char* e = b + w.size();
-    if (b != e && *b == '+') ++b;
-    long v = 0;
-    const auto r = std::from_chars(b, e, v);
-    if (b == e || r.ptr != e) fail("'" + quoted(w) + "' is not an integer (" + what + ")");
-    if (r.ec != std::errc()) fail("'" + quoted(w) + "' is out of range (" + what + ")");
-    return v;
-  }
-
-  long need(const std::string& what) {
-    std::string_view w;
-    if (!next(w)) fail("unexpected end of the font file: expected " + what);  // at the last word's line
-    return integer(w, what);
-  }
-
- private:
-  static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-  // A word quoted in a message: its first 24 characters.
-  static std::string quoted(std::string_view w) { return w.size() > 24 ? std::string(w.substr(0, 24)) + "..." : std::string(w); }
-
-  std::string_view text_;
-  std::string file_;
-  size_t pos_ = 0;
-  int line_ = 1, wordLine_ = 1;
-};
-
-}  // namespace
-
 RadFont parseRadianceFont(std::string_view text, const std::string& file) {
   RadFont font;
-  FontWords w(text, file);
+  RadWords w(text, file, "the font file");
   unsigned long widthSum = 0, counted = 0;
   for (std::string_view word; w.next(word);) {
     const long code = w.integer(word, "a character code");
     if (code < 1 || code > 255) w.fail("character code " + std::to_string(code) + " is outside 1-255");
     if (font.index[static_cast<size_t>(code)] >= 0) w.fail("character " + std::to_string(code) + " is given twice");
     const std::string of = "character " + std::to_string(code);
-    const long n = w.need("the number of vertices of " + of);
+    const long n = w.integer("the number of vertices of " + of);
     if (n < 0 || n > kMaxGlyphVertices)
       w.fail("the number of vertices of " + of + " is " + std::to_string(n) + ", outside 0-" +
              std::to_string(kMaxGlyphVertices));
@@ -82,7 +24,7 @@ RadFont parseRadianceFont(std::string_view text, const std::string& file) {
     // allocates nothing.
     for (long k = 0; k < 2 * n; ++k) {
       const bool isX = k % 2 == 0;
-      const long v = w.need(std::string(isX ? "an x" : "a y") + " coordinate of " + of);
+      const long v = w.integer(std::string(isX ? "an x" : "a y") + " coordinate of " + of);
       if (v < 0 || v > 255) w.fail("a vertex of " + of + " is " + std::to_string(v) + ", outside 0-255");
       g.xy.push_back(static_cast<int16_t>(v));
       const int iv = static_cast<int>(v);
