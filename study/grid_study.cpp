@@ -292,11 +292,11 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   const ResolvedTrace trace = resolveTrace(&c.settings, run.request.trace, Method::kCache);
   // The memory check comes before the grids are generated: a grid too large is refused without
   // being made.
-  const ResourceEstimate needs = estimateGridStudy(c, gridPointCounts(c), *scene, trace.settings, trace.threads);
-  checkResources(needs, run.request.limits, FileLoc{c.path.string(), 0, 0});
+  const std::vector<std::size_t> pointCounts = gridPointCounts(c);
+  checkResources(estimateGridStudy(c, pointCounts, *scene, trace.settings, trace.threads), run.request.limits,
+                 FileLoc{c.path.string(), 0, 0});
   const std::vector<PreparedGrid> grids = prepareGrids(c, gridBounds(*scene));
   const ReferenceGrid reference = referenceGrid(c, grids);  // W/m²/100 lx over its Ē
-  observer.estimated(needs);
 
   // 2. All grids as one list (grids in case order, then the modelling grids' other sensors):
   // point k of the run uses random stream k, so the numbers depend on the seed only, never on
@@ -307,6 +307,10 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   std::size_t gridPoints = 0;
   for (const PreparedGrid& g : grids) gridPoints += g.grid.size();
   const Tracer tracer(*scene);
+  // The time estimate, with the share of the points' hemisphere rays that meet the scene (an open
+  // site's leave it: study/resource_estimate.h).
+  observer.estimated(estimateGridStudy(c, pointCounts, *scene, trace.settings, trace.threads,
+                                       hemisphereHitFraction(tracer, all)));
   // Warnings on the input, before tracing: a strict run stops here.
   Warnings warnings = pointInTimeWarnings(c, tracer, grids);
   if (std::optional<Warning> w = noEmergencyLuminaireWarning(c)) warnings.push_back(*w);

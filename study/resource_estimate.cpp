@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace candela {
 
@@ -204,7 +205,7 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c) {
   e.memory.push_back(std::move(m));
 }
 
-double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires) {
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction) {
   const double sources = static_cast<double>(sampled + luminaires);
   // A luminaire's opening is sampled as an area source's (lights.cpp; a point luminaire takes one
   // ray, but most have an opening).
@@ -219,11 +220,12 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
   // The cache's rays are paths too: half of them reach a vertex that selects a light.
   const double vertices = cache ? 1.0 + kCacheRaysPerLookup / 2.0 : 1.0 + std::max(1, s.firstBounceSplit) * further;
   const double perRay = cache ? 2.0 + kCacheRaysPerLookup : 2.0 * vertices;
-  const double selection = hemisphere * vertices * kSelectionCostPerSource * sources;
-  return hemisphere * perRay + direct + selection;
+  const double selection = hemisphere * hitFraction * vertices * kSelectionCostPerSource * sources;
+  // A ray that leaves the scene is itself only (hitFraction: the share that meets a surface).
+  return hemisphere * (1.0 + hitFraction * (perRay - 1.0)) + direct + selection;
 }
 
-double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2) {
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction) {
   if (s.method != Method::kCache || s.maxBounces <= 0) return 0.0;
   const double a = std::max(1e-3, s.cache.accuracy);
   const double hemisphereRays = points * static_cast<double>(s.hemisphereSamples);
@@ -232,7 +234,29 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
   // A record sample is a path: its hit and shadow ray, then ρ/(1 − ρ) further vertices.
   const double further = std::min<double>(s.maxBounces, kMeanReflectance / (1.0 - kMeanReflectance));
   const double perRecord = s.cache.recordSamples * 2.0 * (1.0 + further) + s.cache.radiusSamples;
-  return std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup);
+  return hitFraction * std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup);
+}
+
+double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint>& points) {
+  constexpr std::size_t kPoints = 64;
+  constexpr int kDirections = 32;
+  if (points.empty()) return 1.0;
+  const std::size_t step = std::max<std::size_t>(1, points.size() / kPoints);
+  int hits = 0, rays = 0;
+  for (std::size_t i = 0; i < points.size(); i += step) {
+    const SensorPoint& sp = points[i];
+    const Frame f = Frame::fromNormal(sp.normal);
+    const Vec3 o = sp.position + sp.normal * Tracer::originOffset(sp.position);
+    for (int k = 0; k < kDirections; ++k) {
+      // A Fibonacci spiral over the disc, lifted to the hemisphere: cosine-distributed.
+      const double r = std::sqrt((k + 0.5) / kDirections), phi = k * 2.39996322972865332;
+      const Vec3 d = f.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r * r))));
+      RayHit hit;
+      hits += tracer.accelerator().intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), hit) ? 1 : 0;
+      ++rays;
+    }
+  }
+  return static_cast<double>(hits) / rays;
 }
 
 uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
@@ -301,7 +325,7 @@ std::vector<std::size_t> gridPointCounts(const CaseFile& c) {
 }
 
 ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
-                                   const TraceSettings& s, int threads) {
+                                   const TraceSettings& s, int threads, double hitFraction) {
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   e.baseBytes = sceneBytes(scene);
@@ -331,8 +355,8 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   const double batches = expectedBatchesPerPoint(s);
   const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
   const double boxSurfaceM2 = 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
-  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires) +
-                                   cacheRecordRays(s, points, boxSurfaceM2)});
+  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
+                                   cacheRecordRays(s, points, boxSurfaceM2, hitFraction)});
   addLuminaires(e, c);
   // Views are rendered and written one at a time (study/grid_study.cpp): the largest one's pixels
   // and every view's pictures for the report.

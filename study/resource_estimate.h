@@ -17,6 +17,8 @@
 namespace candela {
 
 struct Scene;
+struct SensorPoint;
+class Tracer;
 struct CaseFile;
 struct ViewSpec;
 
@@ -83,7 +85,9 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c);
 // source at the sensor (a far-field luminaire takes one shadow ray), and the light selection at
 // every path vertex (a fraction of a ray per source). `sampled` counts the area and distant
 // sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
-double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires);
+// `hitFraction`: the share of hemisphere rays that meet a surface (hemisphereHitFraction; 1 in a
+// room): a ray that leaves the scene costs itself only, no vertex.
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction = 1.0);
 
 // The irradiance cache's records beyond what raysPerSensor's lookups already count (their share,
 // calibrated on dense grids): a room needs about the same records however few points look at it,
@@ -92,7 +96,14 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
 // bounding box) at Ward's a = 0.2, scaling as (0.2/a)², at most kRecordsPerHemisphereRay of the
 // points' hemisphere rays; each costs its record samples' paths and its radius samples. 0 for
 // the path method or without bounces. Formula in docs/reliability.md.
-double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2);
+// `hitFraction` as raysPerSensor's: records are made where hemisphere rays meet surfaces.
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction = 1.0);
+
+// The share of hemisphere rays from `points` that meet a surface of the scene: 32 fixed
+// cosine-distributed directions from each of at most 64 points spread over the list (2 048 rays,
+// about a millisecond; no random stream drawn, so a run's numbers do not depend on it). 1 for no
+// points. An open site (a car park's ground under its poles) sends most rays out of the scene.
+double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint>& points);
 
 // The annual study's float arrays for one block of `sensors` sensors over `hours` hours (the
 // study holds one block at a time, study/annual_study.h kAnnualSensorsPerBlock): while a block's
@@ -123,8 +134,10 @@ std::vector<std::size_t> gridPointCounts(const CaseFile& c);
 
 // The point-in-time study of a case: its grids (points per grid, case order; and the cache),
 // views and luminaires.
+// `hitFraction` as raysPerSensor's (the run measures it once the scene's tracer is built).
+// 6 parameters: the case, its grids' sizes, the scene, the settings, the threads, the hit share.
 ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
-                                   const TraceSettings& s, int threads);
+                                   const TraceSettings& s, int threads, double hitFraction = 1.0);
 
 // `candela render`: one view of a case (study/view_study.h).
 ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const ViewWork& w, const Scene& scene,

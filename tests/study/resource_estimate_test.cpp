@@ -4,7 +4,9 @@
 
 #include "engine/render.h"
 #include "engine/scene.h"
+#include "engine/radiance/reader.h"
 #include "engine/sensors.h"
+#include "engine/tracer.h"
 #include "study/case/case_file.h"
 
 #include <gtest/gtest.h>
@@ -182,6 +184,37 @@ TEST(ResourceEstimate, RaysPerSensor) {
   EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 70.0 + 1000.0 * 5 * 0.2 * 7);
   // A million luminaires dominate: each path vertex weighs them all.
   EXPECT_GT(raysPerSensor(s, 0, 1000000), 1e9);
+  // Where a quarter of the hemisphere rays meet a surface, the rest cost themselves only.
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5, 0.25), 1000.0 * (1.0 + 0.25 * 9.0) + 70.0 + 0.25 * 1000.0 * 5 * 0.2 * 7);
+}
+
+// The pilot's share of hemisphere rays meeting the scene, over one large floor: none from points
+// above it facing up, all from points facing down; from a point facing sideways, the directions
+// of the fixed pattern that point below the horizon, counted here from the same pattern (the
+// Fibonacci spiral of 32 cosine-distributed directions about the normal).
+TEST(ResourceEstimate, HemisphereHitFractionOfAnOpenSite) {
+  Scene sc;
+  SceneReader(sc).readText("void plastic g 0 0 5 .2 .2 .2 0 0\n"
+                           "g polygon floor 0 0 12 -1e3 -1e3 0 1e3 -1e3 0 1e3 1e3 0 -1e3 1e3 0\n",
+                           "site.rad", ".");
+  const Tracer tracer(sc);
+  auto points = [](const Vec3& n) {
+    std::vector<SensorPoint> ps;
+    for (int i = 0; i < 100; ++i) ps.push_back(SensorPoint{Vec3(0.37 * i, 0.21 * i, 1.0), n});
+    return ps;
+  };
+  EXPECT_EQ(hemisphereHitFraction(tracer, points(Vec3(0, 0, 1))), 0.0);
+  EXPECT_EQ(hemisphereHitFraction(tracer, points(Vec3(0, 0, -1))), 1.0);
+  const Frame f = Frame::fromNormal(Vec3(1, 0, 0));
+  int below = 0;
+  for (int k = 0; k < 32; ++k) {
+    const double r = std::sqrt((k + 0.5) / 32.0), phi = k * 2.39996322972865332;
+    below += f.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - r * r))).z < 0.0;
+  }
+  EXPECT_GT(below, 8);  // the pattern covers both halves
+  EXPECT_LT(below, 24);
+  EXPECT_DOUBLE_EQ(hemisphereHitFraction(tracer, points(Vec3(1, 0, 0))), below / 32.0);
+  EXPECT_EQ(hemisphereHitFraction(tracer, {}), 1.0);
 }
 
 // The cache's records beyond the lookups' share: a room's worth (60 per m² of the box at
