@@ -53,10 +53,12 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
   r.trace = ps.trace;
   r.warnings = ps.warnings;
   const FileLoc where{ps.pointsName, 0, 0};
-  const ResourceEstimate needs = estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads);
-  checkResources(needs, ps.limits, where);
-  observer.estimated(needs);
+  checkResources(estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads), ps.limits,
+                 where);
   const Tracer tracer(*ps.scene, accelerator);
+  // The time estimate with the share of hemisphere rays that meet the scene (an open site's leave).
+  observer.estimated(estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads,
+                                    hemisphereHitFraction(tracer, points)));
   SensorSet set;
   set.name = "points";
   set.points = &points;

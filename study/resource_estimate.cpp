@@ -390,7 +390,7 @@ ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const Vie
 }
 
 ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
-                                int threads) {
+                                int threads, double hitFraction) {
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   e.baseBytes = sceneBytes(scene);
@@ -400,7 +400,8 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
                       std::to_string(points) + " points x " + std::to_string(per) + " B"});
   e.memory.back().bytes += scene.luminaires.size() * (sizeof(LuminaireSource) + sizeof(Light) + 32);
   const double batches = expectedBatchesPerPoint(s);
-  e.work.push_back({"tracing", static_cast<double>(points) * batches * raysPerSensor(s, n.sampled, n.luminaires)});
+  e.work.push_back(
+      {"tracing", static_cast<double>(points) * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction)});
   return e;
 }
 

@@ -143,9 +143,10 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
 ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const ViewWork& w, const Scene& scene,
                               const TraceSettings& s, int threads);
 
-// `candela points`: `points` sensor points read from `where`.
+// `candela points`: `points` sensor points read from `where`; hitFraction as raysPerSensor's.
+// 6 parameters: the points' count and file, the scene, the settings, the threads, the hit share.
 ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
-                                int threads);
+                                int threads, double hitFraction = 1.0);
 
 // The annual study: sensors per grid (case order), the weather year's hours and those with sun.
 struct AnnualCounts {
