@@ -104,7 +104,7 @@ En1838Points en1838Points(const CaseFile& c) {
     }
   }
   for (const OpenAreaSpec& a : c.emergency.openAreas) {
-    p.cores.push_back(insetConvexPolygon(a.outline, kEn1838BorderM));
+    p.cores.push_back(insetPolygon(a.outline, kEn1838BorderM, a.spacingM));
     p.openAreas.push_back(addPlan(p.sensors, polygonPoints(p.cores.back(), a.spacingM), a.heightM));
   }
   for (const TaskAreaSpec& a : c.taskAreas)

@@ -76,13 +76,15 @@ void readOpenArea(const Context& c, const toml::table& t, int index, std::set<st
     const double area = polygonArea(a.outline);
     if (!(std::abs(area) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
     if (area < 0.0) std::reverse(a.outline.begin(), a.outline.end());
-    if (!isConvexPolygon(a.outline))
-      c.fail(*pn, "'polygon' must be convex (split a concave area into convex open areas)");
+    if (!isSimplePolygon(a.outline)) c.fail(*pn, "'polygon' crosses itself: give its corners in order round the area");
   }
-  if (insetConvexPolygon(a.outline, kEn1838BorderM).size() < 3)
-    c.fail(at, "the open area has no core: it is nowhere wider than twice the 0.5 m border (EN 1838 4.3.1)");
   a.heightM = numberOr(tab, "height", 0.0);
   a.spacingM = spacingOr(tab, a.spacingM);
+  if (insetPolygon(a.outline, kEn1838BorderM, a.spacingM).size() < 3)
+    c.fail(at, isConvexPolygon(a.outline)
+                   ? "the open area has no core: it is nowhere wider than twice the 0.5 m border (EN 1838 4.3.1)"
+                   : "the open area's core (the area without its 0.5 m border, EN 1838 4.3.1) is not one piece, or an "
+                     "edge is shorter than the border swallows: split the area into open areas of one core each");
   tab.finish();
   out.emergency.openAreas.push_back(std::move(a));
 }

@@ -68,6 +68,79 @@ std::vector<Vec2> insetConvexPolygon(const std::vector<Vec2>& ccw, double distan
   return clean;
 }
 
+namespace {
+
+// Distance from p to the segment a–b.
+double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 e = b - a;
+  const double l2 = glm::dot(e, e);
+  const double t = l2 > 0.0 ? std::clamp(glm::dot(p - a, e) / l2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * e));
+}
+
+// Whether segments p–q and r–s cross at a point inside both (touching ends do not count).
+bool segmentsCross(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+  const double d1 = cross(q - p, r - p), d2 = cross(q - p, s - p), d3 = cross(s - r, p - r), d4 = cross(s - r, q - r);
+  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
+}
+
+}  // namespace
+
+std::vector<Vec2> insetPolygon(const std::vector<Vec2>& ccw, double distanceM, double arcStepM) {
+  if (isConvexPolygon(ccw)) return insetConvexPolygon(ccw, distanceM);
+  const std::size_t n = ccw.size();
+  auto inward = [&](std::size_t i) {  // unit normal of edge i (ccw[i] to ccw[i + 1]), to the left
+    const Vec2 e = glm::normalize(ccw[(i + 1) % n] - ccw[i]);
+    return Vec2(-e.y, e.x);
+  };
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < n; ++i) {  // the corner at vertex i, between edges i − 1 and i
+    const std::size_t prev = (i + n - 1) % n;
+    const Vec2 v = ccw[i], e0 = v - ccw[prev], e1 = ccw[(i + 1) % n] - v;
+    const Vec2 n0 = inward(prev), n1 = inward(i);
+    const double turn = cross(e0, e1);
+    if (turn >= 0.0) {  // convex (or straight): the moved edges' lines cross
+      const Vec2 a = v + distanceM * n0, b = v + distanceM * n1;
+      const double den = cross(e0, e1);
+      if (std::abs(den) <= 1e-12 * glm::length(e0) * glm::length(e1)) {
+        out.push_back(a);
+      } else {
+        out.push_back(a + e0 * (cross(b - a, e1) / den));
+      }
+    } else {  // reflex: an arc about the corner from n0 to n1, turning clockwise
+      const double sweep = std::atan2(cross(n0, n1), glm::dot(n0, n1));  // negative
+      const double start = std::atan2(n0.y, n0.x);
+      const int steps = std::max(1, static_cast<int>(std::ceil(std::max(std::abs(sweep) / (kPi / 18.0),
+                                                                          std::abs(sweep) * distanceM / arcStepM))));
+      for (int k = 0; k <= steps; ++k) {
+        const double a = start + sweep * k / steps;
+        out.push_back(v + distanceM * Vec2(std::cos(a), std::sin(a)));
+      }
+    }
+  }
+  // One simple polygon, counter-clockwise, every vertex inside and distanceM from the boundary.
+  const std::size_t m = out.size();
+  double area = 0.0;
+  for (std::size_t k = 0; k < m; ++k) area += cross(out[k], out[(k + 1) % m]);
+  if (m < 3 || !(area > 1e-9)) return {};
+  for (const Vec2& p : out) {
+    if (!insidePolygon(ccw, p)) return {};
+    for (std::size_t i = 0; i < n; ++i)
+      if (segmentDistance(p, ccw[i], ccw[(i + 1) % n]) < distanceM * (1.0 - 1e-9)) return {};
+  }
+  return isSimplePolygon(out) ? out : std::vector<Vec2>{};
+}
+
+bool isSimplePolygon(const std::vector<Vec2>& polygon) {
+  const std::size_t m = polygon.size();
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j == m - 1) continue;  // neighbours through the closing edge
+      if (segmentsCross(polygon[i], polygon[(i + 1) % m], polygon[j], polygon[(j + 1) % m])) return false;
+    }
+  return true;
+}
+
 std::vector<Vec2> polygonPoints(const std::vector<Vec2>& ccw, double spacingM) {
   std::vector<Vec2> out;
   for (std::size_t i = 0; i < ccw.size(); ++i) sampleSegment(ccw[i], ccw[(i + 1) % ccw.size()], spacingM, false, out);

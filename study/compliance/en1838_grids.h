@@ -13,9 +13,20 @@ namespace candela {
 // Whether the polygon (counter-clockwise, ≥ 3 vertices) is convex; collinear vertices allowed.
 bool isConvexPolygon(const std::vector<Vec2>& ccw);
 
+// Whether no two of the polygon's edges cross (neighbours share their corner only).
+bool isSimplePolygon(const std::vector<Vec2>& polygon);
+
 // The convex polygon `ccw` shrunk by `distanceM` on every side: the intersection of the half-planes
 // its edges moved inwards bound (exact for convex polygons). Empty when nothing is left.
 std::vector<Vec2> insetConvexPolygon(const std::vector<Vec2>& ccw, double distanceM);
+
+// The simple polygon `ccw` (counter-clockwise) shrunk by `distanceM`: the points at least that far
+// from its boundary (EN 1838's core area). Convex: insetConvexPolygon. Concave: each edge moved
+// inwards, consecutive ones meeting at their lines' crossing where the corner is convex and joined
+// by an arc of radius distanceM about a reflex corner (sampled at most 10° and `arcStepM` apart);
+// empty when that outline is not one simple polygon every vertex of which lies distanceM from the
+// boundary (an edge shorter than the inset swallowed, or a core in several pieces).
+std::vector<Vec2> insetPolygon(const std::vector<Vec2>& ccw, double distanceM, double arcStepM);
 
 // Points of a simple polygon: every vertex and its edges at most `spacingM` apart (the boundary,
 // where the minima of a lit area usually lie), then the interior lattice of pitch `spacingM`

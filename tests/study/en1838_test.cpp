@@ -308,6 +308,46 @@ TEST(En1838Grids, InsetOfAConvexPolygon) {
   EXPECT_FALSE(isConvexPolygon({{0, 0}, {4, 0}, {1, 1}, {0, 4}}));
 }
 
+// An L-shaped hall, 10 m × 10 m with a 6 m × 6 m corner cut away: its core is the L moved in
+// 0.5 m on every side, mitred at the convex corners, and about the reflex corner (4, 4) the arc of
+// radius 0.5 m: area 9 × 3 + 3 × 6 + (0.25 − π 0.5²/4) (the part of the square [3.5, 4]² outside
+// the arc's disc), plus the nine 10° chords' segments the sampled arc adds, r²/2 (δ − sin δ) each.
+// Every vertex of the core lies 0.5 m from the hall's walls or more; the lattice inside it at
+// least 0.5 m less the chords' sagitta.
+TEST(En1838Grids, InsetOfAConcavePolygonRoundsItsReflexCorner) {
+  const std::vector<Vec2> hall = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}};
+  const std::vector<Vec2> core = insetPolygon(hall, 0.5, 0.25);
+  ASSERT_GE(core.size(), 6u);
+  double area = 0.0;
+  for (std::size_t k = 0; k < core.size(); ++k)
+    area += core[k].x * core[(k + 1) % core.size()].y - core[(k + 1) % core.size()].x * core[k].y;
+  const double delta = kPi / 18.0;
+  EXPECT_NEAR(0.5 * area, 45.0 + 0.25 - kPi / 16.0 + 9.0 * 0.125 * (delta - std::sin(delta)), 1e-9);
+  auto wallDistance = [&](const Vec2& p) {
+    double d = 1e9;
+    for (std::size_t i = 0; i < hall.size(); ++i) {
+      const Vec2 a = hall[i], e = hall[(i + 1) % hall.size()] - a;
+      const double t = std::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0, 1.0);
+      d = std::min(d, glm::length(p - (a + t * e)));
+    }
+    return d;
+  };
+  for (const Vec2& p : core) EXPECT_GE(wallDistance(p), 0.5 - 1e-9);
+  const std::vector<Vec2> pts = polygonPoints(core, 0.25);
+  const double sagitta = 0.5 * (1.0 - std::cos(delta / 2.0));
+  for (const Vec2& p : pts) EXPECT_GE(wallDistance(p), 0.5 - sagitta - 1e-9);
+  // Read from a case, the hall's core points are those of its core.
+  const fs::path dir = test_support::scratchDir("en1838", "concave_hall");
+  const CaseFile c = writeCase(dir, "[[open_area]]\nname = \"hall\"\npolygon = [[0, 0], [10, 0], [10, 4], [4, 4], "
+                                    "[4, 10], [0, 10]]\nspacing = 0.25\n[[compliance]]\nstandard = \"en1838\"\n");
+  const En1838Points fromCase = en1838Points(c);
+  ASSERT_EQ(fromCase.openAreas.size(), 1u);
+  EXPECT_EQ(fromCase.openAreas[0].count, pts.size());
+  // A convex polygon takes the convex inset.
+  const std::vector<Vec2> square = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  EXPECT_EQ(insetPolygon(square, 0.5, 0.25), insetConvexPolygon(square, 0.5));
+}
+
 // Bad input: InputError at the offending line.
 void expectError(const std::string& body, int line, const std::string& words) {
   const fs::path dir = test_support::scratchDir("en1838", "errors");
@@ -327,8 +367,12 @@ TEST(En1838Case, BadInputNamesTheLine) {
   expectError("[[escape_route]]\npath = [[0.0, 0.0], [1.0, 0.0]]\nwidth = 0.0\n" + compliance, 7, "'width'");
   expectError("[[escape_route]]\npath = [[0.0, 0.0], [1.0, 0.0]]\nwidth = -1.0\n" + compliance, 7, "'width'");
   expectError("[[open_area]]\npolygon = [[0.0, 0.0], [4.0, 0.0]]\n" + compliance, 6, "at least 3 corners");
-  expectError("[[open_area]]\npolygon = [[0.0, 0.0], [4.0, 0.0], [1.0, 1.0], [0.0, 4.0]]\n" + compliance, 6,
-              "convex");
+  expectError("[[open_area]]\npolygon = [[0.0, 0.0], [6.0, 0.0], [0.0, 4.0], [2.0, 5.0]]\n" + compliance, 6,
+              "crosses itself");
+  // Two rooms joined by a 0.8 m passage: a core in two pieces.
+  expectError("[[open_area]]\npolygon = [[0, 0], [4, 0], [4, 1.6], [6, 1.6], [6, 0], [10, 0], [10, 4], [6, 4], "
+              "[6, 2.4], [4, 2.4], [4, 4], [0, 4]]\n" + compliance,
+              6, "not one piece");
   expectError("[[open_area]]\ncorners = [[0.0, 0.0], [0.8, 4.0]]\n" + compliance, 6, "no core");
   expectError("[[safety_point]]\nposition = [0.0, 0.0, 1.0]\nfacing = [0.0, 0.0]\n" + compliance, 7, "'facing'");
   expectError("[[escape_route]]\npath = [[0.0, 0.0], [1.0, 0.0]]\nwidth = 1.0\n", 5, "en1838");
