@@ -57,7 +57,9 @@ void judgeHighRiskArea(HighRiskAreaResult& a) {
   a.verdict = passIf(a.stats.points > 0 && a.stats.minLux >= a.requiredLux && a.uniformity >= kEn1838HighRiskUniformity);
 }
 
-void judgeSafetyPoint(SafetyPointResult& p) { p.verdict = passIf(p.verticalLux >= kEn1838SafetyPointLux); }
+void judgeSafetyPoint(SafetyPointResult& p) {
+  p.verdict = passIf(p.verticalLux >= kEn1838SafetyPointLux && p.nearestLuminaireM <= kEn1838NearM);
+}
 
 void judgeEn1838(En1838Result& r) {
   bool any = false, fail = false;

@@ -7,6 +7,7 @@
 #include "metrics/targets.h"
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ inline constexpr double kEn1838HighRiskMinLux = 15.0;
 inline constexpr double kEn1838HighRiskUniformity = 0.1;
 // 4.1 h) and i): 5 lx vertical at first-aid posts, fire-fighting equipment and call points.
 inline constexpr double kEn1838SafetyPointLux = 5.0;
+// EN 1838:2013 4.1: a luminaire "near" a point of emphasis is within 2 m of it, horizontally.
+inline constexpr double kEn1838NearM = 2.0;
 
 // Minimum, maximum and mean of a set of illuminances (lx); max/min is +inf when the minimum is 0.
 struct En1838Stats {
@@ -90,9 +93,13 @@ struct SafetyPointResult {
   Vec3 positionM{0.0};
   Vec2 facing{0.0, 1.0};
   double verticalLux = 0.0;
+  // Horizontal distance to the nearest emergency luminaire's photometric centre (m); infinite
+  // without one.
+  double nearestLuminaireM = std::numeric_limits<double>::infinity();
   Verdict verdict = Verdict::kNotChecked;
 };
-void judgeSafetyPoint(SafetyPointResult& p);  // 4.1 h), i)
+// 4.1 h), i): 5 lx vertical, and an emergency luminaire near (within 2 m horizontally).
+void judgeSafetyPoint(SafetyPointResult& p);
 
 // A luminaire on the plan: emergency or not.
 struct En1838Luminaire {

@@ -98,6 +98,9 @@ void En1838Section::addJson(json& j) const {
                       {"facing", {p.facing.x, p.facing.y}},
                       {"vertical_lux", p.verticalLux},
                       {"required_lux", kEn1838SafetyPointLux},
+                      {"nearest_emergency_luminaire_m",
+                       std::isfinite(p.nearestLuminaireM) ? json(p.nearestLuminaireM) : json(nullptr)},
+                      {"near_m", kEn1838NearM},
                       {"verdict", verdictName(p.verdict)}});
   j["safety_points"] = points;
 }
@@ -148,14 +151,17 @@ std::string En1838Section::html() const {
     h << "</table>\n";
   }
   if (!r.safetyPoints.empty()) {
-    h << "<h3>Safety equipment and first aid (4.1: 5 lx vertical at the equipment)</h3>\n"
+    h << "<h3>Safety equipment and first aid (4.1: 5 lx vertical at the equipment, an emergency luminaire "
+         "within 2 m horizontally)</h3>\n"
          "<table class=\"compliance\"><tr><th>point</th><th>position m</th><th>facing</th><th>E<sub>v</sub> "
-         "lx</th><th>verdict</th></tr>\n";
+         "lx</th><th>nearest emergency luminaire m</th><th>verdict</th></tr>\n";
     for (const SafetyPointResult& p : r.safetyPoints)
       h << "<tr><td>" << xmlEscape(p.name) << "</td><td class=\"pos\">(" << fixed(p.positionM.x, 2) << ", "
         << fixed(p.positionM.y, 2) << ", " << fixed(p.positionM.z, 2) << ")</td><td class=\"pos\">("
         << fixed(p.facing.x, 2) << ", " << fixed(p.facing.y, 2) << ")</td><td class=\"num\">"
-        << fixed(p.verticalLux, 2) << "</td>" << verdictCell(p.verdict) << "</tr>\n";
+        << fixed(p.verticalLux, 2) << "</td><td class=\"num\">"
+        << (std::isfinite(p.nearestLuminaireM) ? fixed(p.nearestLuminaireM, 2) : std::string("none")) << "</td>"
+        << verdictCell(p.verdict) << "</tr>\n";
     h << "</table>\n";
   }
   return h.str();

@@ -194,6 +194,9 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
     p.positionM = spec.positionM;
     p.facing = spec.facing;
     p.verticalLux = lux[pts.safetyPoints[k].first];
+    for (const LuminairePlacement& l : c.luminaires)
+      if (l.emergency)
+        p.nearestLuminaireM = std::min(p.nearestLuminaireM, glm::length(Vec2(l.positionM) - Vec2(spec.positionM)));
     judgeSafetyPoint(p);
     r.safetyPoints.push_back(std::move(p));
   }

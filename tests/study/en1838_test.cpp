@@ -199,7 +199,26 @@ TEST(En1838Study, EmergencyFactorAndMaintenanceFactorScale) {
   // Vertical illuminance facing −x at (2, 0, 1): E = I cos ι / d², cos ι = 2/d, d² = 4 + 4.
   const double d2 = 8.0, expected = 0.5 * 2.0 * 0.8 * kIntensityCd * (2.0 / std::sqrt(d2)) / d2;
   EXPECT_NEAR(r.safetyPoints[0].verticalLux, expected, 1e-9 * expected);
+  EXPECT_DOUBLE_EQ(r.safetyPoints[0].nearestLuminaireM, 2.0);  // the luminaire over (0, 0): "near", 2 m
   EXPECT_EQ(r.safetyPoints[0].verdict, Verdict::kPass);  // 5.66 lx
+}
+
+// EN 1838 4.1's "near": an emergency luminaire within 2 m horizontally of the equipment. The
+// point of the test above moved to (2.5, 0, 1) keeps more than 5 lx vertical (4.6 / (2.5² + 4)^1.5
+// · 2.5 … computed below) but has its luminaire 2.5 m away: it fails.
+TEST(En1838Study, SafetyPointNeedsAnEmergencyLuminaireWithinTwoMetres) {
+  const fs::path dir = test_support::scratchDir("en1838", "near");
+  const CaseFile c = writeCase(dir,
+                               "[[safety_point]]\nname = \"box\"\nposition = [2.5, 0.0, 1.0]\nfacing = [-1.0, 0.0]\n"
+                               "[[compliance]]\nstandard = \"en1838\"\n",
+                               "isotropic.ies", "emergency = true\nmultiplier = 2.0\n");
+  const En1838Result r = computeEn1838(c, *en1838Entry(c), *loadEmergencyScene(c, 1.0), TraceSettings{}, 1);
+  ASSERT_EQ(r.safetyPoints.size(), 1u);
+  const double d2 = 2.5 * 2.5 + 4.0, vertical = 2.0 * kIntensityCd * (2.5 / std::sqrt(d2)) / d2;
+  ASSERT_GE(vertical, 5.0);
+  EXPECT_NEAR(r.safetyPoints[0].verticalLux, vertical, 1e-9 * vertical);
+  EXPECT_DOUBLE_EQ(r.safetyPoints[0].nearestLuminaireM, 2.5);
+  EXPECT_EQ(r.safetyPoints[0].verdict, Verdict::kFail);
 }
 
 TEST(En1838Study, NonEmergencyLuminairesAreLeftOut) {
@@ -422,6 +441,8 @@ TEST(En1838Study, OfficeEmergencyExample) {
     EXPECT_TRUE(e["open_areas"][0].contains(key)) << key;
   EXPECT_EQ(e["high_risk_areas"].size(), 1u);
   EXPECT_EQ(e["safety_points"].size(), 2u);
+  // Each with an emergency downlight within 2 m (the first aid post fails on its 4.7 lx, not on this).
+  for (const auto& point : e["safety_points"]) EXPECT_LE(point["nearest_emergency_luminaire_m"].get<double>(), 2.0);
   EXPECT_EQ(e["emergency_luminaires"], 5);
   const std::string html = test_support::slurp(request.outDir / "report.html");
   EXPECT_NE(html.find("EN 1838:2013 emergency lighting"), std::string::npos);
