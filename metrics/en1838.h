@@ -126,6 +126,7 @@ struct En1838Result {
   std::vector<En1838Luminaire> luminaires;
   std::size_t emergencyLuminaires = 0;
   double maintenanceFactor = 1.0;
+  std::vector<std::string> leftOut;  // the surfaces left out (`leave_out`)
   Verdict verdict = Verdict::kNotChecked;  // fail if any fails, pass if all pass
 };
 // The overall verdict from the parts' (call after judging them).

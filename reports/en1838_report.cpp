@@ -44,6 +44,7 @@ void En1838Section::addJson(json& j) const {
   j["emergency_luminaires"] = r.emergencyLuminaires;
   j["maintenance_factor"] = r.maintenanceFactor;
   j["light"] = "direct";  // EN 1838 disregards reflected light
+  j["leave_out"] = r.leftOut;
   json routes = json::array();
   for (const EscapeRouteResult& e : r.routes) {
     json strips = json::array();

@@ -20,40 +20,6 @@ std::string trimmed(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-// Removes from the scene every surface whose name matches one of the patterns; used[k] is set
-// when pattern k matched.
-void removeSurfaces(Scene& scene, const std::vector<std::string>& patterns, std::vector<bool>& used) {
-  auto matches = [&](const std::string& name) {
-    bool hit = false;
-    for (std::size_t k = 0; k < patterns.size(); ++k)
-      if (globMatch(patterns[k], name)) hit = used[k] = true;
-    return hit;
-  };
-  std::vector<Shape> shapes;
-  std::vector<std::string> names;
-  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
-    const std::string& name = i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string();
-    if (matches(name)) continue;
-    shapes.push_back(scene.shapes[i]);
-    if (i < scene.shapeNames.size()) names.push_back(name);
-  }
-  scene.shapes = std::move(shapes);
-  scene.shapeNames = std::move(names);
-  TriangleMesh& m = scene.mesh;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  std::vector<TriangleMesh::Run> runs;
-  for (std::size_t r = 0; r < m.runs.size(); ++r) {
-    const uint32_t end = r + 1 < m.runs.size() ? m.runs[r + 1].firstTriangle : static_cast<uint32_t>(m.triangles.size());
-    if (matches(m.names[m.runs[r].name])) continue;
-    TriangleMesh::Run run = m.runs[r];
-    run.firstTriangle = static_cast<uint32_t>(triangles.size());
-    if (m.runs[r].firstTriangle < end) runs.push_back(run);
-    triangles.insert(triangles.end(), m.triangles.begin() + m.runs[r].firstTriangle, m.triangles.begin() + end);
-  }
-  m.triangles = std::move(triangles);
-  m.runs = std::move(runs);
-}
-
 }  // namespace
 
 bool hasWindowStates(const CaseFile& c) {

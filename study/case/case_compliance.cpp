@@ -210,6 +210,15 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
     if (!(s.emergencyMaintenanceFactor > 0.0 && s.emergencyMaintenanceFactor <= 1.0))
       c.fail(*n, "'maintenance_factor' must be in (0, 1]");
   }
+  if (const toml::node* n = keyOf(tab, "leave_out", s, ComplianceStandard::kEn1838)) {
+    s.emergencyLeaveOutLoc = c.at(*n);
+    const toml::array& patterns = asArray(c, *n, "leave_out", 0, "an array of surface identifiers or patterns");
+    if (patterns.empty()) c.fail(*n, "'leave_out' must name at least one surface (an identifier or a pattern such as \"desk_*\")");
+    for (const toml::node& p : patterns) {
+      s.emergencyLeaveOut.push_back(asString(c, p, "leave_out"));
+      if (s.emergencyLeaveOut.back().empty()) c.fail(p, "'leave_out' holds an empty identifier");
+    }
+  }
   tab.finish();
   out.compliance.push_back(std::move(s));
 }

@@ -7,6 +7,7 @@
 #include "photometry/site.h"
 #include "photometry/photometric_file.h"
 #include "photometry/make_sky.h"
+#include "study/grids/surface_grids.h"
 #include "study/window_states.h"
 
 #include <cmath>
@@ -25,14 +26,50 @@ std::vector<std::filesystem::path> scenePaths(const CaseFile& c) {
 }
 }  // namespace
 
-std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
-  auto scene = std::make_unique<Scene>();
+void readCaseGeometry(const CaseFile& c, Scene& scene) {
   // Window states (docs/annual.md): point-in-time studies see every group in its first state.
   if (hasWindowStates(c))
-    readStateScene(c, {}, *scene);
+    readStateScene(c, {}, scene);
   else
-    readSceneFiles(scenePaths(c), *scene, c.settings.scene);
-  scene->portals.insert(scene->portals.end(), c.portals.begin(), c.portals.end());
+    readSceneFiles(scenePaths(c), scene, c.settings.scene);
+  scene.portals.insert(scene.portals.end(), c.portals.begin(), c.portals.end());
+}
+
+void removeSurfaces(Scene& scene, const std::vector<std::string>& patterns, std::vector<bool>& used) {
+  auto matches = [&](const std::string& name) {
+    bool hit = false;
+    for (std::size_t k = 0; k < patterns.size(); ++k)
+      if (globMatch(patterns[k], name)) hit = used[k] = true;
+    return hit;
+  };
+  std::vector<Shape> shapes;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < scene.shapes.size(); ++i) {
+    const std::string& name = i < scene.shapeNames.size() ? scene.shapeNames[i] : std::string();
+    if (matches(name)) continue;
+    shapes.push_back(scene.shapes[i]);
+    if (i < scene.shapeNames.size()) names.push_back(name);
+  }
+  scene.shapes = std::move(shapes);
+  scene.shapeNames = std::move(names);
+  TriangleMesh& m = scene.mesh;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<TriangleMesh::Run> runs;
+  for (std::size_t r = 0; r < m.runs.size(); ++r) {
+    const uint32_t end = r + 1 < m.runs.size() ? m.runs[r + 1].firstTriangle : static_cast<uint32_t>(m.triangles.size());
+    if (matches(m.names[m.runs[r].name])) continue;
+    TriangleMesh::Run run = m.runs[r];
+    run.firstTriangle = static_cast<uint32_t>(triangles.size());
+    if (m.runs[r].firstTriangle < end) runs.push_back(run);
+    triangles.insert(triangles.end(), m.triangles.begin() + m.runs[r].firstTriangle, m.triangles.begin() + end);
+  }
+  m.triangles = std::move(triangles);
+  m.runs = std::move(runs);
+}
+
+std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight) {
+  auto scene = std::make_unique<Scene>();
+  readCaseGeometry(c, *scene);
   placeLuminaires(*scene, c.luminaires);
   if (withDaylight) addDaylight(*scene, daylightFromCase(c));
   return scene;

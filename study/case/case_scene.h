@@ -17,6 +17,15 @@ namespace candela {
 // [site] and [sky]. Throws InputError naming the bad file and line.
 std::unique_ptr<Scene> loadCaseScene(const CaseFile& c, bool withDaylight = true);
 
+// The case's geometry as loadCaseScene reads it (its scene files, window groups in their first
+// state, its portals), without luminaires or daylight.
+void readCaseGeometry(const CaseFile& c, Scene& scene);
+
+// Removes from the scene every surface whose identifier matches one of the patterns (globs as
+// [[surface_grid]]'s: `*` any run, `?` one character); used[k] is set when pattern k matched.
+// Before luminaires are placed (their openings are surfaces the indices of which it would move).
+void removeSurfaces(Scene& scene, const std::vector<std::string>& patterns, std::vector<bool>& used);
+
 // Places luminaires in `scene` (files shared by several placements are read once), with their
 // opening surfaces where `openingReflectance` is set. Throws InputError naming a bad file.
 void placeLuminaires(Scene& scene, const std::vector<LuminairePlacement>& luminaires);

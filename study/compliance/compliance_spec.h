@@ -76,6 +76,10 @@ struct ComplianceSpec {
   // EN 1838: the maintenance factor of the emergency luminaires (`maintenance_factor`, in (0, 1];
   // the luminaires' own is for the normal lighting and is not used).
   double emergencyMaintenanceFactor = 1.0;
+  // EN 1838: surfaces left out of the emergency study (`leave_out`: identifiers or patterns, as
+  // [[surface_grid]]'s): the furniture, for the empty floor the standard means.
+  std::vector<std::string> emergencyLeaveOut;
+  FileLoc emergencyLeaveOutLoc;
   FileLoc loc;
 };
 

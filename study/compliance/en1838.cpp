@@ -19,7 +19,8 @@ const ComplianceSpec* en1838Entry(const CaseFile& c) {
   return nullptr;
 }
 
-std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceFactor) {
+std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceFactor,
+                                          const std::vector<std::string>& leaveOut, const FileLoc& leaveOutLoc) {
   CaseFile e = c;
   e.luminaires.clear();
   for (const LuminairePlacement& l : c.luminaires) {
@@ -29,7 +30,14 @@ std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceF
     q.maintenanceFactor = maintenanceFactor;
     e.luminaires.push_back(std::move(q));
   }
-  std::unique_ptr<Scene> scene = loadCaseScene(e, /*withDaylight=*/false);
+  auto scene = std::make_unique<Scene>();
+  readCaseGeometry(e, *scene);
+  std::vector<bool> used(leaveOut.size(), false);
+  removeSurfaces(*scene, leaveOut, used);
+  for (std::size_t k = 0; k < used.size(); ++k)
+    if (!used[k])
+      throw InputError(leaveOutLoc, "'leave_out': no surface of the scene is named '" + leaveOut[k] + "'");
+  placeLuminaires(*scene, e.luminaires);
   for (Material& m : scene->materials) blackOutReflection(m);
   return scene;
 }
@@ -128,6 +136,7 @@ En1838Result computeEn1838(const CaseFile& c, const ComplianceSpec& entry, const
 
   En1838Result r;
   r.maintenanceFactor = entry.emergencyMaintenanceFactor;
+  r.leftOut = entry.emergencyLeaveOut;
   auto keep = [&](const char* part, const std::string& name, const En1838Points::Span& span) {
     for (std::size_t i = span.first; i < span.first + span.count; ++i)
       r.points.push_back({part, name, pts.sensors[i].position, pts.sensors[i].normal, lux[i]});
@@ -223,7 +232,8 @@ void addEn1838Compliance(const CaseFile& c, const ResolvedTrace& trace, ReportDa
   const ComplianceSpec* entry = en1838Entry(c);
   if (!entry) return;
   const auto start = std::chrono::steady_clock::now();
-  const std::unique_ptr<Scene> scene = loadEmergencyScene(c, entry->emergencyMaintenanceFactor);
+  const std::unique_ptr<Scene> scene =
+      loadEmergencyScene(c, entry->emergencyMaintenanceFactor, entry->emergencyLeaveOut, entry->emergencyLeaveOutLoc);
   En1838Result r = computeEn1838(c, *entry, *scene, trace.settings, trace.threads);
   // The plan's walls: the scene cut 1 m above the floor (z = 0), as an architect's plan.
   std::optional<PlanSection> section;

@@ -25,8 +25,12 @@ const ComplianceSpec* en1838Entry(const CaseFile& c);
 
 // The emergency scene: the case's geometry without daylight, and only its emergency luminaires,
 // each scaled by multiplier × emergency_factor × `maintenanceFactor` (its own maintenance factor
-// is the normal lighting's); every opaque reflecting material blacked out (blackOutReflection).
-std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceFactor);
+// is the normal lighting's); every opaque reflecting material blacked out (blackOutReflection);
+// the surfaces `leaveOut` names (the entry's `leave_out`) removed, a pattern that names none an
+// InputError at leaveOutLoc.
+std::unique_ptr<Scene> loadEmergencyScene(const CaseFile& c, double maintenanceFactor,
+                                          const std::vector<std::string>& leaveOut = {},
+                                          const FileLoc& leaveOutLoc = {});
 
 // Makes an opaque reflecting material (plastic, metal, mirror and their function, data, anisotropic
 // and Ashikhmin variants) a black plastic, keeping its name, line and antimatter bit: no light

@@ -275,6 +275,39 @@ TEST(En1838Study, OpenAreaCoreLeavesOutTheBorder) {
   EXPECT_EQ(r.openAreas[0].verdict, Verdict::kPass);
 }
 
+// `leave_out`: the empty floor the standard means. A desk (1 m × 1 m at 0.7 m) over the middle of
+// the hall's core shadows the floor under it (0 lx: the area fails); left out by its identifier
+// pattern, the core's minimum is the point law's at its corner again, as without furniture.
+TEST(En1838Study, LeftOutFurnitureGivesTheEmptyFloor) {
+  const fs::path dir = test_support::scratchDir("en1838", "leave_out");
+  writeFile(dir / "desk.rad", "void plastic grey 0 0 5 .5 .5 .5 0 0\n!genbox grey desk 1 1 0.05 | xform -t -0.5 -0.5 0.7\n");
+  const std::string area = "[[scene]]\nfile = \"desk.rad\"\n[[open_area]]\nname = \"hall\"\n"
+                           "corners = [[-2.0, -1.5], [2.0, 1.5]]\nspacing = 0.25\n[[compliance]]\nstandard = \"en1838\"\n";
+  const CaseFile furnished = writeCase(dir, area);
+  const En1838Result withDesk =
+      computeEn1838(furnished, *en1838Entry(furnished), *loadEmergencyScene(furnished, 1.0), TraceSettings{}, 1);
+  EXPECT_EQ(withDesk.openAreas[0].stats.minLux, 0.0);
+  EXPECT_EQ(withDesk.openAreas[0].verdict, Verdict::kFail);
+  const CaseFile empty = writeCase(dir, area + "leave_out = [\"desk*\"]\n");
+  const ComplianceSpec& entry = *en1838Entry(empty);
+  ASSERT_EQ(entry.emergencyLeaveOut, (std::vector<std::string>{"desk*"}));
+  const En1838Result r = computeEn1838(
+      empty, entry, *loadEmergencyScene(empty, 1.0, entry.emergencyLeaveOut, entry.emergencyLeaveOutLoc), TraceSettings{}, 1);
+  const double minLux = pointLaw(Vec3(1.5, 1.0, 0.0));
+  EXPECT_NEAR(r.openAreas[0].stats.minLux, minLux, 1e-9 * minLux);
+  EXPECT_EQ(r.openAreas[0].verdict, Verdict::kPass);
+  // A pattern that names no surface is an error at the key's line (the luminaire's 4 lines, the
+  // scene's 2, the area's 4, the entry's 2: line 13).
+  const CaseFile wrong = writeCase(dir, area + "leave_out = [\"table*\"]\n");
+  try {
+    loadEmergencyScene(wrong, 1.0, en1838Entry(wrong)->emergencyLeaveOut, en1838Entry(wrong)->emergencyLeaveOutLoc);
+    FAIL() << "no error for a pattern naming no surface";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.loc().line, 13) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no surface of the scene is named 'table*'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(En1838Study, HighRiskTaskArea) {
   const fs::path dir = test_support::scratchDir("en1838", "high_risk");
   // 100 cd at 3 m over a 1 m square at the floor: 11.1 lx at most, below 15 lx: fails.
