@@ -9,6 +9,8 @@
 #include "reports/plan_svg.h"
 #include "reports/report_data.h"
 #include "study/case/case_file.h"
+#include "study/compliance/en1838.h"
+#include "study/compliance/en1838_grids.h"
 #include "study/grids/prepared_grid.h"
 #include "study/grids/sensor_grid.h"
 #include "study/trace_options.h"
@@ -358,6 +360,22 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
                                    cacheRecordRays(s, points, boxSurfaceM2, hitFraction)});
   addLuminaires(e, c);
+  // EN 1838's points (study/compliance/en1838.h): each a sensor, its estimate, its value and its
+  // row of the points table; direct light from the emergency luminaires only.
+  if (const ComplianceSpec* entry = en1838Entry(c)) {
+    const double n1838 = en1838PointBound(c);
+    const double per = sizeof(SensorPoint) + sizeof(IrradianceEstimate) + sizeof(double) + sizeof(En1838PointValue) + 32;
+    MemoryItem m;
+    m.what = "the EN 1838 study";
+    m.loc = entry->loc;
+    m.bytes = static_cast<uint64_t>(std::min(n1838 * per, 1.8e19));
+    m.detail = "at most " + std::to_string(static_cast<long long>(std::min(n1838, 9e18))) + " points x " +
+               std::to_string(static_cast<int>(per)) + " B";
+    e.memory.push_back(std::move(m));
+    std::size_t emergency = 0;
+    for (const LuminairePlacement& l : c.luminaires) emergency += l.emergency;
+    e.work.push_back({"EN 1838", n1838 * raysPerSensor(directOnlySettings(s), 0, emergency)});
+  }
   // Views are rendered and written one at a time (study/grid_study.cpp): the largest one's pixels
   // and every view's pictures for the report.
   std::vector<MemoryItem> views;

@@ -122,14 +122,25 @@ void readGrObserver(const Context& c, const toml::table& t, int index, std::set<
   out.outdoor.observers.push_back(std::move(o));
 }
 
+// The most GR observers a task area's `gr_spacing` lattice may hold (about 200 B each once read,
+// and each a glare rating over its viewing directions: 20 MB, seconds).
+constexpr double kMaxGrLattice = 1e5;
+
 std::vector<GrObserverSpec> gridGrObservers(const OutdoorTaskAreaSpec& a) {
   std::vector<GrObserverSpec> out;
   if (!a.grSpacingM) return out;
   Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const Vec2& v : a.outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
   const Vec2 size = hi - lo;
-  const int nx = std::max(1, static_cast<int>(std::ceil(size.x / *a.grSpacingM - 1e-9)));
-  const int ny = std::max(1, static_cast<int>(std::ceil(size.y / *a.grSpacingM - 1e-9)));
+  // Bounded before anything is made: a lattice of more than kMaxGrLattice observers is refused.
+  const double cx = std::max(1.0, std::ceil(size.x / *a.grSpacingM - 1e-9));
+  const double cy = std::max(1.0, std::ceil(size.y / *a.grSpacingM - 1e-9));
+  if (cx * cy > kMaxGrLattice)
+    throw InputError(a.grSpacingLoc, "'gr_spacing' of " + std::to_string(*a.grSpacingM) + " m makes a lattice of " +
+                                         std::to_string(static_cast<long long>(std::min(cx * cy, 9e18))) + " observers over the task area '" + a.name +
+                                         "', more than the " + std::to_string(static_cast<long>(kMaxGrLattice)) +
+                                         " a task area may have");
+  const int nx = static_cast<int>(cx), ny = static_cast<int>(cy);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const Vec2 p(lo.x + (i + 0.5) * size.x / nx, lo.y + (j + 0.5) * size.y / ny);

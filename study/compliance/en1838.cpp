@@ -96,8 +96,6 @@ std::vector<Vec2> counterClockwise(std::vector<Vec2> poly) {
   return poly;
 }
 
-// The default pitch of a high-risk task area's points without its own `spacing`, m.
-constexpr double kHighRiskSpacingM = 0.25;
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "study/compliance/en1838_grids.h"
 
 #include "metrics/en1838.h"
+#include "study/grids/sensor_grid.h"  // insidePolygon
 
 #include <algorithm>
 #include <cmath>
@@ -15,16 +16,6 @@ double cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 void sampleSegment(const Vec2& a, const Vec2& b, double spacingM, bool withEnd, std::vector<Vec2>& out) {
   const int n = std::max(1, static_cast<int>(std::ceil(glm::length(b - a) / spacingM - 1e-9)));
   for (int i = 0; i < n + (withEnd ? 1 : 0); ++i) out.push_back(a + (b - a) * (static_cast<double>(i) / n));
-}
-
-// Even-odd rule (any simple polygon).
-bool insidePolygon(const std::vector<Vec2>& poly, const Vec2& p) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 &a = poly[i], &b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
 }
 
 }  // namespace
@@ -156,6 +147,37 @@ std::vector<Vec2> polygonPoints(const std::vector<Vec2>& ccw, double spacingM) {
       if (insidePolygon(ccw, p)) out.push_back(p);
     }
   return out;
+}
+
+namespace {
+
+// polygonPoints' count at most: its edges' points and the lattice over its box.
+double polygonPointBound(const std::vector<Vec2>& poly, double spacingM) {
+  double edges = 0.0;
+  Vec2 lo = poly.front(), hi = poly.front();
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    edges += glm::length(poly[(i + 1) % poly.size()] - poly[i]) / spacingM + 1.0;
+    lo = glm::min(lo, poly[i]), hi = glm::max(hi, poly[i]);
+  }
+  return edges + ((hi.x - lo.x) / spacingM + 1.0) * ((hi.y - lo.y) / spacingM + 1.0);
+}
+
+}  // namespace
+
+double en1838PointBound(const CaseFile& c) {
+  double n = static_cast<double>(c.emergency.safetyPoints.size());
+  for (const EscapeRouteSpec& r : c.emergency.routes) {
+    double stations = 0.0;
+    for (std::size_t i = 0; i + 1 < r.path.size(); ++i) stations += glm::length(r.path[i + 1] - r.path[i]) / r.spacingM + 2.0;
+    const double strips = std::ceil(r.widthM / kEn1838MaxStripWidthM - 1e-9);
+    const double across = std::max(2.0, std::ceil(0.5 * r.widthM / strips / r.spacingM - 1e-9));
+    n += strips * stations * (across + 2.0);  // each strip's centre line and its band
+  }
+  for (const OpenAreaSpec& a : c.emergency.openAreas)
+    n += polygonPointBound(a.outline, a.spacingM) + kPi * a.outline.size() * kEn1838BorderM / a.spacingM;
+  for (const TaskAreaSpec& a : c.taskAreas)
+    if (a.emergencyHighRisk) n += polygonPointBound(a.outline, a.spacingM.value_or(kHighRiskSpacingM));
+  return n;
 }
 
 std::vector<RouteStripPoints> routeStrips(const EscapeRouteSpec& route) {

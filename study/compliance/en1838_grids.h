@@ -4,6 +4,7 @@
 #pragma once
 
 #include "base/math.h"
+#include "study/case/case_file.h"
 #include "study/compliance/en1838_spec.h"
 
 #include <vector>
@@ -27,6 +28,13 @@ std::vector<Vec2> insetConvexPolygon(const std::vector<Vec2>& ccw, double distan
 // empty when that outline is not one simple polygon every vertex of which lies distanceM from the
 // boundary (an edge shorter than the inset swallowed, or a core in several pieces).
 std::vector<Vec2> insetPolygon(const std::vector<Vec2>& ccw, double distanceM, double arcStepM);
+
+// The default pitch of a high-risk task area's points without its own `spacing`, m.
+inline constexpr double kHighRiskSpacingM = 0.25;
+
+// An upper bound of the points en1838Points makes for the case's routes, open areas, high-risk
+// task areas and safety points, counted without making them (the run's memory check comes first).
+double en1838PointBound(const CaseFile& c);
 
 // Points of a simple polygon: every vertex and its edges at most `spacingM` apart (the boundary,
 // where the minima of a lit area usually lie), then the interior lattice of pitch `spacingM`

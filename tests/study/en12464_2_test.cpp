@@ -344,6 +344,9 @@ TEST(En12464_2Case, BadInputNamesTheLine) {
               "corners = [[20.0, 0.0], [30.0, 10.0]]\nmaintained_illuminance = 10\n" +
               "[[observer]]\nkind = \"gr\"\nposition = [15.0, 5.0]\n" + kCompliance,
               14, "stands in no outdoor task area");
+  // A GR lattice is bounded before it is made: 10 m at 1 mm is 10⁸ observers (limit 10⁵).
+  expectError(area + "gr_spacing = 0.001\n" + kCompliance, 8,
+              "makes a lattice of 100000000 observers over the task area 'task area 1', more than the 100000");
 }
 
 // The example: every part in summary.json, each GR consistent with its own L_vl and L_ve, and the

@@ -12,6 +12,7 @@
 #include "study/case/case_scene.h"
 #include "study/compliance/en1838_grids.h"
 #include "study/run_case.h"
+#include "study/resource_estimate.h"
 #include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -398,6 +399,33 @@ TEST(En1838Grids, InsetOfAConcavePolygonRoundsItsReflexCorner) {
   // A convex polygon takes the convex inset.
   const std::vector<Vec2> square = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
   EXPECT_EQ(insetPolygon(square, 0.5, 0.25), insetConvexPolygon(square, 0.5));
+}
+
+// The run's memory check counts EN 1838's points before they are made: the bound holds the
+// points made (the example's, and a wide route's strips), and a hall of 1000 m × 1000 m at 1 cm
+// (10¹⁰ points) is refused at the entry's line, as an oversized grid is.
+TEST(En1838Case, PointsAreBoundedBeforeTheyAreMade) {
+  const CaseFile example = readCaseFile(fs::path(CANDELA_TEST_DATA) / ".." / ".." / "cases" / "office-emergency" / "case.toml");
+  const double made = static_cast<double>(en1838Points(example).sensors.size());
+  EXPECT_GE(en1838PointBound(example), made);
+  EXPECT_LE(en1838PointBound(example), 2.0 * made);
+  const fs::path dir = test_support::scratchDir("en1838", "bound");
+  const CaseFile wide = writeCase(dir, "[[escape_route]]\nname = \"r\"\npath = [[0.0, 0.0], [5.0, 0.0], [5.0, 3.0]]\n"
+                                       "width = 4.5\nspacing = 0.3\n[[compliance]]\nstandard = \"en1838\"\n");
+  EXPECT_GE(en1838PointBound(wide), static_cast<double>(en1838Points(wide).sensors.size()));
+  const CaseFile huge = writeCase(dir, "[[open_area]]\nname = \"hall\"\ncorners = [[0.0, 0.0], [1000.0, 1000.0]]\n"
+                                       "spacing = 0.01\n[[compliance]]\nstandard = \"en1838\"\n");
+  const Scene empty;
+  const ResourceEstimate e = estimateGridStudy(huge, gridPointCounts(huge), empty, TraceSettings{}, 1);
+  ResourceLimits limits;
+  limits.maxMemoryBytes = 64ull << 30;
+  try {
+    checkResources(e, limits, FileLoc{"case.toml", 0, 0});
+    FAIL() << "10^10 points were not refused";
+  } catch (const InputError& err) {
+    EXPECT_EQ(err.loc().line, 9) << err.what();  // [[compliance]] (the luminaire's 4 lines, the area's 4)
+    EXPECT_NE(std::string(err.what()).find("the EN 1838 study needs about"), std::string::npos) << err.what();
+  }
 }
 
 // Bad input: InputError at the offending line.
