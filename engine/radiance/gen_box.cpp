@@ -146,6 +146,11 @@ class FacetedBox {
     return n;
   }
   static double area(const std::vector<Vec3>& f) { return 0.5 * glm::length(newell(f)); }
+  // The axis of n's largest component, a tie to the earlier axis (objtriangulate.c's and tmesh.c's test).
+  static int dominantAxis(const Vec3& n) {
+    const int ax = n.y * n.y > n.x * n.x ? 1 : 0;
+    return n.z * n.z > n[ax] * n[ax] ? 2 : ax;
+  }
 
   // convertobj.c's checksmooth: whether face f is smoothed; a face whose normals are all reversed
   // is turned round (its vertices in reverse order) and written flat.
@@ -170,9 +175,7 @@ class FacetedBox {
   // dominant axis, taken counter-clockwise, ears cut from the last vertex on, each triangle kept
   // in the face's own orientation; appended in the order made.
   static void triangulate(const Face& f, std::vector<Face>& out) {
-    const Vec3 fn = newell(f.p);
-    int ax = fn.y * fn.y > fn.x * fn.x ? 1 : 0;
-    if (fn.z * fn.z > fn[ax] * fn[ax]) ax = 2;
+    const int ax = dominantAxis(newell(f.p));
     const int x = (ax + 1) % 3, y = (ax + 2) % 3;
     const int count = static_cast<int>(f.p.size());
     double a2 = 0.0;
@@ -198,9 +201,7 @@ class FacetedBox {
   // point's coordinates past the dominant axis, through the barycentric coordinates) and the
   // triangle of it, numbered ++k; a triangle without barycentric coordinates is left out.
   void smoothTriangle(const Face& t, int& k, std::vector<RadPrimitive>& out) const {
-    const Vec3 fn = glm::cross(t.p[0] - t.p[1], t.p[2] - t.p[1]);
-    int ax = fn.y * fn.y > fn.x * fn.x ? 1 : 0;
-    if (fn.z * fn.z > fn[ax] * fn[ax]) ax = 2;
+    const int ax = dominantAxis(glm::cross(t.p[0] - t.p[1], t.p[2] - t.p[1]));
     const int x = (ax + 1) % 3, y = (ax + 2) % 3;
     double tm[2][3];
     for (int i = 0; i < 2; ++i) {  // the weight of vertex i as a x + b y + c (tmesh.c's comp_baryc)

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 
 namespace candela {
@@ -86,12 +88,20 @@ TEST(En1838, HighRiskAreaTakesTenPercentButAtLeastFifteenLux) {
   EXPECT_EQ(risky(100.0, {15.0, 150.1}).verdict, Verdict::kFail);
 }
 
-TEST(En1838, SafetyPointFlipsAtFiveLux) {
+TEST(En1838, SafetyPointFlipsAtFiveLuxAndTwoMetres) {
   SafetyPointResult p;
   p.verticalLux = 5.0;
+  p.nearestLuminaireM = 2.0;
   judgeSafetyPoint(p);
   EXPECT_EQ(p.verdict, Verdict::kPass);
   p.verticalLux = 4.999;
+  judgeSafetyPoint(p);
+  EXPECT_EQ(p.verdict, Verdict::kFail);
+  p.verticalLux = 5.0;
+  p.nearestLuminaireM = 2.001;  // no emergency luminaire near (EN 1838 4.1)
+  judgeSafetyPoint(p);
+  EXPECT_EQ(p.verdict, Verdict::kFail);
+  p.nearestLuminaireM = std::numeric_limits<double>::infinity();  // none at all
   judgeSafetyPoint(p);
   EXPECT_EQ(p.verdict, Verdict::kFail);
 }

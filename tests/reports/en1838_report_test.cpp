@@ -2,6 +2,8 @@
 #include "reports/en1838_report.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 namespace candela {
@@ -27,9 +29,10 @@ En1838Result sample() {
   p.name = "first aid";
   p.positionM = {4.0, 0.5, 1.2};
   p.verticalLux = 6.0;
+  p.nearestLuminaireM = std::hypot(4.0 - 3.0, 0.5 - 0.0);  // E1's, 1.12 m: near (within 2 m)
   judgeSafetyPoint(p);
   r.safetyPoints.push_back(p);
-  r.luminaires = {{"E1", {2.0, 0.0}, true}, {"N1", {2.0, 2.0}, false}};
+  r.luminaires = {{"E1", {3.0, 0.0}, true}, {"N1", {2.0, 2.0}, false}};
   r.emergencyLuminaires = 1;
   judgeEn1838(r);
   return r;
@@ -51,6 +54,8 @@ TEST(En1838Report, JsonKeysAsTheContractNamesThem) {
   EXPECT_TRUE(area["uniformity_ratio"].is_null());  // max/min over a minimum of 0: no number
   EXPECT_EQ(area["verdict"], "fail");
   EXPECT_EQ(j["safety_points"][0]["verdict"], "pass");
+  EXPECT_DOUBLE_EQ(j["safety_points"][0]["nearest_emergency_luminaire_m"].get<double>(), std::hypot(1.0, 0.5));
+  EXPECT_DOUBLE_EQ(j["safety_points"][0]["near_m"].get<double>(), 2.0);
   EXPECT_EQ(j["emergency_luminaires"], 1);
   EXPECT_EQ(j["light"], "direct");
 }
