@@ -111,7 +111,13 @@ std::string En1838Section::html() const {
   std::ostringstream h;
   h << "<p>Emergency mode: " << r.emergencyLuminaires
     << " emergency luminaire(s) at their emergency flux, maintenance factor " << formatFixed(r.maintenanceFactor, 2)
-    << ", direct light only (EN 1838 disregards reflected light; docs/emergency.md).</p>\n";
+    << ", direct light only (EN 1838 disregards reflected light; docs/emergency.md).";
+  if (!r.leftOut.empty()) {
+    h << " Left out of the scene (the empty floor): ";
+    for (std::size_t k = 0; k < r.leftOut.size(); ++k) h << (k ? ", " : "") << "<code>" << xmlEscape(r.leftOut[k]) << "</code>";
+    h << ".";
+  }
+  h << "</p>\n";
   h << en1838PlanSvg(r, section_ ? &*section_ : nullptr) << "\n";
   h << "<p class=\"legend\">Plan: filled circles emergency luminaires, open circles the others; routes with their "
        "width and dashed centre line; open areas with their dashed core (0.5 m inside); squares safety points with "

@@ -297,6 +297,9 @@ TEST(En1838Study, LeftOutFurnitureGivesTheEmptyFloor) {
   const double minLux = pointLaw(Vec3(1.5, 1.0, 0.0));
   EXPECT_NEAR(r.openAreas[0].stats.minLux, minLux, 1e-9 * minLux);
   EXPECT_EQ(r.openAreas[0].verdict, Verdict::kPass);
+  // The report says what was left out.
+  EXPECT_NE(En1838Section(r, std::nullopt).html().find("Left out of the scene (the empty floor): <code>desk*</code>."),
+            std::string::npos);
   // A pattern that names no surface is an error at the key's line (the luminaire's 4 lines, the
   // scene's 2, the area's 4, the entry's 2: line 13).
   const CaseFile wrong = writeCase(dir, area + "leave_out = [\"table*\"]\n");
