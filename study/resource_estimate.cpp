@@ -65,7 +65,8 @@ constexpr double kRaysPerIrradianceSample = 1.0;
 // One path vertex's light selection evaluates every source's importance (engine/light_selection.h):
 // a fraction of a ray's cost each, fitted to a 100 × 100 luminaire array over 6 points at draft
 // (docs/reliability.md; it includes the records' own vertices, which few points share out badly).
-constexpr double kSelectionCostPerSource = 0.2;
+// 0.2 until 2026-12-06; 0.09 since a luminaire's importance is inlined into the selection loop.
+constexpr double kSelectionCostPerSource = 0.09;
 
 std::string fixed(double v, int decimals) {
   char buf[64];

@@ -179,13 +179,13 @@ TEST(ResourceEstimate, RaysPerSensor) {
   EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 + 10.0 * (2 + 5));  // openings sampled as areas
   s.maxBounces = 100;
   s.method = Method::kPath;  // 1 + 16 × 1 vertices a ray, a ray and a shadow ray each; selection over 7
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 2 * 17 + 70.0 + 1000.0 * 17 * 0.2 * 7);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 2 * 17 + 70.0 + 1000.0 * 17 * 0.09 * 7);
   s.method = Method::kCache;  // the hit, its shadow ray and 8 for the lookup; 1 + 4 vertices
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 70.0 + 1000.0 * 5 * 0.2 * 7);
-  // A million luminaires dominate: each path vertex weighs them all.
-  EXPECT_GT(raysPerSensor(s, 0, 1000000), 1e9);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5), 1000.0 * 10 + 70.0 + 1000.0 * 5 * 0.09 * 7);
+  // A million luminaires dominate: each path vertex weighs them all (1000 × 5 × 0.09 × 10⁶).
+  EXPECT_GT(raysPerSensor(s, 0, 1000000), 4.5e8);
   // Where a quarter of the hemisphere rays meet a surface, the rest cost themselves only.
-  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5, 0.25), 1000.0 * (1.0 + 0.25 * 9.0) + 70.0 + 0.25 * 1000.0 * 5 * 0.2 * 7);
+  EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5, 0.25), 1000.0 * (1.0 + 0.25 * 9.0) + 70.0 + 0.25 * 1000.0 * 5 * 0.09 * 7);
 }
 
 // The pilot's share of hemisphere rays meeting the scene, over one large floor: none from points
