@@ -188,6 +188,28 @@ TEST(ResourceEstimate, RaysPerSensor) {
   EXPECT_DOUBLE_EQ(raysPerSensor(s, 2, 5, 0.25), 1000.0 * (1.0 + 0.25 * 9.0) + 70.0 + 0.25 * 1000.0 * 5 * 0.09 * 7);
 }
 
+// EN 12464-2's observers and EN 13201's roads: sight lines to each luminaire, counted as rays.
+// An observer looking all round at 45° steps (8 views), one looking one way, and a road of 60 m ×
+// 7 m in 2 lanes (20 rows along; 3 × 2 luminance and ⌈7/1.5⌉ = 5 illuminance points across, 2
+// edge points and 2 observers a row): (8 + 1 + 20 × 15) × 3 luminaires.
+TEST(ResourceEstimate, GlareRatingsAndRoadsAreSightLines) {
+  CaseFile c;
+  GrObserverSpec all, one;
+  one.direction = Vec2(1.0, 0.0);
+  c.outdoor.observers = {all, one};
+  RoadSpec road;
+  road.lengthM = 60.0;
+  road.widthM = 7.0;
+  road.lanes = 2;
+  c.roadLighting.roads.push_back(road);
+  Scene scene;
+  scene.luminaires.resize(3);
+  const ResourceEstimate e = estimateGridStudy(c, {}, scene, TraceSettings{}, 1);
+  const auto step = std::find_if(e.work.begin(), e.work.end(), [](const WorkStep& w) { return w.label == "glare ratings and roads"; });
+  ASSERT_NE(step, e.work.end());
+  EXPECT_DOUBLE_EQ(step->rays, (8.0 + 1.0 + 20.0 * 15.0) * 3.0);
+}
+
 // The pilot's share of hemisphere rays meeting the scene, over one large floor: none from points
 // above it facing up, all from points facing down; from a point facing sideways, the directions
 // of the fixed pattern that point below the horizon, counted here from the same pattern (the
