@@ -197,7 +197,11 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
       eval.begin({});
       if (checkValid && !(eval.call(validF, st) > 0.0)) continue;
       Point& pt = out[static_cast<size_t>(j - first)];
-      for (int k = 0; k < 3; ++k) {
+      // -s's points one step past the ends only shape the normals: one that is not finite there
+      // leaves the point out (its neighbours' differences turn one-sided) instead of failing.
+      const bool beyond = i < 0 || i > m || j < 0 || j > n;
+      bool finite = true;
+      for (int k = 0; k < 3 && finite; ++k) {
         double v;
         if (k < functions) {
           eval.begin({});
@@ -205,12 +209,14 @@ std::vector<RadPrimitive> expandGensurf(const RadCommand& cmd, const RadExpandCo
         } else {
           v = data->value(st[0], st[1], data->size == 3 ? k : 0);
         }
-        if (!std::isfinite(v))
+        finite = std::isfinite(v);
+        if (!finite && !beyond)
           fail(std::string(kWhat[k]) + " is not a finite number at s = " + std::to_string(st[0]) + ", t = " +
                std::to_string(st[1]));
         pt.p[k] = v;
       }
-      pt.valid = true;
+      pt.valid = finite;
+      if (!finite) pt.p = Vec3(0.0);
     }
   };
   std::vector<RadPrimitive> out;

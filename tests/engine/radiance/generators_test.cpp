@@ -975,6 +975,10 @@ TEST(Gensurf, SmoothedCellsTakeTheSpheresNormalsAtTheirCorners) {
   EXPECT_EQ(smoothed, 6 * 8 - 2 * 8);  // the 8 cells at each pole are flat
   EXPECT_GT(corners, 0);
   EXPECT_LT(worstMiddle, 1e-6);  // radians
+  // A function not finite one step past the ends (where -s only looks for the normals) leaves
+  // those points out: the flat square of 4 × 4 cells, each a polygon after its texture.
+  const auto ps = run("!gensurf m sq s t 'if(s - 1.01, 1e308 * 1e308, 0)' 4 4 -s");
+  EXPECT_EQ(std::count_if(ps.begin(), ps.end(), [](const RadPrimitive& p) { return p.type == "polygon"; }), 16);
 }
 
 TEST(Gensurf, DataFileAndBounds) {
