@@ -78,4 +78,21 @@ double planeDeviation(const std::vector<Vec3>& pts, const Vec3& n, size_t* worst
   return dev;
 }
 
+std::optional<std::pair<size_t, size_t>> outlineSelfCrossing(const std::vector<glm::dvec2>& q) {
+  const size_t m = q.size();
+  auto side = [](const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+    const double s = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    return (s > 0.0) - (s < 0.0);
+  };
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j == m - 1) continue;  // neighbours through the closing edge
+      const glm::dvec2 &a = q[i], &b = q[(i + 1) % m], &c = q[j], &d = q[(j + 1) % m];
+      if (side(a, b, c) * side(a, b, d) <= 0 && side(c, d, a) * side(c, d, b) <= 0 &&
+          !(side(a, b, c) == 0 && side(a, b, d) == 0))  // collinear overlaps: not a crossing here
+        return std::make_pair(i, j);
+    }
+  return std::nullopt;
+}
+
 }  // namespace candela

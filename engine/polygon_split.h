@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace candela {
@@ -22,6 +24,11 @@ namespace candela {
 // receives the tests made (a file's readers bound their sum).
 bool splitPolygon(const std::vector<Vec3>& pts, const Vec3& normal, std::vector<std::array<uint32_t, 3>>& out,
                   uint64_t maxTests = 100000000, uint64_t* used = nullptr);
+
+// The first two edges (by their first vertices) of the closed plane outline `pts` that cross or
+// touch each other (not neighbours; two collinear edges overlapping are not counted), or none:
+// an outline without them is simple. O(n²).
+std::optional<std::pair<size_t, size_t>> outlineSelfCrossing(const std::vector<glm::dvec2>& pts);
 
 // The largest distance of a vertex from the plane through the centroid with unit normal `n`
 // (m), and the vertex (0-based) where it occurs.

@@ -590,28 +590,15 @@ class SceneReader::Builder {
     target.addPolygon(pts, mat, p.name);
   }
 
-  // The first two edges (by their first vertices) of the outline `pts` that cross each other seen
-  // along n (not neighbours; touching at a point counts), or none; outlines of more than 4096
-  // vertices are not checked (the pairs would cost more than the rest of the reading).
+  // The first two edges of the outline `pts` that cross each other seen along n
+  // (outlineSelfCrossing), or none; outlines of more than 4096 vertices are not checked (the
+  // pairs would cost more than the rest of the reading).
   static std::optional<std::pair<size_t, size_t>> selfCrossing(const std::vector<Vec3>& pts, const Vec3& n) {
-    const size_t m = pts.size();
-    if (m < 4 || m > 4096) return std::nullopt;
+    if (pts.size() < 4 || pts.size() > 4096) return std::nullopt;
     const Frame f = Frame::fromNormal(n);
     std::vector<glm::dvec2> q;
     for (const Vec3& v : pts) q.emplace_back(glm::dot(v, f.t), glm::dot(v, f.b));
-    auto side = [](const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
-      const double s = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-      return (s > 0.0) - (s < 0.0);
-    };
-    for (size_t i = 0; i < m; ++i)
-      for (size_t j = i + 2; j < m; ++j) {
-        if (i == 0 && j == m - 1) continue;  // neighbours through the closing edge
-        const glm::dvec2 &a = q[i], &b = q[(i + 1) % m], &c = q[j], &d = q[(j + 1) % m];
-        if (side(a, b, c) * side(a, b, d) <= 0 && side(c, d, a) * side(c, d, b) <= 0 &&
-            !(side(a, b, c) == 0 && side(a, b, d) == 0))  // collinear overlaps: not a crossing here
-          return std::make_pair(i, j);
-      }
-    return std::nullopt;
+    return outlineSelfCrossing(q);
   }
 
   // A spotlight on a flat surface whose cone lies wholly behind the surface's front (the angle

@@ -1,6 +1,7 @@
 // [[escape_route]], [[open_area]], [[safety_point]] (study/compliance/en1838_case.h).
 #include "study/compliance/en1838_case.h"
 
+#include "engine/polygon_split.h"
 #include "metrics/en1838.h"
 #include "study/compliance/en1838_grids.h"
 #include "study/grids/sensor_grid.h"
@@ -76,7 +77,7 @@ void readOpenArea(const Context& c, const toml::table& t, int index, std::set<st
     const double area = polygonArea(a.outline);
     if (!(std::abs(area) > 0.0)) c.fail(*pn, "'polygon' encloses a zero area");
     if (area < 0.0) std::reverse(a.outline.begin(), a.outline.end());
-    if (!isSimplePolygon(a.outline)) c.fail(*pn, "'polygon' crosses itself: give its corners in order round the area");
+    if (outlineSelfCrossing(a.outline)) c.fail(*pn, "'polygon' crosses itself: give its corners in order round the area");
   }
   a.heightM = numberOr(tab, "height", 0.0);
   a.spacingM = spacingOr(tab, a.spacingM);

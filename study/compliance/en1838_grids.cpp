@@ -1,5 +1,6 @@
 #include "study/compliance/en1838_grids.h"
 
+#include "engine/polygon_split.h"
 #include "metrics/en1838.h"
 #include "study/grids/sensor_grid.h"  // insidePolygon
 
@@ -69,12 +70,6 @@ double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
   return glm::length(p - (a + t * e));
 }
 
-// Whether segments p–q and r–s cross at a point inside both (touching ends do not count).
-bool segmentsCross(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
-  const double d1 = cross(q - p, r - p), d2 = cross(q - p, s - p), d3 = cross(s - r, p - r), d4 = cross(s - r, q - r);
-  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
-}
-
 }  // namespace
 
 std::vector<Vec2> insetPolygon(const std::vector<Vec2>& ccw, double distanceM, double arcStepM) {
@@ -119,17 +114,7 @@ std::vector<Vec2> insetPolygon(const std::vector<Vec2>& ccw, double distanceM, d
     for (std::size_t i = 0; i < n; ++i)
       if (segmentDistance(p, ccw[i], ccw[(i + 1) % n]) < distanceM * (1.0 - 1e-9)) return {};
   }
-  return isSimplePolygon(out) ? out : std::vector<Vec2>{};
-}
-
-bool isSimplePolygon(const std::vector<Vec2>& polygon) {
-  const std::size_t m = polygon.size();
-  for (std::size_t i = 0; i < m; ++i)
-    for (std::size_t j = i + 2; j < m; ++j) {
-      if (i == 0 && j == m - 1) continue;  // neighbours through the closing edge
-      if (segmentsCross(polygon[i], polygon[(i + 1) % m], polygon[j], polygon[(j + 1) % m])) return false;
-    }
-  return true;
+  return outlineSelfCrossing(out) ? std::vector<Vec2>{} : out;
 }
 
 std::vector<Vec2> polygonPoints(const std::vector<Vec2>& ccw, double spacingM) {

@@ -14,9 +14,6 @@ namespace candela {
 // Whether the polygon (counter-clockwise, ≥ 3 vertices) is convex; collinear vertices allowed.
 bool isConvexPolygon(const std::vector<Vec2>& ccw);
 
-// Whether no two of the polygon's edges cross (neighbours share their corner only).
-bool isSimplePolygon(const std::vector<Vec2>& polygon);
-
 // The convex polygon `ccw` shrunk by `distanceM` on every side: the intersection of the half-planes
 // its edges moved inwards bound (exact for convex polygons). Empty when nothing is left.
 std::vector<Vec2> insetConvexPolygon(const std::vector<Vec2>& ccw, double distanceM);
