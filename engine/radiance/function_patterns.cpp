@@ -36,15 +36,18 @@ const FunctionFiles::Read& FunctionFiles::once(const std::string& name, const Ra
 std::string FunctionFiles::load(const std::string& name, const RadPrimitive& p, const std::filesystem::path& folder) {
   if (name == ".") return {};
   // A file of Radiance's library its generators name (surf.cal, ...): a copy found where files
-  // are looked up is read; otherwise candela's own.
+  // are looked up is read; otherwise candela's own. Looked for once a name and folder (gensurf -s
+  // names it for every cell).
   if (const std::optional<std::string_view> text = cal::libraryFile(name)) {
-    bool found = true;
-    try {
-      findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "function file", root_);
-    } catch (const InputError&) {
-      found = false;
+    const auto [choice, first] = libraryChoice_.emplace(name + '\n' + folder.string(), true);
+    if (first) {
+      try {
+        findSceneFile(name, folder, p.loc, p.type + " '" + p.name + "'", "function file", root_);
+      } catch (const InputError&) {
+        choice->second = false;
+      }
     }
-    if (!found) {
+    if (!choice->second) {
       const std::string used = name + " (built in)";
       if (read_.emplace("function file:" + used, Read{used, {}, nullptr, nullptr, nullptr}).second) {
         program_->addText(*text, used);

@@ -86,6 +86,7 @@ class FunctionFiles {
   std::filesystem::path root_;
   std::map<std::string, Read> read_;  // by role and canonical path
   std::map<std::string, cal::Symbol> compiled_;  // functions' expressions compiled (compiled)
+  std::map<std::string, bool> libraryChoice_;     // a library file (load) by name and folder: found?
   std::vector<std::string> files_;
 };
 
