@@ -22,23 +22,30 @@ namespace candela {
 // near the source. Zero only where the light certainly cannot reach: behind a one-sided source.
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n);
 
-// lightImportance of a luminaire whose peak intensities are tabulated, inline for the selection's
-// loop (one square root and two divisions): its tabulated peak towards p, times the cosine at the
-// receiver plus 0.05, over the distance squared (at least a quarter of the opening's size squared).
+// lightImportance of a luminaire, inline for the selection's loop (one square root and two
+// divisions): its largest intensity over the C planes at p's angle from the nadir (the tabulated
+// band's, LuminaireSource::peakByCosGamma; the exact intensity towards p without a table), times
+// the cosine at the receiver plus 0.05, over the distance squared (at least a quarter of the
+// opening's size squared).
 inline double luminaireImportance(const LuminaireSource& lum, const Vec3& p, const Vec3& n) {
   const Vec3 e = p - lum.position;
   const double r2 = glm::dot(e, e);
-  double cosI = 1.0, cosG = 1.0;
+  double cosI = 1.0, cosG = 1.0, inv = 0.0;
   if (r2 > 0.0) {
-    const double inv = 1.0 / std::sqrt(r2);
+    inv = 1.0 / std::sqrt(r2);
     cosI = std::max(0.0, -glm::dot(n, e) * inv);
     cosG = -glm::dot(e, lum.axisZ) * inv;
   }
-  const int bin = std::clamp(static_cast<int>((cosG + 1.0) * 0.5 * LuminaireSource::kCosBins), 0,
-                             LuminaireSource::kCosBins - 1);
+  double peak;
+  if (lum.peakTabulated) {
+    const int bin = std::clamp(static_cast<int>((cosG + 1.0) * 0.5 * LuminaireSource::kCosBins), 0,
+                               LuminaireSource::kCosBins - 1);
+    peak = lum.peakByCosGamma[static_cast<size_t>(bin)];
+  } else {
+    peak = lum.intensityCd(r2 > 0.0 ? e * inv : -lum.axisZ);
+  }
   const double size = lum.sizeM();
-  return lum.peakByCosGamma[static_cast<size_t>(bin)] * (cosI + 0.05) /
-         (kLumensPerWatt * std::max(r2, 0.25 * size * size + 1e-6));
+  return peak * (cosI + 0.05) / (kLumensPerWatt * std::max(r2, 0.25 * size * size + 1e-6));
 }
 
 // `visibility(p, sample, tMax, lightShape)` returns the RGB transmittance of the shadow ray of a
@@ -70,8 +77,8 @@ Rgb sampleLightsByImportance(const std::vector<Light>& lights, const Scene& scen
       continue;
     }
     const Light& light = lights[l];
-    const LuminaireSource* lum = light.kind == Light::Kind::kLuminaire ? &scene.luminaires[light.luminaire] : nullptr;
-    total += cdf[l] = s * (lum && lum->peakTabulated ? luminaireImportance(*lum, p, n) : lightImportance(light, scene, p, n));
+    total += cdf[l] = s * (light.kind == Light::Kind::kLuminaire ? luminaireImportance(scene.luminaires[light.luminaire], p, n)
+                                                                  : lightImportance(light, scene, p, n));
   }
   if (total <= 0.0) return Rgb(0.0);
   double acc = 0.0;

@@ -460,15 +460,7 @@ double distributionImportance(const SourceDistribution& dist, const Vec3& e, dou
 }  // namespace
 
 double lightImportance(const Light& light, const Scene& scene, const Vec3& p, const Vec3& n) {
-  if (light.kind == Light::Kind::kLuminaire) {
-    const LuminaireSource& lum = scene.luminaires[light.luminaire];
-    if (lum.peakTabulated) return luminaireImportance(lum, p, n);
-    const Vec3 e = p - lum.position;
-    const double d2 = std::max(glm::dot(e, e), 0.25 * lum.sizeM() * lum.sizeM() + 1e-6);
-    const double d = std::sqrt(glm::dot(e, e));
-    const double cosI = d > 0.0 ? std::max(0.0, -glm::dot(n, e) / d) : 1.0;
-    return lum.peakIntensityCd(d > 0.0 ? e / d : -lum.axisZ) * (cosI + 0.05) / (kLumensPerWatt * d2);
-  }
+  if (light.kind == Light::Kind::kLuminaire) return luminaireImportance(scene.luminaires[light.luminaire], p, n);
   const double y = photopic(light.radiance);
   if (light.kind == Light::Kind::kDistant) {
     const DistantSource& d = scene.distant[light.distant];

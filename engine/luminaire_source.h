@@ -37,13 +37,6 @@ struct LuminaireSource {
   static constexpr int kCosBins = 32;
   std::array<double, kCosBins> peakByCosGamma{};
   bool peakTabulated = false;
-  // The tabulated peak, or the exact intensity where no table was made.
-  double peakIntensityCd(const Vec3& dir) const {
-    if (!peakTabulated) return intensityCd(dir);
-    const double cosG = -glm::dot(dir, axisZ);
-    const int bin = std::clamp(static_cast<int>((cosG + 1.0) * 0.5 * kCosBins), 0, kCosBins - 1);
-    return peakByCosGamma[bin];
-  }
   // Intensity in cd towards the world direction `dir` (from the luminaire), scaled.
   double intensityCd(const Vec3& dir) const {
     return scale * web->intensityCd(Vec3(glm::dot(dir, axisX), glm::dot(dir, axisY), glm::dot(dir, axisZ)));
