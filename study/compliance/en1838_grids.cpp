@@ -136,6 +136,14 @@ std::vector<Vec2> polygonPoints(const std::vector<Vec2>& ccw, double spacingM) {
 
 namespace {
 
+// A route's strips (4.2.1: at most 2 m wide each) and the intervals across a strip's central band
+// (half its width) at most `spacingM` apart, at least 2; in double, so that a bound of absurd
+// sizes counts without overflowing.
+double stripCount(double widthM) { return std::max(1.0, std::ceil(widthM / kEn1838MaxStripWidthM - 1e-9)); }
+double bandIntervals(double stripWidthM, double spacingM) {
+  return std::max(2.0, std::ceil(0.5 * stripWidthM / spacingM - 1e-9));
+}
+
 // polygonPoints' count at most: its edges' points and the lattice over its box.
 double polygonPointBound(const std::vector<Vec2>& poly, double spacingM) {
   double edges = 0.0;
@@ -154,8 +162,7 @@ double en1838PointBound(const CaseFile& c) {
   for (const EscapeRouteSpec& r : c.emergency.routes) {
     double stations = 0.0;
     for (std::size_t i = 0; i + 1 < r.path.size(); ++i) stations += glm::length(r.path[i + 1] - r.path[i]) / r.spacingM + 2.0;
-    const double strips = std::ceil(r.widthM / kEn1838MaxStripWidthM - 1e-9);
-    const double across = std::max(2.0, std::ceil(0.5 * r.widthM / strips / r.spacingM - 1e-9));
+    const double strips = stripCount(r.widthM), across = bandIntervals(r.widthM / strips, r.spacingM);
     n += strips * stations * (across + 2.0);  // each strip's centre line and its band
   }
   for (const OpenAreaSpec& a : c.emergency.openAreas)
@@ -166,7 +173,7 @@ double en1838PointBound(const CaseFile& c) {
 }
 
 std::vector<RouteStripPoints> routeStrips(const EscapeRouteSpec& route) {
-  const int strips = std::max(1, static_cast<int>(std::ceil(route.widthM / kEn1838MaxStripWidthM - 1e-9)));
+  const int strips = static_cast<int>(stripCount(route.widthM));
   const double w = route.widthM / strips;
   std::vector<RouteStripPoints> out;
   for (int k = 0; k < strips; ++k) {
@@ -175,7 +182,7 @@ std::vector<RouteStripPoints> routeStrips(const EscapeRouteSpec& route) {
     s.offsetM = -0.5 * route.widthM + w * (k + 0.5);
     // Across the central band (half the strip's width): its two edges and points between.
     const double half = 0.25 * w;
-    const int across = std::max(2, static_cast<int>(std::ceil(2.0 * half / route.spacingM - 1e-9)));
+    const int across = static_cast<int>(bandIntervals(w, route.spacingM));
     for (std::size_t i = 0; i + 1 < route.path.size(); ++i) {
       const Vec2 a = route.path[i], b = route.path[i + 1];
       const Vec2 d = glm::normalize(b - a), left(-d.y, d.x);
