@@ -5,18 +5,16 @@
 #include "engine/antimatter.h"
 #include "engine/obj_reader.h"
 #include "engine/materials/family.h"
-#include "engine/polygon_split.h"
 #include "engine/radiance/file_lookup.h"
 #include "engine/radiance/function_patterns.h"
 #include "engine/radiance/generators.h"
+#include "engine/radiance/polygon_reader.h"
 #include "engine/radiance/sky.h"
 #include "engine/source_distribution.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -71,7 +69,7 @@ class SceneReader::Builder {
     topFolder_ = folder;
     expand(text, fileName, folder, 0, [this](RadPrimitive&& p) { add(p); });
     sky_.apply(scene_);
-    flushTriangulated();
+    polygons_.flush(scene_.inputWarnings);
   }
 
   // An OBJ file with the modifiers defined so far (obj2rad's naming rules, or the mapping file).
@@ -549,58 +547,6 @@ class SceneReader::Builder {
         fail(p, p.type + " '" + p.name + "' has a coordinate or size beyond 1e7 m (" + compactNumber(v) + ")");
   }
 
-  void addPolygon(const Primitive& p, uint32_t mat, Scene& target) {
-    expectStrings(p, 0);
-    if (p.reals.size() % 3 != 0)
-      fail(p, "polygon '" + p.name + "' needs a multiple of 3 real arguments, got " +
-                       std::to_string(p.reals.size()));
-    const size_t nv = p.reals.size() / 3;
-    if (nv < 3) fail(p, "polygon '" + p.name + "' needs at least 3 vertices, got " + std::to_string(nv));
-    std::vector<Vec3> pts;
-    for (size_t i = 0; i < nv; ++i) pts.push_back(vec(p, 3 * i));
-    Box b;
-    for (const Vec3& v : pts) b.extend(v);
-    const double diameter = glm::length(b.size());
-    const Vec3 nn = newellNormal(pts);
-    const double area = 0.5 * glm::length(nn);
-    if (!(diameter > 0.0) || area <= kDegenerateTolerance * diameter * diameter)
-      fail(p, "polygon '" + p.name + "' is degenerate (zero area)");
-    const Vec3 n = nn / (2.0 * area);
-    size_t worst = 0;
-    const double off = planeDeviation(pts, n, &worst);
-    // Within 0.1 mm of its plane a polygon is read as it is (CAD exports' tessellation noise);
-    // beyond, within 0.1 % of its size.
-    if (off > kPlanarTolerance * diameter && off > kPlanarAbsoluteToleranceM) {
-      std::ostringstream msg;
-      msg << "polygon '" << p.name << "' is not planar: vertex " << (worst + 1) << " is " << off
-          << " m from its plane (tolerance 0.1 mm, or 0.1 % of its size: " << kPlanarTolerance * diameter << " m)";
-      if (options_.nonplanar == NonplanarPolicy::kRefuse)
-        fail(p, msg.str() + "; run with --nonplanar triangulate to split it into triangles, with a warning");
-      // A polygon that crosses itself (a bow tie) has no plane its deviation could be measured
-      // from and no triangles that mean what the file meant: refused, saying so.
-      if (const std::optional<std::pair<size_t, size_t>> cross = selfCrossing(pts, n))
-        fail(p, "polygon '" + p.name + "' crosses itself: its edges " + std::to_string(cross->first + 1) + "-" +
-                    std::to_string((cross->first + 1) % pts.size() + 1) + " and " + std::to_string(cross->second + 1) +
-                    "-" + std::to_string((cross->second + 1) % pts.size() + 1) +
-                    " cross, seen along its mean plane; it cannot be split into triangles that mean what the file "
-                    "meant: fix it in the modelling tool");
-      return addTriangulated(p, pts, n, mat, target, msg.str(), off);
-    }
-    checkSpotAim(p, mat, n);
-    target.addPolygon(pts, mat, p.name);
-  }
-
-  // The first two edges of the outline `pts` that cross each other seen along n
-  // (outlineSelfCrossing), or none; outlines of more than 4096 vertices are not checked (the
-  // pairs would cost more than the rest of the reading).
-  static std::optional<std::pair<size_t, size_t>> selfCrossing(const std::vector<Vec3>& pts, const Vec3& n) {
-    if (pts.size() < 4 || pts.size() > 4096) return std::nullopt;
-    const Frame f = Frame::fromNormal(n);
-    std::vector<glm::dvec2> q;
-    for (const Vec3& v : pts) q.emplace_back(glm::dot(v, f.t), glm::dot(v, f.b));
-    return outlineSelfCrossing(q);
-  }
-
   // A spotlight on a flat surface whose cone lies wholly behind the surface's front (the angle
   // from the front normal to the aim at least 90° + the half angle) sends no light at all, here
   // as in Radiance (a light emits from its front only): valid, but surely not meant, so a
@@ -619,46 +565,6 @@ class SceneReader::Builder {
             "', whose cone lies wholly behind the surface's front: it sends no light (check the spotlight's "
             "direction and the surface's orientation)",
         p.loc});
-  }
-
-  // A non-planar polygon as the triangles of its outline seen along its Newell normal (ear
-  // clipping, engine/polygon_split.h): each vertex is kept where it is, so the surface passes
-  // through every vertex; each triangle is planar by construction.
-  void addTriangulated(const Primitive& p, const std::vector<Vec3>& pts, const Vec3& n, uint32_t mat, Scene& target,
-                       const std::string& why, double off) {
-    std::vector<std::array<uint32_t, 3>> tris;
-    if (!splitPolygon(pts, n, tris))
-      fail(p, why + "; it is too intricate to split into triangles (more than 10^8 point tests)");
-    for (const auto& t : tris) target.addPolygon({pts[t[0]], pts[t[1]], pts[t[2]]}, mat, p.name);
-    if (&target != &scene_) return;
-    // One warning per file read (100 000 nearly planar quads gave 20 MB of warnings): the count,
-    // and the worst polygon's message at its line.
-    Triangulated& t = triangulated_[p.loc.file];
-    ++t.polygons;
-    t.triangles += tris.size();
-    if (off >= t.worst) {
-      t.worst = off;
-      t.message = why + ": split into " + std::to_string(tris.size()) + " triangles";
-      t.loc = p.loc;
-    }
-  }
-
-  struct Triangulated {
-    size_t polygons = 0, triangles = 0;
-    double worst = -1.0;
-    std::string message;
-    FileLoc loc;
-  };
-
-  void flushTriangulated() {
-    for (auto& [file, t] : triangulated_) {
-      const std::string text = t.polygons == 1 ? t.message
-                                               : std::to_string(t.polygons) + " polygons beyond the planarity tolerance "
-                                                 "were split into " + std::to_string(t.triangles) +
-                                                 " triangles; the farthest from its plane: " + t.message;
-      scene_.inputWarnings.push_back(Warning{"nonplanar_triangulated", text, t.loc});
-    }
-    triangulated_.clear();
   }
 
   // The sky function (skybright.cal, perezlum.cal) modifying material `mod`, if any.
@@ -732,7 +638,8 @@ class SceneReader::Builder {
     Scene& target = mod < 0 ? probe : scene_;
     checkCoordinates(p);
     if (t == "polygon") {
-      addPolygon(p, mat, target);
+      expectStrings(p, 0);
+      if (const std::optional<Vec3> n = polygons_.add(p, mat, target, &target == &scene_)) checkSpotAim(p, mat, *n);
     } else if (t == "sphere" || t == "bubble") {
       expectStrings(p, 0);
       expectReals(p, 4);
@@ -776,7 +683,7 @@ class SceneReader::Builder {
   std::unordered_map<std::string, PatternEntry> patterns_;
   std::unordered_map<std::string, InputError> deferred_;  // refusals kept until used (defer)
   std::optional<ObjMapping> mapping_;
-  std::map<std::string, Triangulated> triangulated_;  // per file: the polygons split (flushTriangulated)
+  PolygonReader polygons_{options_.nonplanar};  // polygons, their planarity and splitting
   std::string topFile_;  // the file read now, and its folder (readText's may differ from its name's)
   std::filesystem::path topFolder_;
   SceneSkyBuilder sky_;
