@@ -4,6 +4,7 @@
 #include "engine/lights.h"
 #include "photometry/sky_patches.h"
 #include "engine/render.h"
+#include "engine/sampling.h"
 #include "engine/tracer.h"
 #include "engine/sensors.h"
 #include "reports/plan_svg.h"
@@ -243,6 +244,7 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
 double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint>& points) {
   constexpr std::size_t kPoints = 64;
   constexpr int kDirections = 32;
+  constexpr double kGoldenFraction = 0.38196601125010515;  // 2 − φ: the golden angle over 2π
   if (points.empty()) return 1.0;
   const std::size_t step = std::max<std::size_t>(1, points.size() / kPoints);
   int hits = 0, rays = 0;
@@ -251,9 +253,9 @@ double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint
     const Frame f = Frame::fromNormal(sp.normal);
     const Vec3 o = sp.position + sp.normal * Tracer::originOffset(sp.position);
     for (int k = 0; k < kDirections; ++k) {
-      // A Fibonacci spiral over the disc, lifted to the hemisphere: cosine-distributed.
-      const double r = std::sqrt((k + 0.5) / kDirections), phi = k * 2.39996322972865332;
-      const Vec3 d = f.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r * r))));
+      // A Fibonacci spiral (golden-ratio steps in azimuth), cosine-distributed.
+      const double u2 = k * kGoldenFraction - std::floor(k * kGoldenFraction);
+      const Vec3 d = f.toWorld(sampleCosineHemisphere((k + 0.5) / kDirections, u2));
       RayHit hit;
       hits += tracer.accelerator().intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), hit) ? 1 : 0;
       ++rays;

@@ -5,6 +5,7 @@
 #include "engine/render.h"
 #include "engine/scene.h"
 #include "engine/radiance/reader.h"
+#include "engine/sampling.h"
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "study/case/case_file.h"
@@ -230,8 +231,8 @@ TEST(ResourceEstimate, HemisphereHitFractionOfAnOpenSite) {
   const Frame f = Frame::fromNormal(Vec3(1, 0, 0));
   int below = 0;
   for (int k = 0; k < 32; ++k) {
-    const double r = std::sqrt((k + 0.5) / 32.0), phi = k * 2.39996322972865332;
-    below += f.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - r * r))).z < 0.0;
+    const double u2 = k * 0.38196601125010515 - std::floor(k * 0.38196601125010515);
+    below += f.toWorld(sampleCosineHemisphere((k + 0.5) / 32.0, u2)).z < 0.0;
   }
   EXPECT_GT(below, 8);  // the pattern covers both halves
   EXPECT_LT(below, 24);
