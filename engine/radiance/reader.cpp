@@ -341,7 +341,7 @@ class SceneReader::Builder {
   }
 
   // A pattern modifying a material (`mat texfunc t`): t names a copy of the material with the
-  // pattern (index) first along its chain, an object of its own as an alias's copy.
+  // pattern (index) first along its chain (addCopy).
   void addPatternedMaterial(const Primitive& p, int material, int index) {
     bool used = false;
     materials_[p.name] = withPattern(p, material, index, used, 0);
@@ -367,6 +367,12 @@ class SceneReader::Builder {
       m.pattern = static_cast<int>(scene_.patterns.size());
       scene_.patterns.push_back(std::move(sp));
     }
+    return addCopy(std::move(m), p);
+  }
+
+  // A material derived from another (an alias's, a pattern's over it) added as p's: an object of
+  // its own, not clipped by what lists the material it copies. Its index.
+  int addCopy(Material m, const Primitive& p) {
     m.name = p.name;
     m.loc = p.loc;
     m.clipBit = -1;
@@ -422,10 +428,7 @@ class SceneReader::Builder {
     if (m.pattern == scene_.materials[static_cast<size_t>(it->second)].pattern) {
       materials_[p.name] = it->second;
     } else {
-      m.name = p.name;
-      m.loc = p.loc;
-      m.clipBit = -1;  // an object of its own: not clipped by what lists the material it copies
-      materials_[p.name] = static_cast<int>(scene_.addMaterial(std::move(m)));
+      materials_[p.name] = addCopy(std::move(m), p);
     }
     patterns_.erase(p.name);
   }
