@@ -23,6 +23,7 @@
 #include "engine/materials/registry.h"
 
 #include <charconv>
+#include <cmath>
 
 namespace candela {
 namespace {
@@ -132,23 +133,29 @@ class BsdfFamily : public MaterialFamily {
     const bool outPlus = out.z > 0.0;
     // The parts by their photopic albedo towards the viewer: the file's scattering (both sides,
     // drawn by Bsdf::sampleIn), the diffuse parts added, aBSDF's direct part; each chosen with
-    // probability albedo / max(1, Σ albedo), the path ending otherwise (Russian roulette by
-    // albedo). A draw's weight is its value over its density, so that a draw that follows the
-    // file only roughly stays unbiased.
+    // probability albedo / Σ albedo, so that a path never ends here: its weight carries Σ albedo
+    // instead (a blind absorbing half the light halves the weight rather than ending every other
+    // path: 20–40 % less CPU for the same error on cases/sidelit-bsdf, docs/bsdf.md). A draw's
+    // weight is its value over its density, so that a draw that follows the file only roughly
+    // stays unbiased.
     const Rgb fileA = b.albedoToward(out, false, peak_) + b.albedoToward(out, true, peak_) * m.patternColour;
     const Rgb through = peak_ ? b.peakThrough(f.toLocal(at.d)) * m.patternColour : Rgb(0.0);
     const double a[4] = {photopic(fileA), photopic(m.diffuseReflectance), photopic(m.diffuseTransmittance),
                          photopic(through)};
     const double sum = a[0] + a[1] + a[2] + a[3];
     if (!(sum > 0.0)) return false;
-    const double norm = std::max(1.0, sum);
+    const double norm = sum;
     double pick = rng.uniform() * norm;
     int part = 0;
     for (; part < 4; ++part) {
       if (pick < a[part]) break;
       pick -= a[part];
     }
-    if (part == 4) return false;  // absorbed
+    if (part == 4) {  // rounding left pick past the last part: the last part drawn
+      part = 3;
+      while (!(a[part] > 0.0)) --part;
+      pick = std::nextafter(a[part], 0.0);
+    }
     const double scale = norm / a[part];
     s = ScatterSample{};
     switch (part) {

@@ -15,6 +15,8 @@
 // The window's edge is 1e4 m away: what it leaves of the hemisphere changes readings by < 1e-7.
 #include "engine/bsdf.h"
 #include "engine/irradiance_estimator.h"
+#include "engine/materials/family.h"
+#include "engine/materials/pattern_hook.h"
 #include "engine/render.h"
 #include "tests/support/test_views.h"
 #include "engine/radiance/reader.h"
@@ -233,6 +235,34 @@ TEST(BsdfMaterial, LambertianKlemsFileGivesTauE) {
   // The file is listed with the files the scene read.
   ASSERT_EQ(sunny.functionFiles.size(), 1u);
   EXPECT_NE(sunny.functionFiles[0].find("w.xml"), std::string::npos);
+}
+
+// Half the light absorbed: every draw of a path meeting the window goes on, its weight the
+// half the file passes (Σ f Λ over the Klems patches = τ), instead of ending every other path.
+TEST(BsdfMaterial, APathGoesOnThroughAnAbsorbingFileCarryingItsAlbedo) {
+  using test_support::bsdfXml;
+  const std::string xml = bsdfXml({{"Transmission Front", std::vector<double>(kFull * kFull, 0.5 / kPi)},
+                                   {"Transmission Back", std::vector<double>(kFull * kFull, 0.5 / kPi)}});
+  const Scene sc = xmlWindow("lambert-draws", xml, "void BSDF stand 6 0 w.xml 0 1 0 . 0 0", "", false);
+  const Material* m = nullptr;
+  for (const Material& x : sc.materials)
+    if (x.name == "stand") m = &x;
+  ASSERT_NE(m, nullptr);
+  Rng rng(3, 0);
+  double sum = 0.0;
+  const int n = 2000;
+  for (const Vec3 d : {Vec3(0.0, 0.0, 1.0), glm::normalize(Vec3(0.3, -0.2, -1.0))}) {
+    const PatternPoint at{Vec3(0.3, 0.2, 1.0), d, Vec3(0.0, 0.0, -1.0), 1.0};
+    for (int i = 0; i < n; ++i) {
+      ScatterSample s;
+      ASSERT_TRUE(familyOf(*m).sampleScattering(*m, at, Vec2(rng.uniform(), rng.uniform()), rng, s)) << i;
+      EXPECT_TRUE(s.transmitted);
+      EXPECT_GT(s.dir.z * d.z, 0.0);  // on through, to the far side
+      EXPECT_NEAR(photopic(s.weight), 0.5, 1e-3) << i;
+      sum += photopic(s.weight);
+    }
+  }
+  EXPECT_NEAR(sum / (2 * n), 0.5, 1e-3);
 }
 
 TEST(BsdfMaterial, ClearGlassKlemsFile) {
