@@ -2,6 +2,7 @@
 
 #include "engine/irradiance_cache.h"
 #include "engine/lights.h"
+#include "engine/materials/family.h"
 #include "photometry/sky_patches.h"
 #include "engine/render.h"
 #include "engine/sampling.h"
@@ -241,27 +242,50 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
   return hitFraction * std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup);
 }
 
-double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint>& points) {
+namespace {
+bool samplesScattering(const Material& m) { return familyOf(m).samplesScattering(m); }
+}  // namespace
+
+HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points) {
   constexpr std::size_t kPoints = 64;
   constexpr int kDirections = 32;
   constexpr double kGoldenFraction = 0.38196601125010515;  // 2 − φ: the golden angle over 2π
-  if (points.empty()) return 1.0;
+  HemispherePilot pilot;
+  if (points.empty()) return pilot;
+  const Scene& scene = tracer.scene();
   const std::size_t step = std::max<std::size_t>(1, points.size() / kPoints);
-  int hits = 0, rays = 0;
+  int hits = 0, rays = 0, pilots = 0, scattering = 0;
   for (std::size_t i = 0; i < points.size(); i += step) {
     const SensorPoint& sp = points[i];
     const Frame f = Frame::fromNormal(sp.normal);
     const Vec3 o = sp.position + sp.normal * Tracer::originOffset(sp.position);
+    bool seesScattering = false;
     for (int k = 0; k < kDirections; ++k) {
       // A Fibonacci spiral (golden-ratio steps in azimuth), cosine-distributed.
       const double u2 = k * kGoldenFraction - std::floor(k * kGoldenFraction);
       const Vec3 d = f.toWorld(sampleCosineHemisphere((k + 0.5) / kDirections, u2));
       RayHit hit;
-      hits += tracer.accelerator().intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), hit) ? 1 : 0;
+      if (tracer.accelerator().intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+        ++hits;
+        seesScattering = seesScattering || samplesScattering(scene.materials[scene.surfaceMaterial(hit.shape)]);
+      }
       ++rays;
     }
+    ++pilots;
+    scattering += seesScattering ? 1 : 0;
   }
-  return static_cast<double>(hits) / rays;
+  pilot.hitFraction = static_cast<double>(hits) / rays;
+  pilot.scatteringPoints = static_cast<double>(scattering) / pilots;
+  return pilot;
+}
+
+double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled, std::size_t luminaires,
+                     double hitFraction) {
+  if (s.method != Method::kCache || s.maxBounces <= 0 || s.targetRelativeError <= 0.0) return 0.0;
+  TraceSettings path = s;
+  path.method = Method::kPath;
+  // Half the batches the settings allow (sampleToTarget's cap): measured on cases/sidelit-bsdf.
+  return points * std::max(1.0, 0.5 * s.maxBatches) * raysPerSensor(path, sampled, luminaires, hitFraction);
 }
 
 uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
@@ -330,7 +354,8 @@ std::vector<std::size_t> gridPointCounts(const CaseFile& c) {
 }
 
 ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
-                                   const TraceSettings& s, int threads, double hitFraction) {
+                                   const TraceSettings& s, int threads, const HemispherePilot& pilot) {
+  const double hitFraction = pilot.hitFraction;
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   e.baseBytes = sceneBytes(scene);
@@ -361,7 +386,9 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
   const double boxSurfaceM2 = 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
-                                   cacheRecordRays(s, points, boxSurfaceM2, hitFraction)});
+                                   cacheRecordRays(s, points, boxSurfaceM2, hitFraction) +
+                                   pastCacheRays(s, points * pilot.scatteringPoints, n.sampled, n.luminaires,
+                                                 hitFraction)});
   addLuminaires(e, c);
   // EN 1838's points (study/compliance/en1838.h): each a sensor, its estimate, its value and its
   // row of the points table; direct light from the emergency luminaires only.
@@ -423,7 +450,8 @@ ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const Vie
 }
 
 ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
-                                int threads, double hitFraction) {
+                                int threads, const HemispherePilot& pilot) {
+  const double hitFraction = pilot.hitFraction;
   ResourceEstimate e;
   e.threads = static_cast<int>(threadsUsed(threads));
   e.baseBytes = sceneBytes(scene);
@@ -433,8 +461,10 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
                       std::to_string(points) + " points x " + std::to_string(per) + " B"});
   e.memory.back().bytes += scene.luminaires.size() * (sizeof(LuminaireSource) + sizeof(Light) + 32);
   const double batches = expectedBatchesPerPoint(s);
-  e.work.push_back(
-      {"tracing", static_cast<double>(points) * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction)});
+  const double all = static_cast<double>(points);
+  e.work.push_back({"tracing", all * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
+                                   pastCacheRays(s, all * pilot.scatteringPoints, n.sampled, n.luminaires,
+                                                 hitFraction)});
   return e;
 }
 

@@ -85,7 +85,7 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c);
 // source at the sensor (a far-field luminaire takes one shadow ray), and the light selection at
 // every path vertex (a fraction of a ray per source). `sampled` counts the area and distant
 // sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
-// `hitFraction`: the share of hemisphere rays that meet a surface (hemisphereHitFraction; 1 in a
+// `hitFraction`: the share of hemisphere rays that meet a surface (hemispherePilot; 1 in a
 // room): a ray that leaves the scene costs itself only, no vertex.
 double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction = 1.0);
 
@@ -99,11 +99,27 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
 // `hitFraction` as raysPerSensor's: records are made where hemisphere rays meet surfaces.
 double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction = 1.0);
 
-// The share of hemisphere rays from `points` that meet a surface of the scene: 32 fixed
-// cosine-distributed directions from each of at most 64 points spread over the list (2 048 rays,
-// about a millisecond; no random stream drawn, so a run's numbers do not depend on it). 1 for no
-// points. An open site (a car park's ground under its poles) sends most rays out of the scene.
-double hemisphereHitFraction(const Tracer& tracer, const std::vector<SensorPoint>& points);
+// What a pilot of the points' hemisphere rays tells the estimate, once the tracer is built: 32
+// fixed cosine-distributed directions from each of at most 64 points spread over the list (2 048
+// rays, about a millisecond; no random stream drawn, so a run's numbers do not depend on it).
+struct HemispherePilot {
+  // The share of the rays that meet a surface (1 for no points). An open site (a car park's
+  // ground under its poles) sends most rays out of the scene.
+  double hitFraction = 1.0;
+  // The share of the points some of whose rays meet a scattering surface first (a BSDF or aBSDF
+  // window: MaterialFamily::samplesScattering): the irradiance cache's records see such a window through
+  // its function, too noisily for the grids' goal, and the points go on by the path method
+  // (docs/bsdf.md), which pastCacheRays counts.
+  double scatteringPoints = 0.0;
+};
+HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points);
+
+// The rays of `points` points estimated again by the path method after the cache (the points
+// that see a scattering surface, HemispherePilot): each the path method's rays for half the
+// batches the settings allow (sampleToTarget's cap; the estimate is 0.7–4 × the run on the four
+// cases/sidelit-bsdf rooms, docs/reliability.md). 0 unless the cache method has a target error.
+double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled, std::size_t luminaires,
+                     double hitFraction);
 
 // The annual study's float arrays for one block of `sensors` sensors over `hours` hours (the
 // study holds one block at a time, study/annual_study.h kAnnualSensorsPerBlock): while a block's
@@ -134,19 +150,19 @@ std::vector<std::size_t> gridPointCounts(const CaseFile& c);
 
 // The point-in-time study of a case: its grids (points per grid, case order; and the cache),
 // views and luminaires.
-// `hitFraction` as raysPerSensor's (the run measures it once the scene's tracer is built).
-// 6 parameters: the case, its grids' sizes, the scene, the settings, the threads, the hit share.
+// `pilot`: hemispherePilot's measures (the run takes them once the scene's tracer is built).
+// 6 parameters: the case, its grids' sizes, the scene, the settings, the threads, the pilot.
 ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::size_t>& gridPoints, const Scene& scene,
-                                   const TraceSettings& s, int threads, double hitFraction = 1.0);
+                                   const TraceSettings& s, int threads, const HemispherePilot& pilot = {});
 
 // `candela render`: one view of a case (study/view_study.h).
 ResourceEstimate estimateView(const CaseFile& c, const ViewSpec& view, const ViewWork& w, const Scene& scene,
                               const TraceSettings& s, int threads);
 
-// `candela points`: `points` sensor points read from `where`; hitFraction as raysPerSensor's.
-// 6 parameters: the points' count and file, the scene, the settings, the threads, the hit share.
+// `candela points`: `points` sensor points read from `where`; pilot as estimateGridStudy's.
+// 6 parameters: the points' count and file, the scene, the settings, the threads, the pilot.
 ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const Scene& scene, const TraceSettings& s,
-                                int threads, double hitFraction = 1.0);
+                                int threads, const HemispherePilot& pilot = {});
 
 // The annual study: sensors per grid (case order), the weather year's hours and those with sun.
 struct AnnualCounts {

@@ -9,13 +9,20 @@
 #include "engine/sensors.h"
 #include "engine/tracer.h"
 #include "study/case/case_file.h"
+#include "tests/engine/bsdf_test_xml.h"
+#include "tests/support/material_harness.h"
+#include "tests/support/temp_files.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 namespace candela {
 namespace {
+
+namespace fs = std::filesystem;
 
 TEST(ResourceEstimate, AnnualBlockBytesAreTheBlocksFloatArrays) {
   // A block of 100 sensors, 8760 hours, 146 patches, 4000 sun hours, 300 suns. Blinds open only:
@@ -226,8 +233,8 @@ TEST(ResourceEstimate, HemisphereHitFractionOfAnOpenSite) {
     for (int i = 0; i < 100; ++i) ps.push_back(SensorPoint{Vec3(0.37 * i, 0.21 * i, 1.0), n});
     return ps;
   };
-  EXPECT_EQ(hemisphereHitFraction(tracer, points(Vec3(0, 0, 1))), 0.0);
-  EXPECT_EQ(hemisphereHitFraction(tracer, points(Vec3(0, 0, -1))), 1.0);
+  EXPECT_EQ(hemispherePilot(tracer, points(Vec3(0, 0, 1))).hitFraction, 0.0);
+  EXPECT_EQ(hemispherePilot(tracer, points(Vec3(0, 0, -1))).hitFraction, 1.0);
   const Frame f = Frame::fromNormal(Vec3(1, 0, 0));
   int below = 0;
   for (int k = 0; k < 32; ++k) {
@@ -236,8 +243,42 @@ TEST(ResourceEstimate, HemisphereHitFractionOfAnOpenSite) {
   }
   EXPECT_GT(below, 8);  // the pattern covers both halves
   EXPECT_LT(below, 24);
-  EXPECT_DOUBLE_EQ(hemisphereHitFraction(tracer, points(Vec3(1, 0, 0))), below / 32.0);
-  EXPECT_EQ(hemisphereHitFraction(tracer, {}), 1.0);
+  EXPECT_DOUBLE_EQ(hemispherePilot(tracer, points(Vec3(1, 0, 0))).hitFraction, below / 32.0);
+  EXPECT_EQ(hemispherePilot(tracer, {}).hitFraction, 1.0);
+}
+
+// Points that see a BSDF window (a scattering surface) are counted past the cache; the rays of
+// each are the path method's for half the settings' batches, none without the cache or a target.
+TEST(ResourceEstimate, PointsThatSeeABsdfWindowAreCountedPastTheCache) {
+  const fs::path dir = test_support::scratchDir("resource_estimate", "bsdf_pilot");
+  std::ofstream(dir / "w.xml") << test_support::bsdfXml(
+      {{"Transmission Front", std::vector<double>(145 * 145, 0.5 / kPi)}});
+  // A BSDF pane over x < 0, plastic over x > 0, both 1 m above points that face up.
+  const Scene sc = test_support::readSceneText(dir,
+                                               "void BSDF win 6 0 w.xml 0 1 0 . 0 0\n"
+                                               "void plastic white 0 0 5 .5 .5 .5 0 0\n"
+                                               "win polygon pane 0 0 12 -1e3 -1e3 1 -1e3 1e3 1 -1e-3 1e3 1 -1e-3 -1e3 1\n"
+                                               "white polygon roof 0 0 12 0 -1e3 1 0 1e3 1 1e3 1e3 1 1e3 -1e3 1\n",
+                                               false);
+  const Tracer tracer(sc);
+  // 40 points under the pane (x = -50), 60 under the roof (x = 50): each sees only its own.
+  std::vector<SensorPoint> ps;
+  for (int i = 0; i < 100; ++i) ps.push_back(SensorPoint{Vec3(i < 40 ? -50.0 : 50.0, 0.1 * i, 0.0), Vec3(0, 0, 1)});
+  const HemispherePilot pilot = hemispherePilot(tracer, ps);
+  EXPECT_DOUBLE_EQ(pilot.hitFraction, 1.0);
+  EXPECT_DOUBLE_EQ(pilot.scatteringPoints, 0.4);
+  TraceSettings s;
+  s.method = Method::kCache;
+  s.maxBounces = 2;
+  s.targetRelativeError = 0.0025;
+  s.maxBatches = 16;
+  TraceSettings path = s;
+  path.method = Method::kPath;
+  EXPECT_DOUBLE_EQ(pastCacheRays(s, 40.0, 2, 3, 1.0), 40.0 * 8 * raysPerSensor(path, 2, 3, 1.0));
+  EXPECT_EQ(pastCacheRays(path, 40.0, 2, 3, 1.0), 0.0);
+  TraceSettings oneBatch = s;
+  oneBatch.targetRelativeError = 0.0;
+  EXPECT_EQ(pastCacheRays(oneBatch, 40.0, 2, 3, 1.0), 0.0);
 }
 
 // The cache's records beyond the lookups' share: a room's worth (60 per m² of the box at
