@@ -244,6 +244,12 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
 
 namespace {
 bool samplesScattering(const Material& m) { return familyOf(m).samplesScattering(m); }
+
+// The surface of the scene's bounding box (cacheRecordRays' measure of a room), m².
+double boundingBoxSurfaceM2(const Scene& scene) {
+  const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
+  return 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
+}
 }  // namespace
 
 HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points) {
@@ -383,8 +389,7 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
     points += static_cast<double>(gridPoints[i]) * estimates;
   }
   const double batches = expectedBatchesPerPoint(s);
-  const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
-  const double boxSurfaceM2 = 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
+  const double boxSurfaceM2 = boundingBoxSurfaceM2(scene);
   e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
                                    cacheRecordRays(s, points, boxSurfaceM2, hitFraction) +
                                    pastCacheRays(s, points * pilot.scatteringPoints, n.sampled, n.luminaires,
@@ -531,7 +536,8 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
     e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
   if (extraStates > 0) e.work.push_back({"window states: coefficients", extraStates * (sky + sunPaths + direct)});
   // LEED option 2 (study/compliance/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
-  // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's).
+  // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's),
+  // and each time's cache records (cacheRecordRays: a sunlit room's are most of the cost).
   if (pointSettings)
     for (const ComplianceSpec& spec : c.compliance) {
       if (spec.standard != ComplianceStandard::kLeedV41Option2) continue;
@@ -543,8 +549,10 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
       once.targetRelativeError = 0.0;
       const double times = static_cast<double>(leedOption2Dates(spec, 0).size()) *  // the year changes no count
                            static_cast<double>(spec.leedHours.size());
+      // Each time traces its own scene under its own sky, so its own irradiance cache.
       e.work.push_back({"compliance " + spec.name,
-                        static_cast<double>(k) * times * raysPerSensor(once, n.sampled + 2, 0)});
+                        times * (static_cast<double>(k) * raysPerSensor(once, n.sampled + 2, 0) +
+                                 cacheRecordRays(once, static_cast<double>(k), boundingBoxSurfaceM2(scene)))});
     }
   return e;
 }

@@ -78,7 +78,8 @@ TEST(ResourceEstimate, AnnualStudyIsBoundedByTheBlock) {
 
 // LEED option 2's clear-sky traces are a step of the annual study's estimate: its spaces' sensors
 // (here grid "b" only) at every time (two dates × three hours), one batch each whatever the
-// settings' target error, with the sky and its sun as two sampled sources.
+// settings' target error, with the sky and its sun as two sampled sources, and each time's
+// irradiance cache (its records, for the scene's bounding box of 4 × 6 × 3 m: 108 m²).
 TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
   CaseFile c;
   c.grids.resize(2);
@@ -90,19 +91,26 @@ TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
   leed.spaces = {"b"};
   leed.leedHours = {9.0, 12.0, 15.0};
   c.compliance = {leed};
-  const Scene scene;
+  Scene scene;
+  SceneReader(scene).readText("void plastic g 0 0 5 .2 .2 .2 0 0\n"
+                              "g polygon floor 0 0 12 0 0 0 0 6 0 4 6 0 4 0 0\n"
+                              "g polygon ceiling 0 0 12 0 0 3 4 0 3 4 6 3 0 6 3\n",
+                              "room.rad", ".");
   AnnualCounts a;
   a.gridSensors = {100, 40};
   a.hours = 8760;
   TraceSettings point;
   point.method = Method::kCache;
+  point.maxBounces = 2;
   point.targetRelativeError = 0.0025;
   const ResourceEstimate without = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024);
   const ResourceEstimate with = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024, &point);
   ASSERT_EQ(with.work.size(), without.work.size() + 1);
   EXPECT_EQ(with.work.back().label, "compliance leed2");
   point.targetRelativeError = 0.0;
-  EXPECT_DOUBLE_EQ(with.work.back().rays, 40.0 * 6.0 * raysPerSensor(point, 2, 0));
+  const double records = cacheRecordRays(point, 40.0, 108.0);
+  EXPECT_GT(records, 0.0);
+  EXPECT_DOUBLE_EQ(with.work.back().rays, 6.0 * (40.0 * raysPerSensor(point, 2, 0) + records));
   EXPECT_GT(with.seconds("compliance leed2"), 0.0);
 }
 
