@@ -32,8 +32,12 @@ void countSunlitByClosure(const float* directSun, const std::vector<const float*
 // openings without glass), every group closes. Every group whose own beam alone sunlights more
 // than the fraction is closed by any such choice (beams add). Throws std::invalid_argument when
 // counts has not occupied.size() × 2^groups entries.
+// LM-83's share of a grid's sensors that may be sunlit (direct sun ≥ 1000 lx) in an hour before
+// the shading is operated: 2 %.
+inline constexpr double kLm83SunlitFraction = 0.02;
 std::vector<uint32_t> blindsClosureFromCounts(const std::vector<int>& counts, int groups, int nSensors,
-                                              const std::vector<char>& occupied, double fraction = 0.02);
+                                              const std::vector<char>& occupied,
+                                              double fraction = kLm83SunlitFraction);
 
 // The illuminance with the hour's groups closed, folded in one group at a time: `combined`
 // starts as the open year, and group g's closed year (all other glazing open) is folded in as

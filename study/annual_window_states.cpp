@@ -13,11 +13,49 @@ namespace candela::annual_detail {
 namespace {
 
 // A traced window state: group `group` in state `state` (≥ 1), the other groups in their first.
+// For a direct-sun-rule group of more than two states, each state but the last also has, per
+// grid and hour, the grid's sensors it leaves sunlit (direct sun ≥ the ASE threshold): the rule
+// escalates to the first state that leaves no more than LM-83's 2 % (chooseWindowStates).
 struct StateTrace {
   int group = 0, state = 0;
   std::unique_ptr<Scene> scene;
   std::unique_ptr<YearTracer> tracer;
+  std::vector<std::vector<int>> sunlit;  // [grid][hour]; empty when the rule does not ask
 };
+
+// Whether the direct-sun rule needs state k of group g's sunlit counts: g has more than two
+// states, k is neither its first nor its last (the last is where the rule ends).
+bool escalationState(const WindowStateGroup& g, int k) {
+  return g.scheduled.empty() && g.states.size() > 2 && k >= 1 && k + 1 < static_cast<int>(g.states.size());
+}
+
+// Each traced state's sunlit counts that the rule asks (escalationState), block by block from
+// the state's direct sun alone (the other groups in their first states).
+void countStatesSunlit(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObserver& observer) {
+  const WindowStates& ws = p.in.states;
+  const std::size_t sensors = p.in.positions.size(), nh = p.y.stamps.size();
+  std::size_t asked = 0;
+  for (const StateTrace& st : traced) asked += escalationState(ws.groups[static_cast<std::size_t>(st.group)], st.state);
+  if (asked == 0) return;
+  const ObservedStep step(observer, "window states: direct sun", sensors * asked);
+  std::size_t done = 0;
+  for (StateTrace& st : traced) {
+    if (!escalationState(ws.groups[static_cast<std::size_t>(st.group)], st.state)) continue;
+    st.sunlit.assign(p.grids.size(), std::vector<int>(nh, 0));
+    for (std::size_t b0 = 0; b0 < sensors; b0 += p.block) {
+      const std::size_t n = std::min(p.block, sensors - b0);
+      const std::vector<float> direct = st.tracer->directSun(b0, n);
+      for (std::size_t gi = 0; gi < p.grids.size(); ++gi) {
+        const GridYear& g = p.grids[gi];
+        const std::size_t lo = std::max(g.first, b0), hi = std::min(g.first + g.count, b0 + n);
+        for (std::size_t s = lo; s < hi; ++s)
+          for (std::size_t h = 0; h < nh; ++h) st.sunlit[gi][h] += direct[(s - b0) * nh + h] >= p.th.aseLux;
+      }
+      done += n;
+      step(done);
+    }
+  }
+}
 
 // The hourly stream of grid g's year in one window state, opened beside the run's folder.
 std::unique_ptr<AnnualResultsStream> stateStream(const AnnualPass& p, const GridYear& g) {
@@ -89,9 +127,11 @@ void statesPass(const AnnualPass& p, std::vector<StateTrace>& traced, StudyObser
 }
 
 // Each grid's state per group and hour: the schedule's, or LM-83's direct-sun rule over the
-// sun-rule groups (blindsClosureFromCounts: a group "closed" is in its second state) on the
-// group's sun_grid or on the grid itself.
-void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
+// sun-rule groups (blindsClosureFromCounts) on the group's sun_grid or on the grid itself: a
+// group the rule closes goes to its second state, or with more than two states to the first
+// state after its first that leaves no more than 2 % of that grid's sensors sunlit (its own
+// direct sun, the other groups in their first states: countStatesSunlit), else to its last.
+void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p, const std::vector<StateTrace>& traced) {
   const WindowStates& ws = in.states;
   const std::size_t nh = p.y.stamps.size();
   std::vector<std::vector<uint32_t>> closure(p.grids.size());
@@ -103,12 +143,24 @@ void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
     std::vector<int>().swap(g.closureCounts);
     g.stateOf.clear();
     g.switched.assign(nh, 0);
-    for (const WindowStateGroup& wg : ws.groups) {
+    for (std::size_t q = 0; q < ws.groups.size(); ++q) {
+      const WindowStateGroup& wg = ws.groups[q];
       std::vector<uint8_t> state = wg.scheduled;
       if (state.empty()) {
-        const std::vector<uint32_t>& mask = closure[wg.sunGrid >= 0 ? static_cast<std::size_t>(wg.sunGrid) : gi];
+        const std::size_t decides = wg.sunGrid >= 0 ? static_cast<std::size_t>(wg.sunGrid) : gi;
+        const std::vector<uint32_t>& mask = closure[decides];
+        const double allowed = kLm83SunlitFraction * static_cast<double>(p.grids[decides].count);
+        const uint8_t last = static_cast<uint8_t>(wg.states.size() - 1);
         state.resize(nh);
-        for (std::size_t h = 0; h < nh; ++h) state[h] = static_cast<uint8_t>((mask[h] >> wg.sunIndex) & 1u);
+        for (std::size_t h = 0; h < nh; ++h) {
+          if (!((mask[h] >> wg.sunIndex) & 1u)) continue;  // the first state leaves the grid shaded enough
+          state[h] = last;
+          for (const StateTrace& st : traced)
+            if (st.group == static_cast<int>(q) && !st.sunlit.empty() && st.sunlit[decides][h] <= allowed) {
+              state[h] = static_cast<uint8_t>(st.state);
+              break;
+            }
+        }
       }
       for (std::size_t h = 0; h < nh; ++h) g.switched[h] += state[h] != 0;
       g.stateOf.push_back(std::move(state));
@@ -124,14 +176,13 @@ void chooseWindowStates(const AnnualInputs& in, const AnnualPass& p) {
 void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob& job, const AnnualPass& p,
                        AnnualTraces& t, StudyObserver& observer) {
   tracedOpenPass(in, job, p, false, t, observer);  // the reference: every group in its first state
-  chooseWindowStates(in, p);
   YearJob stateJob = job;
   stateJob.windows = nullptr;
   const WindowStates& ws = in.states;
   std::vector<StateTrace> traced;
   for (std::size_t q = 0; q < ws.groups.size(); ++q)
     for (std::size_t k = 1; k < ws.groups[q].states.size(); ++k) {
-      StateTrace st{static_cast<int>(q), static_cast<int>(k), nullptr, nullptr};
+      StateTrace st{static_cast<int>(q), static_cast<int>(k), nullptr, nullptr, {}};
       std::vector<int> choice(ws.groups.size(), 0);
       choice[q] = static_cast<int>(k);
       st.scene = loadStateScene(c, in.north, ws, choice);
@@ -139,6 +190,8 @@ void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob&
       st.tracer = std::make_unique<YearTracer>(*st.scene, stateJob, true);
       traced.push_back(std::move(st));
     }
+  countStatesSunlit(p, traced, observer);
+  chooseWindowStates(in, p, traced);
   for (GridYear& g : p.grids) {
     g.stateSensors.assign(traced.size() + 1, {});
     for (std::size_t q = 0; q < traced.size(); ++q) {

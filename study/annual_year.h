@@ -100,6 +100,17 @@ class YearTracer {
     return year;
   }
 
+  // The hourly direct sun alone (sensor-major, the year's hours) of sensors first .. first +
+  // count − 1, as block's directSun: the direct-sun rule's choice among more than two window
+  // states needs each state's before the states' years are folded.
+  std::vector<float> directSun(std::size_t first, std::size_t count) {
+    const SensorBlock b{std::span(*job_.positions).subspan(first, count), std::span(*job_.normals).subspan(first, count),
+                        first};
+    const std::vector<float> coefficients = directSunCoefficients(tracer_, b, suns_, job_.sunSamples, job_.settings.seed,
+                                                                  job_.threads, *job_.distribution);
+    return hourlyDirectSun(coefficients, static_cast<int>(count), *job_.sky);
+  }
+
   double coefficientsS() const { return coefficientsS_; }
   double productS() const { return productS_; }
   // The last block's illuminance per lux of overcast sky outdoors (YearJob::overcast), per sensor.

@@ -489,10 +489,13 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   // at most more); with groups a block holds its open, direct-sun and combined years and one
   // group's closed year (study/annual_study.cpp groupsPass).
   // Window states (docs/annual.md) replace the blinds: one more pass (sky, sun and its direct
-  // part, each state having its own year) per state beyond a group's first.
-  int extraStates = 0;
-  for (const WindowGroupSpec& g : c.windowGroups)
+  // part, each state having its own year) per state beyond a group's first; the direct-sun
+  // rule's own direct-sun pass for each state of a group of more than two but its first and last.
+  int extraStates = 0, escalationStates = 0;
+  for (const WindowGroupSpec& g : c.windowGroups) {
     if (!g.states.empty()) extraStates += static_cast<int>(g.states.size()) - 1;
+    if (g.schedule.empty() && g.states.size() > 2) escalationStates += static_cast<int>(g.states.size()) - 2;
+  }
   const bool withStates = std::any_of(c.windowGroups.begin(), c.windowGroups.end(),
                                       [](const WindowGroupSpec& g) { return !g.states.empty(); });
   const int closedStates =
@@ -534,6 +537,7 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
   if (closedStates == 1) e.work.push_back({"blinds closed: coefficients", sky + sunPaths});
   if (closedStates > 1)
     e.work.push_back({"blinds closed per window group: coefficients", closedStates * (sky + sunPaths)});
+  if (escalationStates > 0) e.work.push_back({"window states: direct sun", escalationStates * direct});
   if (extraStates > 0) e.work.push_back({"window states: coefficients", extraStates * (sky + sunPaths + direct)});
   // LEED option 2 (study/compliance/compliance_leed.cpp): its spaces' sensors at every time, one batch each,
   // under a clear sky (the dome and its sun: two more sampled sources than the annual scene's),

@@ -76,9 +76,9 @@ WindowStates resolveWindowStates(const CaseFile& c, std::size_t hours) {
     if (!spec.schedule.empty()) {
       g.scheduled = readStateSchedule(spec.schedule, g.states, hours);
     } else {
-      if (spec.states.size() != 2)
-        throw InputError(spec.loc, "window group '" + spec.name + "': the direct-sun rule chooses between two "
-                                   "states; give a 'schedule' file");
+      if (spec.states.size() < 2)
+        throw InputError(spec.loc, "window group '" + spec.name + "': the direct-sun rule chooses among at least two "
+                                   "states; give another state or a 'schedule' file");
       if (!spec.sunGrid.empty()) {
         for (std::size_t i = 0; i < c.grids.size(); ++i)
           if (c.grids[i].name == spec.sunGrid) g.sunGrid = static_cast<int>(i);

@@ -43,9 +43,6 @@ void readWindowStates(const Context& c, Table& tab, WindowGroupSpec& g) {
     g.sunGrid = asString(c, *sunGrid, "sun_grid");
     if (g.sunGrid.empty()) c.fail(*sunGrid, "'sun_grid' must name a [[grid]]");
   }
-  if (!schedule && g.states.size() > 2)
-    throw InputError(tab.get("states") ? c.at(*tab.get("states")) : tab.loc(), "window group '" + g.name + "' has " + std::to_string(g.states.size()) +
-                                   " states: the direct-sun rule chooses between two; give a 'schedule' file");
 }
 
 }  // namespace

@@ -115,7 +115,8 @@ TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
 }
 
 // Window states replace the blinds' passes: one more pass (sky, sun and direct sun) per state
-// beyond each group's first; the blinds' closed passes are gone.
+// beyond each group's first, and the direct-sun rule's direct sun of a middle state; the blinds'
+// closed passes are gone.
 TEST(ResourceEstimate, AnnualStudyCountsWindowStates) {
   CaseFile c;
   c.grids.resize(1);
@@ -129,14 +130,17 @@ TEST(ResourceEstimate, AnnualStudyCountsWindowStates) {
   a.hours = 8760;
   a.sunHours = 4000;
   const ResourceEstimate e = estimateAnnualStudy(c, scene, a, TraceSettings{}, 2, 1024);
-  double first = 0.0, states = 0.0;
+  double first = 0.0, states = 0.0, sunRule = 0.0;
   for (const auto& w : e.work) {
     EXPECT_EQ(w.label.rfind("blinds closed", 0), std::string::npos) << w.label;
     if (w.label == "coefficients") first = w.rays;
     if (w.label == "window states: coefficients") states = w.rays;
+    if (w.label == "window states: direct sun") sunRule = w.rays;
   }
   EXPECT_GT(first, 0.0);
   EXPECT_DOUBLE_EQ(states, 3.0 * first);  // (3 − 1) + (2 − 1) passes, each the first's work
+  // The direct-sun rule's pass for the three-state group's middle state: its direct sun only.
+  EXPECT_DOUBLE_EQ(sunRule, 50.0 * 4000.0 * std::max(1, c.annual.sunSamples));
 }
 
 TEST(ResourceEstimate, PixelBytesFromTheImage) {
