@@ -148,9 +148,13 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
        "&gt; 0.40</th><th class=\"num\">&gt; 0.45</th><th class=\"num\">Glare autonomy<br>(DGP &lt; 0.40)</th>"
        "<th>Blinds</th><th>Level</th></tr></thead>\n<tbody>\n";
   for (const GlareViewReport& g : r.glare) {
-    const std::string blinds = g.blinds == "lm83" ? "LM-83 blinds of " + xmlEscape(g.blindsSpace) + ", closed " +
-                                                        countOf(g.blindsClosedHours, "occupied hour", "occupied hours")
-                                                  : std::string("none");
+    const std::string blinds =
+        g.blinds == "lm83"            ? "LM-83 blinds of " + xmlEscape(g.blindsSpace) + ", closed " +
+                                            countOf(g.blindsClosedHours, "occupied hour", "occupied hours")
+        : g.blinds == "window_states" ? "window states as " + xmlEscape(g.blindsSpace) + " chooses them, switched " +
+                                            countOf(g.blindsClosedHours, "occupied hour", "occupied hours") +
+                                            (g.blindsNote.empty() ? "" : " (" + xmlEscape(g.blindsNote) + ")")
+                                      : std::string("none");
     h << "<tr><td class=\"pos\">" << xyz(g.position) << "</td><td class=\"pos\">" << compass(g.azimuthDeg) << "</td><td class=\"num\">"
       << pct(g.shareAbove035) << "</td><td class=\"num\">" << pct(g.shareAbove040) << "</td><td class=\"num\">"
       << pct(g.shareAbove045) << "</td><td class=\"num\">" << pct(g.glareAutonomy) << "</td><td>" << blinds
@@ -168,7 +172,11 @@ void glareHtml(std::ostringstream& h, const En17037Report& r) {
   for (const GlareViewReport& g : r.glare)
     for (const GlareViewReport::Check& c : g.checks)
       h << "<tr><td class=\"pos\">" << xyz(g.position) << "</td><td>" << xmlEscape(dateInWords(c.time)) << "</td><td>"
-        << (c.blindsClosed ? "closed" : g.blinds == "lm83" ? "open" : "none") << "</td><td class=\"num\">"
+        << (g.blinds == "window_states" ? (c.blindsClosed ? "switched" : "first states")
+            : c.blindsClosed            ? "closed"
+            : g.blinds == "lm83"        ? "open"
+                                        : "none")
+        << "</td><td class=\"num\">"
         << formatFixed(c.imagelessDgp, 3) << "</td><td class=\"num\">" << formatFixed(c.renderedDgp, 3)
         << "</td><td class=\"num\">" << signedFixed(c.imagelessDgp - c.renderedDgp, 3) << "</td><td class=\"num\">"
         << formatFixed(c.imagelessEvLux, 0) << " / " << formatFixed(c.renderedEvLux, 0) << " lx</td></tr>\n";

@@ -117,6 +117,7 @@ void addEn17037(json& j, const En17037Report& r) {
                        {"blinds_space", g.blindsSpace.empty() ? json(nullptr) : json(g.blindsSpace)},
                        {"blinds_closed_hours", g.blindsClosedHours},
                        {"checks", checks}});
+      if (!g.blindsNote.empty()) views.back()["blinds_note"] = g.blindsNote;
     }
     j["protection_from_glare"] = {{"exceedance", r.glareExceedance}, {"views", views}};
   }

@@ -40,11 +40,15 @@ struct GlareViewReport {
   double shareAbove035 = 0.0, shareAbove040 = 0.0, shareAbove045 = 0.0;  // of occupied hours
   double glareAutonomy = 0.0;  // share of occupied hours with DGP < 0.40
   En17037Level level = En17037Level::kNone;
-  // The shading the view saw: "open" (none modelled, or window groups: see docs/compliance.md) or
-  // "lm83" (the LM-83 blinds of `blindsSpace`, closed in blindsClosedHours occupied hours).
+  // The shading the view saw: "open" (none modelled, or window groups: see docs/compliance.md),
+  // "lm83" (the LM-83 blinds of `blindsSpace`, closed in blindsClosedHours occupied hours) or
+  // "window_states" (the window groups' states as `blindsSpace` chooses them, some group off its
+  // first state in blindsClosedHours occupied hours; blindsNote says why not, when the views
+  // stayed in the first states).
   std::string blinds = "open";
   std::string blindsSpace;
   int blindsClosedHours = 0;
+  std::string blindsNote;
   // The rendered check of chosen hours: imageless and rendered DGP side by side.
   struct Check {
     std::string time;

@@ -469,13 +469,21 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
   ci.normals = &in.normals;
   ci.threads = trace.threads;
   ci.observer = &observer;
-  // The glare views' blinds: the closed scene of one window group and each grid's closed hours.
+  // The glare views' blinds: the closed scene of LM-83's blinds and each grid's closed hours.
   std::vector<std::vector<char>> closedHours;
   if (t.closed && t.shaded) {
     for (const GridYear& g : grids) closedHours.push_back(g.blindsClosed);
     ci.closedScene = t.shaded.get();
     ci.blindsClosed = &closedHours;
-    ci.blindsLabel = t.closedLabel;
+  }
+  // Window states: the views see each combination of states their space's hours use.
+  if (!in.states.empty()) {
+    ci.windowStates = &t.stateOf;
+    ci.stateScene = [&c, &in](const std::vector<int>& choice) {
+      std::unique_ptr<Scene> scene = loadStateScene(c, in.north, in.states, choice);
+      scene->sky->model = in.scene->sky->model;
+      return scene;
+    };
   }
   return evaluateCompliance(ci);
 }

@@ -207,14 +207,9 @@ void traceWindowStates(const CaseFile& c, const AnnualInputs& in, const YearJob&
     t.productClosedS += st.tracer->productS();
     t.raysClosed += st.tracer->rays();
   }
-  // One group of two states: the [[compliance]] glare views follow it as they follow LM-83's
-  // blinds (the second state's scene kept, each grid's hours in it).
-  if (ws.groups.size() == 1 && traced.size() == 1) {
-    t.shaded = std::move(traced[0].scene);
-    t.closed = true;
-    t.closedLabel = "window_states";
-    for (GridYear& g : p.grids) g.blindsClosed.assign(g.stateOf[0].begin(), g.stateOf[0].end());
-  }
+  // The [[compliance]] glare views follow the states (every combination the hours use is traced
+  // for them: study/compliance/compliance_study.cpp), each grid's states kept for them.
+  for (GridYear& g : p.grids) t.stateOf.push_back(g.stateOf);
 }
 
 // Per group and state: the occupied hours in it and the metrics of its year (statesPass's order:

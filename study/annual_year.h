@@ -152,8 +152,10 @@ struct AnnualTraces {
   uint64_t raysOpen = 0, raysClosed = 0;
   bool closed = false;     // a closed state was traced
   std::unique_ptr<Scene> shaded;  // that state's scene (one group: all the glazing), kept for glare views
-  std::string closedLabel = "lm83";  // what closes it, as the glare views report it
   int blindMaterials = 0;  // glass materials the closed state changed
+  // Window states: each grid's state of every group in every hour ([grid][group][hour]), kept for
+  // the glare views.
+  std::vector<std::vector<std::vector<uint8_t>>> stateOf;
   double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
   double productS() const { return productOpenS + productClosedS; }
   uint64_t rays() const { return raysOpen + raysClosed; }

@@ -163,6 +163,64 @@ void viewOutPart(const ComplianceInputs& in, const Tracer& tracer, const Complia
   if (lowest == En17037Level::kNone) out.verdict = "fail";
 }
 
+// The scenes the glare views see hour by hour: the entry's scene (index 0: blinds open, every
+// window group in its first state) and, with LM-83's blinds, the closed scene, or with window
+// states every combination of the groups' states that the entry's first space's occupied hours
+// use (at most kMaxGlareStateScenes).
+struct ViewScenes {
+  std::vector<uint16_t> sceneOf;               // per hour: the index of its scene
+  std::vector<std::vector<int>> choices;       // window states: each scene's state per group
+  std::string label, space;                    // as GlareViewReport's blinds and blindsSpace
+  std::string note;                            // why the views stay in the first scene, when they do
+  std::size_t count() const { return std::max<std::size_t>(1, choices.size()); }
+};
+
+ViewScenes viewScenes(const ComplianceInputs& in, const ComplianceSpec& s) {
+  ViewScenes v;
+  const std::vector<int> spaces = complianceSpaces(s, *in.tallies);
+  if (spaces.empty()) return v;
+  const std::size_t space = static_cast<std::size_t>(spaces.front());
+  const std::size_t hours = in.occupied->size();
+  if (in.closedScene && in.blindsClosed) {  // LM-83's blinds, as the entry's first space operates them
+    const std::vector<char>& closed = (*in.blindsClosed)[space];
+    v.sceneOf.assign(closed.begin(), closed.end());
+    v.choices = {{0}, {1}};
+    v.label = in.blindsLabel;
+  } else if (in.windowStates && in.stateScene) {
+    const std::vector<std::vector<uint8_t>>& stateOf = (*in.windowStates)[space];
+    v.choices = {std::vector<int>(stateOf.size(), 0)};
+    v.sceneOf.assign(hours, 0);
+    std::vector<int> choice(stateOf.size(), 0);
+    for (std::size_t h = 0; h < hours; ++h) {
+      if (!(*in.occupied)[h]) continue;  // unoccupied hours are not judged: the first scene
+      for (std::size_t q = 0; q < stateOf.size(); ++q) choice[q] = stateOf[q][h];
+      const auto at = std::find(v.choices.begin(), v.choices.end(), choice);
+      if (at == v.choices.end() && v.choices.size() == kMaxGlareStateScenes) {
+        v.note = "more than " + std::to_string(kMaxGlareStateScenes) +
+                 " combinations of window states in the occupied hours: the views are in the first states";
+        v.sceneOf.assign(hours, 0);
+        v.choices.resize(1);
+        break;
+      }
+      v.sceneOf[h] = static_cast<uint16_t>(at - v.choices.begin());
+      if (at == v.choices.end()) v.choices.push_back(choice);
+    }
+    v.label = "window_states";
+  } else {
+    return v;
+  }
+  v.space = in.tallies->grids()[space].name;
+  return v;
+}
+
+// Scene i of v: the entry's, LM-83's closed one, or a combination of window states (made in keep).
+const Scene* viewScene(const ComplianceInputs& in, const ViewScenes& v, std::size_t i, std::unique_ptr<Scene>& keep) {
+  if (i == 0) return in.scene;
+  if (in.closedScene && in.blindsClosed) return in.closedScene;
+  keep = in.stateScene(v.choices[i]);
+  return keep.get();
+}
+
 void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpec& s, En17037Report& r,
            ComplianceReport& out) {
   r.glareExceedance = s.glareExceedance;
@@ -170,25 +228,30 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
   th.exceedanceShare = s.glareExceedance;
   En17037Level lowest = En17037Level::kHigh;
   std::vector<ViewGlareMetrics> all;
-  // The views' blinds: LM-83's, operated as the entry's first space's (its hours of closed blinds).
-  const std::vector<int> spaces = complianceSpaces(s, *in.tallies);
-  const bool blinds = in.closedScene && in.blindsClosed && !spaces.empty();
-  const std::vector<char>* closedHours = blinds ? &(*in.blindsClosed)[static_cast<std::size_t>(spaces.front())] : nullptr;
-  std::unique_ptr<Tracer> closedTracer;
-  if (blinds) closedTracer = std::make_unique<Tracer>(*in.closedScene);
+  // The views' blinds or window states, operated as the entry's first space's.
+  const ViewScenes scenes = viewScenes(in, s);
+  const bool operated = scenes.count() > 1;
+  // Every view in every scene, a scene at a time (the same stream in each, so that every scene
+  // sees the same samples).
+  std::vector<std::vector<ViewAnnualGlare>> year(s.glareViews.size());
+  for (std::size_t i = 0; i < scenes.count(); ++i) {
+    std::unique_ptr<Scene> keep;
+    std::unique_ptr<Tracer> own;
+    const Tracer* t = &tracer;
+    if (i > 0) t = (own = std::make_unique<Tracer>(*viewScene(in, scenes, i, keep))).get();
+    for (std::size_t vi = 0; vi < s.glareViews.size(); ++vi) {
+      const GlareViewSpec& v = s.glareViews[vi];
+      const GlareView view{"view" + std::to_string(vi + 1), v.positionM, v.direction};
+      year[vi].push_back(imagelessAnnualGlare(*t, view, kAnnualGlareStreamBase + vi, *in.glareJob));
+    }
+  }
   for (std::size_t i = 0; i < s.glareViews.size(); ++i) {
     const GlareViewSpec& v = s.glareViews[i];
     const GlareView view{"view" + std::to_string(i + 1), v.positionM, v.direction};
     std::vector<int> checkHours;
     for (const std::string& h : v.checkHours) checkHours.push_back(hourIndex(*in.sky, h, v.checkLoc));
-    // Open and, with blinds, closed: the same stream, so both states see the same samples.
-    const ViewAnnualGlare open = imagelessAnnualGlare(tracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
-    std::optional<ViewAnnualGlare> closed;
-    std::vector<float> dgp = open.dgp;
-    if (blinds) {
-      closed = imagelessAnnualGlare(*closedTracer, view, kAnnualGlareStreamBase + i, *in.glareJob);
-      dgp = combineByHour(open.dgp, closed->dgp, *closedHours);
-    }
+    std::vector<float> dgp = year[i][0].dgp;
+    for (std::size_t h = 0; h < dgp.size() && operated; ++h) dgp[h] = year[i][scenes.sceneOf[h]].dgp[h];
     const ViewGlareMetrics m = viewGlareMetrics(dgp, *in.occupied, th);
     all.push_back(m);
     GlareViewReport g;
@@ -198,23 +261,24 @@ void glare(const ComplianceInputs& in, const Tracer& tracer, const ComplianceSpe
     g.shareAbove035 = m.aboveHigh, g.shareAbove040 = m.aboveMedium, g.shareAbove045 = m.aboveMinimum;
     g.glareAutonomy = m.glareAutonomy;
     g.level = m.level;
-    if (blinds) {
-      g.blinds = in.blindsLabel;
-      g.blindsSpace = in.tallies->grids()[static_cast<std::size_t>(spaces.front())].name;
-      for (std::size_t h = 0; h < closedHours->size(); ++h)
-        g.blindsClosedHours += ((*closedHours)[h] && (*in.occupied)[h]) ? 1 : 0;
+    if (operated || !scenes.note.empty()) {
+      g.blinds = scenes.label;
+      g.blindsSpace = scenes.space;
+      g.blindsNote = scenes.note;
+      for (std::size_t h = 0; h < scenes.sceneOf.size(); ++h)
+        g.blindsClosedHours += (scenes.sceneOf[h] != 0 && (*in.occupied)[h]) ? 1 : 0;
     }
-    // Each check hour rendered in the state its blinds were in.
+    // Each check hour rendered in the scene of that hour.
     RenderedGlareOptions check;
     check.resolutionPx = v.checkResolutionPx;
     for (std::size_t k = 0; k < checkHours.size(); ++k) {
-      const bool shut = blinds && (*closedHours)[static_cast<std::size_t>(checkHours[k])];
-      const HourSceneInput hs{shut ? in.closedScene : in.scene, in.epw, in.sky, in.glareJob->northDeg,
+      const std::size_t at = operated ? scenes.sceneOf[static_cast<std::size_t>(checkHours[k])] : 0;
+      std::unique_ptr<Scene> keep;
+      const HourSceneInput hs{viewScene(in, scenes, at, keep), in.epw, in.sky, in.glareJob->northDeg,
                               in.caseFile->sky.groundReflectance};
       const GlareHourCheck c =
-          checkChosenHours(hs, view, shut ? *closed : open, {checkHours[k]}, in.glareJob->settings, in.threads, {}, check)
-              .at(0);
-      g.checks.push_back({v.checkHours[k], shut, c.imagelessDgp, c.renderedDgp, c.imagelessEvLux, c.renderedEvLux});
+          checkChosenHours(hs, view, year[i][at], {checkHours[k]}, in.glareJob->settings, in.threads, {}, check).at(0);
+      g.checks.push_back({v.checkHours[k], at != 0, c.imagelessDgp, c.renderedDgp, c.imagelessEvLux, c.renderedEvLux});
     }
     r.glare.push_back(std::move(g));
     lowest = lowerLevel(lowest, m.level);

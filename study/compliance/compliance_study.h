@@ -13,6 +13,8 @@
 #include "study/observer.h"
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,9 @@ class ComplianceTallies {
 
 struct AnnualGlareJob;
 
+// The most combinations of window states a glare view is traced in (each is its own scene).
+inline constexpr std::size_t kMaxGlareStateScenes = 64;
+
 struct ComplianceInputs {
   const CaseFile* caseFile = nullptr;
   const Scene* scene = nullptr;       // blinds open
@@ -78,9 +83,15 @@ struct ComplianceInputs {
   // [[window_group]]): the blinds-closed scene and each grid's hours of closed blinds (grid order).
   const Scene* closedScene = nullptr;
   const std::vector<std::vector<char>>* blindsClosed = nullptr;
-  // What closes them, as the views report it: "lm83" (the blinds), or "window_states" (a
-  // [[window_group]] of two states, its second state's scene and hours).
+  // What closes them, as the views report it: "lm83" (the blinds).
   std::string blindsLabel = "lm83";
+  // Window states for the glare views (docs/annual.md "Window states"): each grid's state of
+  // every group in every hour ([grid][group][hour], grid order), and the scene of one choice of
+  // states (a state per group). The views follow the entry's first space: each combination of
+  // states its occupied hours use is traced (at most kMaxGlareStateScenes, beyond which the
+  // views stay in the reference state and say so).
+  const std::vector<std::vector<std::vector<uint8_t>>>* windowStates = nullptr;
+  std::function<std::unique_ptr<Scene>(const std::vector<int>&)> stateScene;
   int threads = 0;
   StudyObserver* observer = nullptr;  // one step per entry, its parts as the items
 };

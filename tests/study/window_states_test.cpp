@@ -454,6 +454,38 @@ TEST_F(WindowStateStudy, GlareViewsFollowTheStates) {
   EXPECT_LT(g.shareAbove035, c.shareAbove035);
 }
 
+// The glare view follows any state, not only a second one: a group of three states scheduled in
+// its third all year sees exactly the third state's single run (the same view stream), and every
+// occupied hour is reported switched.
+TEST_F(WindowStateStudy, GlareViewsFollowAThirdState) {
+  const fs::path dir = dir_ / "glare3";
+  fs::create_directories(dir);
+  const fs::path schedule = dir / "tint.txt";
+  {
+    std::ofstream out(schedule);
+    for (int h = 0; h < 8760; ++h) out << "tint\n";
+  }
+  CaseFile c = roomCase();
+  c.scenes.push_back({kDir / "pane.rad", {}});
+  WindowGroupSpec g = southStates();
+  g.states = {{"clear", kDir / "clear.rad", g.loc}, {"dim", kDir / "dim.rad", g.loc}, {"tint", kDir / "tint.rad", g.loc}};
+  g.schedule = schedule;
+  c.windowGroups = {g};
+  c.compliance = {glareEntry()};
+  const RunResult three = runRoom(c, dir / "run");
+  const RunResult tint = runSingleWithGlare("tint", dir / "tint");
+  const GlareViewReport& got = three.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& want = tint.data.compliance.at(0).en17037->glare.at(0);
+  EXPECT_EQ(got.blinds, "window_states");
+  EXPECT_EQ(got.shareAbove035, want.shareAbove035);
+  EXPECT_EQ(got.shareAbove045, want.shareAbove045);
+  EXPECT_EQ(got.glareAutonomy, want.glareAutonomy);
+  EXPECT_EQ(got.blindsClosedHours, countHours(occupiedOf(hourly(clear_, "room"))));
+  // The first state glares where the tint does not: following the wrong state would show.
+  const RunResult clear = runSingleWithGlare("clear", dir / "clear");
+  EXPECT_GT(clear.data.compliance.at(0).en17037->glare.at(0).shareAbove035, want.shareAbove035);
+}
+
 // A Honeybee radiance folder (honeybee-radiance-folder's layout) written here, read into the case
 // the hand-written [[scene]] and [[window_group]] entries give.
 TEST(HoneybeeFolder, ReadsIntoItsHandWrittenCase) {
