@@ -3,6 +3,7 @@
 #include "engine/irradiance_cache.h"
 #include "engine/lights.h"
 #include "engine/materials/family.h"
+#include "engine/portals.h"
 #include "photometry/sky_patches.h"
 #include "engine/render.h"
 #include "engine/sampling.h"
@@ -210,36 +211,43 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c) {
   e.memory.push_back(std::move(m));
 }
 
-double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction) {
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction,
+                     double skyRaysPerVertex) {
   const double sources = static_cast<double>(sampled + luminaires);
   // A luminaire's opening is sampled as an area source's (lights.cpp; a point luminaire takes one
   // ray, but most have an opening).
   const double direct = static_cast<double>(s.lightSamples) * static_cast<double>(sampled + luminaires);
   const double hemisphere = static_cast<double>(s.hemisphereSamples);
   if (s.maxBounces <= 0) return hemisphere + direct;  // the rays see glow and sky only
-  // A hemisphere ray: the ray to its first hit and that vertex's shadow ray, then either the
-  // cache (a lookup with its visibility rays and the records' share, kCacheRaysPerLookup) or
-  // firstBounceSplit continuations of ρ/(1 − ρ) further vertices, a ray and a shadow ray each.
+  // A hemisphere ray: the ray to its first hit and that vertex's shadow rays (the light chosen,
+  // and under a sky its sample and its portal sample), then either the cache (a lookup with its
+  // visibility rays and the records' share, kCacheRaysPerLookup, fitted in a room without sky:
+  // their paths' vertices cost as this one's) or firstBounceSplit continuations of ρ/(1 − ρ)
+  // further vertices, a ray and the shadow rays each.
   const double further = std::min<double>(s.maxBounces, kMeanReflectance / (1.0 - kMeanReflectance));
+  const double vertexRays = 2.0 + skyRaysPerVertex;
   const bool cache = s.method == Method::kCache;
   // The cache's rays are paths too: half of them reach a vertex that selects a light.
   const double vertices = cache ? 1.0 + kCacheRaysPerLookup / 2.0 : 1.0 + std::max(1, s.firstBounceSplit) * further;
-  const double perRay = cache ? 2.0 + kCacheRaysPerLookup : 2.0 * vertices;
+  const double perRay = cache ? vertexRays * (1.0 + kCacheRaysPerLookup / 2.0) : vertexRays * vertices;
   const double selection = hemisphere * hitFraction * vertices * kSelectionCostPerSource * sources;
   // A ray that leaves the scene is itself only (hitFraction: the share that meets a surface).
   return hemisphere * (1.0 + hitFraction * (perRay - 1.0)) + direct + selection;
 }
 
-double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction) {
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction,
+                       double skyRaysPerVertex) {
   if (s.method != Method::kCache || s.maxBounces <= 0) return 0.0;
   const double a = std::max(1e-3, s.cache.accuracy);
   const double hemisphereRays = points * static_cast<double>(s.hemisphereSamples);
   const double records = std::min(kRecordsPerSquareMetre * boxSurfaceM2 * (0.2 / a) * (0.2 / a),
                                   kRecordsPerHemisphereRay * hemisphereRays);
-  // A record sample is a path: its hit and shadow ray, then ρ/(1 − ρ) further vertices.
+  // A record sample is a path: its hit and shadow rays, then ρ/(1 − ρ) further vertices.
   const double further = std::min<double>(s.maxBounces, kMeanReflectance / (1.0 - kMeanReflectance));
-  const double perRecord = s.cache.recordSamples * 2.0 * (1.0 + further) + s.cache.radiusSamples;
-  return hitFraction * std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup);
+  const double vertexRays = 2.0 + skyRaysPerVertex;
+  const double perRecord = s.cache.recordSamples * vertexRays * (1.0 + further) + s.cache.radiusSamples;
+  return hitFraction *
+         std::max(0.0, records * perRecord - hemisphereRays * kRecordShareRaysPerLookup * vertexRays / 2.0);
 }
 
 namespace {
@@ -257,8 +265,9 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
   constexpr int kDirections = 32;
   constexpr double kGoldenFraction = 0.38196601125010515;  // 2 − φ: the golden angle over 2π
   HemispherePilot pilot;
-  if (points.empty()) return pilot;
   const Scene& scene = tracer.scene();
+  pilot.skyRaysPerVertex = skyRaysPerVertex(scene, &tracer.portals());
+  if (points.empty()) return pilot;
   const std::size_t step = std::max<std::size_t>(1, points.size() / kPoints);
   int hits = 0, rays = 0, pilots = 0, scattering = 0;
   for (std::size_t i = 0; i < points.size(); i += step) {
@@ -286,12 +295,19 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
 }
 
 double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled, std::size_t luminaires,
-                     double hitFraction) {
+                     const HemispherePilot& pilot) {
   if (s.method != Method::kCache || s.maxBounces <= 0 || s.targetRelativeError <= 0.0) return 0.0;
   TraceSettings path = s;
   path.method = Method::kPath;
   // Half the batches the settings allow (sampleToTarget's cap): measured on cases/sidelit-bsdf.
-  return points * std::max(1.0, 0.5 * s.maxBatches) * raysPerSensor(path, sampled, luminaires, hitFraction);
+  return points * std::max(1.0, 0.5 * s.maxBatches) *
+         raysPerSensor(path, sampled, luminaires, pilot.hitFraction, pilot.skyRaysPerVertex);
+}
+
+double skyRaysPerVertex(const Scene& scene, const PortalSet* portals) {
+  if (!scene.sky) return 0.0;
+  const bool any = portals ? !portals->empty() : !PortalSet(scene).empty();
+  return any ? 2.0 : 1.0;
 }
 
 uint64_t annualBlockBytes(uint64_t sensors, uint64_t hours, uint64_t patches, uint64_t sunHours, uint64_t suns,
@@ -390,10 +406,10 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   }
   const double batches = expectedBatchesPerPoint(s);
   const double boxSurfaceM2 = boundingBoxSurfaceM2(scene);
-  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
-                                   cacheRecordRays(s, points, boxSurfaceM2, hitFraction) +
-                                   pastCacheRays(s, points * pilot.scatteringPoints, n.sampled, n.luminaires,
-                                                 hitFraction)});
+  const double sky = pilot.skyRaysPerVertex;
+  e.work.push_back({"tracing", points * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction, sky) +
+                                   cacheRecordRays(s, points, boxSurfaceM2, hitFraction, sky) +
+                                   pastCacheRays(s, points * pilot.scatteringPoints, n.sampled, n.luminaires, pilot)});
   addLuminaires(e, c);
   // EN 1838's points (study/compliance/en1838.h): each a sensor, its estimate, its value and its
   // row of the points table; direct light from the emergency luminaires only.
@@ -467,9 +483,9 @@ ResourceEstimate estimatePoints(std::size_t points, const FileLoc& where, const 
   e.memory.back().bytes += scene.luminaires.size() * (sizeof(LuminaireSource) + sizeof(Light) + 32);
   const double batches = expectedBatchesPerPoint(s);
   const double all = static_cast<double>(points);
-  e.work.push_back({"tracing", all * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction) +
-                                   pastCacheRays(s, all * pilot.scatteringPoints, n.sampled, n.luminaires,
-                                                 hitFraction)});
+  e.work.push_back({"tracing", all * batches * raysPerSensor(s, n.sampled, n.luminaires, hitFraction,
+                                                             pilot.skyRaysPerVertex) +
+                                   pastCacheRays(s, all * pilot.scatteringPoints, n.sampled, n.luminaires, pilot)});
   return e;
 }
 
@@ -554,9 +570,10 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
       const double times = static_cast<double>(leedOption2Dates(spec, 0).size()) *  // the year changes no count
                            static_cast<double>(spec.leedHours.size());
       // Each time traces its own scene under its own sky, so its own irradiance cache.
+      const double sky = 1.0 + (PortalSet(scene).empty() ? 0.0 : 1.0);  // its sky's rays at each vertex
       e.work.push_back({"compliance " + spec.name,
-                        times * (static_cast<double>(k) * raysPerSensor(once, n.sampled + 2, 0) +
-                                 cacheRecordRays(once, static_cast<double>(k), boundingBoxSurfaceM2(scene)))});
+                        times * (static_cast<double>(k) * raysPerSensor(once, n.sampled + 2, 0, 1.0, sky) +
+                                 cacheRecordRays(once, static_cast<double>(k), boundingBoxSurfaceM2(scene), 1.0, sky))});
     }
   return e;
 }

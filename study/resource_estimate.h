@@ -86,8 +86,17 @@ void addLuminaires(ResourceEstimate& e, const CaseFile& c);
 // every path vertex (a fraction of a ray per source). `sampled` counts the area and distant
 // sources and the sky, `luminaires` the photometric ones. Formula in docs/reliability.md.
 // `hitFraction`: the share of hemisphere rays that meet a surface (hemispherePilot; 1 in a
-// room): a ray that leaves the scene costs itself only, no vertex.
-double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction = 1.0);
+// room): a ray that leaves the scene costs itself only, no vertex. `skyRaysPerVertex`: the
+// shadow rays a sky adds at every path vertex beyond the light chosen there (skyRaysPerVertex:
+// its sample by luminance, and its portal sample where portals are found; 0 without a sky).
+double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t luminaires, double hitFraction = 1.0,
+                     double skyRaysPerVertex = 0.0);
+
+class PortalSet;
+// The sky's shadow rays at a path vertex (engine/integrator_direct.cpp, skyIrradiance): 0
+// without a sky, 1 (a sample by luminance), 2 with portals (and a portal sample); `portals` the
+// tracer's when built (else found from the scene).
+double skyRaysPerVertex(const Scene& scene, const PortalSet* portals = nullptr);
 
 // The irradiance cache's records beyond what raysPerSensor's lookups already count (their share,
 // calibrated on dense grids): a room needs about the same records however few points look at it,
@@ -97,7 +106,8 @@ double raysPerSensor(const TraceSettings& s, std::size_t sampled, std::size_t lu
 // points' hemisphere rays; each costs its record samples' paths and its radius samples. 0 for
 // the path method or without bounces. Formula in docs/reliability.md.
 // `hitFraction` as raysPerSensor's: records are made where hemisphere rays meet surfaces.
-double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction = 1.0);
+double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM2, double hitFraction = 1.0,
+                       double skyRaysPerVertex = 0.0);
 
 // What a pilot of the points' hemisphere rays tells the estimate, once the tracer is built: 32
 // fixed cosine-distributed directions from each of at most 64 points spread over the list (2 048
@@ -111,6 +121,8 @@ struct HemispherePilot {
   // its function, too noisily for the grids' goal, and the points go on by the path method
   // (docs/bsdf.md), which pastCacheRays counts.
   double scatteringPoints = 0.0;
+  // skyRaysPerVertex of the scene with the tracer's portals.
+  double skyRaysPerVertex = 0.0;
 };
 HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points);
 
@@ -119,7 +131,7 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
 // batches the settings allow (sampleToTarget's cap; the estimate is 0.7–4 × the run on the four
 // cases/sidelit-bsdf rooms, docs/reliability.md). 0 unless the cache method has a target error.
 double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled, std::size_t luminaires,
-                     double hitFraction);
+                     const HemispherePilot& pilot);
 
 // The annual study's float arrays for one block of `sensors` sensors over `hours` hours (the
 // study holds one block at a time, study/annual_study.h kAnnualSensorsPerBlock): while a block's

@@ -108,9 +108,10 @@ TEST(ResourceEstimate, AnnualStudyCountsLeedOption2) {
   ASSERT_EQ(with.work.size(), without.work.size() + 1);
   EXPECT_EQ(with.work.back().label, "compliance leed2");
   point.targetRelativeError = 0.0;
-  const double records = cacheRecordRays(point, 40.0, 108.0);
+  // Its clear sky adds a shadow ray at every path vertex (no glazing here: no portal sample).
+  const double records = cacheRecordRays(point, 40.0, 108.0, 1.0, 1.0);
   EXPECT_GT(records, 0.0);
-  EXPECT_DOUBLE_EQ(with.work.back().rays, 6.0 * (40.0 * raysPerSensor(point, 2, 0) + records));
+  EXPECT_DOUBLE_EQ(with.work.back().rays, 6.0 * (40.0 * raysPerSensor(point, 2, 0, 1.0, 1.0) + records));
   EXPECT_GT(with.seconds("compliance leed2"), 0.0);
 }
 
@@ -259,6 +260,32 @@ TEST(ResourceEstimate, HemisphereHitFractionOfAnOpenSite) {
   EXPECT_EQ(hemispherePilot(tracer, {}).hitFraction, 1.0);
 }
 
+// A sky adds its shadow rays at every path vertex: one sample by luminance, and a portal sample
+// where glazing is found (engine/integrator_direct.cpp, skyIrradiance).
+TEST(ResourceEstimate, ASkyAddsItsShadowRaysAtEveryVertex) {
+  Scene dark;
+  SceneReader(dark).readText("void plastic g 0 0 5 .2 .2 .2 0 0\n"
+                             "g polygon floor 0 0 12 0 0 0 0 6 0 4 6 0 4 0 0\n",
+                             "room.rad", ".");
+  EXPECT_EQ(skyRaysPerVertex(dark), 0.0);
+  Scene open = dark;
+  test_support::addUniformSky(open);
+  EXPECT_EQ(skyRaysPerVertex(open), 1.0);
+  Scene glazed;
+  SceneReader(glazed).readText("void glass clear 0 0 3 .9 .9 .9\n"
+                               "clear polygon pane 0 0 12 0 0 1 0 1 1 1 1 1 1 0 1\n",
+                               "window.rad", ".");
+  test_support::addUniformSky(glazed);
+  EXPECT_EQ(skyRaysPerVertex(glazed), 2.0);
+  // Path method: every vertex (1 + split × 1 further) of every hemisphere ray pays them.
+  TraceSettings path;
+  path.method = Method::kPath;
+  path.maxBounces = 5;
+  path.hemisphereSamples = 100;
+  path.firstBounceSplit = 4;
+  EXPECT_DOUBLE_EQ(raysPerSensor(path, 1, 0, 1.0, 2.0) - raysPerSensor(path, 1, 0, 1.0, 0.0), 100.0 * 2.0 * (1 + 4));
+}
+
 // Points that see a BSDF window (a scattering surface) are counted past the cache; the rays of
 // each are the path method's for half the settings' batches, none without the cache or a target.
 TEST(ResourceEstimate, PointsThatSeeABsdfWindowAreCountedPastTheCache) {
@@ -286,11 +313,11 @@ TEST(ResourceEstimate, PointsThatSeeABsdfWindowAreCountedPastTheCache) {
   s.maxBatches = 16;
   TraceSettings path = s;
   path.method = Method::kPath;
-  EXPECT_DOUBLE_EQ(pastCacheRays(s, 40.0, 2, 3, 1.0), 40.0 * 8 * raysPerSensor(path, 2, 3, 1.0));
-  EXPECT_EQ(pastCacheRays(path, 40.0, 2, 3, 1.0), 0.0);
+  EXPECT_DOUBLE_EQ(pastCacheRays(s, 40.0, 2, 3, pilot), 40.0 * 8 * raysPerSensor(path, 2, 3, 1.0));
+  EXPECT_EQ(pastCacheRays(path, 40.0, 2, 3, pilot), 0.0);
   TraceSettings oneBatch = s;
   oneBatch.targetRelativeError = 0.0;
-  EXPECT_EQ(pastCacheRays(oneBatch, 40.0, 2, 3, 1.0), 0.0);
+  EXPECT_EQ(pastCacheRays(oneBatch, 40.0, 2, 3, pilot), 0.0);
 }
 
 // The cache's records beyond the lookups' share: a room's worth (60 per m² of the box at
