@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <vector>
 
 namespace candela {
 
 namespace {
 
 Verdict atLeast(double value, double required) { return value >= required ? Verdict::kPass : Verdict::kFail; }
+Verdict atMost(double value, double limit) { return value <= limit ? Verdict::kPass : Verdict::kFail; }
 
 // Fail when any checked verdict fails, pass when at least one is checked and all pass.
 Verdict combine(std::initializer_list<Verdict> lines) {
@@ -45,10 +47,35 @@ void judgeOutdoorArea(OutdoorAreaResult& a, const std::vector<GrObserverResult>&
   a.verdict = combine({a.averageVerdict, a.uniformityVerdict, a.grVerdict, a.raVerdict});
 }
 
+std::optional<ObtrusiveLimits> obtrusiveZoneLimits(const std::string& zone) {
+  if (zone == "E1") return ObtrusiveLimits{2.0, 2500.0, 0.0};
+  if (zone == "E2") return ObtrusiveLimits{5.0, 7500.0, 0.05};
+  if (zone == "E3") return ObtrusiveLimits{10.0, 10000.0, 0.15};
+  if (zone == "E4") return ObtrusiveLimits{25.0, 25000.0, 0.25};
+  return std::nullopt;
+}
+
+void judgeObtrusiveLight(ObtrusiveLightResult& r) {
+  const ObtrusiveLimits& l = r.limits;
+  std::vector<Verdict> all;
+  for (PropertyPointResult& p : r.points) {
+    p.illuminanceVerdict = l.propertyLux ? atMost(p.illuminanceLux, *l.propertyLux) : Verdict::kNotChecked;
+    p.intensityVerdict = l.intensityCd ? atMost(p.maxIntensityCd, *l.intensityCd) : Verdict::kNotChecked;
+    all.push_back(p.illuminanceVerdict);
+    all.push_back(p.intensityVerdict);
+  }
+  r.upwardVerdict = l.upwardLightRatio ? atMost(r.upwardLightRatio, *l.upwardLightRatio) : Verdict::kNotChecked;
+  all.push_back(r.upwardVerdict);
+  bool any = false, fail = false;
+  for (Verdict v : all) any = any || v != Verdict::kNotChecked, fail = fail || v == Verdict::kFail;
+  r.verdict = fail ? Verdict::kFail : any ? Verdict::kPass : Verdict::kNotChecked;
+}
+
 void judgeEn12464_2(En12464_2Result& r) {
   bool fail = false;
   for (const OutdoorAreaResult& a : r.areas) fail = fail || a.verdict == Verdict::kFail;
   for (const GrObserverResult& o : r.observers) fail = fail || o.verdict == Verdict::kFail;
+  fail = fail || (r.obtrusive && r.obtrusive->verdict == Verdict::kFail);
   r.verdict = fail ? Verdict::kFail : Verdict::kPass;
 }
 

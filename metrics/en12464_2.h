@@ -64,10 +64,46 @@ struct OutdoorLuminaire {
   Vec3 positionM{0.0};
 };
 
+// Obtrusive light's limits (EN 12464-2:2014 clause 4, CIE 150): the vertical illuminance at a
+// property, the intensity of each luminaire towards it, the installation's upward light ratio.
+struct ObtrusiveLimits {
+  std::optional<double> propertyLux, intensityCd, upwardLightRatio;
+};
+
+// An environmental zone's limits before curfew: EN 12193:2008 Table 5 as the ITF Facilities
+// Guide reproduces it (itf.uberflip.com/i/1255985-facilities-guide/56: E1 2 lx, 2 500 cd, 0 %;
+// E2 5 lx, 7 500 cd, 5 %; E3 10 lx, 10 000 cd, 15 %; E4 25 lx, 25 000 cd, 25 %). Empty for any
+// other name (E0 and the post-curfew values were not found in a source that could be cited).
+std::optional<ObtrusiveLimits> obtrusiveZoneLimits(const std::string& zone);
+
+struct PropertyPointResult {
+  std::string name;
+  Vec3 positionM{0.0}, normal{0.0, 1.0, 0.0};
+  double illuminanceLux = 0.0;     // E_v on the plane of `normal`, direct from the luminaires
+  double maxIntensityCd = 0.0;     // the largest intensity towards the point of a luminaire it sees
+  std::string brightestLuminaire;  // that luminaire ("" when none is seen)
+  Verdict illuminanceVerdict = Verdict::kNotChecked, intensityVerdict = Verdict::kNotChecked;
+};
+
+struct ObtrusiveLightResult {
+  std::string zone;            // "" when the case gives its limits only
+  ObtrusiveLimits limits;      // the zone's, each replaced by the case's where given
+  std::vector<PropertyPointResult> points;
+  double upwardFluxLm = 0.0, totalFluxLm = 0.0;  // the installation as placed
+  double upwardLightRatio = 0.0;                 // upward / total (0 without flux)
+  Verdict upwardVerdict = Verdict::kNotChecked;
+  Verdict verdict = Verdict::kNotChecked;
+};
+
+// The points' and the ULR's verdicts against the limits ("not above": equal passes; not checked
+// without the limit), and the whole: fail when any fails, pass when any is checked.
+void judgeObtrusiveLight(ObtrusiveLightResult& r);
+
 struct En12464_2Result {
   std::vector<OutdoorAreaResult> areas;
   std::vector<GrObserverResult> observers;
   std::vector<OutdoorLuminaire> luminaires;
+  std::optional<ObtrusiveLightResult> obtrusive;
   Verdict verdict = Verdict::kNotChecked;
 };
 
@@ -81,7 +117,7 @@ void judgeGrObserver(GrObserverResult& o);
 // Its Ra verdict is set before (the luminaires' data is the study's).
 void judgeOutdoorArea(OutdoorAreaResult& a, const std::vector<GrObserverResult>& observers);
 
-// The entry: fail when any area or observer fails, else pass.
+// The entry: fail when any area or observer or the obtrusive light fails, else pass.
 void judgeEn12464_2(En12464_2Result& r);
 
 }  // namespace candela

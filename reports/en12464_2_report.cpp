@@ -85,6 +85,29 @@ void En12464_2Section::addJson(json& j) const {
                          {"verdict", verdictName(o.verdict)}});
   }
   j["observers"] = observers;
+  if (r.obtrusive) {
+    const ObtrusiveLightResult& o = *r.obtrusive;
+    json points = json::array();
+    for (const PropertyPointResult& p : o.points)
+      points.push_back({{"name", p.name},
+                        {"position", json::array({p.positionM.x, p.positionM.y, p.positionM.z})},
+                        {"normal", json::array({p.normal.x, p.normal.y, p.normal.z})},
+                        {"illuminance_lux", p.illuminanceLux},
+                        {"max_intensity_cd", p.maxIntensityCd},
+                        {"brightest_luminaire", p.brightestLuminaire.empty() ? json() : json(p.brightestLuminaire)},
+                        {"verdict_illuminance", verdictName(p.illuminanceVerdict)},
+                        {"verdict_intensity", verdictName(p.intensityVerdict)}});
+    j["obtrusive_light"] = {{"environmental_zone", o.zone.empty() ? json() : json(o.zone)},
+                            {"limit_property_illuminance_lux", orNull(o.limits.propertyLux)},
+                            {"limit_intensity_cd", orNull(o.limits.intensityCd)},
+                            {"limit_upward_light_ratio", orNull(o.limits.upwardLightRatio)},
+                            {"property_points", points},
+                            {"upward_flux_lm", o.upwardFluxLm},
+                            {"total_flux_lm", o.totalFluxLm},
+                            {"upward_light_ratio", o.upwardLightRatio},
+                            {"verdict_upward_light_ratio", verdictName(o.upwardVerdict)},
+                            {"verdict", verdictName(o.verdict)}};
+  }
 }
 
 std::string En12464_2Section::html() const {
@@ -139,6 +162,34 @@ std::string En12464_2Section::html() const {
         << "</td><td class=\"num\">" << cell(o.grLimit, 0) << "</td>" << verdictCell(o.verdict) << "</tr>\n";
     }
     h << "</table>\n";
+  }
+  if (r.obtrusive) {
+    const ObtrusiveLightResult& o = *r.obtrusive;
+    h << "<h3>Obtrusive light" << (o.zone.empty() ? "" : " (environmental zone " + xmlEscape(o.zone) + ")")
+      << "</h3>\n<p class=\"sub\">Limits: vertical illuminance at properties " << cell(o.limits.propertyLux, 1)
+      << " lx, luminous intensity towards them " << cell(o.limits.intensityCd, 0) << " cd, upward light ratio "
+      << (o.limits.upwardLightRatio ? formatFixed(100.0 * *o.limits.upwardLightRatio, 0) + " %" : "–")
+      << (o.zone.empty() ? " (the case's)" : " (the zone's before curfew, EN 12193 Table 5, unless the case gives its own)")
+      << ". Direct light of the luminaires, obstructions included (docs/outdoor.md).</p>\n";
+    if (!o.points.empty()) {
+      h << "<table class=\"compliance\"><tr><th>property point</th><th>position m</th><th>facing</th>"
+           "<th>E<sub>v</sub> lx</th><th>E<sub>v</sub> ≤ limit</th><th>I<sub>max</sub> cd</th><th>from</th>"
+           "<th>I ≤ limit</th></tr>\n";
+      for (const PropertyPointResult& p : o.points)
+        h << "<tr><td>" << xmlEscape(p.name) << "</td><td class=\"pos\">(" << formatFixed(p.positionM.x, 1) << ", "
+          << formatFixed(p.positionM.y, 1) << ", " << formatFixed(p.positionM.z, 1) << ")</td><td class=\"pos\">("
+          << formatFixed(p.normal.x, 2) << ", " << formatFixed(p.normal.y, 2) << ", " << formatFixed(p.normal.z, 2)
+          << ")</td><td class=\"num\">" << formatFixed(p.illuminanceLux, 2) << "</td>" << verdictCell(p.illuminanceVerdict)
+          << "<td class=\"num\">" << formatFixed(p.maxIntensityCd, 0) << "</td><td>"
+          << (p.brightestLuminaire.empty() ? "–" : xmlEscape(p.brightestLuminaire)) << "</td>"
+          << verdictCell(p.intensityVerdict) << "</tr>\n";
+      h << "</table>\n";
+    }
+    h << "<table class=\"compliance\"><tr><th>upward flux lm</th><th>total flux lm</th><th>upward light ratio</th>"
+         "<th>≤ limit</th><th>obtrusive light</th></tr>\n<tr><td class=\"num\">"
+      << formatFixed(o.upwardFluxLm, 0) << "</td><td class=\"num\">" << formatFixed(o.totalFluxLm, 0)
+      << "</td><td class=\"num\">" << formatFixed(100.0 * o.upwardLightRatio, 2) << " %</td>"
+      << verdictCell(o.upwardVerdict) << verdictCell(o.verdict) << "</tr>\n</table>\n";
   }
   return h.str();
 }

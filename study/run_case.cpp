@@ -1,8 +1,11 @@
 #include "study/run_case.h"
 
+#include "study/compliance/en12464_2.h"
+
 #include "base/error.h"
 #include "study/annual_study.h"
 #include "study/case/case_file.h"
+#include "study/compliance/en12464_2.h"
 #include "study/compliance/en13201.h"
 #include "study/compliance/en1838.h"
 #include "study/finite_results.h"
@@ -148,7 +151,9 @@ RunResult runCase(const std::filesystem::path& caseFile, const RunRequest& reque
   CaseFile c = readCaseFile(caseFile);
   c.settings.scene = sceneReadOptions(&c.settings, request.trace);
   c.settings.scene.maxMemoryBytes = request.limits.maxMemoryBytes;
-  if (c.grids.empty() && c.surfaceGrids.empty() && !en1838Entry(c) && !en13201Entry(c))
+  const ComplianceSpec* outdoor = en12464_2Entry(c);
+  if (c.grids.empty() && c.surfaceGrids.empty() && !en1838Entry(c) && !en13201Entry(c) &&
+      !(outdoor && outdoor->obtrusive.any()))
     throw InputError(FileLoc{c.path.string(), 0, 0}, "the case has no [[grid]] to calculate");
   run.outDir = request.outDir.empty() ? c.output.dir : request.outDir;
   checkOnRankZero(request.processes(), [&] { checkResultFolder(run.outDir); });

@@ -3,6 +3,7 @@
 
 #include "photometry/site.h"
 #include "study/case/case_toml.h"
+#include "study/compliance/en12464_2_case.h"
 
 #include <cstdio>
 #include <set>
@@ -219,6 +220,7 @@ void readCompliance(const Context& c, const toml::table& t, std::set<std::string
       if (s.emergencyLeaveOut.back().empty()) c.fail(p, "'leave_out' holds an empty identifier");
     }
   }
+  readObtrusiveLight(tab, s);
   tab.finish();
   out.compliance.push_back(std::move(s));
 }

@@ -5,6 +5,7 @@
 
 #include "base/error.h"
 #include "base/math.h"
+#include "study/compliance/en12464_2_spec.h"
 
 #include <optional>
 #include <string>
@@ -80,6 +81,8 @@ struct ComplianceSpec {
   // [[surface_grid]]'s): the furniture, for the empty floor the standard means.
   std::vector<std::string> emergencyLeaveOut;
   FileLoc emergencyLeaveOutLoc;
+  // EN 12464-2: obtrusive light (`environmental_zone`, `obtrusive_limits`, `property_points`).
+  ObtrusiveLightSpec obtrusive;
   FileLoc loc;
 };
 

@@ -99,6 +99,90 @@ void checkColourRendering(const ReportData& data, OutdoorAreaResult& a) {
   a.raVerdict = *a.raLeast >= *a.ra ? Verdict::kPass : Verdict::kFail;
 }
 
+// A luminaire's flux (lm, scaled) above and in all directions, as placed: a midpoint rule over the
+// world's sphere in 180 bands of equal solid angle (cos θ from −1 to 1, the horizontal a band
+// edge) × 360 azimuths, each cell 4π/64 800 sr. Exact for an intensity constant over each cell.
+std::pair<double, double> upwardAndTotalFlux(const LuminaireSource& l) {
+  constexpr int kBands = 180, kAzimuths = 360;
+  const double cell = 4.0 * kPi / (kBands * kAzimuths);
+  double up = 0.0, total = 0.0;
+  for (int i = 0; i < kBands; ++i) {
+    const double z = -1.0 + (i + 0.5) * 2.0 / kBands, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    double band = 0.0;
+    for (int j = 0; j < kAzimuths; ++j) {
+      const double phi = (j + 0.5) * 2.0 * kPi / kAzimuths;
+      band += l.intensityCd(Vec3(r * std::cos(phi), r * std::sin(phi), z));
+    }
+    total += band * cell;
+    if (z > 0.0) up += band * cell;
+  }
+  return {up, total};
+}
+
+// EN 12464-2's obtrusive light: at each property point the vertical illuminance E_v on the
+// point's plane (each luminaire a point source in front of the plane: τ I cos ι / d², τ what of
+// it passes the scene) and the largest intensity I of a luminaire it sees; the installation's
+// upward light ratio (flux above the horizontal over all the flux, every luminaire as placed;
+// luminaires of the same file and orientation integrated once).
+ObtrusiveLightResult obtrusiveLight(const ObtrusiveLightSpec& spec, const Tracer& tracer) {
+  ObtrusiveLightResult r;
+  r.zone = spec.zone;
+  if (const std::optional<ObtrusiveLimits> z = obtrusiveZoneLimits(spec.zone)) r.limits = *z;
+  if (spec.propertyLux) r.limits.propertyLux = spec.propertyLux;
+  if (spec.intensityCd) r.limits.intensityCd = spec.intensityCd;
+  if (spec.upwardLightRatio) r.limits.upwardLightRatio = spec.upwardLightRatio;
+  const std::vector<LuminaireSource>& luminaires = tracer.scene().luminaires;
+  for (const PropertyPointSpec& p : spec.points) {
+    PropertyPointResult q;
+    q.name = p.name;
+    q.positionM = p.positionM;
+    q.normal = p.normal;
+    // Shadow rays leave just in front of the point (it may lie on a facade of the scene).
+    const Vec3 from = p.positionM + Tracer::originOffset(p.positionM) * p.normal;
+    for (const LuminaireSource& l : luminaires) {
+      const Vec3 to = l.position - p.positionM;
+      const double d = glm::length(to);
+      if (!(d > 0.0)) continue;
+      const Vec3 u = to / d;
+      const double cosIncidence = glm::dot(u, p.normal);
+      if (!(cosIncidence > 0.0)) continue;  // behind the property's plane
+      const double tau = photopic(tracer.transmittance(from, glm::normalize(l.position - from),
+                                                       glm::length(l.position - from), kNoShape, l.openingShape));
+      if (!(tau > 0.0)) continue;
+      const double intensity = l.intensityCd(-u);
+      q.illuminanceLux += tau * intensity * cosIncidence / (d * d);
+      if (intensity > q.maxIntensityCd) {
+        q.maxIntensityCd = intensity;
+        q.brightestLuminaire = l.name;
+      }
+    }
+    r.points.push_back(std::move(q));
+  }
+  struct Integrated {
+    const PhotometricWeb* web;
+    Vec3 x, y, z;
+    double up, total;  // per unit scale
+  };
+  std::vector<Integrated> done;
+  for (const LuminaireSource& l : luminaires) {
+    auto same = std::find_if(done.begin(), done.end(), [&](const Integrated& i) {
+      return i.web == l.web.get() && i.x == l.axisX && i.y == l.axisY && i.z == l.axisZ;
+    });
+    if (same == done.end()) {
+      LuminaireSource unit = l;
+      unit.scale = 1.0;
+      const auto [up, total] = upwardAndTotalFlux(unit);
+      done.push_back({l.web.get(), l.axisX, l.axisY, l.axisZ, up, total});
+      same = std::prev(done.end());
+    }
+    r.upwardFluxLm += l.scale * same->up;
+    r.totalFluxLm += l.scale * same->total;
+  }
+  r.upwardLightRatio = r.totalFluxLm > 0.0 ? r.upwardFluxLm / r.totalFluxLm : 0.0;
+  judgeObtrusiveLight(r);
+  return r;
+}
+
 }  // namespace
 
 En12464_2Result computeEn12464_2(const CaseFile& c, const Tracer& tracer, const ReportData& data) {
@@ -155,6 +239,8 @@ En12464_2Result computeEn12464_2(const CaseFile& c, const Tracer& tracer, const 
   }
   for (OutdoorAreaResult& a : r.areas) judgeOutdoorArea(a, r.observers);
   for (const LuminaireSource& l : tracer.scene().luminaires) r.luminaires.push_back({l.name, l.position});
+  if (const ComplianceSpec* entry = en12464_2Entry(c); entry && entry->obtrusive.any())
+    r.obtrusive = obtrusiveLight(entry->obtrusive, tracer);
   judgeEn12464_2(r);
   return r;
 }
@@ -173,8 +259,13 @@ void addEn12464_2Compliance(const CaseFile& c, const Tracer& tracer, ReportData&
     for (const auto& p : parts) pass += p.verdict == Verdict::kPass, checked += p.verdict != Verdict::kNotChecked;
     return std::to_string(pass) + " of " + std::to_string(checked) + " checked " + what + " pass";
   };
-  report.verdictLines.push_back(count(r.areas, "outdoor task areas"));
+  if (!r.areas.empty()) report.verdictLines.push_back(count(r.areas, "outdoor task areas"));
   if (!r.observers.empty()) report.verdictLines.push_back(count(r.observers, "GR observers"));
+  if (r.obtrusive)
+    report.verdictLines.push_back(
+        std::string("obtrusive light") + (r.obtrusive->zone.empty() ? "" : " (zone " + r.obtrusive->zone + ")") + ": " +
+        (r.obtrusive->verdict == Verdict::kFail ? "fail" : r.obtrusive->verdict == Verdict::kPass ? "pass" : "not checked") +
+        ", upward light ratio " + formatFixed(100.0 * r.obtrusive->upwardLightRatio, 1) + " %");
   report.timesS.emplace_back("glare rating", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   report.section = std::make_shared<En12464_2Section>(std::move(r));
   data.compliance.push_back(std::move(report));

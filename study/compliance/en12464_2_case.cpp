@@ -1,6 +1,7 @@
 // [[task_area]] standard = "en12464-2", [[observer]] kind = "gr" (study/compliance/en12464_2_case.h).
 #include "study/compliance/en12464_2_case.h"
 
+#include "metrics/en12464_2.h"
 #include "study/case/case_grids.h"
 #include "study/grids/sensor_grid.h"
 
@@ -193,12 +194,64 @@ void resolveOutdoor(CaseFile& out) {
                                                 "standard = \"en12464-2\" to be checked");
     return;
   }
-  if (s.areas.empty())
+  if (s.areas.empty() && !entry->obtrusive.any())
     throw InputError(entry->loc, "standard = \"en12464-2\" has nothing to check: add a [[task_area]] with "
-                                 "standard = \"en12464-2\"");
+                                 "standard = \"en12464-2\" or the obtrusive light's 'environmental_zone'");
   for (auto e = std::next(entry); e != out.compliance.end(); ++e)
     if (e->standard == ComplianceStandard::kEn12464_2)
       throw InputError(e->loc, "only one [[compliance]] entry may be standard = \"en12464-2\"");
+}
+
+void readObtrusiveLight(Table& tab, ComplianceSpec& s) {
+  const Context& c = tab.ctx();
+  ObtrusiveLightSpec& o = s.obtrusive;
+  const bool en = s.standard == ComplianceStandard::kEn12464_2;
+  for (const char* key : {"environmental_zone", "obtrusive_limits", "property_points"})
+    if (const toml::node* n = tab.get(key); n && !en)
+      c.fail(*n, keyText(key) + " belongs to standard = \"en12464-2\", not \"" + std::string(standardKey(s.standard)) +
+                     "\"");
+  if (!en) return;
+  if (const toml::node* n = tab.get("environmental_zone")) {
+    o.zone = asString(c, *n, "environmental_zone");
+    o.loc = c.at(*n);
+    if (!obtrusiveZoneLimits(o.zone))
+      c.fail(*n, "'environmental_zone' must be \"E1\", \"E2\", \"E3\" or \"E4\" (their limits before curfew are "
+                 "built in; for E0 or after curfew give 'obtrusive_limits'), got '" + o.zone + "'");
+  }
+  if (const toml::node* n = tab.get("obtrusive_limits")) {
+    const toml::table* t = n->as_table();
+    if (!t) c.fail(*n, "'obtrusive_limits' must be { property_illuminance = lx, intensity = cd, upward_light_ratio = share }");
+    Table lt(*t, c, "'obtrusive_limits'");
+    o.propertyLux = optNumber(lt, "property_illuminance");
+    if (o.propertyLux) checkMin(lt, "property_illuminance", *o.propertyLux, 0.0, false, " lx");
+    o.intensityCd = optNumber(lt, "intensity");
+    if (o.intensityCd) checkMin(lt, "intensity", *o.intensityCd, 0.0, false, " cd");
+    o.upwardLightRatio = optNumber(lt, "upward_light_ratio");
+    if (o.upwardLightRatio) checkRange(lt, "upward_light_ratio", *o.upwardLightRatio, 0.0, 1.0, "");
+    lt.finish();
+    if (!o.propertyLux && !o.intensityCd && !o.upwardLightRatio)
+      c.fail(*n, "'obtrusive_limits' gives no limit: property_illuminance, intensity or upward_light_ratio");
+    if (o.zone.empty()) o.loc = c.at(*n);
+  }
+  if (const toml::node* n = tab.get("property_points")) {
+    if (!o.any()) c.fail(*n, "'property_points' need the limits they are judged against: 'environmental_zone' or "
+                             "'obtrusive_limits'");
+    const toml::array& a = asArray(c, *n, "property_points", 0,
+                                   "an array of { name, position = [x, y, z], normal = [nx, ny, nz] }");
+    if (a.empty()) c.fail(*n, "'property_points' needs at least one point");
+    for (const toml::node& p : a) {
+      const toml::table* t = p.as_table();
+      if (!t) c.fail(p, "each of 'property_points' must be { name, position = [x, y, z], normal = [nx, ny, nz] }");
+      Table pt(*t, c, "a property point");
+      PropertyPointSpec q;
+      q.loc = c.at(p);
+      q.name = pt.get("name") ? asString(c, *pt.get("name"), "name") : "P" + std::to_string(o.points.size() + 1);
+      q.positionM = asVec3(c, pt.require("position"), "position");
+      q.normal = asDirection(c, pt.require("normal"), "normal");
+      pt.finish();
+      o.points.push_back(q);
+    }
+  }
 }
 
 }  // namespace candela

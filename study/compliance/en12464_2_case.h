@@ -34,6 +34,11 @@ void readGrObserver(const case_toml::Context& c, const toml::table& t, int index
 // them), as is such an entry with none of them, or two such entries.
 void resolveOutdoor(CaseFile& out);
 
+// The obtrusive light's keys of a [[compliance]] entry (`environmental_zone`, `obtrusive_limits`,
+// `property_points`) into s.obtrusive: an error at the key for another standard, an unknown
+// zone, a negative limit, a ratio outside [0, 1], points without limits.
+void readObtrusiveLight(case_toml::Table& tab, ComplianceSpec& s);
+
 // The observers a task area's `gr_spacing` asks for: the centres of a lattice of cells at most
 // `spacingM` wide over the area's box, those inside the area, eye 1.5 m, looking all around.
 std::vector<GrObserverSpec> gridGrObservers(const OutdoorTaskAreaSpec& a);

@@ -46,6 +46,29 @@ struct GrObserverSpec {
   Vec3 eyeM() const { return {positionM.x, positionM.y, eyeHeightM}; }
 };
 
+// A point of a neighbouring property where EN 12464-2's obtrusive light is judged (a window):
+// the light arriving on the plane of unit normal `normal` (facing the installation).
+struct PropertyPointSpec {
+  std::string name;
+  Vec3 positionM{0.0};
+  Vec3 normal{0.0, 1.0, 0.0};
+  FileLoc loc;
+};
+
+// EN 12464-2:2014 clause 4's obtrusive light (docs/outdoor.md "Obtrusive light"), as the
+// [[compliance]] entry gives it: the environmental zone whose limits apply (E1 … E4), the case's
+// own limits instead of or beside the zone's (post-curfew values, zone E0), and the property
+// points whose vertical illuminance and the luminaires' intensity towards them are judged; the
+// upward light ratio is the installation's.
+struct ObtrusiveLightSpec {
+  std::string zone;                                  // "E1" … "E4"; empty: the limits below only
+  std::optional<double> propertyLux, intensityCd;    // the case's limits (they replace the zone's)
+  std::optional<double> upwardLightRatio;            // a share in [0, 1]
+  std::vector<PropertyPointSpec> points;
+  FileLoc loc;
+  bool any() const { return !zone.empty() || propertyLux || intensityCd || upwardLightRatio; }
+};
+
 // Everything of a case that only EN 12464-2 reads.
 struct OutdoorSpec {
   std::vector<OutdoorTaskAreaSpec> areas;

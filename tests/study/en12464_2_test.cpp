@@ -291,6 +291,76 @@ TEST(En12464_2Study, PolesOverFlatGroundAreNotOutsideTheScene) {
   EXPECT_EQ(lines, (std::vector<int>{6, 9}));
 }
 
+// Obtrusive light against closed forms: the isotropic 100 cd source 6 m up; a window 20 m north
+// facing it gets E_v = I cos ι / d² (cos ι = 20/d, d² = 416); one behind the black wall gets none
+// and sees no luminaire; one facing away none. The upward light ratio of an isotropic source is
+// one half (the midpoint rule is exact on a constant), against E2's 5 % (EN 12193 Table 5), or a
+// limit of the case's.
+TEST(En12464_2Study, ObtrusiveLightOfAnIsotropicSource) {
+  const fs::path dir = test_support::scratchDir("en12464_2", "obtrusive");
+  writeGround(dir);
+  const std::string points =
+      "property_points = [{ name = \"north\", position = [0.0, 20.0, 2.0], normal = [0.0, -1.0, 0.0] },\n"
+      "  { name = \"walled\", position = [0.0, -20.0, 2.0], normal = [0.0, 1.0, 0.0] },\n"
+      "  { name = \"away\", position = [0.0, 20.0, 2.0], normal = [0.0, 1.0, 0.0] }]\n";
+  const std::string lum = "[[luminaire]]\nfile = \"isotropic.ies\"\nposition = [0.0, 0.0, 6.0]\n";
+  const OutdoorRun r = runIn(dir, kHeader + lum + kCompliance + "environmental_zone = \"E2\"\n" + points, "");
+  const nlohmann::json& o = r.entry["obtrusive_light"];
+  EXPECT_EQ(o["environmental_zone"], "E2");
+  EXPECT_EQ(o["limit_property_illuminance_lux"], 5.0);
+  EXPECT_EQ(o["limit_intensity_cd"], 7500.0);
+  EXPECT_EQ(o["limit_upward_light_ratio"], 0.05);
+  const nlohmann::json& p = o["property_points"];
+  ASSERT_EQ(p.size(), 3u);
+  const double d2 = 416.0, ev = kIntensityCd * (20.0 / std::sqrt(d2)) / d2;
+  EXPECT_NEAR(p[0]["illuminance_lux"].get<double>(), ev, 1e-9 * ev);
+  EXPECT_NEAR(p[0]["max_intensity_cd"].get<double>(), kIntensityCd, 1e-9);
+  EXPECT_EQ(p[0]["verdict_illuminance"], "pass");
+  EXPECT_EQ(p[0]["verdict_intensity"], "pass");
+  for (int i : {1, 2}) {
+    EXPECT_EQ(p[i]["illuminance_lux"].get<double>(), 0.0) << i;
+    EXPECT_EQ(p[i]["max_intensity_cd"].get<double>(), 0.0) << i;
+    EXPECT_TRUE(p[i]["brightest_luminaire"].is_null()) << i;
+  }
+  EXPECT_NEAR(o["total_flux_lm"].get<double>(), 4.0 * kPi * kIntensityCd, 1e-9);
+  EXPECT_NEAR(o["upward_light_ratio"].get<double>(), 0.5, 1e-12);
+  EXPECT_EQ(o["verdict_upward_light_ratio"], "fail");
+  EXPECT_EQ(o["verdict"], "fail");
+  EXPECT_EQ(r.entry["verdict"], "fail");
+  // The case's limits replace the zone's: a ratio of 60 % allowed, and 0.2 lx at the windows.
+  const OutdoorRun own = runIn(dir, kHeader + lum + kCompliance + "environmental_zone = \"E2\"\n" +
+                                        "obtrusive_limits = { upward_light_ratio = 0.6, property_illuminance = 0.2 }\n" +
+                                        points, "");
+  const nlohmann::json& q = own.entry["obtrusive_light"];
+  EXPECT_EQ(q["verdict_upward_light_ratio"], "pass");
+  EXPECT_EQ(q["property_points"][0]["verdict_illuminance"], "fail");  // 0.236 lx > 0.2 lx
+  EXPECT_EQ(q["limit_intensity_cd"], 7500.0);                          // the zone's, not replaced
+}
+
+// The upward light ratio of a Lambertian emitter (I = I0 cos γ below its plane) aimed 30° off the
+// nadir: (1 − cos 30°)/2 of its flux goes above the horizontal (the part of its hemisphere beyond
+// the horizontal plane), to the midpoint rule's and the file's 1° tabulation's error.
+TEST(En12464_2Study, UpwardLightRatioOfATiltedLambertianEmitter) {
+  const fs::path dir = test_support::scratchDir("en12464_2", "lambert_ulr");
+  writeGround(dir);
+  std::ostringstream ies;
+  ies << "IESNA:LM-63-2002\n[TEST] Lambertian emitter, I = 1000 cos(gamma)\nTILT=NONE\n"
+      << "1 -1 1 181 1 1 2 0 0 0\n1 1 0\n";
+  for (int g = 0; g <= 180; ++g) ies << g << (g < 180 ? " " : "\n");
+  ies << "0\n";
+  for (int g = 0; g <= 180; ++g) ies << (g <= 90 ? 1000.0 * std::cos(g * kDeg) : 0.0) << (g < 180 ? " " : "\n");
+  writeFile(dir / "lambert.ies", ies.str());
+  const double alpha = 30.0 * kDeg;
+  const OutdoorRun r = runIn(dir, kHeader + "[[luminaire]]\nfile = \"lambert.ies\"\nposition = [0.0, 0.0, 6.0]\n"
+                                  "aim = [" + std::to_string(std::sin(alpha)) + ", 0.0, " + std::to_string(-std::cos(alpha)) +
+                                  "]\n" + kCompliance + "environmental_zone = \"E4\"\n", "");
+  const nlohmann::json& o = r.entry["obtrusive_light"];
+  EXPECT_NEAR(o["total_flux_lm"].get<double>(), kPi * 1000.0, 2e-3 * kPi * 1000.0);
+  EXPECT_NEAR(o["upward_light_ratio"].get<double>(), (1.0 - std::cos(alpha)) / 2.0, 1e-3);
+  EXPECT_EQ(o["verdict_upward_light_ratio"], "pass");  // 6.7 % ≤ E4's 25 %
+  EXPECT_TRUE(o["property_points"].empty());
+}
+
 TEST(En12464_2Case, GrLatticeOverTheArea) {
   OutdoorTaskAreaSpec a;
   a.name = "yard";
@@ -347,6 +417,16 @@ TEST(En12464_2Case, BadInputNamesTheLine) {
   // A GR lattice is bounded before it is made: 10 m at 1 mm is 10⁸ observers (limit 10⁵).
   expectError(area + "gr_spacing = 0.001\n" + kCompliance, 8,
               "makes a lattice of 100000000 observers over the task area 'task area 1', more than the 100000");
+  // Obtrusive light: a zone without built-in limits, a ratio beyond 1, points without limits, a
+  // point without its normal, the keys on another standard's entry.
+  expectError(area + kCompliance + "environmental_zone = \"E0\"\n", 10, "'environmental_zone' must be");
+  expectError(area + kCompliance + "obtrusive_limits = { upward_light_ratio = 1.5 }\n", 10, "upward_light_ratio");
+  expectError(area + kCompliance + "property_points = [{ position = [0.0, 20.0, 2.0], normal = [0.0, -1.0, 0.0] }]\n",
+              10, "need the limits");
+  expectError(area + kCompliance + "environmental_zone = \"E3\"\nproperty_points = [{ position = [0.0, 20.0, 2.0] }]\n",
+              11, "normal");
+  expectError("[[compliance]]\nstandard = \"en1838\"\nenvironmental_zone = \"E3\"\n", 5,
+              "'environmental_zone' belongs to standard = \"en12464-2\"");
 }
 
 // The example: every part in summary.json, each GR consistent with its own L_vl and L_ve, and the
