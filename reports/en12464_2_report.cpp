@@ -119,7 +119,11 @@ std::string En12464_2Section::html() const {
        "L<sub>ve</sub> = 0.035 ρ E<sub>hav</sub>/π from the area (docs/outdoor.md).</p>\n";
   h << en12464_2PlanSvg(r) << "\n";
   h << "<p class=\"legend\">Plan: task areas coloured by verdict (green passes, red fails, grey not checked); "
-       "circles luminaires; dots GR observers, the line their worst line of sight, labelled with its GR.</p>\n";
+       "circles luminaires; dots GR observers, the line their worst line of sight, labelled with its GR"
+    << (r.obtrusive && !r.obtrusive->points.empty()
+            ? "; squares property points (obtrusive light), the tick the way the window faces, with E<sub>v</sub>"
+            : "")
+    << ".</p>\n";
   h << "<h3>Task areas</h3>\n<table class=\"compliance\"><tr><th>area</th><th>points</th><th>Ē lx</th>"
        "<th>Ē<sub>m</sub> lx</th><th>Ē ≥ Ē<sub>m</sub></th><th>U<sub>0</sub></th><th>U<sub>0</sub> required</th>"
        "<th>U<sub>0</sub> ≥</th><th>GR<sub>max</sub></th><th>GR<sub>L</sub></th><th>GR ≤ GR<sub>L</sub></th>"
@@ -201,6 +205,8 @@ std::string en12464_2PlanSvg(const En12464_2Result& r) {
     for (const Vec2& p : a.outline) grow(p);
   for (const OutdoorLuminaire& l : r.luminaires) grow(Vec2(l.positionM));
   for (const GrObserverResult& o : r.observers) grow(Vec2(o.eyeM));
+  if (r.obtrusive)
+    for (const PropertyPointResult& p : r.obtrusive->points) grow(Vec2(p.positionM));
   if (!(hi.x >= lo.x)) return "";
   const double margin = 0.05 * std::max({hi.x - lo.x, hi.y - lo.y, 1.0});
   lo -= Vec2(margin), hi += Vec2(margin);
@@ -208,7 +214,8 @@ std::string en12464_2PlanSvg(const En12464_2Result& r) {
   const double heightPx = (hi.y - lo.y) * scale;
   auto X = [&](double x) { return svgNumber((x - lo.x) * scale); };
   auto Y = [&](double y) { return svgNumber((hi.y - y) * scale); };  // plan y up, SVG y down
-  auto colour = [](Verdict v) { return v == Verdict::kPass ? "#1e7b34" : v == Verdict::kFail ? "#b3261e" : "#777"; };
+  using Colour = const char*;
+  auto colour = [](Verdict v) -> Colour { return v == Verdict::kPass ? "#1e7b34" : v == Verdict::kFail ? "#b3261e" : "#777"; };
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"en12464-2-plan\" width=\"" << svgNumber(widthPx)
     << "\" height=\"" << svgNumber(heightPx) << "\" viewBox=\"0 0 " << svgNumber(widthPx) << " "
@@ -238,6 +245,27 @@ std::string en12464_2PlanSvg(const En12464_2Result& r) {
           << xmlEscape(o.name) << " GR " << formatFixed(*w->gr, 1) << "</text>\n";
     }
   }
+  // Property points (obtrusive light): a square, a tick along the window's facing, the name and E_v.
+  if (r.obtrusive)
+    for (const PropertyPointResult& p : r.obtrusive->points) {
+      const Colour c = colour(p.illuminanceVerdict == Verdict::kFail || p.intensityVerdict == Verdict::kFail
+                                  ? Verdict::kFail
+                                  : p.illuminanceVerdict == Verdict::kPass || p.intensityVerdict == Verdict::kPass
+                                        ? Verdict::kPass
+                                        : Verdict::kNotChecked);
+      const double x = p.positionM.x, y = p.positionM.y;
+      s << "<rect x=\"" << svgNumber((x - lo.x) * scale - 4) << "\" y=\"" << svgNumber((hi.y - y) * scale - 4)
+        << "\" width=\"8\" height=\"8\" fill=\"#fff\" stroke=\"" << c << "\" stroke-width=\"2\"><title>"
+        << xmlEscape(p.name) << "</title></rect>\n";
+      if (glm::length(Vec2(p.normal)) > 1e-6) {
+        const Vec2 d = glm::normalize(Vec2(p.normal)) * (12.0 / scale);
+        s << "<line x1=\"" << X(x) << "\" y1=\"" << Y(y) << "\" x2=\"" << X(x + d.x) << "\" y2=\"" << Y(y + d.y)
+          << "\" stroke=\"" << c << "\" stroke-width=\"2\"/>\n";
+      }
+      s << "<text x=\"" << svgNumber((x - lo.x) * scale + 7) << "\" y=\"" << svgNumber((hi.y - y) * scale + 14) << "\" fill=\""
+        << c << "\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">" << xmlEscape(p.name) << " "
+        << formatFixed(p.illuminanceLux, 2) << " lx</text>\n";
+    }
   for (const OutdoorAreaResult& a : r.areas) {
     Vec2 top = a.outline.front();
     for (const Vec2& p : a.outline)
