@@ -190,14 +190,19 @@ ViewScenes viewScenes(const ComplianceInputs& in, const ComplianceSpec& s) {
     const std::vector<std::vector<uint8_t>>& stateOf = (*in.windowStates)[space];
     v.choices = {std::vector<int>(stateOf.size(), 0)};
     v.sceneOf.assign(hours, 0);
+    // The hours judged (occupied) and the views' check hours are in their states; the others are
+    // not looked at and stay in the first scene.
+    std::vector<char> used(in.occupied->begin(), in.occupied->end());
+    for (const GlareViewSpec& g : s.glareViews)
+      for (const std::string& h : g.checkHours) used[static_cast<std::size_t>(hourIndex(*in.sky, h, g.checkLoc))] = 1;
     std::vector<int> choice(stateOf.size(), 0);
     for (std::size_t h = 0; h < hours; ++h) {
-      if (!(*in.occupied)[h]) continue;  // unoccupied hours are not judged: the first scene
+      if (!used[h]) continue;
       for (std::size_t q = 0; q < stateOf.size(); ++q) choice[q] = stateOf[q][h];
       const auto at = std::find(v.choices.begin(), v.choices.end(), choice);
       if (at == v.choices.end() && v.choices.size() == kMaxGlareStateScenes) {
         v.note = "more than " + std::to_string(kMaxGlareStateScenes) +
-                 " combinations of window states in the occupied hours: the views are in the first states";
+                 " combinations of window states in the hours judged: the views are in the first states";
         v.sceneOf.assign(hours, 0);
         v.choices.resize(1);
         break;
