@@ -330,6 +330,14 @@ void traceWindowGroups(const CaseFile& c, const AnnualInputs& in, const YearJob&
   }
   t.closed = !closed.empty();
   groupsPass(p, closed, observer);
+  // The [[compliance]] glare views follow the groups' blinds: each grid's closed groups per hour
+  // (a group "closed" is in its second state, study/compliance/compliance_study.cpp).
+  for (const GridYear& g : p.grids) {
+    std::vector<std::vector<uint8_t>> byGroup(static_cast<std::size_t>(groups), std::vector<uint8_t>(g.closure.size(), 0));
+    for (std::size_t h = 0; h < g.closure.size(); ++h)
+      for (int q = 0; q < groups; ++q) byGroup[static_cast<std::size_t>(q)][h] = static_cast<uint8_t>((g.closure[h] >> q) & 1u);
+    t.stateOf.push_back(std::move(byGroup));
+  }
   for (const ClosedGroup& q : closed) {
     t.coefficientsClosedS += q.tracer->coefficientsS();
     t.productClosedS += q.tracer->productS();
@@ -476,12 +484,24 @@ std::vector<ComplianceReport> evaluateComplianceOf(const CaseFile& c, const Annu
     ci.closedScene = t.shaded.get();
     ci.blindsClosed = &closedHours;
   }
-  // Window states: the views see each combination of states their space's hours use.
+  // Window states: the views see each combination of states their space's hours use; window
+  // groups of blinds: each combination of closed groups.
   if (!in.states.empty()) {
     ci.windowStates = &t.stateOf;
+    ci.blindsLabel = "window_states";
     ci.stateScene = [&c, &in](const std::vector<int>& choice) {
       std::unique_ptr<Scene> scene = loadStateScene(c, in.north, in.states, choice);
       scene->sky->model = in.scene->sky->model;
+      return scene;
+    };
+  } else if (in.windows.labels.count > 0 && !t.stateOf.empty()) {
+    ci.windowStates = &t.stateOf;
+    ci.blindsLabel = "lm83";
+    ci.stateScene = [&c, &in](const std::vector<int>& closedGroups) {
+      std::unique_ptr<Scene> scene = loadAnnualScene(c, in.north);
+      scene->sky->model = in.scene->sky->model;
+      for (std::size_t q = 0; q < closedGroups.size(); ++q)
+        if (closedGroups[q] != 0) closeWindowGroup(*scene, in.windows, static_cast<int>(q));
       return scene;
     };
   }

@@ -153,8 +153,8 @@ struct AnnualTraces {
   bool closed = false;     // a closed state was traced
   std::unique_ptr<Scene> shaded;  // that state's scene (one group: all the glazing), kept for glare views
   int blindMaterials = 0;  // glass materials the closed state changed
-  // Window states: each grid's state of every group in every hour ([grid][group][hour]), kept for
-  // the glare views.
+  // Window states: each grid's state of every group in every hour ([grid][group][hour]); window
+  // groups of blinds: 1 where the group is closed. Kept for the glare views.
   std::vector<std::vector<std::vector<uint8_t>>> stateOf;
   double coefficientsS() const { return coefficientsOpenS + coefficientsClosedS; }
   double productS() const { return productOpenS + productClosedS; }

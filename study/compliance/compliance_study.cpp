@@ -202,7 +202,8 @@ ViewScenes viewScenes(const ComplianceInputs& in, const ComplianceSpec& s) {
       const auto at = std::find(v.choices.begin(), v.choices.end(), choice);
       if (at == v.choices.end() && v.choices.size() == kMaxGlareStateScenes) {
         v.note = "more than " + std::to_string(kMaxGlareStateScenes) +
-                 " combinations of window states in the hours judged: the views are in the first states";
+                 " combinations of window states or closed groups in the hours judged: the views see the first "
+                 "states, blinds open";
         v.sceneOf.assign(hours, 0);
         v.choices.resize(1);
         break;
@@ -210,7 +211,7 @@ ViewScenes viewScenes(const ComplianceInputs& in, const ComplianceSpec& s) {
       v.sceneOf[h] = static_cast<uint16_t>(at - v.choices.begin());
       if (at == v.choices.end()) v.choices.push_back(choice);
     }
-    v.label = "window_states";
+    v.label = in.blindsLabel;
   } else {
     return v;
   }

@@ -83,13 +83,14 @@ struct ComplianceInputs {
   // [[window_group]]): the blinds-closed scene and each grid's hours of closed blinds (grid order).
   const Scene* closedScene = nullptr;
   const std::vector<std::vector<char>>* blindsClosed = nullptr;
-  // What closes them, as the views report it: "lm83" (the blinds).
+  // What closes them, as the views report it: "lm83" (the blinds, of all the glazing or of
+  // window groups) or "window_states".
   std::string blindsLabel = "lm83";
-  // Window states for the glare views (docs/annual.md "Window states"): each grid's state of
-  // every group in every hour ([grid][group][hour], grid order), and the scene of one choice of
-  // states (a state per group). The views follow the entry's first space: each combination of
-  // states its occupied hours use is traced (at most kMaxGlareStateScenes, beyond which the
-  // views stay in the reference state and say so).
+  // Window states or window groups of blinds for the glare views (docs/annual.md): each grid's
+  // state of every group in every hour ([grid][group][hour], grid order; for blinds 1 = closed),
+  // and the scene of one choice (a state per group). The views follow the entry's first space:
+  // each combination its occupied hours use is traced (at most kMaxGlareStateScenes, beyond
+  // which the views stay in the first states and say so).
   const std::vector<std::vector<std::vector<uint8_t>>>* windowStates = nullptr;
   std::function<std::unique_ptr<Scene>(const std::vector<int>&)> stateScene;
   int threads = 0;

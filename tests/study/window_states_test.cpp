@@ -486,6 +486,33 @@ TEST_F(WindowStateStudy, GlareViewsFollowAThirdState) {
   EXPECT_GT(clear.data.compliance.at(0).en17037->glare.at(0).shareAbove035, want.shareAbove035);
 }
 
+// LM-83's blinds of a [[window_group]] (not states) are followed by the glare view too: one group
+// holding the room's only glazing closes in the hours the whole glazing's blinds close, so the
+// view's shares and closed hours equal the run without groups (the same rule, the same closed
+// scene, the same view stream); before, the view saw the group's blinds open all year.
+TEST_F(WindowStateStudy, GlareViewsFollowTheBlindsOfAWindowGroup) {
+  const fs::path dir = dir_ / "groups";
+  CaseFile c = roomCase();
+  c.scenes.push_back({kDir / "clear.rad", {}});
+  c.compliance = {glareEntry()};
+  const RunResult whole = runRoom(c, dir / "whole");
+  WindowGroupSpec g;
+  g.name = "south";
+  g.patterns = {"south_pane"};
+  g.loc = g.patternsLoc = FileLoc{"case.toml", 30, 1};
+  c.windowGroups = {g};
+  const RunResult grouped = runRoom(c, dir / "grouped");
+  const GlareViewReport& a = whole.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& b = grouped.data.compliance.at(0).en17037->glare.at(0);
+  EXPECT_EQ(a.blinds, "lm83");
+  EXPECT_EQ(b.blinds, "lm83");
+  EXPECT_GT(a.blindsClosedHours, 100);
+  EXPECT_EQ(b.blindsClosedHours, a.blindsClosedHours);
+  EXPECT_EQ(b.shareAbove035, a.shareAbove035);
+  EXPECT_EQ(b.shareAbove045, a.shareAbove045);
+  EXPECT_EQ(b.glareAutonomy, a.glareAutonomy);
+}
+
 // A Honeybee radiance folder (honeybee-radiance-folder's layout) written here, read into the case
 // the hand-written [[scene]] and [[window_group]] entries give.
 TEST(HoneybeeFolder, ReadsIntoItsHandWrittenCase) {
