@@ -17,6 +17,9 @@ namespace candela {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// After this many scattering vertices (BSDF) in a row, a path at one goes on with the
+// probability of its draw's weight (the parts' albedo sum), weighted back: Russian roulette.
+constexpr int kScatterRouletteRun = 2;
 
 // A surface met by a path's ray.
 struct Hit {
@@ -217,6 +220,14 @@ Rgb scatterVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
   for (int j = 0; j < k; ++j) {
     ScatterSample s;
     if (!family.sampleScattering(m, at, strata.sample(j, ctx.rng), ctx.rng, s)) continue;
+    // A draw carries the parts' albedo sum: the path does not end here (less noise where a
+    // window is met). After kScatterRouletteRun scattering vertices in a row (layers facing each
+    // other), Russian roulette by that albedo bounds the path, as at diffuse vertices.
+    if (st.scatterRun >= kScatterRouletteRun && !s.straight) {
+      const double q = std::min(1.0, photopic(s.weight));
+      if (!(q > 0.0) || ctx.rng.uniform() >= q) continue;
+      s.weight /= q;
+    }
     const TallyFactor tf(ctx.tally, s.weight / static_cast<double>(k));
     if (s.straight) {
       PathState through = st;
@@ -232,6 +243,7 @@ Rgb scatterVertex(TraceContext& ctx, const Hit& v, const Material& m, const Path
     bounce.lighting = true;
     bounce.clip = st.clip;
     bounce.litPoint = s.transmitted ? xb : xf;
+    bounce.scatterRun = static_cast<uint8_t>(std::min(255, st.scatterRun + 1));
     acc += s.weight * pathRadiance(ctx, s.transmitted ? beyond : xf, s.dir, bounce);
   }
   return out + acc / static_cast<double>(k);

@@ -29,6 +29,9 @@ struct PathState {
   // camera, as Radiance's primary rays; reflected, scattered and straight-on rays inherit it.
   // Beside the flags, in what was padding: the state is no larger than without it.
   ClipState clip;
+  // Scattering vertices (BSDF) met in a row just before this ray (0 after any other vertex), in
+  // the padding after the clip set: the state stays two cache lines.
+  uint8_t scatterRun = 0;
   // Density (per sr) of the cosine sampling that drew the ray, for the sky's MIS weight
   // (0: not cosine-sampled, the sky counts in full); misRatio as for directIrradiance.
   double misCosPdf = 0.0;

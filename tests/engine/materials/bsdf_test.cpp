@@ -202,6 +202,45 @@ TEST(BsdfMaterial, LambertianReflectorGivesRhoE) {
   expectWithin4Se(measure(sky, kAbove, kDown), 0.4 * kSkyLux, "sky");
 }
 
+// Two scattering surfaces facing each other, light caught between them: a diffusing window at 1
+// (τ = 0.4 through, ρ = 0.5 back on the room side) over a reflecting floor of ρ₂ = 0.8, both
+// BSDF. The floor's irradiance sums the series of reflections between them,
+// E₂ = τ E_sky / (1 − ρ ρ₂) = 2/3 E_sky, and a sensor facing the floor reads ρ₂ E₂ = 0.5333 E_sky:
+// the paths that go back and forth end by Russian roulette after two scattering vertices in a
+// row (engine/integrator_path.cpp), unbiased.
+TEST(BsdfMaterial, LightCaughtBetweenTwoScatteringSurfacesIsTheSeries) {
+  const TestBsdf window([](const Vec3& in, const Vec3& out) {
+                          if ((in.z > 0.0) != (out.z > 0.0)) return 0.4 * kInvPi;
+                          return out.z > 0.0 ? 0.5 * kInvPi : 0.0;  // the room side (the normal's) reflects
+                        },
+                        [](const Vec3& out, bool t) { return t ? 0.4 : (out.z > 0.0 ? 0.5 : 0.0); });
+  const TestBsdf floor([](const Vec3& in, const Vec3& out) { return (in.z > 0.0) == (out.z > 0.0) ? 0.8 * kInvPi : 0.0; },
+                       [](const Vec3&, bool t) { return t ? 0.0 : 0.8; });
+  window.expectAlbedoAsQuadrature();
+  floor.expectAlbedoAsQuadrature();
+  const fs::path dir = test_support::scratchDir("bsdf_material", "caught");
+  std::ofstream(dir / "scene.rad") << "void trans stand 0 0 7 .5 .5 .5 0 0 .5 0\n"
+                                      "void trans floor_stand 0 0 7 .5 .5 .5 0 0 .5 0\n"
+                                   << plane(1.0, false) << test_support::infinitePlane("floor_stand", 0.0, true, "floor");
+  Scene sc;
+  readRadianceFile(dir / "scene.rad", sc);
+  for (Material& m : sc.materials) {
+    if (m.name != "stand" && m.name != "floor_stand") continue;
+    m.type = MaterialType::kBsdf;
+    m.bsdf = m.name == "stand" ? static_cast<const Bsdf*>(&window) : static_cast<const Bsdf*>(&floor);
+    m.color = m.backColor = m.transmissionColor = Rgb(0.0);
+    deriveMaterial(m);
+    m.anisotropyU = Vec3(0.0, 1.0, 0.0);
+  }
+  test_support::addUniformSky(sc);
+  TraceSettings s;
+  s.seed = 7;
+  s.hemisphereSamples = 4096;
+  s.maxBounces = kUnlimitedBounces;
+  const IrradianceEstimate e = estimateIrradiance(Tracer(sc), Vec3(0.3, 0.2, 0.5), Response::planar(kDown), 0, s);
+  expectWithin4Se(e, 0.8 * 0.4 / (1.0 - 0.5 * 0.8) * kSkyLux, "between");
+}
+
 TEST(BsdfMaterial, ABsdfLetsItsDirectPartStraightThrough) {
   // Nothing scattered, 0.6 straight through: the sun and the sky at 0.6 of their light.
   const TestBsdf b([](const Vec3&, const Vec3&) { return 0.0; }, [](const Vec3&, bool) { return 0.0; }, 0.6);
