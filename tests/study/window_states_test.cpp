@@ -513,6 +513,52 @@ TEST_F(WindowStateStudy, GlareViewsFollowTheBlindsOfAWindowGroup) {
   EXPECT_EQ(b.glareAutonomy, a.glareAutonomy);
 }
 
+// Two groups under the direct-sun rule, one of three states and one of two: the opening split
+// into a west and an east pane. Each group's states cover its occupied hours; the west group's
+// middle state is used; the glare view follows the combinations (its hours off the first
+// states at least each group's, at most their sum).
+TEST_F(WindowStateStudy, TwoGroupsEscalateAndTheGlareViewFollowsTheirCombinations) {
+  const fs::path dir = dir_ / "two";
+  fs::create_directories(dir);
+  auto pane = [](const std::string& mat, const std::string& name, double x0, double x1) {
+    const std::string a = std::to_string(x0), b = std::to_string(x1);
+    return mat + " polygon " + name + " 0 0 12  " + a + " 0 0.8  " + b + " 0 0.8  " + b + " 0 2.2  " + a + " 0 2.2\n";
+  };
+  const std::string glass = "void glass g_clear 0 0 3 0.9 0.9 0.9\nvoid glass g_tint 0 0 3 0.03 0.03 0.03\n"
+                            "void trans g_dim 0 0 7 0.5 0.5 0.5 0 0 0.4 0\n";
+  std::ofstream(dir / "panes.rad") << glass << pane("g_clear", "pane_w", 0.8, 2.0) << pane("g_clear", "pane_e", 2.0, 3.2);
+  for (const char* m : {"clear", "tint", "dim"}) {
+    std::ofstream(dir / (std::string("w_") + m + ".rad")) << glass << pane(std::string("g_") + m, "pane_w", 0.8, 2.0);
+    std::ofstream(dir / (std::string("e_") + m + ".rad")) << glass << pane(std::string("g_") + m, "pane_e", 2.0, 3.2);
+  }
+  CaseFile c = roomCase();
+  c.scenes.push_back({dir / "panes.rad", {}});
+  WindowGroupSpec west = southStates(), east = southStates();
+  west.name = "west";
+  west.patterns = {"pane_w"};
+  west.states = {{"clear", dir / "w_clear.rad", west.loc}, {"tint", dir / "w_tint.rad", west.loc},
+                 {"dim", dir / "w_dim.rad", west.loc}};
+  east.name = "east";
+  east.patterns = {"pane_e"};
+  east.states = {{"clear", dir / "e_clear.rad", east.loc}, {"dim", dir / "e_dim.rad", east.loc}};
+  c.windowGroups = {west, east};
+  c.compliance = {glareEntry()};
+  const RunResult r = runRoom(c, dir / "run");
+  const auto& states = annual(&r).windowStates;
+  ASSERT_EQ(states.size(), 5u);  // west clear, tint, dim; east clear, dim
+  const int occupied = countHours(occupiedOf(hourly(clear_, "room")));
+  EXPECT_EQ(states[0].occupiedHours + states[1].occupiedHours + states[2].occupiedHours, occupied);
+  EXPECT_EQ(states[3].occupiedHours + states[4].occupiedHours, occupied);
+  EXPECT_GT(states[1].occupiedHours, 0);  // the west pane's tint is chosen in some hours
+  const int westOff = states[1].occupiedHours + states[2].occupiedHours, eastOff = states[4].occupiedHours;
+  EXPECT_GT(westOff + eastOff, 0);
+  const GlareViewReport& g = r.data.compliance.at(0).en17037->glare.at(0);
+  EXPECT_EQ(g.blinds, "window_states");
+  EXPECT_TRUE(g.blindsNote.empty());
+  EXPECT_GE(g.blindsClosedHours, std::max(westOff, eastOff));
+  EXPECT_LE(g.blindsClosedHours, westOff + eastOff);
+}
+
 // A Honeybee radiance folder (honeybee-radiance-folder's layout) written here, read into the case
 // the hand-written [[scene]] and [[window_group]] entries give.
 TEST(HoneybeeFolder, ReadsIntoItsHandWrittenCase) {
