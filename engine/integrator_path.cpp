@@ -427,6 +427,10 @@ Rgb pathRadiance(TraceContext& ctx, const Vec3& origin, const Vec3& direction, P
     }
     v.ns = shadingNormal(*m, v.nf, v.front);  // a texture turns it
     v.textured = m->perturbation != Vec3(0.0);
+    if (const std::optional<Vec3> smooth = scene.smoothNormal(h.shape, v.x)) {  // OBJ `vn`
+      v.ns = smoothShadingNormal(*m, *smooth, v.nf, v.front);
+      v.textured = true;
+    }
     const MaterialFamily& family = familyOf(*m);
     switch (family.role()) {
       case HitRole::kEmit:

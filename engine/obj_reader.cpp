@@ -219,7 +219,7 @@ class ObjReader {
     if (k == "v") return vertex(line);
     if (k == "f") return face(line);
     if (k == "vt") { ++vts_; return; }
-    if (k == "vn") { ++vns_; return; }
+    if (k == "vn") return normal(line);
     if (k == "g") {
       groups_.clear();
       for (size_t i = 1; i < words_.size(); ++i) groups_.emplace_back(words_[i]);
@@ -263,6 +263,19 @@ class ObjReader {
     ++stats_.vertices;
   }
 
+  // A vertex normal: transformed as the vertices' directions, unit; a zero one smooths nothing.
+  void normal(int line) {
+    if (words_.size() < 4) fail(line, "vertex normal needs 3 components, got " + std::to_string(words_.size() - 1));
+    Vec3 n;
+    for (int k = 0; k < 3; ++k)
+      if (!parseDouble(words_[1 + k], n[k]) || !std::isfinite(n[k]))
+        fail(line, "vertex normal component '" + std::string(words_[1 + k]) + "' is not a number");
+    n = opt_.transform.direction(n);
+    const double l = glm::length(n);
+    normals_.push_back(l > 0.0 ? n / l : Vec3(0.0));
+    ++vns_;
+  }
+
   // One index of a face vertex: 1-based, or negative counting back from the last of `count`.
   bool index(std::string_view w, size_t count, long& out) const {
     long v = 0;
@@ -279,6 +292,7 @@ class ObjReader {
 
   void faceIndices(int line) {
     idx_.clear();
+    nidx_.clear();
     for (size_t i = 1; i < words_.size(); ++i) {
       const std::string_view w = words_[i];
       const size_t s1 = w.find('/');
@@ -291,14 +305,20 @@ class ObjReader {
         const size_t s2 = rest.find('/');
         const std::string_view vt = rest.substr(0, s2);
         const std::string_view vn = s2 == std::string_view::npos ? std::string_view() : rest.substr(s2 + 1);
-        long dummy = 0;
-        if ((!vt.empty() && !index(vt, vts_, dummy)) || (!vn.empty() && !index(vn, vns_, dummy)))
+        long dummy = 0, vnIndex = -1;
+        if ((!vt.empty() && !index(vt, vts_, dummy)) || (!vn.empty() && !index(vn, vns_, vnIndex)))
           fail(line, "face vertex '" + std::string(w) + "' names a texture or normal index that is not defined");
+        nidx_.push_back(vnIndex);
+      } else {
+        nidx_.push_back(-1);
       }
       idx_.push_back(base_ + static_cast<uint32_t>(v));
     }
     // xform: a mirroring transform (negative scale) reverses the vertex order, so fronts stay fronts.
-    if (opt_.transform.scale < 0.0) std::reverse(idx_.begin(), idx_.end());
+    if (opt_.transform.scale < 0.0) {
+      std::reverse(idx_.begin(), idx_.end());
+      std::reverse(nidx_.begin(), nidx_.end());
+    }
   }
 
   void face(int line) {
@@ -350,7 +370,53 @@ class ObjReader {
     }
     const Material& m = scene_.materials[static_cast<size_t>(mat)];
     if (m.isEmitter() || familyOf(m).mirrorsSources()) return addShapes(mat, planar);
-    for (const auto& t : tris_) addTriangle(idx_[t[0]], idx_[t[1]], idx_[t[2]], static_cast<uint32_t>(mat), line);
+    const Smoothing sm = smoothing(n);
+    for (const auto& t : tris_) {
+      const std::array<uint32_t, 3> c = sm.flip ? std::array<uint32_t, 3>{t[0], t[2], t[1]} : t;
+      addTriangle(idx_[c[0]], idx_[c[1]], idx_[c[2]], static_cast<uint32_t>(mat), line);
+      if (sm.smooth) smoothLast({meshNormal(nidx_[c[0]]), meshNormal(nidx_[c[1]]), meshNormal(nidx_[c[2]])});
+    }
+  }
+
+  // obj2rad's test (convertobj.c's checksmooth, tmesh.h's cosine 0.999995): a face is smoothed
+  // when every corner has a normal and some normal departs from the face's (n, unit); a face whose
+  // normals all point against it is turned round and stays flat.
+  struct Smoothing {
+    bool smooth = false, flip = false;
+  };
+  Smoothing smoothing(const Vec3& n) const {
+    constexpr double kCosTol = 0.999995;
+    Smoothing s;
+    size_t reversed = 0;
+    for (long k : nidx_) {
+      if (k < 0 || normals_[static_cast<size_t>(k)] == Vec3(0.0)) return s;
+      const double d = glm::dot(normals_[static_cast<size_t>(k)], n);
+      if (d >= kCosTol) continue;
+      if (d > -kCosTol) s.smooth = true;
+      else ++reversed;
+    }
+    s.flip = !s.smooth && reversed == nidx_.size();
+    return s;
+  }
+
+  // The mesh's index of OBJ normal k, added on first use.
+  uint32_t meshNormal(long k) {
+    if (normalIndex_.size() < normals_.size()) normalIndex_.resize(normals_.size(), TriangleMesh::kNoCornerNormal);
+    uint32_t& at = normalIndex_[static_cast<size_t>(k)];
+    if (at == TriangleMesh::kNoCornerNormal) {
+      at = static_cast<uint32_t>(scene_.mesh.normals.size());
+      scene_.mesh.normals.push_back(normals_[static_cast<size_t>(k)]);
+    }
+    return at;
+  }
+
+  // The last triangle added takes corner normals `c` (earlier ones flat).
+  void smoothLast(const std::array<uint32_t, 3>& c) {
+    TriangleMesh& mesh = scene_.mesh;
+    mesh.cornerNormals.resize(mesh.triangles.size(),
+                              {TriangleMesh::kNoCornerNormal, TriangleMesh::kNoCornerNormal, TriangleMesh::kNoCornerNormal});
+    mesh.cornerNormals.back() = c;
+    ++stats_.smoothed;
   }
 
   // Sources and mirrors are Shapes: the light sampling and the mirrors' virtual sources find
@@ -491,6 +557,9 @@ class ObjReader {
   // Scratch reused from face to face (no allocation per face once grown).
   std::vector<std::string_view> words_;
   std::vector<uint32_t> idx_;
+  std::vector<long> nidx_;             // each face vertex's normal (index into normals_), -1: none
+  std::vector<Vec3> normals_;          // the file's `vn`, transformed, unit (zero: unusable)
+  std::vector<uint32_t> normalIndex_;  // their indices in the mesh's normals, once used
   std::vector<Vec3> pts_;
   std::vector<std::array<uint32_t, 3>> tris_;
 };

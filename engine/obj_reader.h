@@ -68,9 +68,12 @@ struct ObjReadStats {
   size_t nonplanar = 0;      // faces triangulated because they are not planar
   size_t degenerate = 0;     // faces left out: zero area (a warning, as obj2rad counts them)
   size_t dropped = 0;        // faces left out: void modifier or no mapping rule
+  size_t smoothed = 0;       // mesh triangles smoothed by their corners' `vn` normals (as obj2rad)
 };
 
-// Appends the OBJ text's faces to `scene`. Throws InputError(file:line) for a bad statement, a
+// Appends the OBJ text's faces to `scene`; faces whose `vn` normals depart from the face's are
+// smoothed as obj2rad smooths them (TriangleMesh::cornerNormals). Throws InputError(file:line)
+// for a bad statement, a
 // vertex index out of range, a face of fewer than 3 vertices, an undefined modifier, a coordinate
 // beyond kMaxCoordinateM or more than 2³² − 2 vertices or triangles. Warnings (degenerate faces,
 // mtllib) go to scene.inputWarnings.

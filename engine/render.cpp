@@ -227,7 +227,9 @@ Rgb seenSurfaceRadiance(CameraRay& cr, const Vec3& o, const Vec3& d, uint32_t sk
   if (cr.estimatesLeft < 2 || family.directionalSources(*m) || family.roughTransmission(*m))
     return plainPath(cr, o, d, skip);
   cr.estimatesLeft -= 2;  // at most two estimates (front and back)
-  return surfaceRadiance(cr, *m, x, d, nf, shadingNormal(*m, nf, front), off, flatSkip, share, events);
+  const std::optional<Vec3> smooth = scene.smoothNormal(h.shape, x);  // OBJ `vn`
+  const Vec3 ns = smooth ? smoothShadingNormal(*m, *smooth, nf, front) : shadingNormal(*m, nf, front);
+  return surfaceRadiance(cr, *m, x, d, nf, ns, off, flatSkip, share, events);
 }
 
 // Traces pixel (x, y): `spp` rays stratified over the pixel, from the pixel's own random stream.

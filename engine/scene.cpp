@@ -25,9 +25,27 @@ const TriangleMesh::Run& TriangleMesh::runOf(uint32_t tri) const {
   return *(it - 1);
 }
 
+std::optional<Vec3> TriangleMesh::smoothNormal(uint32_t tri, const Vec3& x) const {
+  if (tri >= cornerNormals.size() || cornerNormals[tri][0] == kNoCornerNormal) return std::nullopt;
+  const auto& t = triangles[tri];
+  const Vec3 a = vertices[t[0]], e1 = vertices[t[1]] - a, e2 = vertices[t[2]] - a, d = x - a;
+  const Vec3 n = glm::cross(e1, e2);
+  const double nn = glm::dot(n, n);
+  if (!(nn > 0.0)) return std::nullopt;
+  // Barycentric coordinates from the sub-triangles' areas (signed, along n).
+  const double w1 = glm::dot(glm::cross(d, e2), n) / nn, w2 = glm::dot(glm::cross(e1, d), n) / nn;
+  const auto& c = cornerNormals[tri];
+  const Vec3 s = (1.0 - w1 - w2) * normals[c[0]] + w1 * normals[c[1]] + w2 * normals[c[2]];
+  const double l = glm::length(s);
+  if (!(l > 0.0)) return std::nullopt;
+  const Vec3 u = s / l;
+  return glm::dot(u, n) >= 0.0 ? u : -u;  // on the front's side, as the texture leaves it
+}
+
 size_t TriangleMesh::memoryBytes() const {
   size_t n = vertices.capacity() * sizeof(Vec3) + triangles.capacity() * sizeof(triangles[0]) +
-             runs.capacity() * sizeof(Run) + names.capacity() * sizeof(std::string);
+             runs.capacity() * sizeof(Run) + names.capacity() * sizeof(std::string) +
+             normals.capacity() * sizeof(Vec3) + cornerNormals.capacity() * sizeof(cornerNormals[0]);
   for (const std::string& s : names) n += s.capacity();
   return n;
 }

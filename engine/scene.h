@@ -135,8 +135,17 @@ struct TriangleMesh {
   std::vector<std::array<uint32_t, 3>> triangles;  // counter-clockwise seen from the front
   std::vector<Run> runs;
   std::vector<std::string> names;
+  // Smoothing (OBJ `vn`, as obj2rad's tmesh.cal textures): unit normals, and for each triangle the
+  // indices of its corners' normals, kNoCornerNormal for a flat one; `cornerNormals` is empty
+  // when no triangle is smoothed, else as long as `triangles`.
+  static constexpr uint32_t kNoCornerNormal = 0xFFFFFFFFu;
+  std::vector<Vec3> normals;
+  std::vector<std::array<uint32_t, 3>> cornerNormals;
 
   bool empty() const { return triangles.empty(); }
+  // The shading normal of triangle `tri` at x (on its plane): its corners' normals weighted by
+  // x's barycentric coordinates, unit, on the side of the triangle's front; nullopt when flat.
+  std::optional<Vec3> smoothNormal(uint32_t tri, const Vec3& x) const;
   // The run holding triangle `tri` (binary search over the runs).
   const Run& runOf(uint32_t tri) const;
   // Bytes held by the vectors (capacity), names included.
@@ -169,6 +178,12 @@ struct Scene {
   Box bounds() const;
   uint32_t surfaceCount() const { return static_cast<uint32_t>(shapes.size() + mesh.triangles.size()); }
   bool isMeshSurface(uint32_t id) const { return id >= shapes.size(); }
+  // The smoothed shading normal of surface `id` at x (TriangleMesh::smoothNormal), nullopt for a
+  // flat surface; a branch on an empty vector where nothing is smoothed.
+  std::optional<Vec3> smoothNormal(uint32_t id, const Vec3& x) const {
+    if (mesh.cornerNormals.empty() || id < shapes.size()) return std::nullopt;
+    return mesh.smoothNormal(id - static_cast<uint32_t>(shapes.size()), x);
+  }
   // Surface `id` as a Shape: a copy of shapes[id], or a mesh triangle as a kTriangle Shape
   // (a = v0, b = v1 − v0, c = v2 − v0, n = unit b × c, its run's material).
   Shape surface(uint32_t id) const;

@@ -81,6 +81,15 @@ inline Vec3 shadingNormal(const MaterialParameters& m, const Vec3& nf, bool fron
   return l > 1e-9 ? n / l : nf;
 }
 
+// The shading normal on a smoothed mesh triangle (TriangleMesh::smoothNormal `smooth`, on the
+// front's side): as Radiance's tmesh.cal texture, a perturbation of smooth − n_g added to m's own,
+// so ±(smooth + m's perturbation) facing the ray, unit.
+inline Vec3 smoothShadingNormal(const MaterialParameters& m, const Vec3& smooth, const Vec3& nf, bool front) {
+  const Vec3 n = front ? smooth + m.perturbation : -(smooth + m.perturbation);
+  const double l = glm::length(n);
+  return l > 1e-9 ? n / l : nf;
+}
+
 // Whether m's colour is modified by a function pattern (the hook has work to do).
 inline bool hasFunctionPattern(const Scene& scene, const MaterialParameters& m) {
   if (m.functions >= 0) return true;  // plastic2's u direction, BRTDfunc's specular parts

@@ -99,6 +99,67 @@ TEST(ObjReader, ReadsEveryConstruct) {
   EXPECT_EQ(sc.inputWarnings[0].loc.line, 2);
 }
 
+// `vn` normals smooth a face as obj2rad does (convertobj.c's checksmooth): the shading normal at
+// a point is its corners' normals weighted by its barycentric coordinates (at a corner, that
+// corner's; at the centroid, their mean), unit; normals equal to the face's leave it flat, and
+// normals all against it turn it round, flat.
+TEST(ObjReader, VertexNormalsSmoothTheFaceAsObj2radDoes) {
+  const fs::path dir = test_support::scratchDir("obj_reader", "smooth");
+  std::ofstream(dir / "m.rad") << "void plastic white 0 0 5 .5 .5 .5 0 0\n";
+  const Vec3 n0 = glm::normalize(Vec3(0.3, 0.0, 1.0)), n1 = glm::normalize(Vec3(-0.2, 0.1, 1.0));
+  const Vec3 n2 = glm::normalize(Vec3(0.0, -0.4, 1.0));
+  std::ofstream(dir / "smooth.obj") << "v 0 0 0\nv 2 0 0\nv 0 2 0\n"
+                                    << "vn " << n0.x << " " << n0.y << " " << n0.z << "\nvn " << n1.x << " " << n1.y << " "
+                                    << n1.z << "\nvn " << n2.x << " " << n2.y << " " << n2.z << "\n"
+                                    << "vn 0 0 1\nvn 0 0 -3\n"
+                                    << "f 1//1 2//2 3//3\n"     // smoothed
+                                    << "f 1//4 2//4 3//4\n"     // the face's own normal: flat
+                                    << "f 1//5 2//5 3//5\n";    // all against it: turned round, flat
+  const Scene sc = readFiles({dir / "m.rad", dir / "smooth.obj"});
+  ASSERT_EQ(sc.mesh.triangles.size(), 3u);
+  ASSERT_EQ(sc.mesh.cornerNormals.size(), 1u);  // only the first triangle is smoothed
+  const Vec3 corners[3] = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
+  const Vec3 normals[3] = {n0, n1, n2};
+  for (int k = 0; k < 3; ++k) {
+    const std::optional<Vec3> at = sc.smoothNormal(0, corners[k]);
+    ASSERT_TRUE(at.has_value());
+    EXPECT_NEAR(glm::length(*at - normals[k]), 0.0, 1e-6) << k;  // the file's 6 digits
+  }
+  const Vec3 centroid = (corners[0] + corners[1] + corners[2]) / 3.0;
+  EXPECT_NEAR(glm::length(*sc.smoothNormal(0, centroid) - glm::normalize(n0 + n1 + n2)), 0.0, 1e-6);
+  EXPECT_FALSE(sc.smoothNormal(1, centroid).has_value());
+  EXPECT_FALSE(sc.smoothNormal(2, centroid).has_value());
+  EXPECT_EQ(sc.surface(1).n, Vec3(0, 0, 1));
+  EXPECT_EQ(sc.surface(2).n, Vec3(0, 0, -1));  // turned round
+}
+
+// A smoothed floor lights as its shading normal says: one huge triangle whose three normals lean
+// 30° towards +x, under a sun at the zenith (a Radiance `light` source), white plastic ρ = 0.5: its
+// radiance is ρ E cos 30° / π everywhere, so a sensor 1 m above facing it reads ρ E cos 30° (flat:
+// ρ E), to the sensor's 4 standard errors.
+TEST(ObjReader, ASmoothedFloorReflectsByItsShadingNormal) {
+  const fs::path dir = test_support::scratchDir("obj_reader", "smooth_floor");
+  std::ofstream(dir / "m.rad") << "void plastic white 0 0 5 .5 .5 .5 0 0\n"
+                                  "void light sunl 0 0 3 1e5 1e5 1e5\nsunl source sun 0 0 4 0 0 1 0.5\n";
+  const double s = std::sin(degToRad(30.0)), c = std::cos(degToRad(30.0));
+  std::ofstream(dir / "floor.obj") << "v -1e4 -1e4 0\nv 1e4 -1e4 0\nv 0 1e4 0\nvn " << s << " 0 " << c
+                                   << "\nf 1//1 2//1 3//1\n";
+  const Scene sc = readFiles({dir / "m.rad", dir / "floor.obj"});
+  ASSERT_EQ(sc.mesh.cornerNormals.size(), 1u);
+  TraceSettings ts;
+  ts.seed = 4;
+  ts.hemisphereSamples = 4096;
+  ts.maxBounces = 1;
+  const Tracer tracer(sc);
+  const IrradianceEstimate down = estimateIrradiance(tracer, Vec3(0.3, 0.2, 1.0), Vec3(0, 0, -1), 0, ts);
+  // The sun's illuminance on a surface facing it: its radiance times its solid angle.
+  const double sunLux = 1e5 * kLumensPerWatt * 2.0 * kPi * (1.0 - std::cos(degToRad(0.25)));
+  const double want = 0.5 * sunLux * c;
+  EXPECT_NEAR(down.illuminanceLux(), want, 4.0 * down.standardErrorLux() + 1e-3 * want);
+  EXPECT_LT(down.standardErrorLux(), 0.02 * want);
+  EXPECT_GT(std::abs(down.illuminanceLux() - 0.5 * sunLux), 5.0 * down.standardErrorLux());  // not the flat floor's
+}
+
 TEST(ObjReader, DefaultModifierIsWhite) {
   const Scene sc = readFiles({objDir() / "constructs.rad", objDir() / "defaults.obj"});
   ASSERT_EQ(sc.mesh.triangles.size(), 1u);
