@@ -389,7 +389,7 @@ class ObjReader {
     Smoothing s;
     size_t reversed = 0;
     for (long k : nidx_) {
-      if (k < 0 || normals_[static_cast<size_t>(k)] == Vec3(0.0)) return s;
+      if (k < 0 || normals_[static_cast<size_t>(k)] == Vec3(0.0)) return Smoothing{};  // a corner without
       const double d = glm::dot(normals_[static_cast<size_t>(k)], n);
       if (d >= kCosTol) continue;
       if (d > -kCosTol) s.smooth = true;

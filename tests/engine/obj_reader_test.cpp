@@ -114,9 +114,10 @@ TEST(ObjReader, VertexNormalsSmoothTheFaceAsObj2radDoes) {
                                     << "vn 0 0 1\nvn 0 0 -3\n"
                                     << "f 1//1 2//2 3//3\n"     // smoothed
                                     << "f 1//4 2//4 3//4\n"     // the face's own normal: flat
-                                    << "f 1//5 2//5 3//5\n";    // all against it: turned round, flat
+                                    << "f 1//5 2//5 3//5\n"     // all against it: turned round, flat
+                                    << "f 1//1 2//2 3\n";       // a corner without a normal: flat
   const Scene sc = readFiles({dir / "m.rad", dir / "smooth.obj"});
-  ASSERT_EQ(sc.mesh.triangles.size(), 3u);
+  ASSERT_EQ(sc.mesh.triangles.size(), 4u);
   ASSERT_EQ(sc.mesh.cornerNormals.size(), 1u);  // only the first triangle is smoothed
   const Vec3 corners[3] = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0)};
   const Vec3 normals[3] = {n0, n1, n2};
@@ -129,6 +130,7 @@ TEST(ObjReader, VertexNormalsSmoothTheFaceAsObj2radDoes) {
   EXPECT_NEAR(glm::length(*sc.smoothNormal(0, centroid) - glm::normalize(n0 + n1 + n2)), 0.0, 1e-6);
   EXPECT_FALSE(sc.smoothNormal(1, centroid).has_value());
   EXPECT_FALSE(sc.smoothNormal(2, centroid).has_value());
+  EXPECT_FALSE(sc.smoothNormal(3, centroid).has_value());
   EXPECT_EQ(sc.surface(1).n, Vec3(0, 0, 1));
   EXPECT_EQ(sc.surface(2).n, Vec3(0, 0, -1));  // turned round
 }
