@@ -251,7 +251,6 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
 }
 
 namespace {
-bool samplesScattering(const Material& m) { return familyOf(m).samplesScattering(m); }
 
 // The surface of the scene's bounding box (cacheRecordRays' measure of a room), m².
 double boundingBoxSurfaceM2(const Scene& scene) {
@@ -282,7 +281,8 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
       RayHit hit;
       if (tracer.accelerator().intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), hit)) {
         ++hits;
-        seesScattering = seesScattering || samplesScattering(scene.materials[scene.surfaceMaterial(hit.shape)]);
+        const Material& m = scene.materials[scene.surfaceMaterial(hit.shape)];
+        seesScattering = seesScattering || familyOf(m).samplesScattering(m);
       }
       ++rays;
     }
@@ -570,7 +570,7 @@ ResourceEstimate estimateAnnualStudy(const CaseFile& c, const Scene& scene, cons
       const double times = static_cast<double>(leedOption2Dates(spec, 0).size()) *  // the year changes no count
                            static_cast<double>(spec.leedHours.size());
       // Each time traces its own scene under its own sky, so its own irradiance cache.
-      const double sky = 1.0 + (PortalSet(scene).empty() ? 0.0 : 1.0);  // its sky's rays at each vertex
+      const double sky = std::max(1.0, skyRaysPerVertex(scene));  // its clear sky's rays at each vertex
       e.work.push_back({"compliance " + spec.name,
                         times * (static_cast<double>(k) * raysPerSensor(once, n.sampled + 2, 0, 1.0, sky) +
                                  cacheRecordRays(once, static_cast<double>(k), boundingBoxSurfaceM2(scene), 1.0, sky))});

@@ -261,6 +261,18 @@ RunResult runSingleWithGlare(const std::string& state, const fs::path& out) {
   return runRoom(c, out);
 }
 
+// The glare view of a run's EN 17037 entry (the `entry`-th compliance entry).
+const GlareViewReport& glareView(const RunResult& r, std::size_t entry = 0) {
+  return r.data.compliance.at(entry).en17037->glare.at(0);
+}
+
+// Two views' yearly figures, to the last bit.
+void expectSameGlare(const GlareViewReport& got, const GlareViewReport& want) {
+  EXPECT_EQ(got.shareAbove035, want.shareAbove035);
+  EXPECT_EQ(got.shareAbove045, want.shareAbove045);
+  EXPECT_EQ(got.glareAutonomy, want.glareAutonomy);
+}
+
 class WindowStateStudy : public testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -437,15 +449,15 @@ TEST_F(WindowStateStudy, LeedTakesTheSwitchedSdaAndTheReferenceAse) {
 // hour's DGP is the state's of that hour (the clear state's single run and the dim one's, chosen
 // by the switched year's hours), the hours in the second state reported.
 TEST_F(WindowStateStudy, GlareViewsFollowTheStates) {
-  const GlareViewReport& g = sun_->data.compliance.at(1).en17037->glare.at(0);
+  const GlareViewReport& g = glareView(*sun_, 1);
   EXPECT_EQ(g.blinds, "window_states");
   EXPECT_EQ(g.blindsSpace, "room");
   EXPECT_EQ(g.blindsClosedHours, annual(sun_).windowStates.at(1).occupiedHours);
   const fs::path dir = dir_ / "glare";
   const RunResult clear = runSingleWithGlare("clear", dir / "clear");
   const RunResult dim = runSingleWithGlare("dim", dir / "dim");
-  const GlareViewReport& c = clear.data.compliance.at(0).en17037->glare.at(0);
-  const GlareViewReport& d = dim.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& c = glareView(clear);
+  const GlareViewReport& d = glareView(dim);
   EXPECT_EQ(c.blinds, "open");
   // The switched year lies between its states' years, and the dim state cuts the clear's glare.
   EXPECT_LT(d.shareAbove035, c.shareAbove035);
@@ -474,16 +486,14 @@ TEST_F(WindowStateStudy, GlareViewsFollowAThirdState) {
   c.compliance = {glareEntry()};
   const RunResult three = runRoom(c, dir / "run");
   const RunResult tint = runSingleWithGlare("tint", dir / "tint");
-  const GlareViewReport& got = three.data.compliance.at(0).en17037->glare.at(0);
-  const GlareViewReport& want = tint.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& got = glareView(three);
+  const GlareViewReport& want = glareView(tint);
   EXPECT_EQ(got.blinds, "window_states");
-  EXPECT_EQ(got.shareAbove035, want.shareAbove035);
-  EXPECT_EQ(got.shareAbove045, want.shareAbove045);
-  EXPECT_EQ(got.glareAutonomy, want.glareAutonomy);
+  expectSameGlare(got, want);
   EXPECT_EQ(got.blindsClosedHours, countHours(occupiedOf(hourly(clear_, "room"))));
   // The first state glares where the tint does not: following the wrong state would show.
   const RunResult clear = runSingleWithGlare("clear", dir / "clear");
-  EXPECT_GT(clear.data.compliance.at(0).en17037->glare.at(0).shareAbove035, want.shareAbove035);
+  EXPECT_GT(glareView(clear).shareAbove035, want.shareAbove035);
 }
 
 // LM-83's blinds of a [[window_group]] (not states) are followed by the glare view too: one group
@@ -502,15 +512,13 @@ TEST_F(WindowStateStudy, GlareViewsFollowTheBlindsOfAWindowGroup) {
   g.loc = g.patternsLoc = FileLoc{"case.toml", 30, 1};
   c.windowGroups = {g};
   const RunResult grouped = runRoom(c, dir / "grouped");
-  const GlareViewReport& a = whole.data.compliance.at(0).en17037->glare.at(0);
-  const GlareViewReport& b = grouped.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& a = glareView(whole);
+  const GlareViewReport& b = glareView(grouped);
   EXPECT_EQ(a.blinds, "lm83");
   EXPECT_EQ(b.blinds, "lm83");
   EXPECT_GT(a.blindsClosedHours, 100);
   EXPECT_EQ(b.blindsClosedHours, a.blindsClosedHours);
-  EXPECT_EQ(b.shareAbove035, a.shareAbove035);
-  EXPECT_EQ(b.shareAbove045, a.shareAbove045);
-  EXPECT_EQ(b.glareAutonomy, a.glareAutonomy);
+  expectSameGlare(b, a);
 }
 
 // Two groups under the direct-sun rule, one of three states and one of two: the opening split
@@ -552,7 +560,7 @@ TEST_F(WindowStateStudy, TwoGroupsEscalateAndTheGlareViewFollowsTheirCombination
   EXPECT_GT(states[1].occupiedHours, 0);  // the west pane's tint is chosen in some hours
   const int westOff = states[1].occupiedHours + states[2].occupiedHours, eastOff = states[4].occupiedHours;
   EXPECT_GT(westOff + eastOff, 0);
-  const GlareViewReport& g = r.data.compliance.at(0).en17037->glare.at(0);
+  const GlareViewReport& g = glareView(r);
   EXPECT_EQ(g.blinds, "window_states");
   EXPECT_TRUE(g.blindsNote.empty());
   EXPECT_GE(g.blindsClosedHours, std::max(westOff, eastOff));
