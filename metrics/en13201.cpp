@@ -9,11 +9,37 @@
 namespace candela {
 
 std::string RoadClass::name() const {
-  const char letter = family == RoadClassFamily::kM ? 'M' : family == RoadClassFamily::kC ? 'C' : 'P';
-  return std::string(1, letter) + std::to_string(index);
+  const char* letters = family == RoadClassFamily::kM   ? "M"
+                        : family == RoadClassFamily::kC ? "C"
+                        : family == RoadClassFamily::kP ? "P"
+                                                        : "HS";
+  return letters + std::to_string(index);
+}
+
+std::string AdditionalRoadClass::name() const { return (kind == AdditionalClassKind::kSC ? "SC" : "EV") + std::to_string(index); }
+
+namespace {
+
+// "XYn" with a two-letter prefix `prefix` (upper or lower case) and one digit in [lo, hi].
+std::optional<int> twoLetterClass(std::string_view text, const char* prefix, int lo, int hi) {
+  if (text.size() != 3 || std::toupper(static_cast<unsigned char>(text[0])) != prefix[0] ||
+      std::toupper(static_cast<unsigned char>(text[1])) != prefix[1] || !std::isdigit(static_cast<unsigned char>(text[2])))
+    return std::nullopt;
+  const int index = text[2] - '0';
+  if (index < lo || index > hi) return std::nullopt;
+  return index;
+}
+
+}  // namespace
+
+std::optional<AdditionalRoadClass> parseAdditionalRoadClass(std::string_view text) {
+  if (const std::optional<int> i = twoLetterClass(text, "SC", 1, 9)) return AdditionalRoadClass{AdditionalClassKind::kSC, *i};
+  if (const std::optional<int> i = twoLetterClass(text, "EV", 1, 6)) return AdditionalRoadClass{AdditionalClassKind::kEV, *i};
+  return std::nullopt;
 }
 
 std::optional<RoadClass> parseRoadClass(std::string_view text) {
+  if (const std::optional<int> i = twoLetterClass(text, "HS", 1, 3)) return RoadClass{RoadClassFamily::kHS, *i};
   if (text.size() != 2 || !std::isdigit(static_cast<unsigned char>(text[1]))) return std::nullopt;
   const int index = text[1] - '0';
   switch (std::toupper(static_cast<unsigned char>(text[0]))) {
@@ -54,6 +80,18 @@ PClassRequirement pClassRequirement(int index) {
       {15.0, 3.00}, {10.0, 2.00}, {7.50, 1.50}, {5.00, 1.00}, {3.00, 0.60}, {2.00, 0.40},  // P1..P6
   }};
   return kP.at(static_cast<std::size_t>(index - 1));
+}
+
+HsClassRequirement hsClassRequirement(int index) {
+  static constexpr std::array<double, 3> kAverage = {5.00, 2.50, 1.00};  // HS1..HS3 (HS4: not determined)
+  return {kAverage.at(static_cast<std::size_t>(index - 1)), 0.15};
+}
+
+double additionalClassMinimumLux(const AdditionalRoadClass& c) {
+  static constexpr std::array<double, 9> kSc = {10.0, 7.5, 5.0, 3.0, 2.0, 1.5, 1.0, 0.75, 0.5};  // SC1..SC9
+  static constexpr std::array<double, 6> kEv = {50.0, 30.0, 10.0, 7.5, 5.0, 0.5};                // EV1..EV6
+  const auto i = static_cast<std::size_t>(c.index - 1);
+  return c.kind == AdditionalClassKind::kSC ? kSc.at(i) : kEv.at(i);
 }
 
 double thresholdIncrementPct(double veilingCdM2, double averageLuminanceCdM2) {
@@ -119,6 +157,17 @@ void judgeRoad(RoadResult& r) {
           criterion("average_illuminance_ceiling_lux", r.averageLux, kPClassAverageCeiling * q.averageLux, false));
       break;
     }
+    case RoadClassFamily::kHS: {
+      const HsClassRequirement q = hsClassRequirement(r.roadClass.index);
+      r.criteria.push_back(criterion("average_hemispherical_illuminance_lux", r.averageHemisphericalLux, q.averageLux, true));
+      r.criteria.push_back(criterion("hemispherical_uniformity", r.hemisphericalUniformity, q.uniformity, true));
+      break;
+    }
+  }
+  for (const AdditionalRoadClass& a : r.additional) {
+    const bool sc = a.kind == AdditionalClassKind::kSC;
+    r.criteria.push_back(criterion(sc ? "minimum_semi_cylindrical_illuminance_lux" : "minimum_vertical_illuminance_lux",
+                                   sc ? r.minSemiCylindricalLux : r.minVerticalLux, additionalClassMinimumLux(a), true));
   }
   const bool fail = std::any_of(r.criteria.begin(), r.criteria.end(),
                                 [](const RoadCriterion& c) { return c.verdict == Verdict::kFail; });

@@ -15,17 +15,30 @@
 
 namespace candela {
 
-// The three families of EN 13201-2:2015: M (motorised traffic, luminance), C (conflict areas,
-// illuminance and its uniformity), P (pedestrians and low speed, average and minimum illuminance).
-enum class RoadClassFamily { kM, kC, kP };
+// The families of EN 13201-2:2015: M (motorised traffic, luminance), C (conflict areas,
+// illuminance and its uniformity), P (pedestrians and low speed, average and minimum illuminance),
+// HS (pedestrians and low speed by the hemispherical illuminance, the P classes' alternative).
+enum class RoadClassFamily { kM, kC, kP, kHS };
 
 struct RoadClass {
   RoadClassFamily family = RoadClassFamily::kM;
-  int index = 1;  // M1..M6, C0..C5, P1..P6
+  int index = 1;  // M1..M6, C0..C5, P1..P6, HS1..HS3
   std::string name() const;
 };
-// "M1".."M6", "C0".."C5", "P1".."P6" (upper or lower case); nullopt otherwise.
+// "M1".."M6", "C0".."C5", "P1".."P6", "HS1".."HS3" (upper or lower case); nullopt otherwise.
 std::optional<RoadClass> parseRoadClass(std::string_view text);
+
+// The additional classes of EN 13201-2:2015 a road may carry besides its class: SC (the least
+// semi-cylindrical illuminance, for facial recognition) and EV (the least vertical illuminance,
+// where vertical surfaces must be seen).
+enum class AdditionalClassKind { kSC, kEV };
+struct AdditionalRoadClass {
+  AdditionalClassKind kind = AdditionalClassKind::kSC;
+  int index = 1;  // SC1..SC9, EV1..EV6
+  std::string name() const;
+};
+// "SC1".."SC9", "EV1".."EV6" (upper or lower case); nullopt otherwise.
+std::optional<AdditionalRoadClass> parseAdditionalRoadClass(std::string_view text);
 
 // EN 13201-2:2015 Table 1 (M classes): the least maintained average luminance L̄ (cd/m²), overall
 // uniformity U0 = Lmin/L̄, longitudinal uniformity Ul, the edge illuminance ratio R_EI (least
@@ -44,9 +57,21 @@ struct PClassRequirement {
   double averageLux = 0.0, minimumLux = 0.0;
 };
 inline constexpr double kPClassAverageCeiling = 1.5;
-MClassRequirement mClassRequirement(int index);  // 1..6
-CClassRequirement cClassRequirement(int index);  // 0..5
-PClassRequirement pClassRequirement(int index);  // 1..6
+// HS classes: the least maintained average hemispherical illuminance Ē_hs (lx) and its uniformity
+// E_hs,min/Ē_hs.
+struct HsClassRequirement {
+  double averageLux = 0.0, uniformity = 0.0;
+};
+MClassRequirement mClassRequirement(int index);    // 1..6
+CClassRequirement cClassRequirement(int index);    // 0..5
+PClassRequirement pClassRequirement(int index);    // 1..6
+HsClassRequirement hsClassRequirement(int index);  // 1..3
+// The least maintained semi-cylindrical (SC1..SC9) or vertical (EV1..EV6) illuminance, lx.
+double additionalClassMinimumLux(const AdditionalRoadClass& c);
+
+// EN 13201-3: semi-cylindrical and vertical illuminances are computed 1.5 m above the road, on the
+// illuminance grid's plan points, facing both ways along the road.
+inline constexpr double kFacialHeightM = 1.5;
 
 // A standard road surface reflection table (an r-table): the reduced luminance coefficient
 // r(β, tan γ) = q(β, γ) cos³γ in sr⁻¹ at the table's own average luminance coefficient q0
@@ -142,6 +167,14 @@ struct RoadResult {
   // Edge illuminance ratio: the lower side's Ē(outside strip)/Ē(inside strip), the strips `stripWidthM` wide.
   double edgeIlluminanceRatio = 0.0, stripWidthM = 0.0;
   double edgeRatioNearSide = 0.0, edgeRatioFarSide = 0.0;
+  // HS classes: the hemispherical illuminance on the road at the illuminance points, lx.
+  std::vector<double> hemisphericalLux;
+  double averageHemisphericalLux = 0.0, minHemisphericalLux = 0.0, hemisphericalUniformity = 0.0;
+  // Additional classes: at the illuminance points, 1.5 m up, the lesser of the two directions
+  // along the road (SC: semi-cylindrical; EV: vertical), lx; their minima.
+  std::vector<AdditionalRoadClass> additional;
+  std::vector<double> semiCylindricalLux, verticalLux;
+  double minSemiCylindricalLux = 0.0, minVerticalLux = 0.0;
   std::vector<RoadCriterion> criteria;
   Verdict verdict = Verdict::kNotChecked;
 };

@@ -41,11 +41,22 @@ constexpr CriterionText kCriteria[] = {
     {"illuminance_uniformity", "uniformity E<sub>min</sub>/Ē", 2},
     {"minimum_illuminance_lux", "minimum illuminance E<sub>min</sub>, lx", 2},
     {"average_illuminance_ceiling_lux", "Ē at most 1.5 × the class's, lx", 2},
+    {"average_hemispherical_illuminance_lux", "average hemispherical illuminance Ē<sub>hs</sub>, lx", 2},
+    {"hemispherical_uniformity", "uniformity E<sub>hs,min</sub>/Ē<sub>hs</sub>", 2},
+    {"minimum_semi_cylindrical_illuminance_lux", "minimum semi-cylindrical illuminance E<sub>sc,min</sub> (1.5 m, both ways along), lx", 2},
+    {"minimum_vertical_illuminance_lux", "minimum vertical illuminance E<sub>v,min</sub> (1.5 m, both ways along), lx", 2},
 };
 const CriterionText& textOf(const std::string& key) {
   for (const CriterionText& t : kCriteria)
     if (key == t.key) return t;
   return kCriteria[0];
+}
+
+// "P3 + SC5 + EV4": the class and its additional classes.
+std::string classNames(const RoadResult& r) {
+  std::string s = r.roadClass.name();
+  for (const AdditionalRoadClass& a : r.additional) s += " + " + a.name();
+  return s;
 }
 
 json roadJson(const RoadResult& r) {
@@ -59,6 +70,20 @@ json roadJson(const RoadResult& r) {
             {"minimum_illuminance_lux", r.minLux},
             {"maximum_illuminance_lux", r.maxLux},
             {"illuminance_uniformity", r.illuminanceUniformity}};
+  if (r.roadClass.family == RoadClassFamily::kHS) {
+    j["average_hemispherical_illuminance_lux"] = r.averageHemisphericalLux;
+    j["minimum_hemispherical_illuminance_lux"] = r.minHemisphericalLux;
+    j["hemispherical_uniformity"] = r.hemisphericalUniformity;
+  }
+  if (!r.additional.empty()) {
+    json names = json::array();
+    for (const AdditionalRoadClass& a : r.additional) {
+      names.push_back(a.name());
+      if (a.kind == AdditionalClassKind::kSC) j["minimum_semi_cylindrical_illuminance_lux"] = r.minSemiCylindricalLux;
+      else j["minimum_vertical_illuminance_lux"] = r.minVerticalLux;
+    }
+    j["additional_classes"] = names;
+  }
   if (r.roadClass.family == RoadClassFamily::kM) {
     j["surface"] = r.surface;
     j["q0"] = r.q0;
@@ -114,7 +139,7 @@ std::string En13201Section::html() const {
        "luminaire of the case, the scene's geometry as shadows; luminance from the surface's r-table; maintained "
        "values (each luminaire's maintenance factor), the threshold increment from initial values (docs/road.md).</p>\n";
   for (const RoadResult& r : report_.roads) {
-    h << "<h3>" << xmlEscape(r.name) << ": class " << r.roadClass.name() << ", " << fixed(r.lengthM, 1) << " m × "
+    h << "<h3>" << xmlEscape(r.name) << ": class " << classNames(r) << ", " << fixed(r.lengthM, 1) << " m × "
       << fixed(r.widthM, 2) << " m, " << r.lanes << (r.lanes == 1 ? " lane" : " lanes");
     if (r.roadClass.family == RoadClassFamily::kM) h << ", surface " << xmlEscape(r.surface) << " (q0 " << fixed(r.q0, 3) << ")";
     h << "</h3>\n" << en13201PlanSvg(r, report_.luminaires) << "\n";
@@ -122,7 +147,7 @@ std::string En13201Section::html() const {
          "illuminance points shaded from black (0 lx) to yellow (the maximum), dots the luminance points, circles the "
          "luminaires, triangles the observers (60 m before the field); for M classes the edge strips of R<sub>EI</sub> "
          "dashed, inside and outside each edge.</p>\n";
-    h << "<table class=\"compliance\"><tr><th>criterion (EN 13201-2, class " << r.roadClass.name()
+    h << "<table class=\"compliance\"><tr><th>criterion (EN 13201-2, class " << classNames(r)
       << ")</th><th>computed</th><th>required</th><th>verdict</th></tr>\n";
     for (const RoadCriterion& c : r.criteria) {
       const CriterionText& t = textOf(c.name);
@@ -132,6 +157,12 @@ std::string En13201Section::html() const {
     h << "</table>\n";
     h << "<p>Illuminance on the road: Ē " << fixed(r.averageLux, 2) << " lx, E<sub>min</sub> " << fixed(r.minLux, 2)
       << " lx, E<sub>max</sub> " << fixed(r.maxLux, 2) << " lx over " << r.illuminancePoints.size() << " points.";
+    if (r.roadClass.family == RoadClassFamily::kHS)
+      h << " Hemispherical: Ē<sub>hs</sub> " << fixed(r.averageHemisphericalLux, 2) << " lx, E<sub>hs,min</sub> "
+        << fixed(r.minHemisphericalLux, 2) << " lx.";
+    if (!r.additional.empty())
+      h << " At the same points 1.5 m up, the lesser of the two directions along the road: E<sub>sc,min</sub> "
+        << fixed(r.minSemiCylindricalLux, 2) << " lx, E<sub>v,min</sub> " << fixed(r.minVerticalLux, 2) << " lx.";
     if (r.roadClass.family == RoadClassFamily::kM)
       h << " Edge strips " << fixed(r.stripWidthM, 2) << " m wide: R<sub>EI</sub> near side "
         << fixed(r.edgeRatioNearSide, 2) << ", far side " << fixed(r.edgeRatioFarSide, 2) << ".";
@@ -212,7 +243,7 @@ std::string en13201PlanSvg(const RoadResult& r, const std::vector<En13201Report:
   }
   const char* colour = r.verdict == Verdict::kPass ? "#1e7b34" : "#b3261e";
   s << "<text x=\"" << X(0.0) << "\" y=\"" << svgNumber((v1 - r.widthM) * scale - 6) << "\" fill=\"" << colour
-    << "\" font-weight=\"700\">" << xmlEscape(r.name) << " " << r.roadClass.name() << " " << verdictName(r.verdict)
+    << "\" font-weight=\"700\">" << xmlEscape(r.name) << " " << classNames(r) << " " << verdictName(r.verdict)
     << "</text>\n</svg>";
   return s.str();
 }

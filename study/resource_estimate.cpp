@@ -430,12 +430,15 @@ ResourceEstimate estimateGridStudy(const CaseFile& c, const std::vector<std::siz
   // EN 12464-2's glare ratings and EN 13201's road points: a sight line to each luminaire (the
   // point law, a shadow ray each) per view of each GR observer and per road point (EN 13201-3's
   // luminance and illuminance rows at ≤ 3 m, at least 10; 3 a lane and ≥ 3 across at ≤ 1.5 m; the
-  // edge strips' 2 and each lane's observer), no interreflection.
+  // edge strips' 2 and each lane's observer; the illuminance row again for HS classes and for
+  // the additional classes' 1.5 m points), no interreflection.
   double sightLines = 0.0;
   for (const GrObserverSpec& o : c.outdoor.observers) sightLines += o.direction ? 1.0 : std::ceil(360.0 / o.stepDeg);
   for (const RoadSpec& r : c.roadLighting.roads) {
     const double along = std::max(10.0, std::ceil(r.lengthM / 3.0));
-    sightLines += along * (3.0 * r.lanes + std::max(3.0, std::ceil(r.widthM / 1.5)) + 2.0 + r.lanes);
+    const double across = std::max(3.0, std::ceil(r.widthM / 1.5));
+    const double extraRows = (r.roadClass.family == RoadClassFamily::kHS) + !r.additional.empty();
+    sightLines += along * (3.0 * r.lanes + across * (1.0 + extraRows) + 2.0 + r.lanes);
   }
   if (sightLines > 0.0)
     e.work.push_back({"glare ratings and roads", sightLines * static_cast<double>(scene.luminaires.size())});

@@ -2,6 +2,7 @@
 
 #include "base/units.h"
 #include "engine/accelerator.h"
+#include "engine/response.h"
 #include "reports/en13201_report.h"
 #include "study/case/case_scene.h"
 
@@ -66,6 +67,50 @@ double RoadLight::illuminanceLux(const Vec2& p) const {
     if (i > 0.0) e += i * (h / d) / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
   }
   return e;
+}
+
+double RoadLight::hemisphericalLux(const Vec2& p) const {
+  // E_hs = Σ I w(s) / d², w = (1 + cos ε)/4 the hemispherical response (engine/response.h).
+  const Response hemisphere{Quantity::kHemispherical, Vec3(0.0, 0.0, 1.0), Vec3(1.0, 0.0, 0.0)};
+  const Vec3 point(p, 0.0);
+  double e = 0.0;
+  for (std::size_t k = 0; k < scene_.luminaires.size(); ++k) {
+    const LuminaireSource& l = scene_.luminaires[k];
+    const Vec3 v = l.position - point;  // point → luminaire
+    const double d2 = glm::dot(v, v);
+    if (!(d2 > 0.0)) continue;
+    const Vec3 s = v / std::sqrt(d2);
+    const double w = hemisphere.weight(s);
+    const double i = l.intensityCd(-s) * maintenance_[k];
+    if (w > 0.0 && i > 0.0) e += i * w / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
+  }
+  return e;
+}
+
+std::array<RoadLight::Facing, 2> RoadLight::facingLux(const Vec2& p, const Vec2& along) const {
+  // The semi-cylindrical response sin ε (1 + cos α)/π and the vertical plane's max(0, n·s), facing
+  // `along` and its opposite (engine/response.h).
+  const Vec3 up(0.0, 0.0, 1.0);
+  const std::array<Response, 2> half = {Response{Quantity::kSemiCylindrical, up, Vec3(along, 0.0)},
+                                        Response{Quantity::kSemiCylindrical, up, Vec3(-along, 0.0)}};
+  const std::array<Response, 2> plane = {Response::planar(Vec3(along, 0.0)), Response::planar(Vec3(-along, 0.0))};
+  const Vec3 point(p, kFacialHeightM);
+  std::array<Facing, 2> out{};
+  for (std::size_t k = 0; k < scene_.luminaires.size(); ++k) {
+    const LuminaireSource& l = scene_.luminaires[k];
+    const Vec3 v = l.position - point;  // point → luminaire
+    const double d2 = glm::dot(v, v);
+    if (!(d2 > 0.0)) continue;
+    const Vec3 s = v / std::sqrt(d2);
+    const double i = l.intensityCd(-s) * maintenance_[k];
+    if (!(i > 0.0)) continue;
+    const double seen = visibility(point, k);
+    for (std::size_t side = 0; side < 2; ++side) {
+      out[side].semiCylindrical += i * half[side].weight(s) / d2 * seen;
+      out[side].vertical += i * plane[side].weight(s) / d2 * seen;
+    }
+  }
+  return out;
 }
 
 RoadLight::Luminance RoadLight::luminanceCdM2(const Vec2& p, const Vec3& eye, const RTable& table, double q0) const {
@@ -190,6 +235,23 @@ RoadResult computeRoad(const RoadSpec& road, const RoadLight& light) {
   r.minLux = e.min;
   r.maxLux = e.max;
   r.illuminanceUniformity = ratioOr0(e.min, e.average);
+  if (road.roadClass.family == RoadClassFamily::kHS) {
+    for (const Vec2& p : r.illuminancePoints) r.hemisphericalLux.push_back(light.hemisphericalLux(p));
+    const RoadStats hs = roadStats(r.hemisphericalLux);
+    r.averageHemisphericalLux = hs.average;
+    r.minHemisphericalLux = hs.min;
+    r.hemisphericalUniformity = ratioOr0(hs.min, hs.average);
+  }
+  r.additional = road.additional;
+  if (!r.additional.empty()) {
+    for (const Vec2& p : r.illuminancePoints) {
+      const std::array<RoadLight::Facing, 2> f = light.facingLux(p, g.along);
+      r.semiCylindricalLux.push_back(std::min(f[0].semiCylindrical, f[1].semiCylindrical));
+      r.verticalLux.push_back(std::min(f[0].vertical, f[1].vertical));
+    }
+    r.minSemiCylindricalLux = roadStats(r.semiCylindricalLux).min;
+    r.minVerticalLux = roadStats(r.verticalLux).min;
+  }
   if (road.roadClass.family == RoadClassFamily::kM) {
     r.luminancePoints = g.points(g.luminanceAcrossM);
     for (int lane = 0; lane < road.lanes; ++lane) r.observers.push_back(observe(road, g, light, lane));

@@ -17,6 +17,7 @@
 #include "study/case/case_file.h"
 #include "study/compliance/en13201_grids.h"
 
+#include <array>
 #include <vector>
 
 namespace candela {
@@ -42,6 +43,14 @@ class RoadLight {
   // Veiling luminance at `eye` looking along the plan direction `along`, 1° down, from the
   // luminaires up to 500 m ahead and not above the 20° screening plane, initial values, cd/m².
   double veilingLuminanceCdM2(const Vec3& eye, const Vec2& along) const;
+  // Hemispherical illuminance at plan point p of the road (z = 0), maintained, lx.
+  double hemisphericalLux(const Vec2& p) const;
+  // Semi-cylindrical and vertical illuminance at plan point p, 1.5 m above the road, facing the
+  // plan direction `along` ([0]) and its opposite ([1]): maintained, lx.
+  struct Facing {
+    double semiCylindrical = 0.0, vertical = 0.0;
+  };
+  std::array<Facing, 2> facingLux(const Vec2& p, const Vec2& along) const;
   // Mean height of the luminaires above the road (z), m; 0 without luminaires.
   double meanMountingHeightM() const;
 

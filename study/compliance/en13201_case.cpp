@@ -40,8 +40,20 @@ void readRoad(const Context& c, const toml::table& t, int index, std::set<std::s
   const toml::node& cn = tab.require("class");
   const std::string cls = asString(c, cn, "class");
   const std::optional<RoadClass> rc = parseRoadClass(cls);
-  if (!rc) c.fail(cn, "unknown road lighting class '" + cls + "' (EN 13201-2: M1..M6, C0..C5 or P1..P6)");
+  if (!rc) c.fail(cn, "unknown road lighting class '" + cls + "' (EN 13201-2: M1..M6, C0..C5, P1..P6 or HS1..HS3)");
   r.roadClass = *rc;
+  if (const toml::node* n = tab.get("additional_classes")) {
+    const toml::array* a = n->as_array();
+    if (!a) c.fail(*n, "'additional_classes' must be an array of class names such as [\"SC3\", \"EV4\"]");
+    for (const toml::node& e : *a) {
+      const std::string name = asString(c, e, "additional_classes");
+      const std::optional<AdditionalRoadClass> ac = parseAdditionalRoadClass(name);
+      if (!ac) c.fail(e, "unknown additional class '" + name + "' (EN 13201-2: SC1..SC9 or EV1..EV6)");
+      for (const AdditionalRoadClass& have : r.additional)
+        if (have.kind == ac->kind) c.fail(e, "two additional classes of one kind: " + have.name() + " and " + ac->name());
+      r.additional.push_back(*ac);
+    }
+  }
   if (const toml::node* n = tab.get("surface")) {
     r.surface = asString(c, *n, "surface");
     std::transform(r.surface.begin(), r.surface.end(), r.surface.begin(),

@@ -23,6 +23,7 @@ struct RoadSpec {
   double lengthM = 0.0, widthM = 0.0;
   int lanes = 1;
   RoadClass roadClass;
+  std::vector<AdditionalRoadClass> additional;  // `additional_classes`: at most one SC and one EV
   std::string surface = "R3";  // an r-table metrics/en13201.h has
   double q0 = 0.0;             // sr⁻¹; the table's own when not given
   FileLoc loc;

@@ -14,6 +14,49 @@ TEST(En13201, ClassesParse) {
   for (const char* ok : {"M1", "M6", "m3", "C0", "C5", "P1", "p6"}) EXPECT_TRUE(parseRoadClass(ok)) << ok;
   for (const char* bad : {"M0", "M7", "C6", "P0", "P7", "ME3", "X1", "M", ""}) EXPECT_FALSE(parseRoadClass(bad)) << bad;
   EXPECT_EQ(parseRoadClass("c2")->name(), "C2");
+  for (const char* ok : {"HS1", "hs3"}) EXPECT_EQ(parseRoadClass(ok)->family, RoadClassFamily::kHS) << ok;
+  for (const char* bad : {"HS0", "HS4", "HSX", "H1", "SC3"}) EXPECT_FALSE(parseRoadClass(bad)) << bad;
+  EXPECT_EQ(parseRoadClass("hs2")->name(), "HS2");
+  for (const char* ok : {"SC1", "sc9", "EV1", "ev6"}) EXPECT_TRUE(parseAdditionalRoadClass(ok)) << ok;
+  for (const char* bad : {"SC0", "SC10", "EV7", "EV0", "ES3", "S1", "P3"}) EXPECT_FALSE(parseAdditionalRoadClass(bad)) << bad;
+  EXPECT_EQ(parseAdditionalRoadClass("ev4")->name(), "EV4");
+}
+
+// An HS2 road with SC5 and EV6 exactly at their limits (Ē_hs 2.50 lx, uniformity 0.15; E_sc,min
+// 2.0 lx; E_v,min 0.5 lx): each criterion passes at its limit and fails just below it.
+TEST(En13201, HsAndAdditionalClassesFlipAtTheirLimits) {
+  auto atLimits = [] {
+    RoadResult r;
+    r.roadClass = *parseRoadClass("HS2");
+    r.additional = {*parseAdditionalRoadClass("SC5"), *parseAdditionalRoadClass("EV6")};
+    r.averageHemisphericalLux = 2.50;
+    r.hemisphericalUniformity = 0.15;
+    r.minSemiCylindricalLux = 2.0;
+    r.minVerticalLux = 0.5;
+    return r;
+  };
+  RoadResult r = atLimits();
+  judgeRoad(r);
+  EXPECT_EQ(r.verdict, Verdict::kPass);
+  ASSERT_EQ(r.criteria.size(), 4u);
+  EXPECT_EQ(r.criteria[2].name, "minimum_semi_cylindrical_illuminance_lux");
+  EXPECT_DOUBLE_EQ(r.criteria[3].required, 0.5);
+  auto failsWith = [&](auto change) {
+    RoadResult x = atLimits();
+    change(x);
+    judgeRoad(x);
+    return x.verdict == Verdict::kFail;
+  };
+  EXPECT_TRUE(failsWith([](RoadResult& x) { x.averageHemisphericalLux = 2.499; }));
+  EXPECT_TRUE(failsWith([](RoadResult& x) { x.hemisphericalUniformity = 0.1499; }));
+  EXPECT_TRUE(failsWith([](RoadResult& x) { x.minSemiCylindricalLux = 1.999; }));
+  EXPECT_TRUE(failsWith([](RoadResult& x) { x.minVerticalLux = 0.499; }));
+  // The tables' ends: HS1 5 lx, HS3 1 lx; SC1 10 lx, SC9 0.5 lx; EV1 50 lx, EV6 0.5 lx.
+  EXPECT_DOUBLE_EQ(hsClassRequirement(1).averageLux, 5.0);
+  EXPECT_DOUBLE_EQ(hsClassRequirement(3).averageLux, 1.0);
+  EXPECT_DOUBLE_EQ(additionalClassMinimumLux(*parseAdditionalRoadClass("SC1")), 10.0);
+  EXPECT_DOUBLE_EQ(additionalClassMinimumLux(*parseAdditionalRoadClass("SC9")), 0.5);
+  EXPECT_DOUBLE_EQ(additionalClassMinimumLux(*parseAdditionalRoadClass("EV1")), 50.0);
 }
 
 // An M4 road exactly at every limit of EN 13201-2 Table 1 (0.75 cd/m², U0 0.40, Ul 0.60, TI 15 %,

@@ -177,6 +177,119 @@ TEST(En13201Study, LuminanceFromTheRTableAtItsNodes) {
   EXPECT_EQ(light.luminanceCdM2(Vec2(-75.0, 3.0), Vec3(-100.0, 3.0, 1.5), r3, q0).maintained, 0.0);
 }
 
+// The hemispherical and semi-cylindrical illuminances against an independent quadrature of their
+// definitions (the flux on a small hemisphere's / half-cylinder's curved surface over its area):
+// E_hs = (1/2π) ∫ E_n max(0, n·s) dΩ over the upper hemisphere, E_sc = (1/π) ∫ E_n max(0, n(φ)·s) dφ
+// over the half-cylinder's face, E_n = I/d² the illuminance normal to the light. The vertical
+// illuminance against I (n·s)/d². The midpoint rule's error, for integrands of unit size with second
+// derivatives at most 1 and one kink of slope jump at most 2 (the terminator), is at most
+// h²(1/4 + (b−a)/24) over an interval of length b − a in steps h, and below (Δθ + Δφ)² for the
+// hemisphere's two-dimensional rule: those bounds, times E_n, are the tolerances.
+TEST(En13201Study, HemisphericalAndSemiCylindricalAgainstQuadrature) {
+  const fs::path dir = test_support::scratchDir("en13201", "hemispherical");
+  const std::vector<Vec3> sources = {{12.0, -0.5, 6.0}};
+  const CaseFile c = writeCase(dir, road(), sources);
+  std::vector<double> factors;
+  const std::unique_ptr<Scene> scene = sceneOf(c, factors);
+  const RoadLight light(*scene, nullptr, factors);
+  const Vec2 along(1.0, 0.0);
+  auto hemisphere = [](const Vec3& s, int n) {  // (1/2π) ∫ max(0, n·s) dΩ, s unit
+    double sum = 0.0;
+    const double dt = 0.5 * kPi / n, dp = 2.0 * kPi / (4 * n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < 4 * n; ++j) {
+        const double t = (i + 0.5) * dt, p = (j + 0.5) * dp;
+        const Vec3 nrm(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+        sum += std::max(0.0, glm::dot(nrm, s)) * std::sin(t) * dt * dp;
+      }
+    return sum / (2.0 * kPi);
+  };
+  auto halfCylinder = [](const Vec3& s, const Vec2& facing, int n) {  // (1/π) ∫ max(0, n(φ)·s) dφ
+    const Vec2 side(-facing.y, facing.x);
+    double sum = 0.0;
+    const double dp = kPi / n;
+    for (int j = 0; j < n; ++j) {
+      const double p = -0.5 * kPi + (j + 0.5) * dp;
+      const Vec3 nrm(facing * std::cos(p) + side * std::sin(p), 0.0);
+      sum += std::max(0.0, glm::dot(nrm, s)) * dp;
+    }
+    return sum / kPi;
+  };
+  for (const Vec2 p : {Vec2(3.0, 1.0), Vec2(12.0, 3.5), Vec2(20.0, 6.3), Vec2(12.0, -0.5)}) {
+    // On the road: hemispherical.
+    const Vec3 toSource = sources[0] - Vec3(p, 0.0);
+    const double d2 = glm::dot(toSource, toSource);
+    const Vec3 s = toSource / std::sqrt(d2);
+    const int n = 400;
+    const double step = 0.5 * kPi / n;  // Δθ = Δφ
+    EXPECT_NEAR(light.hemisphericalLux(p), kIntensityCd / d2 * hemisphere(s, n), kIntensityCd / d2 * 4.0 * step * step)
+        << p.x << ", " << p.y;
+    // 1.5 m up: semi-cylindrical and vertical, facing +x and −x.
+    const Vec3 up = sources[0] - Vec3(p, kFacialHeightM);
+    const double u2 = glm::dot(up, up);
+    const Vec3 su = up / std::sqrt(u2);
+    const std::array<RoadLight::Facing, 2> f = light.facingLux(p, along);
+    for (int side = 0; side < 2; ++side) {
+      const Vec2 facing = side == 0 ? along : -along;
+      const int n = 4000;
+      const double h = kPi / n, bound = h * h * (0.25 + kPi / 24.0) / kPi;
+      EXPECT_NEAR(f[side].semiCylindrical, kIntensityCd / u2 * halfCylinder(su, facing, n), kIntensityCd / u2 * bound)
+          << p.x << ", " << p.y << " side " << side;
+      const double ev = kIntensityCd / u2 * std::max(0.0, glm::dot(Vec3(facing, 0.0), su));
+      EXPECT_NEAR(f[side].vertical, ev, 1e-12 * (ev + 1.0)) << p.x << ", " << p.y << " side " << side;
+    }
+  }
+  // Straight under the luminaire (at 1.5 m): no light on vertical faces; on the road E_hs = E_h/2.
+  EXPECT_EQ(light.facingLux(Vec2(12.0, -0.5), along)[0].semiCylindrical, 0.0);
+  EXPECT_NEAR(light.hemisphericalLux(Vec2(12.0, -0.5)), 0.5 * light.illuminanceLux(Vec2(12.0, -0.5)), 1e-12);
+}
+
+// An HS2 footway with additional classes SC5 and EV6: its figures are the closed forms' at the
+// illuminance grid (E_hs = I (1 + cos ε)/4d², E_sc = I sin ε (1 + cos α)/πd² and E_v = I (n·s)/d²,
+// 1.5 m up, the lesser of the two directions along), and the verdicts follow from them.
+TEST(En13201Study, HsClassAndAdditionalClassesFromTheClosedForms) {
+  const fs::path dir = test_support::scratchDir("en13201", "hs_sc_ev");
+  const std::vector<Vec3> sources = {{0.0, -0.5, 5.0}, {20.0, -0.5, 5.0}};
+  const CaseFile c = writeCase(dir,
+                               "[[road]]\nname = \"footway\"\nstart = [0.0, 0.0]\ndirection = [1.0, 0.0]\nlength = 20.0\n"
+                               "width = 3.0\nclass = \"HS2\"\nadditional_classes = [\"SC5\", \"ev6\"]\n"
+                               "[[compliance]]\nstandard = \"en13201\"\n",
+                               sources);
+  ASSERT_EQ(c.roadLighting.roads.size(), 1u);
+  ASSERT_EQ(c.roadLighting.roads[0].additional.size(), 2u);
+  std::vector<double> factors;
+  const std::unique_ptr<Scene> scene = sceneOf(c, factors);
+  const std::vector<RoadResult> r = computeEn13201(c, *scene, factors);
+  ASSERT_EQ(r.size(), 1u);
+  std::vector<double> hs, sc, ev;
+  for (const Vec2& p : r[0].illuminancePoints) {
+    double h = 0.0, scPlus = 0.0, scMinus = 0.0, evPlus = 0.0, evMinus = 0.0;
+    for (const Vec3& s : sources) {
+      const Vec3 v = s - Vec3(p, 0.0);
+      const double d2 = glm::dot(v, v);
+      h += kIntensityCd * (1.0 + s.z / std::sqrt(d2)) / (4.0 * d2);
+      const Vec3 u = s - Vec3(p, 1.5);
+      const double u2 = glm::dot(u, u), horizontal = std::hypot(u.x, u.y);
+      const double sinE = horizontal / std::sqrt(u2), cosA = u.x / horizontal;
+      scPlus += kIntensityCd * sinE * (1.0 + cosA) / (kPi * u2);
+      scMinus += kIntensityCd * sinE * (1.0 - cosA) / (kPi * u2);
+      evPlus += kIntensityCd * std::max(0.0, u.x) / (u2 * std::sqrt(u2));
+      evMinus += kIntensityCd * std::max(0.0, -u.x) / (u2 * std::sqrt(u2));
+    }
+    hs.push_back(h);
+    sc.push_back(std::min(scPlus, scMinus));
+    ev.push_back(std::min(evPlus, evMinus));
+  }
+  const RoadStats h = roadStats(hs);
+  EXPECT_NEAR(r[0].averageHemisphericalLux, h.average, 1e-12 * h.average);
+  EXPECT_NEAR(r[0].hemisphericalUniformity, h.min / h.average, 1e-12);
+  EXPECT_NEAR(r[0].minSemiCylindricalLux, roadStats(sc).min, 1e-12);
+  EXPECT_NEAR(r[0].minVerticalLux, roadStats(ev).min, 1e-12);
+  ASSERT_EQ(r[0].criteria.size(), 4u);
+  const bool pass = h.average >= 2.5 && h.min / h.average >= 0.15 && roadStats(sc).min >= 2.0 && roadStats(ev).min >= 0.5;
+  EXPECT_EQ(r[0].verdict, pass ? Verdict::kPass : Verdict::kFail);
+}
+
 // One luminaire ahead of the observer: Lv = 10 E/θ², E = I cos θ / d², by hand.
 TEST(En13201Study, VeilingLuminanceOfOneLuminaireByHand) {
   const fs::path dir = test_support::scratchDir("en13201", "veiling");
@@ -324,7 +437,10 @@ TEST(En13201Case, BadInputNamesTheLine) {
     return r.replace(at, end - at, key + " = " + value);
   };
   expectError(bad("class", "\"M7\""), 11, "unknown road lighting class 'M7'");
-  expectError(bad("class", "\"ME3\""), 11, "M1..M6, C0..C5 or P1..P6");
+  expectError(bad("class", "\"ME3\""), 11, "M1..M6, C0..C5, P1..P6 or HS1..HS3");
+  expectError(road("P3", "additional_classes = [\"SC10\"]\n"), 13, "unknown additional class 'SC10' (EN 13201-2: SC1..SC9 or EV1..EV6)");
+  expectError(road("P3", "additional_classes = [\"SC3\", \"sc4\"]\n"), 13, "two additional classes of one kind: SC3 and SC4");
+  expectError(road("P3", "additional_classes = \"SC3\"\n"), 13, "'additional_classes' must be an array");
   expectError(bad("surface", "\"W4\""), 12, "'surface' W4 is no r-table candela has (CIE 144's standard tables: R1, R2, R3, R4, C1, C2");
   expectError(bad("width", "0.0"), 9, "'width'");
   expectError(bad("length", "-30.0"), 8, "'length'");
@@ -359,7 +475,7 @@ TEST(En13201Study, RoadExample) {
   const nlohmann::json j = nlohmann::json::parse(test_support::slurp(request.outDir / "summary.json"));
   const nlohmann::json& e = j["compliance"]["en13201"];
   EXPECT_EQ(e["standard"], "en13201");
-  ASSERT_EQ(e["roads"].size(), 1u);
+  ASSERT_EQ(e["roads"].size(), 2u);
   const nlohmann::json& r = e["roads"][0];
   for (const char* key : {"name", "class", "points", "average_illuminance_lux", "minimum_illuminance_lux",
                           "average_luminance_cd_m2", "overall_uniformity", "longitudinal_uniformity",
@@ -370,7 +486,16 @@ TEST(En13201Study, RoadExample) {
   ASSERT_TRUE(j.contains("roads"));
   EXPECT_EQ(j["roads"], e["roads"]);
   EXPECT_GT(r["average_luminance_cd_m2"].get<double>(), 0.0);
+  // The footway: P1 + SC9, 10 × 3 points 2 m wide, its least semi-cylindrical illuminance judged.
+  const nlohmann::json& f = e["roads"][1];
+  EXPECT_EQ(f["class"], "P1");
+  EXPECT_EQ(f["additional_classes"], nlohmann::json::array({"SC9"}));
+  EXPECT_EQ(f["points"], 10 * 3);
+  EXPECT_TRUE(f.contains("minimum_semi_cylindrical_illuminance_lux"));
+  EXPECT_EQ(f["criteria"].back()["name"], "minimum_semi_cylindrical_illuminance_lux");
+  EXPECT_EQ(f["criteria"].back()["required"], 0.5);
   const std::string html = test_support::slurp(request.outDir / "report.html");
+  EXPECT_NE(html.find("footway: class P1 + SC9"), std::string::npos);
   EXPECT_NE(html.find("EN 13201 road lighting"), std::string::npos);
   EXPECT_NE(html.find("class=\"en13201-plan\""), std::string::npos);
 }
