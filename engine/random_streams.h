@@ -30,6 +30,10 @@ inline constexpr uint64_t kWithoutCacheOffset = uint64_t{1} << 39;
 inline constexpr uint64_t kBatchStride = uint64_t{1} << 40;
 // The grids' target's pilot estimates (engine/sensors.cpp), one a sensor point (index < 2^39).
 inline constexpr Range kGridPilot{uint64_t{1} << 50, uint64_t{1} << 39};
+// The time estimate's pilot estimates of points that see a scattering window
+// (study/resource_estimate.h hemispherePilot), one a pilot point (< 2^39); nothing a run reports
+// draws from them.
+inline constexpr Range kEstimatePilot{uint64_t{1} << 53, uint64_t{1} << 39};
 // A camera pixel's rays (pixel index < 2^32).
 inline constexpr Range kCameraPixels{uint64_t{1} << 48, uint64_t{1} << 32};
 // The observers of a grid study's luminaire glare (study/view_glare.h), one each.
@@ -58,18 +62,19 @@ inline constexpr Range kRecordRadii2{uint64_t{0x58} << 56, uint64_t{1} << 56};
 inline constexpr Range kRecords{uint64_t{0x60} << 56, uint64_t{2} << 56};
 inline constexpr Range kRecords2{uint64_t{0x70} << 56, uint64_t{2} << 56};
 
-inline constexpr std::array<Range, 13> kAll = {kSensorPoints, kGridPilot, kCameraPixels, kObservers,  kAnnualGlare,
-                                               kCameraIrradiance, kSkyPatches, kSuns,   kDirections,
-                                               kRecordRadii,  kRecordRadii2, kRecords, kRecords2};
+inline constexpr std::array<Range, 14> kAll = {kSensorPoints, kGridPilot,    kEstimatePilot, kCameraPixels, kObservers,
+                                               kAnnualGlare,  kCameraIrradiance, kSkyPatches, kSuns,       kDirections,
+                                               kRecordRadii,  kRecordRadii2, kRecords,       kRecords2};
 
-constexpr bool disjoint(const std::array<Range, 13>& all) {
+constexpr bool disjoint(const std::array<Range, 14>& all) {
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j)
       if (all[i].first < all[j].end() && all[j].first < all[i].end()) return false;
   return true;
 }
 static_assert(disjoint(kAll), "two families of random streams overlap");
-static_assert(kSensorPoints.end() <= kTopLevelEnd && kGridPilot.end() <= kTopLevelEnd && kCameraPixels.end() <= kTopLevelEnd &&
+static_assert(kSensorPoints.end() <= kTopLevelEnd && kGridPilot.end() <= kTopLevelEnd &&
+                  kEstimatePilot.end() <= kTopLevelEnd && kCameraPixels.end() <= kTopLevelEnd &&
                   kObservers.end() <= kTopLevelEnd && kAnnualGlare.end() <= kTopLevelEnd &&
                   kCameraIrradiance.end() <= kTopLevelEnd,
               "a top-level stream reaches the derived ones");

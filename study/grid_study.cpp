@@ -310,7 +310,7 @@ RunResult runGridStudy(const CaseFile& asRead, const RunContext& run, StudyObser
   // The time estimate, with the share of the points' hemisphere rays that meet the scene (an open
   // site's leave it: study/resource_estimate.h).
   observer.estimated(estimateGridStudy(c, pointCounts, *scene, trace.settings, trace.threads,
-                                       hemispherePilot(tracer, all)));
+                                       hemispherePilot(tracer, all, &trace.settings, trace.threads)));
   // Warnings on the input, before tracing: a strict run stops here.
   Warnings warnings = pointInTimeWarnings(c, tracer, grids);
   if (std::optional<Warning> w = noEmergencyLuminaireWarning(c)) warnings.push_back(*w);

@@ -58,7 +58,7 @@ PointsResult computePoints(const PointsScene& ps, AcceleratorKind accelerator, c
   const Tracer tracer(*ps.scene, accelerator);
   // The time estimate with the share of hemisphere rays that meet the scene (an open site's leave).
   observer.estimated(estimatePoints(points.size(), where, *ps.scene, ps.trace.settings, ps.trace.threads,
-                                    hemispherePilot(tracer, points)));
+                                    hemispherePilot(tracer, points, &ps.trace.settings, ps.trace.threads)));
   SensorSet set;
   set.name = "points";
   set.points = &points;

@@ -18,6 +18,8 @@
 #include "study/grids/sensor_grid.h"
 #include "study/trace_options.h"
 #include "engine/irradiance_estimator.h"
+#include "base/parallel.h"
+#include "engine/random_streams.h"
 
 #include <algorithm>
 #include <cmath>
@@ -259,7 +261,50 @@ double boundingBoxSurfaceM2(const Scene& scene) {
 }
 }  // namespace
 
-HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points) {
+namespace {
+
+// The goal's relative size: the grids' target where there is one, else the per-point target.
+double pilotTargetRelative(const TraceSettings& s) {
+  return s.gridTargetRelativeError > 0.0 ? s.gridTargetRelativeError : s.targetRelativeError;
+}
+
+// A point whose one path-method batch has more than kPastCacheBatches times the goal's variance
+// is counted past the cache: fitted on the four cases/sidelit-bsdf rooms, where the points past
+// the cache are those (the sum of such points' batches within 15 % of the run's path batches in
+// each room; docs/reliability.md).
+constexpr double kPastCacheBatches = 2.5;
+
+// One path-method estimate at each of up to kScatteringPilotPoints of `chosen` points, in
+// parallel, each from its own pilot stream; the mean over them of the batches each needs for the
+// goal (target × the larger of its value and the pilot's mean with the grids' target, else × its
+// value), counting 0 for a point that stays on the cache (kPastCacheBatches).
+double scatteringPilotBatches(const Tracer& tracer, const std::vector<SensorPoint>& chosen, const TraceSettings& s,
+                              int threads) {
+  TraceSettings path = s;
+  path.method = Method::kPath;
+  path.targetRelativeError = 0.0;
+  path.gridTargetRelativeError = 0.0;
+  std::vector<IrradianceEstimate> est(chosen.size());
+  parallelFor(chosen.size(), threads, [&](std::size_t k) {
+    est[k] = estimateIrradiance(tracer, chosen[k].position, chosen[k].response(), streams::kEstimatePilot.first + k, path);
+  });
+  double mean = 0.0;
+  for (const IrradianceEstimate& e : est) mean += photopic(e.irradiance) / static_cast<double>(est.size());
+  const double relative = pilotTargetRelative(s);
+  double batches = 0.0;
+  for (const IrradianceEstimate& e : est) {
+    const double value = photopic(e.irradiance);
+    const double goal = relative * (s.gridTargetRelativeError > 0.0 ? std::max(value, mean) : value);
+    const double b = goal > 0.0 ? e.variancePhotopic / (goal * goal) : 1.0;
+    if (b > kPastCacheBatches) batches += std::min(b, static_cast<double>(std::max(1, s.maxBatches)));
+  }
+  return batches / static_cast<double>(est.size());
+}
+
+}  // namespace
+
+HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                const TraceSettings* settings, int threads) {
   constexpr std::size_t kPoints = 64;
   constexpr int kDirections = 32;
   constexpr double kGoldenFraction = 0.38196601125010515;  // 2 − φ: the golden angle over 2π
@@ -269,6 +314,7 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
   if (points.empty()) return pilot;
   const std::size_t step = std::max<std::size_t>(1, points.size() / kPoints);
   int hits = 0, rays = 0, pilots = 0, scattering = 0;
+  std::vector<SensorPoint> seeing;  // the pilot's points that see a scattering surface
   for (std::size_t i = 0; i < points.size(); i += step) {
     const SensorPoint& sp = points[i];
     const Frame f = Frame::fromNormal(sp.normal);
@@ -288,9 +334,18 @@ HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPo
     }
     ++pilots;
     scattering += seesScattering ? 1 : 0;
+    if (seesScattering) seeing.push_back(sp);
   }
   pilot.hitFraction = static_cast<double>(hits) / rays;
   pilot.scatteringPoints = static_cast<double>(scattering) / pilots;
+  if (settings && settings->method == Method::kCache && settings->maxBounces > 0 && pilotTargetRelative(*settings) > 0.0 &&
+      !seeing.empty()) {
+    // Spread over those points: every k-th.
+    std::vector<SensorPoint> chosen;
+    const std::size_t every = std::max<std::size_t>(1, seeing.size() / kScatteringPilotPoints);
+    for (std::size_t i = 0; i < seeing.size() && chosen.size() < kScatteringPilotPoints; i += every) chosen.push_back(seeing[i]);
+    pilot.scatteringBatches = scatteringPilotBatches(tracer, chosen, *settings, threads);
+  }
   return pilot;
 }
 
@@ -299,8 +354,9 @@ double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled,
   if (s.method != Method::kCache || s.maxBounces <= 0 || s.targetRelativeError <= 0.0) return 0.0;
   TraceSettings path = s;
   path.method = Method::kPath;
-  // Half the batches the settings allow (sampleToTarget's cap): measured on cases/sidelit-bsdf.
-  return points * std::max(1.0, 0.5 * s.maxBatches) *
+  // The batches the pilot measured, else half those the settings allow (sampleToTarget's cap).
+  const double batches = pilot.scatteringBatches >= 0.0 ? pilot.scatteringBatches : std::max(1.0, 0.5 * s.maxBatches);
+  return points * batches *
          raysPerSensor(path, sampled, luminaires, pilot.hitFraction, pilot.skyRaysPerVertex);
 }
 

@@ -111,7 +111,10 @@ double cacheRecordRays(const TraceSettings& s, double points, double boxSurfaceM
 
 // What a pilot of the points' hemisphere rays tells the estimate, once the tracer is built: 32
 // fixed cosine-distributed directions from each of at most 64 points spread over the list (2 048
-// rays, about a millisecond; no random stream drawn, so a run's numbers do not depend on it).
+// rays, about a millisecond; no random stream of the run drawn, so a run's numbers do not depend
+// on it). With settings of the cache method and a target error, and points that see a
+// scattering window, also one path-method estimate at up to kScatteringPilotPoints of those
+// points (their own streams, streams::kEstimatePilot): the batches such points need.
 struct HemispherePilot {
   // The share of the rays that meet a surface (1 for no points). An open site (a car park's
   // ground under its poles) sends most rays out of the scene.
@@ -123,13 +126,20 @@ struct HemispherePilot {
   double scatteringPoints = 0.0;
   // skyRaysPerVertex of the scene with the tracer's portals.
   double skyRaysPerVertex = 0.0;
+  // The mean over the pilot's scattering points of the path-method batches each needs past the
+  // cache (its one-batch variance over the goal's square, at most the cap; 0 for a point that
+  // stays on the cache); negative when not measured (pastCacheRays then takes half the cap).
+  double scatteringBatches = -1.0;
 };
-HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points);
+inline constexpr std::size_t kScatteringPilotPoints = 8;
+// `threads` as the run's (0: all cores) for the path-method estimates.
+HemispherePilot hemispherePilot(const Tracer& tracer, const std::vector<SensorPoint>& points,
+                                const TraceSettings* settings = nullptr, int threads = 0);
 
 // The rays of `points` points estimated again by the path method after the cache (the points
-// that see a scattering surface, HemispherePilot): each the path method's rays for half the
-// batches the settings allow (sampleToTarget's cap; the estimate is 0.7–4 × the run on the four
-// cases/sidelit-bsdf rooms, docs/reliability.md). 0 unless the cache method has a target error.
+// that see a scattering surface, HemispherePilot): each the path method's rays for the batches
+// the pilot measured (HemispherePilot::scatteringBatches), else half the batches the settings
+// allow (sampleToTarget's cap). 0 unless the cache method has a target error.
 double pastCacheRays(const TraceSettings& s, double points, std::size_t sampled, std::size_t luminaires,
                      const HemispherePilot& pilot);
 

@@ -286,8 +286,9 @@ TEST(ResourceEstimate, ASkyAddsItsShadowRaysAtEveryVertex) {
   EXPECT_DOUBLE_EQ(raysPerSensor(path, 1, 0, 1.0, 2.0) - raysPerSensor(path, 1, 0, 1.0, 0.0), 100.0 * 2.0 * (1 + 4));
 }
 
-// Points that see a BSDF window (a scattering surface) are counted past the cache; the rays of
-// each are the path method's for half the settings' batches, none without the cache or a target.
+// Points that see a BSDF window (a scattering surface) are counted past the cache; without the
+// pilot's measurement (below) the rays of each are the path method's for half the settings'
+// batches, none without the cache or a target.
 TEST(ResourceEstimate, PointsThatSeeABsdfWindowAreCountedPastTheCache) {
   const fs::path dir = test_support::scratchDir("resource_estimate", "bsdf_pilot");
   std::ofstream(dir / "w.xml") << test_support::bsdfXml(
@@ -318,6 +319,54 @@ TEST(ResourceEstimate, PointsThatSeeABsdfWindowAreCountedPastTheCache) {
   TraceSettings oneBatch = s;
   oneBatch.targetRelativeError = 0.0;
   EXPECT_EQ(pastCacheRays(oneBatch, 40.0, 2, 3, pilot), 0.0);
+}
+
+// With the run's settings the pilot also measures the batches of the points that see the window:
+// one path-method batch at up to 8 of them (their own streams). The same for any thread count;
+// inversely proportional to the target's square while every point needs more than 2.5 batches
+// and fewer than the cap (the same estimates, the goal halved: exactly 4 times the batches); 0
+// when every point's one batch meets 1/2.5 of the goal's variance (they stay on the cache); and
+// the rays past the cache follow it.
+TEST(ResourceEstimate, PilotMeasuresTheBatchesOfPointsThatSeeTheWindow) {
+  const fs::path dir = test_support::scratchDir("resource_estimate", "bsdf_pilot_batches");
+  std::ofstream(dir / "w.xml") << test_support::bsdfXml(
+      {{"Transmission Front", std::vector<double>(145 * 145, 0.5 / kPi)}});
+  Scene sc = test_support::readSceneText(dir,
+                                         "void BSDF win 6 0 w.xml 0 1 0 . 0 0\n"
+                                         "void plastic white 0 0 5 .5 .5 .5 0 0\n"
+                                         "win polygon pane 0 0 12 -1e3 -1e3 1 -1e3 1e3 1 -1e-3 1e3 1 -1e-3 -1e3 1\n"
+                                         "white polygon roof 0 0 12 0 -1e3 1 0 1e3 1 1e3 1e3 1 1e3 -1e3 1\n"
+                                         "void plastic black 0 0 5 0 0 0 0 0\n"
+                                         "black polygon shade 0 0 12 -51 -1e3 2 -51 1e3 2 -49 1e3 2 -49 -1e3 2\n",
+                                         false);
+  // The sky seen through the pane, partly hidden by a black strip above it: the window's
+  // continuations differ, so one batch has a variance.
+  test_support::addUniformSky(sc);
+  const Tracer tracer(sc);
+  std::vector<SensorPoint> ps;
+  for (int i = 0; i < 100; ++i) ps.push_back(SensorPoint{Vec3(i < 40 ? -50.0 : 50.0, 0.1 * i, 0.0), Vec3(0, 0, 1)});
+  TraceSettings s;
+  s.method = Method::kCache;
+  s.maxBounces = 2;
+  s.hemisphereSamples = 64;
+  s.maxBatches = 1 << 30;
+  s.targetRelativeError = 1e-4;
+  const HemispherePilot one = hemispherePilot(tracer, ps, &s, 1), two = hemispherePilot(tracer, ps, &s, 2);
+  ASSERT_GT(one.scatteringBatches, 2.5);
+  EXPECT_EQ(one.scatteringBatches, two.scatteringBatches);
+  TraceSettings half = s;
+  half.targetRelativeError = 0.5e-4;
+  EXPECT_NEAR(hemispherePilot(tracer, ps, &half, 2).scatteringBatches, 4.0 * one.scatteringBatches,
+              1e-9 * one.scatteringBatches);
+  TraceSettings loose = s;
+  loose.targetRelativeError = 10.0;  // a 1000 % goal: every point's one batch meets it
+  EXPECT_EQ(hemispherePilot(tracer, ps, &loose, 2).scatteringBatches, 0.0);
+  TraceSettings path = s;
+  path.method = Method::kPath;
+  const double rays = raysPerSensor(path, 2, 3, one.hitFraction, one.skyRaysPerVertex);
+  EXPECT_NEAR(pastCacheRays(s, 40.0, 2, 3, one), 40.0 * one.scatteringBatches * rays, 1e-9 * 40.0 * one.scatteringBatches * rays);
+  // Without the settings nothing is measured: half the cap.
+  EXPECT_LT(hemispherePilot(tracer, ps).scatteringBatches, 0.0);
 }
 
 // The cache's records beyond the lookups' share: a room's worth (60 per m² of the box at
