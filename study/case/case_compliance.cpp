@@ -109,11 +109,8 @@ void readEn17037(Table& tab, ComplianceSpec& s) {
     s.viewLoc = c.at(*n);
   }
   if (const toml::node* n = keyOf(tab, "glare_views", s, en)) {
-    const toml::array& a = asArray(c, *n, "glare_views", 0, "an array of { position = [x, y, z], direction = [dx, dy, dz] }");
-    if (a.empty()) c.fail(*n, "'glare_views' needs at least one view");
-    for (const toml::node& v : a) {
-      const toml::table* t = v.as_table();
-      if (!t) c.fail(v, "each of 'glare_views' must be { position = [x, y, z], direction = [dx, dy, dz] }");
+    for (const toml::table* t : asTableList(c, *n, "glare_views", "{ position = [x, y, z], direction = [dx, dy, dz] }")) {
+      const toml::node& v = *t;
       Table vt(*t, c, "a glare view");
       GlareViewSpec g;
       g.loc = c.at(v);

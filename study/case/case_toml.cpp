@@ -71,6 +71,19 @@ const toml::array& asArray(const Context& c, const toml::node& n, std::string_vi
   return *a;
 }
 
+std::vector<const toml::table*> asTableList(const Context& c, const toml::node& n, std::string_view key,
+                                            const char* shape) {
+  const toml::array& a = asArray(c, n, key, 0, ("an array of " + std::string(shape)).c_str());
+  if (a.empty()) c.fail(n, keyText(key) + " needs at least one entry " + shape);
+  std::vector<const toml::table*> out;
+  for (const toml::node& e : a) {
+    const toml::table* t = e.as_table();
+    if (!t) c.fail(e, "each of " + keyText(key) + " must be " + shape);
+    out.push_back(t);
+  }
+  return out;
+}
+
 Vec3 asVec3(const Context& c, const toml::node& n, std::string_view key) {
   const toml::array& a = asArray(c, n, key, 3, "an array of 3 numbers [x, y, z]");
   return Vec3(asNumber(c, a[0], key), asNumber(c, a[1], key), asNumber(c, a[2], key));

@@ -72,6 +72,10 @@ bool asBool(const Context& c, const toml::node& n, std::string_view key);
 // An array of `size` elements (0: any), else an error saying it must be `what`.
 const toml::array& asArray(const Context& c, const toml::node& n, std::string_view key, std::size_t size,
                            const char* what);
+// A non-empty array of inline tables, each of the form `shape` ("{ position = [x, y, z], ... }"):
+// an error at the key when it is no array or empty, at the element when one is no table.
+std::vector<const toml::table*> asTableList(const Context& c, const toml::node& n, std::string_view key,
+                                            const char* shape);
 Vec3 asVec3(const Context& c, const toml::node& n, std::string_view key);
 Vec2 asVec2(const Context& c, const toml::node& n, std::string_view key, const char* what = "an array of 2 numbers");
 Vec3 asDirection(const Context& c, const toml::node& n, std::string_view key);  // unit, not zero

@@ -9,14 +9,12 @@ namespace {
 // `states = [{ name, scene }, ...]` and the rule's keys `schedule` and `sun_grid`.
 void readWindowStates(const Context& c, Table& tab, WindowGroupSpec& g) {
   if (const toml::node* n = tab.get("states")) {
-    const toml::array& states = asArray(c, *n, "states", 0, "an array of tables { name = \"...\", scene = \"file.rad\" }");
-    if (states.empty()) c.fail(*n, "'states' must hold at least one state");
+    const std::vector<const toml::table*> states = asTableList(c, *n, "states", "{ name = \"...\", scene = \"file.rad\" }");
     if (states.size() > kMaxWindowStates)
       c.fail(*n, "'states' holds " + std::to_string(states.size()) + " states; at most " +
                      std::to_string(kMaxWindowStates));
-    for (const toml::node& e : states) {
-      const toml::table* t = e.as_table();
-      if (!t) c.fail(e, "'states' must be an array of tables { name = \"...\", scene = \"file.rad\" }");
+    for (const toml::table* t : states) {
+      const toml::node& e = *t;
       Table st(*t, c, "a state of window group '" + g.name + "'");
       WindowGroupSpec::State s;
       s.loc = c.at(e);

@@ -236,12 +236,8 @@ void readObtrusiveLight(Table& tab, ComplianceSpec& s) {
   if (const toml::node* n = tab.get("property_points")) {
     if (!o.any()) c.fail(*n, "'property_points' need the limits they are judged against: 'environmental_zone' or "
                              "'obtrusive_limits'");
-    const toml::array& a = asArray(c, *n, "property_points", 0,
-                                   "an array of { name, position = [x, y, z], normal = [nx, ny, nz] }");
-    if (a.empty()) c.fail(*n, "'property_points' needs at least one point");
-    for (const toml::node& p : a) {
-      const toml::table* t = p.as_table();
-      if (!t) c.fail(p, "each of 'property_points' must be { name, position = [x, y, z], normal = [nx, ny, nz] }");
+    for (const toml::table* t : asTableList(c, *n, "property_points", "{ name, position = [x, y, z], normal = [nx, ny, nz] }")) {
+      const toml::node& p = *t;
       Table pt(*t, c, "a property point");
       PropertyPointSpec q;
       q.loc = c.at(p);

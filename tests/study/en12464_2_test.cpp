@@ -425,6 +425,12 @@ TEST(En12464_2Case, BadInputNamesTheLine) {
               10, "need the limits");
   expectError(area + kCompliance + "environmental_zone = \"E3\"\nproperty_points = [{ position = [0.0, 20.0, 2.0] }]\n",
               11, "normal");
+  // The list's form (asTableList, shared with glare_views and window states): empty, or an entry
+  // that is no table, each at its line.
+  expectError(area + kCompliance + "environmental_zone = \"E3\"\nproperty_points = []\n", 11,
+              "'property_points' needs at least one entry { name, position");
+  expectError(area + kCompliance + "environmental_zone = \"E3\"\nproperty_points = [\n  [0.0, 20.0, 2.0]\n]\n", 12,
+              "each of 'property_points' must be { name, position");
   expectError("[[compliance]]\nstandard = \"en1838\"\nenvironmental_zone = \"E3\"\n", 5,
               "'environmental_zone' belongs to standard = \"en12464-2\"");
 }

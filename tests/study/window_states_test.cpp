@@ -69,7 +69,7 @@ TEST(WindowStateCase, ReadsTheStates) {
 
 TEST(WindowStateCase, ErrorsNameTheirLine) {
   const std::string g = "[[window_group]]\nname = \"s\"\n";
-  EXPECT_NE(parseError(kAnnual + g + "states = []\n").find("12: 'states' must hold at least one state"),
+  EXPECT_NE(parseError(kAnnual + g + "states = []\n").find("12: 'states' needs at least one entry { name"),
             std::string::npos);
   EXPECT_NE(parseError(kAnnual + g + "states = [{ name = \"a\", scene = \"nowhere.rad\" }]\n")
                 .find("12: state scene file 'nowhere.rad' not found"),
