@@ -259,9 +259,6 @@ double boundingBoxSurfaceM2(const Scene& scene) {
   const Vec3 box = scene.bounds().empty() ? Vec3(0.0) : scene.bounds().size();
   return 2.0 * (box.x * box.y + box.y * box.z + box.z * box.x);
 }
-}  // namespace
-
-namespace {
 
 // The goal's relative size: the grids' target where there is one, else the per-point target.
 double pilotTargetRelative(const TraceSettings& s) {
