@@ -333,11 +333,8 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
 
 bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
-  bool found = false;
-  visit(p, 0.0, [&](uint32_t i) {
-    if (!found && weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays)) found = true;
-  });
-  return found;
+  return visitUntil(p, 0.0,
+                    [&](uint32_t i) { return weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays); });
 }
 
 bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape,

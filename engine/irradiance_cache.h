@@ -204,20 +204,31 @@ class IrradianceCache {
   // run passes here (a tenth of the office demo's time), and the calls inline.
   template <class Fn>
   void visit(const Vec3& p, double extraM, Fn&& fn) const {
-    visitNode(0, p, extraM, fn);
+    visitUntil(p, extraM, [&fn](uint32_t i) {
+      fn(i);
+      return false;
+    });
+  }
+  // The same records in the same order until fn returns true (then true): covers stops at the
+  // first record that serves.
+  template <class Fn>
+  bool visitUntil(const Vec3& p, double extraM, Fn&& fn) const {
+    return visitNode(0, p, extraM, fn);
   }
   template <class Fn>
-  void visitNode(int32_t node, const Vec3& p, double extraM, Fn& fn) const {
+  bool visitNode(int32_t node, const Vec3& p, double extraM, Fn& fn) const {
     const Node& nd = nodes_[static_cast<size_t>(node)];
     // Records stored here have their centres in this cube and valid radii ≤ half.
     if (node != 0) {
       const Vec3 d = glm::abs(p - nd.centre);
       const double reach = 2.0 * nd.half + extraM;
-      if (d.x > reach || d.y > reach || d.z > reach) return;
+      if (d.x > reach || d.y > reach || d.z > reach) return false;
     }
-    for (uint32_t r : nd.records) fn(r);
+    for (uint32_t r : nd.records)
+      if (fn(r)) return true;
     for (int32_t c : nd.child)
-      if (c >= 0) visitNode(c, p, extraM, fn);
+      if (c >= 0 && visitNode(c, p, extraM, fn)) return true;
+    return false;
   }
 
   bool usable(const IrradianceRecord& r, const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
