@@ -282,9 +282,12 @@ double IrradianceCache::weight(const IrradianceRecord& r, const Vec3& p, const V
   const double nn = glm::dot(n, r.n);
   if (nn <= 0.0) return 0.0;
   const Vec3 d = p - r.p;
+  const double valid = settings_.accuracy * r.radiusM;
+  // Beyond the valid radius the weight is below 1/a whatever the normals (|d|/R alone exceeds a):
+  // 0 without the two square roots. The margin keeps every weight above 1/a exactly as before.
+  if (glm::dot(d, d) > valid * valid * (1.0 + 1e-9)) return 0.0;
   // A record in front of p (p lies behind the record's surface, e.g. a record on a box top and
   // p on the floor beside it) sees another situation: Ward et al. 1988's "in front" test.
-  const double valid = settings_.accuracy * r.radiusM;
   if (glm::dot(d, 0.5 * (n + r.n)) < -0.05 * valid) return 0.0;
   const double den = glm::length(d) / r.radiusM + std::sqrt(std::max(0.0, 1.0 - nn));
   return den > 1e-12 ? 1.0 / den : 1e12;

@@ -188,8 +188,9 @@ class IrradianceCache {
   const IrradianceRecord& record(size_t i) const { return records_[i]; }
   const CacheSettings& settings() const { return settings_; }
 
-  // Ward's weight 1/(|p − p_i|/R_i + √(1 − n·n_i)); 0 when the record faces away or lies in
-  // front of p (p behind the record's surface).
+  // Ward's weight 1/(|p − p_i|/R_i + √(1 − n·n_i)); 0 when the record faces away, lies in
+  // front of p (p behind the record's surface) or beyond its valid radius a·R_i (where the weight
+  // is below 1/a and no lookup takes it).
   double weight(const IrradianceRecord& r, const Vec3& p, const Vec3& n) const;
 
  private:

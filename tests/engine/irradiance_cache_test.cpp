@@ -103,6 +103,10 @@ TEST(IrradianceCache, WeightAndCoverage) {
   c.add(rec(Vec3(0.0), z, 1.0));
   // w = 1/(d/R + √(1 − n·n_i)): d = 0.1 gives 10 > 1/a = 5; d = 0.3 gives 3.33 < 5.
   EXPECT_NEAR(c.weight(c.record(0), Vec3(0.1, 0, 0), z), 10.0, 1e-12);
+  // Within the valid radius a·R = 0.2 the formula (d = 0.19: 1/0.19, below 1/a but a weight);
+  // beyond it 0 (d = 0.3 would give 3.33 < 1/a: no lookup takes it either way).
+  EXPECT_NEAR(c.weight(c.record(0), Vec3(0.19, 0, 0), z), 1.0 / 0.19, 1e-12);
+  EXPECT_EQ(c.weight(c.record(0), Vec3(0.3, 0, 0), z), 0.0);
   EXPECT_TRUE(c.covers(Vec3(0.1, 0, 0), z));
   EXPECT_FALSE(c.covers(Vec3(0.3, 0, 0), z));
   // A normal turned by θ costs √(1 − cos θ): 20° gives 0.246 > a.
