@@ -411,6 +411,18 @@ TEST(En13201Study, RealIesFileAgainstItsOwnIntensity) {
       const double beta = std::acos(glm::dot(foot, view) / (glm::length(foot) * glm::length(view))) / kDeg;
       const double l = reducedLuminanceCoefficient(r3, beta, glm::length(foot) / pole.z) * i / (pole.z * pole.z);
       EXPECT_NEAR(light.luminanceCdM2(Vec2(x, y), eye, r3, 0.07).maintained, l, 1e-12 * l) << x << ", " << y;
+      // Hemispherical on the road: I (1 + cos ε)/4d², cos ε = h/d.
+      const double hs = i * (1.0 + pole.z / d) / (4.0 * d * d);
+      EXPECT_NEAR(light.hemisphericalLux(Vec2(x, y)), hs, 1e-12 * hs) << x << ", " << y;
+      // 1.5 m up, facing +x: semi-cylindrical I sin ε (1 + cos α)/πd², vertical I max(0, cos)/d².
+      const Vec3 up = pole - Vec3(x, y, kFacialHeightM);
+      const double u = glm::length(up), horizontal = std::hypot(up.x, up.y);
+      const double iu = web.intensityCd(-up / u);
+      const double sc = iu * (horizontal / u) * (1.0 + up.x / horizontal) / (kPi * u * u);
+      const double ev = iu * std::max(0.0, up.x / u) / (u * u);
+      const std::array<RoadLight::Facing, 2> f = light.facingLux(Vec2(x, y), Vec2(1.0, 0.0));
+      EXPECT_NEAR(f[0].semiCylindrical, sc, 1e-12 * sc + 1e-15) << x << ", " << y;
+      EXPECT_NEAR(f[0].vertical, ev, 1e-12 * ev + 1e-15) << x << ", " << y;
     }
 }
 
