@@ -69,8 +69,9 @@ HsClassRequirement hsClassRequirement(int index);  // 1..3
 // The least maintained semi-cylindrical (SC1..SC9) or vertical (EV1..EV6) illuminance, lx.
 double additionalClassMinimumLux(const AdditionalRoadClass& c);
 
-// EN 13201-3: semi-cylindrical and vertical illuminances are computed 1.5 m above the road, on the
-// illuminance grid's plan points, facing both ways along the road.
+// Semi-cylindrical and vertical illuminances are computed 1.5 m above the road, on the
+// illuminance grid's plan points, facing both ways along the road (candela's reading of
+// EN 13201-3's pedestrians' height and main directions: docs/road.md).
 inline constexpr double kFacialHeightM = 1.5;
 
 // A standard road surface reflection table (an r-table): the reduced luminance coefficient
