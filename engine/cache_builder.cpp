@@ -1,5 +1,6 @@
 #include "engine/cache_builder.h"
 
+#include "base/parallel.h"
 #include "base/rng.h"
 #include "engine/integrator_path.h"
 #include "engine/irradiance_estimator.h"
@@ -108,20 +109,41 @@ void placeRecords(IrradianceCache& cache, const BuildContext& ctx, const QuerySo
       bytes.resize(list.size() * sizeof(CacheQuery));
       if (!list.empty()) std::memcpy(bytes.data(), list.data(), bytes.size());
     });
-    for (const std::vector<std::byte>& item : hits) {
+    std::vector<CacheQuery> queries;
+    for (const std::vector<std::byte>& item : hits)
       for (size_t at = 0; at + sizeof(CacheQuery) <= item.size(); at += sizeof(CacheQuery)) {
         CacheQuery q;
         std::memcpy(&q, item.data() + at, sizeof q);
-        if (cache.covers(q.p, q.n, q.shape, &rays)) continue;
-        IrradianceRecord r;
-        r.p = q.p;
-        r.n = q.n;
-        r.skip = q.skip;
-        r.shape = q.shape;
-        Rng rng(settings.seed, radiusStream + cache.size());
-        r.radiusM = harmonicMeanDistance(ctx.tracer, q, settings.cache.radiusSamples, rng);
-        cache.add(r);
+        queries.push_back(q);
       }
+    // Which record covers each query in the cache as the batch begins, on every thread; then in
+    // order, exactly as one thread asking covers() before each add: a query covered by a record
+    // that has not shrunk since is still covered (radii only shrink, visibility is geometry), and
+    // every other query is asked again.
+    const size_t batchStart = cache.size();
+    std::vector<int64_t> first(queries.size());
+    std::vector<uint64_t> queryRays(queries.size(), 0);
+    parallelFor(queries.size(), ctx.threads, [&](size_t i) {
+      first[i] = cache.firstCovering(queries[i].p, queries[i].n, queries[i].shape, &queryRays[i]);
+    });
+    for (uint64_t r : queryRays) rays += r;
+    std::vector<uint8_t> shrankFlag(batchStart, 0);
+    std::vector<uint32_t> shrunk;
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const CacheQuery& q = queries[i];
+      const bool stillCovered = first[i] >= 0 && !shrankFlag[static_cast<size_t>(first[i])];
+      if (stillCovered || cache.covers(q.p, q.n, q.shape, &rays)) continue;
+      IrradianceRecord r;
+      r.p = q.p;
+      r.n = q.n;
+      r.skip = q.skip;
+      r.shape = q.shape;
+      Rng rng(settings.seed, radiusStream + cache.size());
+      r.radiusM = harmonicMeanDistance(ctx.tracer, q, settings.cache.radiusSamples, rng);
+      shrunk.clear();
+      cache.add(r, &shrunk);
+      for (uint32_t j : shrunk)
+        if (j < batchStart) shrankFlag[j] = 1;
     }
   }
   ctx.tracer.addRays(rays);

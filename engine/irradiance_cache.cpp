@@ -293,7 +293,7 @@ double IrradianceCache::weight(const IrradianceRecord& r, const Vec3& p, const V
   return den > 1e-12 ? 1.0 / den : 1e12;
 }
 
-uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
+uint32_t IrradianceCache::add(const IrradianceRecord& rec, std::vector<uint32_t>* shrunk) {
   IrradianceRecord r = rec;
   const double a = settings_.accuracy;
   // Minimum and maximum spacing bound the valid radius a·R_i.
@@ -306,7 +306,9 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
     if (glm::dot(o.n, r.n) <= 0.0) return;
     const double d = glm::length(o.p - r.p);
     r.radiusM = std::max(minR, std::min(r.radiusM, o.radiusM + d));
+    const double before = o.radiusM;
     o.radiusM = std::max(minR, std::min(o.radiusM, r.radiusM + d));
+    if (shrunk && o.radiusM != before) shrunk->push_back(i);
   });
   const uint32_t id = static_cast<uint32_t>(records_.size());
   records_.push_back(r);
@@ -334,11 +336,17 @@ uint32_t IrradianceCache::add(const IrradianceRecord& rec) {
   return id;
 }
 
-bool IrradianceCache::covers(const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
+int64_t IrradianceCache::firstCovering(const Vec3& p, const Vec3& n, uint32_t shape, uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;
-  return visitUntil(p, 0.0,
-                    [&](uint32_t i) { return weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays); });
+  int64_t first = -1;
+  visitUntil(p, 0.0, [&](uint32_t i) {
+    if (!(weight(records_[i], p, n) > k && usable(records_[i], p, n, shape, rays))) return false;
+    first = i;
+    return true;
+  });
+  return first;
 }
+
 
 bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape,
                                   uint64_t* rays) const {

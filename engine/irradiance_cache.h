@@ -162,8 +162,9 @@ class IrradianceCache {
   IrradianceCache(const Box& bounds, const CacheSettings& settings);
 
   // Adds a record whose value is still to be computed; applies min/max spacing and neighbour
-  // clamping (R_i ≤ R_j + |P_i − P_j| both ways). Returns its index.
-  uint32_t add(const IrradianceRecord& r);
+  // clamping (R_i ≤ R_j + |P_i − P_j| both ways; radii only ever shrink). Returns its index; the
+  // records whose radius the clamping shrank are appended to *shrunk when given.
+  uint32_t add(const IrradianceRecord& r, std::vector<uint32_t>* shrunk = nullptr);
   // visible(p, n, shape, record, rays): nothing but p's and the record's own shapes between them;
   // the rays it casts are added to `rays`.
   using Visibility = std::function<bool(const Vec3&, const Vec3&, uint32_t, const IrradianceRecord&, uint64_t&)>;
@@ -171,7 +172,11 @@ class IrradianceCache {
 
   // True when some record has w_i(p, n) > 1/a (and is visible from p when checked). `shape`:
   // the shape p lies on; the visibility rays cast are added to *rays when given.
-  bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu, uint64_t* rays = nullptr) const;
+  bool covers(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu, uint64_t* rays = nullptr) const {
+    return firstCovering(p, n, shape, rays) >= 0;
+  }
+  // The first record in the octree's order that covers (p, n), or -1.
+  int64_t firstCovering(const Vec3& p, const Vec3& n, uint32_t shape = 0xffffffffu, uint64_t* rays = nullptr) const;
   // What an interpolation used, for error bars: each record with its normalised weight; and
   // the records found, scratch reused from call to call.
   struct Used {

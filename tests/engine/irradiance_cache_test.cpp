@@ -93,6 +93,33 @@ IrradianceRecord rec(const Vec3& p, const Vec3& n, double r, double e = 1.0) {
   return x;
 }
 
+// Phase A's parallel pre-check (engine/cache_builder.cpp) rests on two facts tested here: the
+// first covering record is one that covers (and -1 when covers() says no), and adding a record
+// only shrinks radii, reporting each record it shrank.
+TEST(IrradianceCache, FirstCoveringAndTheRecordsAnAddShrinks) {
+  CacheSettings cs;
+  cs.accuracy = 0.2;
+  cs.minSpacingM = 1e-4;
+  cs.maxSpacingM = 10.0;
+  IrradianceCache c(Box{Vec3(-5.0), Vec3(5.0)}, cs);
+  const Vec3 z(0, 0, 1);
+  c.add(rec(Vec3(0.0), z, 1.0));
+  c.add(rec(Vec3(3.0, 0, 0), z, 2.0));
+  EXPECT_EQ(c.firstCovering(Vec3(0.1, 0, 0), z), 0);
+  EXPECT_EQ(c.firstCovering(Vec3(3.2, 0, 0), z), 1);
+  EXPECT_EQ(c.firstCovering(Vec3(1.5, 0, 0), z), -1);
+  EXPECT_FALSE(c.covers(Vec3(1.5, 0, 0), z));
+  // A record of radius 0.5 at x = 2: R_0 ≤ 0.5 + 2 leaves record 0's 1.0; R_1 ≤ 0.5 + 1 shrinks
+  // record 1's 2.0 to 1.5.
+  std::vector<uint32_t> shrunk;
+  c.add(rec(Vec3(2.0, 0, 0), z, 0.5), &shrunk);
+  EXPECT_EQ(shrunk, std::vector<uint32_t>{1});
+  EXPECT_DOUBLE_EQ(c.record(0).radiusM, 1.0);
+  EXPECT_DOUBLE_EQ(c.record(1).radiusM, 1.5);
+  // x = 3.35 was within record 1's valid radius 0.4 and is no longer (0.3 now).
+  EXPECT_EQ(c.firstCovering(Vec3(3.35, 0, 0), z), -1);
+}
+
 TEST(IrradianceCache, WeightAndCoverage) {
   CacheSettings cs;
   cs.accuracy = 0.2;
