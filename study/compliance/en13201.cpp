@@ -52,20 +52,26 @@ double RoadLight::visibility(const Vec3& from, std::size_t k) const {
   return photopic(tracer_->transmittance(from, d / dist, dist * (1.0 - 1e-9), kNoShape, l.openingShape));
 }
 
-double RoadLight::illuminanceLux(const Vec2& p) const {
-  const Vec3 point(p, 0.0);
-  double e = 0.0;
+template <class Fn>
+void RoadLight::eachLuminaire(const Vec3& point, Fn&& fn) const {
   for (std::size_t k = 0; k < scene_.luminaires.size(); ++k) {
     const LuminaireSource& l = scene_.luminaires[k];
-    const Vec3 v = point - l.position;  // luminaire → point
-    const double h = l.position.z;
+    const Vec3 v = l.position - point;  // point → luminaire
     const double d2 = glm::dot(v, v);
-    if (!(h > 0.0) || !(d2 > 0.0)) continue;
-    const double d = std::sqrt(d2);
-    // Point law: E = I cos ι / d², cos ι = h / d on the horizontal road.
-    const double i = l.intensityCd(v / d) * maintenance_[k];
-    if (i > 0.0) e += i * (h / d) / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
+    if (!(d2 > 0.0)) continue;
+    const Vec3 s = v / std::sqrt(d2);
+    const double i = l.intensityCd(-s) * maintenance_[k];
+    if (i > 0.0) fn(k, s, d2, i);
   }
+}
+
+double RoadLight::illuminanceLux(const Vec2& p) const {
+  // Point law: E = I cos ι / d², cos ι = s_z (the luminaire's height over d) on the horizontal road.
+  const Vec3 point(p, 0.0);
+  double e = 0.0;
+  eachLuminaire(point, [&](std::size_t k, const Vec3& s, double d2, double i) {
+    if (s.z > 0.0) e += i * s.z / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
+  });
   return e;
 }
 
@@ -74,16 +80,10 @@ double RoadLight::hemisphericalLux(const Vec2& p) const {
   const Response hemisphere{Quantity::kHemispherical, Vec3(0.0, 0.0, 1.0), Vec3(1.0, 0.0, 0.0)};
   const Vec3 point(p, 0.0);
   double e = 0.0;
-  for (std::size_t k = 0; k < scene_.luminaires.size(); ++k) {
-    const LuminaireSource& l = scene_.luminaires[k];
-    const Vec3 v = l.position - point;  // point → luminaire
-    const double d2 = glm::dot(v, v);
-    if (!(d2 > 0.0)) continue;
-    const Vec3 s = v / std::sqrt(d2);
+  eachLuminaire(point, [&](std::size_t k, const Vec3& s, double d2, double i) {
     const double w = hemisphere.weight(s);
-    const double i = l.intensityCd(-s) * maintenance_[k];
-    if (w > 0.0 && i > 0.0) e += i * w / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
-  }
+    if (w > 0.0) e += i * w / d2 * visibility(point + Vec3(0.0, 0.0, kLiftM), k);
+  });
   return e;
 }
 
@@ -96,20 +96,13 @@ std::array<RoadLight::Facing, 2> RoadLight::facingLux(const Vec2& p, const Vec2&
   const std::array<Response, 2> plane = {Response::planar(Vec3(along, 0.0)), Response::planar(Vec3(-along, 0.0))};
   const Vec3 point(p, kFacialHeightM);
   std::array<Facing, 2> out{};
-  for (std::size_t k = 0; k < scene_.luminaires.size(); ++k) {
-    const LuminaireSource& l = scene_.luminaires[k];
-    const Vec3 v = l.position - point;  // point → luminaire
-    const double d2 = glm::dot(v, v);
-    if (!(d2 > 0.0)) continue;
-    const Vec3 s = v / std::sqrt(d2);
-    const double i = l.intensityCd(-s) * maintenance_[k];
-    if (!(i > 0.0)) continue;
+  eachLuminaire(point, [&](std::size_t k, const Vec3& s, double d2, double i) {
     const double seen = visibility(point, k);
     for (std::size_t side = 0; side < 2; ++side) {
       out[side].semiCylindrical += i * half[side].weight(s) / d2 * seen;
       out[side].vertical += i * plane[side].weight(s) / d2 * seen;
     }
-  }
+  });
   return out;
 }
 

@@ -57,6 +57,10 @@ class RoadLight {
  private:
   // Fraction of light passing from `from` to luminaire k (1 without a tracer).
   double visibility(const Vec3& from, std::size_t k) const;
+  // fn(k, s, d2, i) for each luminaire k whose maintained intensity i towards `point` is positive:
+  // s the unit direction from the point to its photometric centre, d2 their squared distance.
+  template <class Fn>
+  void eachLuminaire(const Vec3& point, Fn&& fn) const;
   const Scene& scene_;
   const Tracer* tracer_;
   std::vector<double> maintenance_;
