@@ -347,7 +347,6 @@ int64_t IrradianceCache::firstCovering(const Vec3& p, const Vec3& n, uint32_t sh
   return first;
 }
 
-
 bool IrradianceCache::interpolate(const Vec3& p, const Vec3& n, Rgb& out, Used* used, uint32_t shape,
                                   uint64_t* rays) const {
   const double k = 1.0 / settings_.accuracy;

@@ -73,10 +73,9 @@ struct ObjReadStats {
 
 // Appends the OBJ text's faces to `scene`; faces whose `vn` normals depart from the face's are
 // smoothed as obj2rad smooths them (TriangleMesh::cornerNormals). Throws InputError(file:line)
-// for a bad statement, a
-// vertex index out of range, a face of fewer than 3 vertices, an undefined modifier, a coordinate
-// beyond kMaxCoordinateM or more than 2³² − 2 vertices or triangles. Warnings (degenerate faces,
-// mtllib) go to scene.inputWarnings.
+// for a bad statement, a vertex index out of range, a face of fewer than 3 vertices, an
+// undefined modifier, a coordinate beyond kMaxCoordinateM or more than 2³² − 2 vertices or
+// triangles. Warnings (degenerate faces, mtllib) go to scene.inputWarnings.
 ObjReadStats readObjText(std::string_view text, const std::string& fileName, Scene& scene, const ObjReadOptions& options);
 ObjReadStats readObjFile(const std::filesystem::path& path, Scene& scene, const ObjReadOptions& options);
 

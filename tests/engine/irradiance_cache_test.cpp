@@ -93,17 +93,23 @@ IrradianceRecord rec(const Vec3& p, const Vec3& n, double r, double e = 1.0) {
   return x;
 }
 
-// Phase A's parallel pre-check (engine/cache_builder.cpp) rests on two facts tested here: the
-// first covering record is one that covers (and -1 when covers() says no), and adding a record
-// only shrinks radii, reporting each record it shrank.
-TEST(IrradianceCache, FirstCoveringAndTheRecordsAnAddShrinks) {
+// a = 0.2, spacing 1e-4 … 10 m, in ±5 m: one record at the origin facing +z, R = 1 m.
+IrradianceCache oneRecordCache() {
   CacheSettings cs;
   cs.accuracy = 0.2;
   cs.minSpacingM = 1e-4;
   cs.maxSpacingM = 10.0;
   IrradianceCache c(Box{Vec3(-5.0), Vec3(5.0)}, cs);
+  c.add(rec(Vec3(0.0), Vec3(0, 0, 1), 1.0));
+  return c;
+}
+
+// Phase A's parallel pre-check (engine/cache_builder.cpp) rests on two facts tested here: the
+// first covering record is one that covers (and -1 when covers() says no), and adding a record
+// only shrinks radii, reporting each record it shrank.
+TEST(IrradianceCache, FirstCoveringAndTheRecordsAnAddShrinks) {
   const Vec3 z(0, 0, 1);
-  c.add(rec(Vec3(0.0), z, 1.0));
+  IrradianceCache c = oneRecordCache();
   c.add(rec(Vec3(3.0, 0, 0), z, 2.0));
   EXPECT_EQ(c.firstCovering(Vec3(0.1, 0, 0), z), 0);
   EXPECT_EQ(c.firstCovering(Vec3(3.2, 0, 0), z), 1);
@@ -121,13 +127,8 @@ TEST(IrradianceCache, FirstCoveringAndTheRecordsAnAddShrinks) {
 }
 
 TEST(IrradianceCache, WeightAndCoverage) {
-  CacheSettings cs;
-  cs.accuracy = 0.2;
-  cs.minSpacingM = 1e-4;
-  cs.maxSpacingM = 10.0;
-  IrradianceCache c(Box{Vec3(-5.0), Vec3(5.0)}, cs);
   const Vec3 z(0, 0, 1);
-  c.add(rec(Vec3(0.0), z, 1.0));
+  IrradianceCache c = oneRecordCache();
   // w = 1/(d/R + √(1 − n·n_i)): d = 0.1 gives 10 > 1/a = 5; d = 0.3 gives 3.33 < 5.
   EXPECT_NEAR(c.weight(c.record(0), Vec3(0.1, 0, 0), z), 10.0, 1e-12);
   // Within the valid radius a·R = 0.2 the formula (d = 0.19: 1/0.19, below 1/a but a weight);
